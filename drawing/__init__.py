@@ -1,0 +1,1 @@
+"""Drawing sheets: solved plans in, SVG out. Only this package knows SVG."""
