@@ -1,0 +1,649 @@
+"""Group-by-group solution of positions, velocity plans and acceleration plans.
+
+Every formula works on numpy arrays of crank angles at once, and the same code serves the
+single-position plan (an array of one angle, whose recorded constructions become the plan
+points) and the whole cycle. For each group the velocity and the acceleration of its new
+point come from the intersection of two lines, exactly as on paper:
+
+    RRR  V_C  = V_P + V_CP (⊥ CP)          = V_Q + V_CQ (⊥ CQ)
+    RRP  V_C  = V_P + V_CP (⊥ CP)          = V_Ck + V_CCk (∥ guide)
+    RPR  V_P3 = V_P + V_P3P (∥ guide)      = V_Q + V_P3Q (⊥ QP)
+    PRP  V_C  = V_Ck + V_CCk (∥ guide 1)   = V_Cm + V_CCm (∥ guide 2)
+    RPP  V_P3 = V_P + V_P3P (∥ guide 1)    = V_Pk + V_P3Pk (∥ guide 2)
+
+and for accelerations the same lines, shifted by the known normal components
+a^n = −ω²·r (towards the centre) and the Coriolis components a^k = 2ω × V_rel (the
+relative velocity turned by 90° in the sense of the guide's ω).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .errors import AssemblyError, InputError, SingularPlanError
+from .geometry import circle_circle, circle_line, cross, intersect
+from .mechanism import Guide, Mechanism
+from .structure import DyadKind, Group, Structure, analyse
+
+#: below this |sin| of the angle between the two lines a plan is singular
+SINGULAR_SINE = 1e-10
+#: below this |sin| (about 2°) a position is reported as near-singular
+WARN_SINE = 0.035
+
+
+@dataclass(frozen=True, slots=True)
+class LinkState:
+    """Pose and motion of a link: its origin point and orientation (unit complex),
+    the velocity and acceleration of the origin, ω and ε (counter-clockwise positive)."""
+
+    origin: np.ndarray
+    rotor: np.ndarray
+    v: np.ndarray
+    omega: np.ndarray
+    a: np.ndarray
+    epsilon: np.ndarray
+
+    def pos(self, local):
+        return self.origin + self.rotor * local
+
+    def vel(self, X):
+        return self.v + 1j * self.omega * (X - self.origin)
+
+    def acc(self, X):
+        return self.a + (1j * self.epsilon - self.omega**2) * (X - self.origin)
+
+
+def _state(origin, rotor, X, vX, aX, omega, eps) -> LinkState:
+    """The state of a link from one of its points X with known velocity and acceleration."""
+    r = origin - X
+    return LinkState(
+        origin, rotor, vX + 1j * omega * r, omega, aX + (1j * eps - omega**2) * r, eps
+    )
+
+
+@dataclass(frozen=True, slots=True)
+class Term:
+    """A known vector of an equation, drawn head to tail before the unknown line."""
+
+    kind: str  # "normal" or "coriolis"
+    value: np.ndarray
+    label: str  # "a^n_A3B", "a^k_A3A"
+    about: str  # "A3B" (normal: from the point towards the centre) or "A3A"
+
+
+@dataclass(frozen=True, slots=True)
+class Route:
+    """One of the two vector equations of a group: known base, known terms, one line."""
+
+    base: str | None  # mechanism point whose plan point starts the route; None = the pole
+    base_value: np.ndarray
+    terms: tuple[Term, ...]
+    direction: np.ndarray  # unit vector of the unknown term
+    relation: str  # "⊥ CB", "∥ BC", "∥ x-x"
+    unknown: str  # "V_A3B", "a^t_A3B", "a^r_A3A"
+    unknown_kind: str  # "relative", "tangential", "sliding"
+    param: np.ndarray  # signed magnitude of the unknown term along ``direction``
+
+    @property
+    def line_point(self):
+        out = self.base_value
+        for t in self.terms:
+            out = out + t.value
+        return out
+
+
+@dataclass(frozen=True, slots=True)
+class Construction:
+    """How the new point of a group was found: the intersection of two routes."""
+
+    point: str  # mechanism name of the point found (C, A3…)
+    value: np.ndarray
+    routes: tuple[Route, Route]
+    sine: np.ndarray
+    equation: str
+
+
+@dataclass(frozen=True, slots=True)
+class GroupSolution:
+    group: Group
+    velocity: Construction
+    acceleration: Construction
+    valid: np.ndarray  # bool: the group closes at this angle
+    gap: np.ndarray  # how far it is from closing (m); > 0 where it does not close
+    admissible: str  # the condition, for messages
+
+
+@dataclass(frozen=True)
+class Motion:
+    """Positions, velocities and accelerations of every point and link over angles ``phi``."""
+
+    phi: np.ndarray
+    links: dict[int, LinkState]
+    position: dict[str, np.ndarray]
+    velocity: dict[str, np.ndarray]
+    acceleration: dict[str, np.ndarray]
+    point_link: dict[str, int]  # the link a (coincident) point belongs to
+    groups: tuple[GroupSolution, ...]
+    valid: np.ndarray
+    coincident: dict[str, str] = field(default_factory=dict)  # "A3" -> "A"
+
+    @property
+    def min_sine(self) -> np.ndarray:
+        """Conditioning: the smallest |sin| between intersected lines over the groups."""
+        out = np.ones_like(self.phi)
+        for g in self.groups:
+            out = np.minimum(out, np.abs(g.velocity.sine))
+        return out
+
+
+def coincident_name(point: str, link: int) -> str:
+    return f"{point}{link}"
+
+
+def _rel(a: str, b: str) -> str:
+    return f"{a}{b}"
+
+
+class Solver:
+    """Solves one mechanism; branches fixed once at its given crank angle."""
+
+    def __init__(self, mech: Mechanism, structure: Structure | None = None,
+                 sigmas: tuple[int, ...] | None = None):
+        self.mech = mech
+        self.structure = structure or analyse(mech)
+        self.sigmas = sigmas if sigmas is not None else choose_branches(mech, self.structure)
+
+    # -------------------------------------------------------------------------------
+    def solve(self, phi) -> Motion:
+        mech = self.mech
+        phi = np.atleast_1d(np.asarray(phi, dtype=float))
+        zero = np.zeros_like(phi)
+        zc = zero.astype(complex)
+        drv = mech.driver
+        states: dict[int, LinkState] = {
+            0: LinkState(zc, zc + 1, zc, zero, zc, zero),
+        }
+        pos: dict[str, np.ndarray] = {}
+        vel: dict[str, np.ndarray] = {}
+        acc: dict[str, np.ndarray] = {}
+        owner: dict[str, int] = {}
+        for name, xy in mech.frame.items():
+            pos[name] = zc + xy
+            vel[name] = zc
+            acc[name] = zc
+            owner[name] = 0
+        rotor = np.exp(1j * phi)
+        pivot = mech.frame[drv.pivot]
+        w1 = zero + drv.omega
+        states[drv.link] = LinkState(zc + pivot, rotor, zc, w1, zc, zero)
+        self._fill(drv.link, states, pos, vel, acc, owner)
+        solutions = []
+        valid = np.ones(phi.shape, dtype=bool)
+        coincident: dict[str, str] = {}
+        for g, sigma in zip(self.structure.groups, self.sigmas, strict=True):
+            sol, extra = SOLVERS[g.kind](self, g, sigma, states, pos, vel, acc)
+            solutions.append(sol)
+            valid &= sol.valid
+            for a in (g.a, g.b):
+                self._fill(a, states, pos, vel, acc, owner)
+            for name, (link, base) in extra.items():
+                X = pos[base]
+                pos[name] = X
+                vel[name] = states[link].vel(X)
+                acc[name] = states[link].acc(X)
+                owner[name] = link
+                coincident[name] = base
+        return Motion(phi, states, pos, vel, acc, owner, tuple(solutions), valid, coincident)
+
+    def _fill(self, lid, states, pos, vel, acc, owner):
+        st = states[lid]
+        for name, local in self.mech.links[lid].points.items():
+            if name in pos and owner.get(name) is not None:
+                continue  # a hinge already known from the link solved before
+            X = st.pos(local)
+            pos[name] = X
+            vel[name] = st.vel(X)
+            acc[name] = st.acc(X)
+            owner[name] = lid
+
+    # helpers used by the group solvers ------------------------------------------------
+    def guide_world(self, guide: Guide, states):
+        st = states[guide.link]
+        return st.pos(guide.point), st.rotor * guide.direction
+
+    def local(self, lid: int, point: str) -> complex:
+        return self.mech.links[lid].points[point]
+
+
+# ---------------------------------------------------------------------------------------
+# the five kinds
+# ---------------------------------------------------------------------------------------
+
+
+def _pose_from_two(P, pl, C, cl):
+    """Origin and rotor of a link from two world points and their own coordinates."""
+    r = (C - P) / (cl - pl)
+    r = r / np.abs(r)
+    return P - r * pl, r
+
+
+def _check_sine(sine, group: Group, where: str):
+    return sine
+
+
+def _rrr(sv: Solver, g: Group, sigma, states, pos, vel, acc):
+    P, C, Q = g.P, g.C, g.Q
+    pl, cl = sv.local(g.a, P), sv.local(g.a, C)
+    ql, cl3 = sv.local(g.b, Q), sv.local(g.b, C)
+    l2, l3 = abs(cl - pl), abs(cl3 - ql)
+    Pw, Qw = pos[P], pos[Q]
+    Cw, disc = circle_circle(Pw, l2, Qw, l3, sigma)
+    d = np.abs(Qw - Pw)
+    valid = disc > 0
+    gap = np.maximum(np.maximum(d - (l2 + l3), abs(l2 - l3) - d), 0.0)
+    # velocities: V_C = V_P + V_CP (⊥ CP) = V_Q + V_CQ (⊥ CQ)
+    rP, rQ = Cw - Pw, Cw - Qw
+    d1, d2 = 1j * rP / l2, 1j * rQ / l3
+    t1, t2, sine = intersect(vel[P], d1, vel[Q], d2)
+    vC = vel[P] + t1 * d1
+    w2, w3 = t1 / l2, t2 / l3
+    vroute = (
+        Route(P, vel[P], (), d1, f"⊥ {C}{P}", f"V_{C}{P}", "relative", t1),
+        Route(Q, vel[Q], (), d2, f"⊥ {C}{Q}", f"V_{C}{Q}", "relative", t2),
+    )
+    # accelerations: a_C = a_P + a^n_CP + a^t_CP = a_Q + a^n_CQ + a^t_CQ
+    nP, nQ = -(w2**2) * rP, -(w3**2) * rQ
+    s1, s2, _ = intersect(acc[P] + nP, d1, acc[Q] + nQ, d2)
+    aC = acc[P] + nP + s1 * d1
+    e2, e3 = s1 / l2, s2 / l3
+    aroute = (
+        Route(P, acc[P], (Term("normal", nP, f"a^n_{C}{P}", f"{C}{P}"),), d1,
+              f"⊥ {C}{P}", f"a^t_{C}{P}", "tangential", s1),
+        Route(Q, acc[Q], (Term("normal", nQ, f"a^n_{C}{Q}", f"{C}{Q}"),), d2,
+              f"⊥ {C}{Q}", f"a^t_{C}{Q}", "tangential", s2),
+    )
+    oa, ra = _pose_from_two(Pw, pl, Cw, cl)
+    ob, rb = _pose_from_two(Qw, ql, Cw, cl3)
+    states[g.a] = _state(oa, ra, Cw, vC, aC, w2, e2)
+    states[g.b] = _state(ob, rb, Cw, vC, aC, w3, e3)
+    pos[C] = Cw
+    sol = GroupSolution(
+        g,
+        Construction(C, vC, vroute, sine, f"V_{C} = V_{P} + V_{C}{P} = V_{Q} + V_{C}{Q}"),
+        Construction(C, aC, aroute, sine,
+                     f"a_{C} = a_{P} + a^n_{C}{P} + a^t_{C}{P} = a_{Q} + a^n_{C}{Q} + a^t_{C}{Q}"),
+        valid, gap,
+        f"{P}{Q} within [{abs(l2 - l3):.6g}, {l2 + l3:.6g}] m",
+    )
+    return sol, {}
+
+
+def _slide_base(sv: Solver, guide: Guide, X, states, vel_or_acc: str):
+    """Velocity or acceleration of the point of the guide's link that is under X."""
+    st = states[guide.link]
+    return st.vel(X) if vel_or_acc == "v" else st.acc(X)
+
+
+def _coriolis(states, guide: Guide, vrel):
+    """a^k = 2 ω_guide × V_rel: V_rel turned by 90° in the sense of the guide's ω."""
+    return 2j * states[guide.link].omega * vrel
+
+
+def _base_name(point: str, guide: Guide) -> str | None:
+    return None if guide.link == 0 else coincident_name(point, guide.link)
+
+
+def _rrp(sv: Solver, g: Group, sigma, states, pos, vel, acc):
+    P, C, s = g.P, g.C, g.s1
+    pl, cl = sv.local(g.a, P), sv.local(g.a, C)
+    l2 = abs(cl - pl)
+    Pw = pos[P]
+    G0, u = sv.guide_world(s.guide, states)
+    Cw, disc = circle_line(Pw, l2, G0, u, sigma)
+    valid = disc > 0
+    h = np.abs(cross(u, Pw - G0))
+    gap = np.maximum(h - l2, 0.0)
+    k = s.guide.link
+    gl = s.guide.label
+    base = _base_name(C, s.guide)
+    rP = Cw - Pw
+    d1 = 1j * rP / l2
+    vCk = _slide_base(sv, s.guide, Cw, states, "v")
+    t1, t2, sine = intersect(vel[P], d1, vCk, u)
+    vC = vel[P] + t1 * d1
+    w2 = t1 / l2
+    rel = f"V_{C}{base}" if base else f"V_{C}"
+    vroute = (
+        Route(P, vel[P], (), d1, f"⊥ {C}{P}", f"V_{C}{P}", "relative", t1),
+        Route(base, vCk, (), u, f"∥ {gl}", rel, "sliding", t2),
+    )
+    nP = -(w2**2) * rP
+    aCk = _slide_base(sv, s.guide, Cw, states, "a")
+    terms2 = ()
+    if k != 0:
+        terms2 = (Term("coriolis", _coriolis(states, s.guide, t2 * u), f"a^k_{C}{base}", f"{C}{base}"),)
+    cor = terms2[0].value if terms2 else 0.0
+    s1_, s2_, _ = intersect(acc[P] + nP, d1, aCk + cor, u)
+    aC = acc[P] + nP + s1_ * d1
+    e2 = s1_ / l2
+    arel = f"a^r_{C}{base}" if base else f"a_{C}"
+    aroute = (
+        Route(P, acc[P], (Term("normal", nP, f"a^n_{C}{P}", f"{C}{P}"),), d1,
+              f"⊥ {C}{P}", f"a^t_{C}{P}", "tangential", s1_),
+        Route(base, aCk, terms2, u, f"∥ {gl}", arel, "sliding", s2_),
+    )
+    oa, ra = _pose_from_two(Pw, pl, Cw, cl)
+    states[g.a] = _state(oa, ra, Cw, vC, aC, w2, e2)
+    kb = states[k]
+    ob = Cw - u * sv.local(g.b, C)
+    states[g.b] = _state(ob, u, Cw, vC, aC, kb.omega, kb.epsilon)
+    pos[C] = Cw
+    second = f"V_{base} + V_{C}{base}" if base else f"V_{C}(∥ {gl})"
+    sol = GroupSolution(
+        g,
+        Construction(C, vC, vroute, sine, f"V_{C} = V_{P} + V_{C}{P} = {second}"),
+        Construction(
+            C, aC, aroute, sine,
+            f"a_{C} = a_{P} + a^n_{C}{P} + a^t_{C}{P} = "
+            + (f"a_{base} + a^k_{C}{base} + a^r_{C}{base}" if base else f"a_{C}(∥ {gl})"),
+        ),
+        valid, gap, f"distance from {P} to the guide {gl} ≤ {l2:.6g} m",
+    )
+    extra = {base: (k, C)} if base else {}
+    return sol, extra
+
+
+def _rpr(sv: Solver, g: Group, sigma, states, pos, vel, acc):
+    P, Q, s = g.P, g.Q, g.s1  # block g.a hinged at P slides on the guide of link g.b
+    G = g.b
+    gl = s.guide.label
+    q = sv.local(G, Q)
+    u_local = s.guide.point - q
+    gd = s.guide.direction
+    e = (np.conj(gd) * u_local).imag  # offset of the guide from the pivot Q
+    Pw, Qw = pos[P], pos[Q]
+    w = Pw - Qw
+    dist = np.abs(w)
+    disc = (dist - abs(e)) * (dist + abs(e))
+    valid = (disc > 0) & (dist > 0)
+    tau = sigma * np.sqrt(np.maximum(disc, 0.0))
+    rG = w / ((tau + 1j * e) * gd)
+    rG = rG / np.abs(rG)
+    oG = Qw - rG * q
+    u = rG * gd  # the guide's direction on the plan of positions
+    name = coincident_name(P, G)
+    # V_P3 = V_P + V_P3P (∥ guide) = V_Q + V_P3Q (⊥ QP3)
+    d2 = 1j * w / np.where(dist > 0, dist, 1.0)
+    t1, t2, sine = intersect(vel[P], u, vel[Q], d2)
+    vP3 = vel[P] + t1 * u
+    w3 = t2 / dist
+    vroute = (
+        Route(P, vel[P], (), u, f"∥ {gl}", f"V_{name}{P}", "sliding", t1),
+        Route(Q, vel[Q], (), d2, f"⊥ {Q}{name}", f"V_{name}{Q}", "relative", t2),
+    )
+    cor = 2j * w3 * (t1 * u)
+    nQ = -(w3**2) * w
+    s1_, s2_, _ = intersect(acc[P] + cor, u, acc[Q] + nQ, d2)
+    aP3 = acc[P] + cor + s1_ * u
+    e3 = s2_ / dist
+    aroute = (
+        Route(P, acc[P], (Term("coriolis", cor, f"a^k_{name}{P}", f"{name}{P}"),), u,
+              f"∥ {gl}", f"a^r_{name}{P}", "sliding", s1_),
+        Route(Q, acc[Q], (Term("normal", nQ, f"a^n_{name}{Q}", f"{name}{Q}"),), d2,
+              f"⊥ {Q}{name}", f"a^t_{name}{Q}", "tangential", s2_),
+    )
+    states[G] = _state(oG, rG, Pw, vP3, aP3, w3, e3)
+    oK = Pw - u * sv.local(g.a, P)
+    states[g.a] = _state(oK, u, Pw, vel[P], acc[P], w3, e3)
+    gap = np.maximum(abs(e) - dist, 0.0)
+    sol = GroupSolution(
+        g,
+        Construction(name, vP3, vroute, sine,
+                     f"V_{name} = V_{P} + V_{name}{P} = V_{Q} + V_{name}{Q}"),
+        Construction(name, aP3, aroute, sine,
+                     f"a_{name} = a_{P} + a^k_{name}{P} + a^r_{name}{P} = "
+                     f"a_{Q} + a^n_{name}{Q} + a^t_{name}{Q}"),
+        valid, gap,
+        f"distance {Q}{P} > {abs(e):.6g} m (the guide's offset)" if e else f"{Q} ≠ {P}",
+    )
+    return sol, {name: (G, P)}
+
+
+def _prp(sv: Solver, g: Group, sigma, states, pos, vel, acc):
+    C, sa, sb = g.C, g.s1, g.s2
+    G1, u1 = sv.guide_world(sa.guide, states)
+    G2, u2 = sv.guide_world(sb.guide, states)
+    t, _, psine = intersect(G1, u1, G2, u2)
+    Cw = G1 + t * u1
+    valid = np.abs(psine) > SINGULAR_SINE
+    b1, b2 = _base_name(C, sa.guide), _base_name(C, sb.guide)
+    v1 = _slide_base(sv, sa.guide, Cw, states, "v")
+    v2 = _slide_base(sv, sb.guide, Cw, states, "v")
+    t1, t2, sine = intersect(v1, u1, v2, u2)
+    vC = v1 + t1 * u1
+    vroute = (
+        Route(b1, v1, (), u1, f"∥ {sa.guide.label}", f"V_{C}{b1 or ''}", "sliding", t1),
+        Route(b2, v2, (), u2, f"∥ {sb.guide.label}", f"V_{C}{b2 or ''}", "sliding", t2),
+    )
+    a1 = _slide_base(sv, sa.guide, Cw, states, "a")
+    a2 = _slide_base(sv, sb.guide, Cw, states, "a")
+    terms1 = (Term("coriolis", _coriolis(states, sa.guide, t1 * u1), f"a^k_{C}{b1}", f"{C}{b1}"),) if b1 else ()
+    terms2 = (Term("coriolis", _coriolis(states, sb.guide, t2 * u2), f"a^k_{C}{b2}", f"{C}{b2}"),) if b2 else ()
+    c1 = terms1[0].value if terms1 else 0.0
+    c2 = terms2[0].value if terms2 else 0.0
+    s1_, s2_, _ = intersect(a1 + c1, u1, a2 + c2, u2)
+    aC = a1 + c1 + s1_ * u1
+    aroute = (
+        Route(b1, a1, terms1, u1, f"∥ {sa.guide.label}", f"a^r_{C}{b1 or ''}", "sliding", s1_),
+        Route(b2, a2, terms2, u2, f"∥ {sb.guide.label}", f"a^r_{C}{b2 or ''}", "sliding", s2_),
+    )
+    for lid, u, s in ((g.a, u1, sa), (g.b, u2, sb)):
+        k = states[s.guide.link]
+        states[lid] = _state(Cw - u * sv.local(lid, C), u, Cw, vC, aC, k.omega, k.epsilon)
+    pos[C] = Cw
+    sol = GroupSolution(
+        g,
+        Construction(C, vC, vroute, sine, f"V_{C} = V_{b1 or '0'} + V_{C}{b1 or ''} = V_{b2 or '0'} + V_{C}{b2 or ''}"),
+        Construction(C, aC, aroute, sine, f"a_{C} = a_{b1 or '0'} + a^k + a^r = a_{b2 or '0'} + a^k + a^r"),
+        valid, np.where(valid, 0.0, 1.0), "the two guides not parallel",
+    )
+    extra = {b: (s.guide.link, C) for b, s in ((b1, sa), (b2, sb)) if b}
+    return sol, extra
+
+
+def _rpp(sv: Solver, g: Group, sigma, states, pos, vel, acc):
+    P, s_in, s_out = g.P, g.s1, g.s2  # block g.a at P slides along s_in carried by g.b
+    B = g.b
+    Gk, uk = sv.guide_world(s_out.guide, states)
+    locD = sv.local(B, s_out.point)
+    g0, gd = s_in.guide.point, s_in.guide.direction
+    Pw = pos[P]
+    z = (Pw - Gk) / uk + locD - g0
+    im = gd.imag
+    valid = np.broadcast_to(abs(im) > SINGULAR_SINE, Pw.shape).copy()
+    t = z.imag / (im if abs(im) > 0 else 1.0)
+    sl = z.real - t * gd.real
+    oB = Gk - uk * locD + sl * uk
+    rB = uk
+    us = uk * gd  # the inner guide on the plan of positions
+    name = coincident_name(P, B)
+    bk = _base_name(P, s_out.guide)
+    vk = _slide_base(sv, s_out.guide, Pw, states, "v")
+    t1, t2, sine = intersect(vel[P], us, vk, uk)
+    vP3 = vel[P] + t1 * us
+    vroute = (
+        Route(P, vel[P], (), us, f"∥ {s_in.guide.label}", f"V_{name}{P}", "sliding", t1),
+        Route(bk, vk, (), uk, f"∥ {s_out.guide.label}", f"V_{name}{bk or ''}", "sliding", t2),
+    )
+    omega = states[s_out.guide.link].omega
+    eps = states[s_out.guide.link].epsilon
+    ak = _slide_base(sv, s_out.guide, Pw, states, "a")
+    c1 = 2j * omega * (t1 * us)
+    terms1 = (Term("coriolis", c1, f"a^k_{name}{P}", f"{name}{P}"),) if s_out.guide.link != 0 else ()
+    terms2 = (Term("coriolis", _coriolis(states, s_out.guide, t2 * uk), f"a^k_{name}{bk}", f"{name}{bk}"),) if bk else ()
+    c1v = c1 if terms1 else 0.0
+    c2v = terms2[0].value if terms2 else 0.0
+    s1_, s2_, _ = intersect(acc[P] + c1v, us, ak + c2v, uk)
+    aP3 = acc[P] + c1v + s1_ * us
+    aroute = (
+        Route(P, acc[P], terms1, us, f"∥ {s_in.guide.label}", f"a^r_{name}{P}", "sliding", s1_),
+        Route(bk, ak, terms2, uk, f"∥ {s_out.guide.label}", f"a^r_{name}{bk or ''}", "sliding", s2_),
+    )
+    states[B] = _state(oB, rB, Pw, vP3, aP3, omega, eps)
+    states[g.a] = _state(Pw - us * sv.local(g.a, P), us, Pw, vel[P], acc[P], omega, eps)
+    sol = GroupSolution(
+        g,
+        Construction(name, vP3, vroute, sine, f"V_{name} = V_{P} + V_{name}{P} = V_{bk or '0'} + V_{name}{bk or ''}"),
+        Construction(name, aP3, aroute, sine, f"a_{name} = a_{P} + a^k + a^r = a_{bk or '0'} + a^k + a^r"),
+        valid, np.where(valid, 0.0, 1.0), "the two guides not parallel",
+    )
+    extra = {name: (B, P)}
+    if bk:
+        extra[bk] = (s_out.guide.link, P)
+    return sol, extra
+
+
+SOLVERS = {
+    DyadKind.RRR: _rrr,
+    DyadKind.RRP: _rrp,
+    DyadKind.RPR: _rpr,
+    DyadKind.PRP: _prp,
+    DyadKind.RPP: _rpp,
+}
+
+# ---------------------------------------------------------------------------------------
+# assembly branches from human-readable hints
+# ---------------------------------------------------------------------------------------
+
+RELATIONS = ("above", "below", "left of", "right of")
+
+
+def parse_hint(hint: str, names: list[str]) -> tuple[str, list[str]]:
+    """``"above BD"`` → ("above", ["B", "D"]); ``"right of C"`` → ("right of", ["C"])."""
+    text = " ".join(hint.strip().split())
+    for rel in RELATIONS:
+        if text.startswith(rel + " "):
+            rest = text[len(rel) + 1 :].replace("line ", "").replace("-", "").replace(" ", "")
+            refs: list[str] = []
+            while rest:
+                match = max((n for n in names if rest.startswith(n)), key=len, default=None)
+                if match is None:
+                    raise ValueError(f'"{rest}" is not a point name')
+                refs.append(match)
+                rest = rest[len(match) :]
+            if len(refs) not in (1, 2):
+                raise ValueError("name one point or a line through two points")
+            return rel, refs
+    raise ValueError('a hint reads "above BD", "below BD", "left of C" or "right of C"')
+
+
+def hint_holds(rel: str, X: complex, refs: list[complex]) -> bool:
+    if len(refs) == 1:
+        Q = refs[0]
+        return {"above": X.imag > Q.imag, "below": X.imag < Q.imag,
+                "left of": X.real < Q.real, "right of": X.real > Q.real}[rel]
+    Q, R = refs
+    d = R - Q
+    if rel in ("above", "below"):
+        if d.real < 0:
+            d = -d
+        side = cross(d, X - Q) > 0
+        return side if rel == "above" else not side
+    if d.imag < 0:
+        d = -d
+    side = cross(d, X - Q) > 0
+    return side if rel == "left of" else not side
+
+
+def choose_branches(mech: Mechanism, structure: Structure) -> tuple[int, ...]:
+    """Turn the file's hints into a sign per group, evaluated at the given crank angle.
+
+    The sign (which side of the line of centres, which way along the guide) is then kept
+    over the whole cycle, so the branch stays continuous.
+    """
+    names = mech.point_names()
+    hints = {}
+    for key, text in mech.assembly.items():
+        try:
+            hints[key] = parse_hint(text, names)
+        except ValueError as exc:
+            raise InputError(mech.source, f"assembly.{key}: {exc}") from None
+    used = set()
+    sigmas: list[int] = []
+    for i, g in enumerate(structure.groups):
+        if g.kind in (DyadKind.PRP, DyadKind.RPP):
+            sigmas.append(1)
+            continue
+        group_points = set(mech.links[g.a].points) | set(mech.links[g.b].points)
+        mine = {k: h for k, h in hints.items() if k in group_points}
+        ok = []
+        positions = {}
+        for sigma in (1, -1):
+            trial = Solver(mech, structure, tuple(sigmas) + (sigma,) + (1,) * (len(structure.groups) - i - 1))
+            motion = trial._solve_upto(i + 1)
+            positions[sigma] = motion
+            if not motion.valid[0]:
+                continue
+            if all(
+                hint_holds(rel, complex(motion.position[k][0]),
+                           [complex(motion.position[r][0]) for r in refs if r in motion.position])
+                for k, (rel, refs) in mine.items()
+            ):
+                ok.append(sigma)
+        used |= set(mine)
+        if len(ok) == 1:
+            sigmas.append(ok[0])
+            continue
+        if g.kind == DyadKind.RPR and not mine:
+            sigmas.append(1)  # the guide's axis points from its pivot towards the block
+            continue
+        phi = np.degrees(mech.driver.phi)
+        if not positions[1].valid[0]:
+            sol = positions[1].groups[i]
+            raise AssemblyError(
+                f"{g.label} cannot be assembled at φ1 = {phi:.6g}°: needs {sol.admissible}, "
+                f"misses by {sol.gap[0]:.6g} m",
+                group=g.label, phi_deg=phi,
+            )
+        new = g.C or coincident_name(g.P, g.b)
+        key = g.C or next(iter(mech.links[g.b].points))
+        if not mine:
+            cands = []
+            for sigma in (1, -1):
+                X = complex(positions[sigma].position[key][0])
+                cands.append(f"({X.real:.4g}, {X.imag:.4g})")
+            raise InputError(
+                mech.source,
+                f"assembly: {g.label} closes two ways at φ1 = {phi:.6g}°, with {key} at "
+                f"{cands[0]} or {cands[1]}: add a hint such as [assembly] {key} = "
+                f'"above {g.P or ""}{g.Q or ""}"',
+            )
+        raise InputError(
+            mech.source,
+            f"assembly: the hints {', '.join(f'{k} = {mech.assembly[k]!r}' for k in mine)} "
+            f"{'fit neither' if not ok else 'fit both'} assembly of {g.label} "
+            f"at φ1 = {phi:.6g}° (new point {new})",
+        )
+    unused = set(hints) - used
+    if unused:
+        k = sorted(unused)[0]
+        raise InputError(mech.source, f"assembly.{k}: {k} is not a point of a group with two assemblies")
+    return tuple(sigmas)
+
+
+def _solve_upto(self: Solver, count: int) -> Motion:
+    """Solve only the first ``count`` groups at the given crank angle (branch choice)."""
+    full = self.structure
+    from dataclasses import replace
+
+    part = Solver.__new__(Solver)
+    part.mech = self.mech
+    part.structure = replace(full, groups=full.groups[:count])
+    part.sigmas = self.sigmas[:count]
+    with np.errstate(all="ignore"):
+        return part.solve(np.array([self.mech.driver.phi]))
+
+
+Solver._solve_upto = _solve_upto
