@@ -70,7 +70,7 @@ class Term:
     kind: str  # "normal" or "coriolis"
     value: np.ndarray
     label: str  # "a^n_A3B", "a^k_A3A"
-    about: str  # "A3B" (normal: from the point towards the centre) or "A3A"
+    about: tuple[str, str]  # normal: (point, centre); Coriolis: (point, the point it slides on)
 
 
 @dataclass(frozen=True, slots=True)
@@ -259,9 +259,9 @@ def _rrr(sv: Solver, g: Group, sigma, states, pos, vel, acc):
     aC = acc[P] + nP + s1 * d1
     e2, e3 = s1 / l2, s2 / l3
     aroute = (
-        Route(P, acc[P], (Term("normal", nP, f"a^n_{C}{P}", f"{C}{P}"),), d1,
+        Route(P, acc[P], (Term("normal", nP, f"a^n_{C}{P}", (C, P)),), d1,
               f"⊥ {C}{P}", f"a^t_{C}{P}", "tangential", s1),
-        Route(Q, acc[Q], (Term("normal", nQ, f"a^n_{C}{Q}", f"{C}{Q}"),), d2,
+        Route(Q, acc[Q], (Term("normal", nQ, f"a^n_{C}{Q}", (C, Q)),), d2,
               f"⊥ {C}{Q}", f"a^t_{C}{Q}", "tangential", s2),
     )
     oa, ra = _pose_from_two(Pw, pl, Cw, cl)
@@ -323,14 +323,14 @@ def _rrp(sv: Solver, g: Group, sigma, states, pos, vel, acc):
     aCk = _slide_base(sv, s.guide, Cw, states, "a")
     terms2 = ()
     if k != 0:
-        terms2 = (Term("coriolis", _coriolis(states, s.guide, t2 * u), f"a^k_{C}{base}", f"{C}{base}"),)
+        terms2 = (Term("coriolis", _coriolis(states, s.guide, t2 * u), f"a^k_{C}{base}", (C, base)),)
     cor = terms2[0].value if terms2 else 0.0
     s1_, s2_, _ = intersect(acc[P] + nP, d1, aCk + cor, u)
     aC = acc[P] + nP + s1_ * d1
     e2 = s1_ / l2
     arel = f"a^r_{C}{base}" if base else f"a_{C}"
     aroute = (
-        Route(P, acc[P], (Term("normal", nP, f"a^n_{C}{P}", f"{C}{P}"),), d1,
+        Route(P, acc[P], (Term("normal", nP, f"a^n_{C}{P}", (C, P)),), d1,
               f"⊥ {C}{P}", f"a^t_{C}{P}", "tangential", s1_),
         Route(base, aCk, terms2, u, f"∥ {gl}", arel, "sliding", s2_),
     )
@@ -389,9 +389,9 @@ def _rpr(sv: Solver, g: Group, sigma, states, pos, vel, acc):
     aP3 = acc[P] + cor + s1_ * u
     e3 = s2_ / dist
     aroute = (
-        Route(P, acc[P], (Term("coriolis", cor, f"a^k_{name}{P}", f"{name}{P}"),), u,
+        Route(P, acc[P], (Term("coriolis", cor, f"a^k_{name}{P}", (name, P)),), u,
               f"∥ {gl}", f"a^r_{name}{P}", "sliding", s1_),
-        Route(Q, acc[Q], (Term("normal", nQ, f"a^n_{name}{Q}", f"{name}{Q}"),), d2,
+        Route(Q, acc[Q], (Term("normal", nQ, f"a^n_{name}{Q}", (name, Q)),), d2,
               f"⊥ {Q}{name}", f"a^t_{name}{Q}", "tangential", s2_),
     )
     states[G] = _state(oG, rG, Pw, vP3, aP3, w3, e3)
@@ -429,8 +429,8 @@ def _prp(sv: Solver, g: Group, sigma, states, pos, vel, acc):
     )
     a1 = _slide_base(sv, sa.guide, Cw, states, "a")
     a2 = _slide_base(sv, sb.guide, Cw, states, "a")
-    terms1 = (Term("coriolis", _coriolis(states, sa.guide, t1 * u1), f"a^k_{C}{b1}", f"{C}{b1}"),) if b1 else ()
-    terms2 = (Term("coriolis", _coriolis(states, sb.guide, t2 * u2), f"a^k_{C}{b2}", f"{C}{b2}"),) if b2 else ()
+    terms1 = (Term("coriolis", _coriolis(states, sa.guide, t1 * u1), f"a^k_{C}{b1}", (C, b1)),) if b1 else ()
+    terms2 = (Term("coriolis", _coriolis(states, sb.guide, t2 * u2), f"a^k_{C}{b2}", (C, b2)),) if b2 else ()
     c1 = terms1[0].value if terms1 else 0.0
     c2 = terms2[0].value if terms2 else 0.0
     s1_, s2_, _ = intersect(a1 + c1, u1, a2 + c2, u2)
@@ -481,8 +481,8 @@ def _rpp(sv: Solver, g: Group, sigma, states, pos, vel, acc):
     eps = states[s_out.guide.link].epsilon
     ak = _slide_base(sv, s_out.guide, Pw, states, "a")
     c1 = 2j * omega * (t1 * us)
-    terms1 = (Term("coriolis", c1, f"a^k_{name}{P}", f"{name}{P}"),) if s_out.guide.link != 0 else ()
-    terms2 = (Term("coriolis", _coriolis(states, s_out.guide, t2 * uk), f"a^k_{name}{bk}", f"{name}{bk}"),) if bk else ()
+    terms1 = (Term("coriolis", c1, f"a^k_{name}{P}", (name, P)),) if s_out.guide.link != 0 else ()
+    terms2 = (Term("coriolis", _coriolis(states, s_out.guide, t2 * uk), f"a^k_{name}{bk}", (name, bk)),) if bk else ()
     c1v = c1 if terms1 else 0.0
     c2v = terms2[0].value if terms2 else 0.0
     s1_, s2_, _ = intersect(acc[P] + c1v, us, ak + c2v, uk)

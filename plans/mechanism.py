@@ -369,8 +369,6 @@ def from_dict(data: dict, source: str = "<mechanism>") -> Mechanism:
                     f"links.{lid}.axis",
                     'missing: a link that does not slide on a guide needs an axis, e.g. axis = ["B", "C"]',
                 )
-            elif len(link.points) > 1 and any(v == 0j for k, v in link.points.items() if k != own[0].point):
-                pass
 
     # driver ------------------------------------------------------------------------
     driver = _driver(data.get("driver"), pr, links, frame)
@@ -415,10 +413,6 @@ def from_dict(data: dict, source: str = "<mechanism>") -> Mechanism:
         title = {}
     title = {str(k): str(v)[:500] for k, v in title.items()}
 
-    # cross-checks ------------------------------------------------------------------
-    for name in frame:
-        for lid, link in links.items():
-            pass
     pr.raise_if_any()
     assert driver is not None
     return Mechanism(

@@ -1,0 +1,151 @@
+"""``plans solve``: structure, scale factors, every segment and value for one crank position."""
+
+from __future__ import annotations
+
+import json
+import math
+
+from .cli import add_source, mechanism_from, write_output
+from .fmt import num
+
+
+def configure(p) -> None:
+    add_source(p)
+    p.add_argument("--json", action="store_true", help="machine-readable output (SI units)")
+    p.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of stdout")
+
+
+def run(args) -> int:
+    from .cycle import analyse_cycle
+    from .kinematics import Solver
+    from .plan import solve_position
+
+    mech = mechanism_from(args)
+    solver = Solver(mech)
+    sol = solve_position(mech, solver=solver)
+    if args.json:
+        text = json.dumps(to_json(sol), ensure_ascii=False, indent=2) + "\n"
+    else:
+        text = to_text(sol, analyse_cycle(mech, solver=solver))
+    write_output(args.output, text)
+    for w in sol.warnings:
+        import sys
+
+        print(f"plans solve: warning: {w}", file=sys.stderr)
+    return 0
+
+
+def _xy(z: complex) -> list[float]:
+    return [float(z.real), float(z.imag)]
+
+
+def to_json(sol) -> dict:
+    m = sol.motion
+    points = {
+        name: {
+            "position": _xy(sol.positions[name]),
+            "velocity": _xy(complex(m.velocity[name][0])),
+            "acceleration": _xy(complex(m.acceleration[name][0])),
+        }
+        for name in sol.positions
+    }
+    st = sol.structure
+    return {
+        "points": points,
+        "links": {str(i): {"omega": sol.omega[i], "epsilon": sol.epsilon[i]} for i in sorted(sol.omega)},
+        "scales": {"mu_l": sol.mu_l, "mu_v": sol.mu_v, "mu_a": sol.mu_a},
+        "segments": {k: float(v) for k, v in sol.segments.items()},
+        "structure": {
+            "W": st.W,
+            "n": st.n,
+            "p5": st.p5,
+            "p4": st.p4,
+            "formula": st.formula(),
+            "class": st.mechanism_class,
+            "groups": [{"links": list(g.links), "kind": g.kind.name} for g in st.groups],
+        },
+        "phi_deg": math.degrees(sol.phi) % 360,
+        "warnings": list(sol.warnings),
+    }
+
+
+def _sense(w: float) -> str:
+    return "ccw" if w > 0 else "cw" if w < 0 else "—"
+
+
+def to_text(sol, cycle=None) -> str:
+    mech, st = sol.mechanism, sol.structure
+    out = [f"{mech.name}", ""]
+    out.append(f"Structure: {st.chebyshev()}; {st.formula()}; class {'I' * st.mechanism_class}")
+    for g in st.groups:
+        out.append(f"  {g.label}: kind {g.kind.value} ({g.kind.ru})")
+    d = mech.driver
+    out.append(
+        f"Crank: link {d.link}, l_{d.pivot}{d.tip} = {num(d.length)} m, "
+        f"φ1 = {num(math.degrees(sol.phi) % 360)}° from +x, ω1 = {num(abs(d.omega))} rad/s {_sense(d.omega)}"
+    )
+    out.append(
+        f"Scales: μl = {num(sol.mu_l)} m/mm, μv = {num(sol.mu_v)} (m/s)/mm, μa = {num(sol.mu_a)} (m/s²)/mm"
+    )
+    out.append("")
+    out.append("Plan of positions")
+    out.append(f"  {'segment':10s} {'mm':>9s} {'m':>11s}")
+    for k, v in sol.lengths.items():
+        out.append(f"  {k:10s} {num(v / sol.mu_l):>9s} {num(v):>11s}")
+    for plan, unit in ((sol.velocity, "m/s"), (sol.acceleration, "m/s²")):
+        out.append("")
+        out.append(f"{plan.kind.capitalize()} plan (pole {plan.pole}, μ = {num(plan.mu)} ({unit})/mm)")
+        out.append(f"  {'segment':10s} {'mm':>9s} {unit:>11s}  {'how'}")
+        seen = set()
+        for name, pt in plan.points.items():
+            if pt.source.kind in ("pole",):
+                continue
+            key = plan.pole + name
+            if pt.source.kind != "component" and key not in seen:
+                seen.add(key)
+                out.append(f"  {key:10s} {num(plan.mm(plan.pole, name)):>9s} {num(abs(pt.value)):>11s}  {_how(pt)}")
+        for v in plan.vectors:
+            if v.component == "absolute":
+                continue
+            key = v.start + v.end
+            if key in seen:
+                continue
+            seen.add(key)
+            mm = plan.mm(v.start, v.end)
+            out.append(f"  {key:10s} {num(mm):>9s} {num(mm * plan.mu):>11s}  {v.label} ({v.component})")
+    out.append("")
+    out.append("Angular velocities and accelerations")
+    for i in sorted(sol.omega):
+        w, e = sol.omega[i], sol.epsilon[i]
+        out.append(
+            f"  link {i} ({mech.links[i].name}): ω{i} = {num(abs(w))} rad/s {_sense(w)}, "
+            f"ε{i} = {num(abs(e))} rad/s² {_sense(e)}"
+        )
+    if cycle is not None:
+        out.append("")
+        out.append("Cycle")
+        if cycle.grashof:
+            out.append(f"  Grashof: {cycle.grashof}")
+        for note in cycle.notes:
+            out.append(f"  {note}")
+        if cycle.stroke is not None and cycle.output is not None:
+            if cycle.output.kind == "linear":
+                out.append(f"  stroke of {cycle.output.point}: H = {num(cycle.stroke)} m")
+            else:
+                out.append(f"  swing of link {cycle.output.link}: ψ = {num(math.degrees(cycle.stroke))}°")
+            out.append(
+                f"  extreme positions at φ1 = "
+                + ", ".join(f"{num(math.degrees(x) % 360)}°" for x in cycle.extremes)
+                + f"; θ = {num(math.degrees(cycle.theta))}°, K = {num(cycle.K)}"
+            )
+    for w in sol.warnings:
+        out.append(f"warning: {w}")
+    return "\n".join(out) + "\n"
+
+
+def _how(pt) -> str:
+    s = pt.source
+    if s.kind == "intersection":
+        lines = " and ".join(f"{ln.relation} through {ln.through}" for ln in s.lines)
+        return f"{s.equation}; lines {lines}"
+    return s.equation

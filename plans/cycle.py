@@ -1,0 +1,223 @@
+"""Quantities of the whole cycle: extreme positions, stroke H, θ and K, the N positions,
+trajectories, and whether the crank can make a full turn (Grashof for a four-bar).
+
+K = (180° + θ)/(180° − θ): the crank angle of the slower (working) stroke over that of the
+faster (return) stroke; θ is the crank angle between the extreme positions' lines.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .kinematics import Motion, Solver
+from .mechanism import Mechanism
+from .structure import DyadKind
+
+TWO_PI = 2 * math.pi
+
+
+@dataclass(frozen=True)
+class Output:
+    """The output coordinate: a slider's travel along its fixed guide (m) or a rocker's
+    angle (rad)."""
+
+    point: str
+    kind: str  # "linear" or "angular"
+    link: int
+
+    def value(self, m: Motion, mech: Mechanism):
+        if self.kind == "linear":
+            g = mech.slider_of(self.link).guide
+            return ((m.position[self.point] - g.point) * np.conj(g.direction)).real
+        return np.unwrap(np.angle(m.links[self.link].rotor))
+
+    def rate(self, m: Motion, mech: Mechanism, which: str = "velocity"):
+        data = m.velocity if which == "velocity" else m.acceleration
+        if self.kind == "linear":
+            g = mech.slider_of(self.link).guide
+            return (data[self.point] * np.conj(g.direction)).real
+        st = m.links[self.link]
+        return st.omega if which == "velocity" else st.epsilon
+
+
+def find_output(mech: Mechanism, motion_owner: dict[str, int] | None = None) -> Output | None:
+    """The output named in the file, else the last slider on a fixed guide, else the last
+    link hinged to the frame (a rocker)."""
+    candidates = []
+    if mech.output:
+        candidates.append(mech.output)
+    candidates += [s.point for s in reversed(mech.sliders) if s.guide.link == 0]
+    for lid in sorted(mech.links, reverse=True):
+        if lid != mech.driver.link:
+            candidates += [p for p in mech.links[lid].points if p in mech.frame]
+    for name in candidates:
+        for lid in mech.links_of(name):
+            if lid == 0 or lid == mech.driver.link:
+                continue
+            s = mech.slider_of(lid)
+            if s is not None and s.guide.link == 0 and s.point == name:
+                return Output(name, "linear", lid)
+            if any(p in mech.frame for p in mech.links[lid].points):
+                return Output(name, "angular", lid)
+    return None
+
+
+@dataclass(frozen=True)
+class Cycle:
+    output: Output | None
+    full_turn: bool
+    reachable: tuple[tuple[float, float], ...]  # crank-angle intervals (rad) where it assembles
+    extremes: tuple[float, ...]  # crank angles of the extreme positions (rad)
+    stroke: float | None  # H (m) or swing ψ (rad)
+    theta: float | None  # rad
+    K: float | None
+    positions: tuple[float, ...]  # the N crank angles, numbered from an extreme
+    grashof: str | None
+    notes: tuple[str, ...]
+
+
+def analyse_cycle(mech: Mechanism, n_positions: int = 12, solver: Solver | None = None,
+                  samples: int = 3600) -> Cycle:
+    solver = solver or Solver(mech)
+    w1 = mech.driver.omega
+    sense = 1.0 if w1 > 0 else -1.0
+    phi0 = mech.driver.phi
+    grid = phi0 + sense * np.linspace(0.0, TWO_PI, samples, endpoint=False)
+    with np.errstate(all="ignore"):
+        m = solver.solve(grid)
+    valid = m.valid
+    notes: list[str] = []
+    grashof = _grashof(mech, solver)
+    full = bool(valid.all())
+    reachable = _intervals(grid, valid, sense)
+    out = find_output(mech)
+    if not full:
+        lo, hi = _interval_around(grid, valid)
+        notes.append(
+            "the crank cannot make a full turn: it assembles only for φ1 from "
+            f"{math.degrees(lo) % 360:.2f}° to {math.degrees(hi) % 360:.2f}° "
+            f"({math.degrees(abs(hi - lo)):.2f}° of crank travel)"
+        )
+        span = np.linspace(lo, hi, n_positions) if n_positions > 1 else np.array([lo])
+        return Cycle(out, False, reachable, (), None, None, None, tuple(span), grashof, tuple(notes))
+    extremes: list[float] = []
+    stroke = theta = K = None
+    start = phi0
+    if out is not None:
+        rate = out.rate(m, mech)
+        sgn = np.sign(rate)
+        idx = np.nonzero(sgn != np.roll(sgn, -1))[0]
+        for i in idx:
+            a, b = grid[i], grid[(i + 1) % samples] if i + 1 < samples else grid[0] + sense * TWO_PI
+            extremes.append(_refine(solver, out, mech, a, b))
+        if len(extremes) == 2:
+            with np.errstate(all="ignore"):
+                me = solver.solve(np.array(extremes))
+            val = out.value(me, mech)
+            stroke = float(abs(val[1] - val[0]))
+            span = (sense * (extremes[1] - extremes[0])) % TWO_PI
+            slow, fast = max(span, TWO_PI - span), min(span, TWO_PI - span)
+            theta = (slow - fast) / 2
+            K = slow / fast
+            # position 0 starts the slower (working) stroke; on a tie, the lower output value
+            if abs(span - (TWO_PI - span)) < 1e-9:
+                start = extremes[int(np.argmin(val))]
+            else:
+                start = extremes[0] if span >= TWO_PI - span else extremes[1]
+        elif extremes:
+            notes.append(f"the output {out.point} has {len(extremes)} turning points per turn")
+    pos = tuple(start + sense * TWO_PI * i / n_positions for i in range(n_positions))
+    return Cycle(out, True, reachable, tuple(extremes), stroke, theta, K, pos, grashof, tuple(notes))
+
+
+def _refine(solver: Solver, out: Output, mech: Mechanism, a: float, b: float) -> float:
+    """The crank angle in [a, b] where the output's velocity changes sign (bisection,
+    then Newton on v(φ) with dv/dφ = a/ω1)."""
+    def v(phi):
+        with np.errstate(all="ignore"):
+            m = solver.solve(np.array([phi]))
+        return float(out.rate(m, mech)[0]), float(out.rate(m, mech, "acceleration")[0])
+
+    va, _ = v(a)
+    for _ in range(60):
+        mid = 0.5 * (a + b)
+        vm, _ = v(mid)
+        if (vm > 0) == (va > 0):
+            a, va = mid, vm
+        else:
+            b = mid
+        if abs(b - a) < 1e-13:
+            break
+    return 0.5 * (a + b)
+
+
+def _intervals(grid, valid, sense):
+    if valid.all():
+        return ((float(grid[0]), float(grid[0] + sense * TWO_PI)),)
+    out = []
+    n = len(grid)
+    i = 0
+    while i < n:
+        if valid[i]:
+            j = i
+            while j + 1 < n and valid[j + 1]:
+                j += 1
+            out.append((float(grid[i]), float(grid[j])))
+            i = j + 1
+        else:
+            i += 1
+    return tuple(out)
+
+
+def _interval_around(grid, valid):
+    """The assembling interval that contains the given angle (grid[0]), widened by wrap."""
+    n = len(grid)
+    if not valid[0]:
+        return float(grid[0]), float(grid[0])
+    j = 0
+    while j + 1 < n and valid[j + 1]:
+        j += 1
+    i = 0
+    while -i - 1 > -n and valid[(-i - 1) % n]:
+        i += 1
+    step = grid[1] - grid[0]
+    return float(grid[0] - i * step), float(grid[j])
+
+
+def _grashof(mech: Mechanism, solver: Solver) -> str | None:
+    """Grashof class when the mechanism is a hinged four-bar (crank + one RRR group)."""
+    groups = solver.structure.groups
+    if len(groups) != 1 or groups[0].kind != DyadKind.RRR:
+        return None
+    g = groups[0]
+    if g.Q not in mech.frame:
+        return None
+    a = mech.driver.length
+    b = abs(mech.links[g.a].points[g.C] - mech.links[g.a].points[g.P])
+    c = abs(mech.links[g.b].points[g.C] - mech.links[g.b].points[g.Q])
+    d = abs(mech.frame[g.Q] - mech.frame[mech.driver.pivot])
+    return grashof_class(a, b, c, d)
+
+
+def grashof_class(a: float, b: float, c: float, d: float) -> str:
+    """Grashof's rule for crank a, coupler b, rocker c, frame d.
+
+    >>> grashof_class(0.05, 0.2, 0.15, 0.2)
+    'crank-rocker (Grashof: 0.25 ≤ 0.35)'
+    """
+    lengths = sorted((a, b, c, d))
+    s, l, p, q = lengths[0], lengths[3], lengths[1], lengths[2]
+    lhs, rhs = s + l, p + q
+    tag = f"{lhs:.6g} {'≤' if lhs <= rhs else '>'} {rhs:.6g}"
+    if math.isclose(lhs, rhs, rel_tol=1e-12):
+        return f"change-point linkage (Grashof equality: {tag}): it folds at two positions"
+    if lhs > rhs:
+        return f"double rocker (non-Grashof: {tag}): the crank cannot make a full turn"
+    if s == a:
+        return f"crank-rocker (Grashof: {tag})"
+    if s == d:
+        return f"double crank (Grashof: {tag})"
+    return f"double rocker (Grashof, the shortest link is the coupler: {tag})"

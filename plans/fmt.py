@@ -1,0 +1,31 @@
+"""Numbers as people write them: significant digits, units, a decimal comma in Russian."""
+
+from __future__ import annotations
+
+import math
+
+
+def num(x: float, digits: int = 4, lang: str = "en") -> str:
+    """A number with ``digits`` significant digits, no exponent for everyday magnitudes.
+
+    >>> num(2.771580654, 3), num(0.05), num(11.07238, 4, "ru")
+    ('2.77', '0.05', '11,07')
+    """
+    if x == 0 or not math.isfinite(x):
+        s = "0" if x == 0 else "—"
+    else:
+        mag = math.floor(math.log10(abs(x)))
+        if -4 <= mag < 7:
+            decimals = max(digits - 1 - mag, 0)
+            s = f"{x:.{decimals}f}"
+            if "." in s:
+                s = s.rstrip("0").rstrip(".")
+        else:
+            s = f"{x:.{digits - 1}e}"
+    if s in ("-0",):
+        s = "0"
+    return s.replace(".", ",") if lang == "ru" else s
+
+
+def deg(rad: float) -> float:
+    return math.degrees(rad)
