@@ -58,6 +58,7 @@ if TYPE_CHECKING:  # pragma: no cover
 
 DEFAULT_DPS = 30
 MAX_NEWTON = 40
+GUARD_DPS = 10  # extra digits carried inside the solution
 
 
 class ReferenceError(ArithmeticError):
@@ -308,24 +309,73 @@ def _start(mech: Mechanism, mdl: _Model, motion, k: int, phi: float) -> list[flo
     return q0
 
 
+def _lu(A: list[list]) -> tuple[list[list], list[int]]:
+    """LU factors of a square matrix (rows of mpf, copied) with partial pivoting.
+
+    Plain lists: the Jacobian is small and sparse, and mpmath's matrix indexing would
+    cost more than the arithmetic.
+    """
+    n = len(A)
+    a = [list(row) for row in A]
+    perm = list(range(n))
+    for c in range(n):
+        p = max(range(c, n), key=lambda r: abs(a[r][c]))
+        if not a[p][c]:
+            raise ReferenceError("singular loop-closure Jacobian (a dead point or a locked chain)")
+        if p != c:
+            a[c], a[p] = a[p], a[c]
+            perm[c], perm[p] = perm[p], perm[c]
+        piv = a[c][c]
+        rowc = a[c]
+        for r in range(c + 1, n):
+            f = a[r][c]
+            if not f:
+                continue
+            f = f / piv
+            row = a[r]
+            row[c] = f
+            for j in range(c + 1, n):
+                if rowc[j]:
+                    row[j] -= f * rowc[j]
+    return a, perm
+
+
+def _lu_solve(lu: tuple[list[list], list[int]], b: list) -> list:
+    a, perm = lu
+    n = len(a)
+    y = [b[i] for i in perm]
+    for i in range(n):
+        row = a[i]
+        acc = y[i]
+        for j in range(i):
+            if row[j]:
+                acc -= row[j] * y[j]
+        y[i] = acc
+    for i in range(n - 1, -1, -1):
+        row = a[i]
+        acc = y[i]
+        for j in range(i + 1, n):
+            if row[j]:
+                acc -= row[j] * y[j]
+        y[i] = acc / row[i]
+    return y
+
+
 def _solve_one(mdl: _Model, q0, phi, omega, params, mp, tol):
-    q = mp.matrix([mp.mpf(v) for v in q0])
+    q = [mp.mpf(v) for v in q0]
     scale = 1 + max(abs(v) for v in q0)
     for _ in range(MAX_NEWTON):
-        Fv = mp.matrix(mdl.F(list(q), phi, params))
-        Jm = mp.matrix(mdl.J(list(q), phi, params))
-        dq = mp.lu_solve(Jm, -Fv)
-        q += dq
-        if mp.norm(dq, mp.inf) <= tol * scale:
+        Fv = mdl.F(q, phi, params)
+        dq = _lu_solve(_lu(mdl.J(q, phi, params)), [-v for v in Fv])
+        q = [a + b for a, b in zip(q, dq, strict=True)]
+        if max(abs(v) for v in dq) <= tol * scale:
             break
     else:
         raise ReferenceError(f"Newton did not converge at φ = {float(phi)!r} rad")
-    res = mp.norm(mp.matrix(mdl.F(list(q), phi, params)), mp.inf)
-    Jm = mp.matrix(mdl.J(list(q), phi, params))
-    rhs = -mp.matrix(mdl.Fphi(list(q), phi, params)) * omega
-    qd = mp.lu_solve(Jm, rhs)
-    g = mp.matrix(mdl.gamma(list(q), list(qd), phi, omega, params))
-    qdd = mp.lu_solve(Jm, g)
+    res = max(abs(v) for v in mdl.F(q, phi, params))
+    lu = _lu(mdl.J(q, phi, params))
+    qd = _lu_solve(lu, [-v * omega for v in mdl.Fphi(q, phi, params)])
+    qdd = _lu_solve(lu, mdl.gamma(q, qd, phi, omega, params))
     return q, qd, qdd, res
 
 
@@ -359,7 +409,7 @@ def reference(
         coincident[name] = (base, int(motion.point_link[name]))
     coincident.update(extra or {})
     mdl = model(mech)
-    with mpmath.workdps(dps):
+    with mpmath.workdps(dps + GUARD_DPS):
         mp = mpmath.mp
         params = _param_values(mech, mdl.param_names, mp)
         omega = mp.mpf(mech.driver.omega)
