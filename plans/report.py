@@ -1,0 +1,335 @@
+"""The explanatory note (пояснительная записка): each step as formula, substitution, result.
+
+Everything is read from one :class:`~plans.plan.Solution`: the recorded constructions give
+the vector equations and the lines, the plan points give the measured segments, so the
+note cannot disagree with the sheet. Formatting only; no kinematics is computed here
+beyond products and quotients of values the plans already hold.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from .fmt import num
+from .plan import Solution, plan_name
+
+T = {
+    "en": {
+        "title": "Kinematic analysis",
+        "structure": "Structural analysis",
+        "cheb": "Degrees of freedom by Chebyshev's formula:",
+        "n": "moving links", "p5": "one-DOF pairs (revolute and prismatic)", "p4": "two-DOF pairs",
+        "groups": "Taking the crank {d} with the frame away, the chain splits into class-II groups:",
+        "group": "links {a} and {b}: kind {k} ({name})",
+        "class": "The mechanism is of class {c}; structural formula {f}.",
+        "positions": "Plan of positions",
+        "mul": "Scale factor of the plan of positions:",
+        "seg": "Segments of the links on the drawing:",
+        "stroke": "Stroke of the output point {p}:",
+        "swing": "Swing of the output link {l}:",
+        "kth": "Crank angle between the extreme positions θ and time ratio K:",
+        "noturn": "{note}.",
+        "velocities": "Velocity plan",
+        "va": "Velocity of point {t} of the crank, ⊥ {p}{t} in the sense of ω1:",
+        "muv": "Scale factor of the velocity plan, with p{t} = {mm} mm:",
+        "eqs": "Vector equations for point {x}:",
+        "known": "known", "dir": "direction",
+        "build": "Through {l0} draw a line {r0}, through {l1} a line {r1}; they meet at {x}.",
+        "sim": "By the similarity theorem:",
+        "values": "Velocities read from the plan:",
+        "avalues": "Accelerations read from the plan:",
+        "omega": "Angular velocity of link {i}:",
+        "sense": {1: "counter-clockwise", -1: "clockwise", 0: ""},
+        "accelerations": "Acceleration plan",
+        "aa": "Acceleration of point {t}, directed from {t} to {p} (ω1 = const):",
+        "mua": "Scale factor of the acceleration plan, with π{t} = {mm} mm:",
+        "normal": "Normal component, directed from {x} to {y}:",
+        "coriolis": "Coriolis component: V_{x}{y} turned by 90° in the sense of ω{i}:",
+        "ontheplan": "on the plan",
+        "eps": "Angular acceleration of link {i}:",
+        "fixed": "fixed point: at the pole",
+        "warn": "Warning",
+    },
+    "ru": {
+        "title": "Кинематический анализ",
+        "structure": "Структурный анализ механизма",
+        "cheb": "Число степеней свободы по формуле П. Л. Чебышева:",
+        "n": "число подвижных звеньев", "p5": "число одноподвижных пар", "p4": "число двухподвижных пар",
+        "groups": "После отделения начального звена {d} со стойкой цепь разбивается на группы Ассура II класса:",
+        "group": "звенья {a} и {b}: {k}-й вид ({name})",
+        "class": "Механизм относится к {c} классу; структурная формула {f}.",
+        "positions": "План положений механизма",
+        "mul": "Масштабный коэффициент плана положений:",
+        "seg": "Длины отрезков, изображающих звенья на чертеже:",
+        "stroke": "Ход выходной точки {p}:",
+        "swing": "Угол размаха выходного звена {l}:",
+        "kth": "Угол между крайними положениями кривошипа θ и коэффициент изменения средней скорости K:",
+        "noturn": "Кривошип не может сделать полный оборот ({note}).",
+        "velocities": "План скоростей механизма",
+        "va": "Скорость точки {t} кривошипа, ⊥ {p}{t} в сторону вращения ω1:",
+        "muv": "Масштабный коэффициент плана скоростей при p{t} = {mm} мм:",
+        "eqs": "Векторные уравнения для точки {x}:",
+        "known": "известна", "dir": "направление",
+        "build": "Через точку {l0} проводим прямую {r0}, через точку {l1} — прямую {r1}; их пересечение даёт точку {x}.",
+        "sim": "По теореме подобия:",
+        "values": "Скорости точек по плану:",
+        "avalues": "Ускорения точек по плану:",
+        "omega": "Угловая скорость звена {i}:",
+        "sense": {1: "против часовой стрелки", -1: "по часовой стрелке", 0: ""},
+        "accelerations": "План ускорений механизма",
+        "aa": "Ускорение точки {t} направлено от {t} к {p} (ω1 = const):",
+        "mua": "Масштабный коэффициент плана ускорений при π{t} = {mm} мм:",
+        "normal": "Нормальное ускорение, направлено от {x} к {y}:",
+        "coriolis": "Ускорение Кориолиса: вектор V_{x}{y}, повёрнутый на 90° в сторону ω{i}:",
+        "ontheplan": "на плане",
+        "eps": "Угловое ускорение звена {i}:",
+        "fixed": "неподвижная точка: в полюсе",
+        "warn": "Предупреждение",
+    },
+}
+
+UNITS = {
+    "en": {"m": "m", "mm": "mm", "m/s": "m/s", "m/s²": "m/s²", "rad/s": "rad/s",
+           "rad/s²": "rad/s²", "mu_l": "m/mm", "mu_v": "(m/s)/mm", "mu_a": "(m/s²)/mm", "deg": "°"},
+    "ru": {"m": "м", "mm": "мм", "m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с",
+           "rad/s²": "рад/с²", "mu_l": "м/мм", "mu_v": "(м/с)/мм", "mu_a": "(м/с²)/мм", "deg": "°"},
+}
+
+
+@dataclass(frozen=True, slots=True)
+class Step:
+    """One line of the note: formula = substitution = result unit."""
+
+    formula: str
+    substitution: str
+    result: str
+    unit: str
+
+    def markdown(self) -> str:
+        mid = f" = {self.substitution}" if self.substitution else ""
+        return f"- `{self.formula}{mid} = {self.result} {self.unit}`".rstrip()
+
+
+def note(sol: Solution, lang: str = "en", cycle=None) -> str:
+    """The whole explanatory note for one crank position, in Markdown."""
+    t, u = T[lang], UNITS[lang]
+
+    def n(x, d=4):
+        return num(x, d, lang)
+
+    mech, st = sol.mechanism, sol.structure
+    d = mech.driver
+    out = [f"# {t['title']}: {mech.name}", ""]
+    # structure ----------------------------------------------------------------------
+    out += [f"## 1. {t['structure']}", "", t["cheb"], ""]
+    out.append(f"- `W = 3n − 2p5 − p4 = 3·{st.n} − 2·{st.p5} − {st.p4} = {st.W}`")
+    out.append(f"  (n = {st.n} {t['n']}, p5 = {st.p5} {t['p5']}, p4 = 0 {t['p4']})")
+    out += ["", t["groups"].format(d=d.link), ""]
+    for g in st.groups:
+        out.append("- " + t["group"].format(a=g.links[0], b=g.links[1], k=g.kind.value,
+                                            name=g.kind.name if lang == "en" else g.kind.ru))
+    out += ["", t["class"].format(c="II" if st.groups else "I", f=f"`{st.formula()}`"), ""]
+    # positions ----------------------------------------------------------------------
+    mu_l = sol.mu_l
+    crank_mm = d.length / mu_l
+    out += [f"## 2. {t['positions']}", "", t["mul"], ""]
+    out.append(Step(f"μl = l_{d.pivot}{d.tip} / {d.pivot}{d.tip}", f"{n(d.length)} / {n(crank_mm)}",
+                    n(mu_l), u["mu_l"]).markdown())
+    out += ["", t["seg"], ""]
+    for k, v in sol.lengths.items():
+        if k == d.pivot + d.tip:
+            continue
+        out.append(Step(f"{k} = l_{k} / μl", f"{n(v)} / {n(mu_l)}", n(v / mu_l), u["mm"]).markdown())
+    if cycle is not None:
+        out.append("")
+        if not cycle.full_turn:
+            out.append(t["noturn"].format(note="; ".join(cycle.notes)))
+        elif cycle.stroke is not None:
+            if cycle.output.kind == "linear":
+                out.append(t["stroke"].format(p=cycle.output.point))
+                out.append("")
+                out.append(Step("h = H·μl", f"{n(cycle.stroke / mu_l)}·{n(mu_l)}", n(cycle.stroke), u["m"]).markdown())
+            else:
+                out.append(t["swing"].format(l=cycle.output.link))
+                out.append("")
+                out.append(Step("ψ", "", n(math.degrees(cycle.stroke)), u["deg"]).markdown())
+            out += ["", t["kth"], ""]
+            th = math.degrees(cycle.theta)
+            out.append(Step("K = (180° + θ) / (180° − θ)", f"(180 + {n(th)}) / (180 − {n(th)})",
+                            n(cycle.K), "").markdown())
+    out.append("")
+    out += _plan_section(sol, sol.velocity, lang, 3)
+    out += _plan_section(sol, sol.acceleration, lang, 4)
+    for w in sol.warnings:
+        out += [f"> {t['warn']}: {w}", ""]
+    return "\n".join(out).rstrip() + "\n"
+
+
+def _plan_section(sol: Solution, plan, lang: str, number: int) -> list[str]:
+    t, u = T[lang], UNITS[lang]
+
+    def n(x, d=4):
+        return num(x, d, lang)
+
+    acc = plan.kind == "acceleration"
+    mech, d = sol.mechanism, sol.mechanism.driver
+    m = sol.motion
+    unit = u["m/s²"] if acc else u["m/s"]
+    mu = plan.mu
+    sym = "a" if acc else "V"
+    mus = "μa" if acc else "μv"
+    pole = plan.pole
+    out = [f"## {number}. {t['accelerations'] if acc else t['velocities']}", ""]
+    tip = plan_name(d.tip)
+    w1 = abs(d.omega)
+    val = abs(plan.value(tip))
+    if acc:
+        out += [t["aa"].format(t=d.tip, p=d.pivot), ""]
+        out.append(Step(f"a_{d.tip} = ω1²·l_{d.pivot}{d.tip}", f"{n(w1)}²·{n(d.length)}", n(val), unit).markdown())
+        out += ["", t["mua"].format(mm=n(val / mu), t=tip), ""]
+        out.append(Step(f"μa = a_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu), u["mu_a"]).markdown())
+    else:
+        out += [t["va"].format(t=d.tip, p=d.pivot), ""]
+        if d.rpm:
+            out.append(Step("ω1 = π·n1 / 30", f"3.1416·{n(d.rpm)} / 30", n(w1), u["rad/s"]).markdown())
+        out.append(Step(f"V_{d.tip} = ω1·l_{d.pivot}{d.tip}", f"{n(w1)}·{n(d.length)}", n(val), unit).markdown())
+        out += ["", t["muv"].format(mm=n(val / mu), t=tip), ""]
+        out.append(Step(f"μv = V_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu), u["mu_v"]).markdown())
+    out.append("")
+    vplan = sol.velocity
+    for g in m.groups:
+        cons = g.acceleration if acc else g.velocity
+        x = cons.point
+        px = plan_name(x)
+        pt = plan.points[px]
+        out += [t["eqs"].format(x=x), "", f"- `{cons.equation}`"]
+        for r in cons.routes:
+            parts = []
+            if r.base is not None and r.base in mech.frame:
+                parts.append(f"{sym}_{r.base} = 0")
+            for term in r.terms:
+                a_, b_ = term.about
+                rel = abs(vplan.value(plan_name(a_)) - vplan.value(plan_name(b_)))
+                if term.kind == "normal":
+                    l = abs(sol.positions[a_] - sol.positions[b_])
+                    out.append(f"- {t['normal'].format(x=a_, y=b_)}")
+                    out.append("  " + Step(f"{term.label} = V_{a_}{b_}² / l_{a_}{b_}",
+                                           f"{n(rel)}² / {n(l)}", n(rel**2 / l), unit).markdown()[2:])
+                else:
+                    owner = m.point_link.get(a_) if a_ in m.coincident else m.point_link.get(b_)
+                    w = abs(sol.omega[owner])
+                    out.append(f"- {t['coriolis'].format(x=a_, y=b_, i=owner)}")
+                    out.append("  " + Step(f"{term.label} = 2·ω{owner}·V_{a_}{b_}",
+                                           f"2·{n(w)}·{n(rel)}", n(2 * w * rel), unit).markdown()[2:])
+                seg = _component_segment(plan, term.label)
+                if seg:
+                    s0, s1 = seg
+                    mm = plan.mm(s0, s1)
+                    out.append("  " + Step(f"{s0}{s1} = {term.label} / {mus}", f"{n(mm * mu)} / {n(mu)}",
+                                           n(mm), u["mm"]).markdown()[2:])
+            out.append(f"- {r.unknown}: {t['dir']} {r.relation}" + (f"; {', '.join(parts)}" if parts else ""))
+        lines = pt.source.lines
+        out += ["", t["build"].format(l0=lines[0].through, r0=lines[0].relation,
+                                      l1=lines[1].through, r1=lines[1].relation, x=px), ""]
+        # similarity points of the group's links, then values
+        sims = [p for p in plan.points.values() if p.source.kind == "similarity"
+                and _belongs(m, p.name, g.group)]
+        if sims:
+            out += [t["sim"], ""]
+            for p in sims:
+                s = p.source
+                X = _mech_name(sol, p.name)
+                B0, B1 = _mech_name(sol, s.base), _mech_name(sol, s.other)
+                if abs(s.ratio.imag) < 1e-12:
+                    l_bx = abs(sol.positions[X] - sol.positions[B0]) / sol.mu_l
+                    l_bb = abs(sol.positions[B1] - sol.positions[B0]) / sol.mu_l
+                    seg = plan.mm(s.base, s.other)
+                    out.append(Step(f"{s.base}{p.name} = {s.base}{s.other}·{B0}{X} / {B0}{B1}",
+                                    f"{n(seg)}·{n(l_bx)} / {n(l_bb)}", n(plan.mm(s.base, p.name)),
+                                    u["mm"]).markdown())
+                else:
+                    out.append(f"- `{s.equation}`: {s.base}{p.name} = {n(plan.mm(s.base, p.name))} {u['mm']}")
+            out.append("")
+        out += [t["avalues" if acc else "values"], ""]
+        names = [px] + [p.name for p in sims]
+        for name in names:
+            mm = plan.mm(pole, name)
+            out.append(Step(f"{sym}_{_mech_name(sol, name)} = {pole}{name}·{mus}", f"{n(mm)}·{n(mu)}",
+                            n(mm * mu), unit).markdown())
+        for r in cons.routes:
+            if r.unknown_kind in ("relative", "tangential"):
+                start = r.base and plan_name(r.base)
+                for ln in pt.source.lines:
+                    if ln.unknown == r.unknown:
+                        start = ln.through
+                mm = plan.mm(start, px)
+                out.append(Step(f"{r.unknown} = {start}{px}·{mus}", f"{n(mm)}·{n(mu)}", n(mm * mu), unit).markdown())
+            elif r.unknown_kind == "sliding" and r.base is not None:
+                start = next((ln.through for ln in pt.source.lines if ln.unknown == r.unknown), plan_name(r.base))
+                mm = plan.mm(start, px)
+                out.append(Step(f"{r.unknown} = {start}{px}·{mus}", f"{n(mm)}·{n(mu)}", n(mm * mu), unit).markdown())
+        out.append("")
+        # ω or ε of the group's links that turn
+        for r in cons.routes:
+            if r.unknown_kind not in ("relative", "tangential"):
+                continue
+            a_, b_ = _pair_of(r.unknown)
+            A, B = _split(sol, a_ + b_)
+            if not A:
+                continue
+            link = m.point_link.get(A) if A in m.coincident else _common_link(mech, A, B)
+            if link is None:
+                continue
+            l = abs(sol.positions[A] - sol.positions[B])
+            mag = abs(r.param[0])
+            val = (sol.epsilon if acc else sol.omega)[link]
+            sense = t["sense"][int(math.copysign(1, val)) if val else 0]
+            key = "eps" if acc else "omega"
+            out += [t[key].format(i=link), ""]
+            w = "ε" if acc else "ω"
+            out.append(Step(f"{w}{link} = {r.unknown} / l_{A}{B}", f"{n(mag)} / {n(l)}",
+                            n(mag / l), (u["rad/s²"] if acc else u["rad/s"]) + (f", {sense}" if sense else "")).markdown())
+            out.append("")
+    return out
+
+
+def _component_segment(plan, label):
+    for v in plan.vectors:
+        if v.label == label:
+            return v.start, v.end
+    return None
+
+
+def _belongs(m, plan_point: str, group) -> bool:
+    for name, owner in m.point_link.items():
+        if plan_name(name) == plan_point:
+            return owner in (group.a, group.b)
+    return False
+
+
+def _mech_name(sol: Solution, plan_point: str) -> str:
+    for name in sol.positions:
+        if plan_name(name) == plan_point:
+            return name
+    return plan_point.upper()
+
+
+def _pair_of(label: str) -> tuple[str, str]:
+    body = label.split("_", 1)[1]
+    return body, ""
+
+
+def _split(sol: Solution, text: str) -> tuple[str | None, str | None]:
+    """'A3B' → ('A3', 'B') using the known point names (longest first)."""
+    names = sorted(sol.positions, key=len, reverse=True)
+    for a in names:
+        if text.startswith(a) and text[len(a):] in sol.positions:
+            return a, text[len(a):]
+    return None, None
+
+
+def _common_link(mech, A: str, B: str) -> int | None:
+    la, lb = set(mech.links_of(A)), set(mech.links_of(B))
+    common = sorted((la & lb) - {0})
+    return common[0] if common else None
