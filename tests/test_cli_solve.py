@@ -1,0 +1,101 @@
+"""The solve and report commands, run in-process as a user would run them."""
+
+import json
+
+import pytest
+
+from plans.cli import main
+
+
+def run(capsys, *argv):
+    code = main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+@pytest.mark.parametrize("n", range(10))
+def test_solve_variant_json_shape(capsys, n):
+    code, out, err = run(capsys, "solve", "--variant", str(n), "--json")
+    assert code == 0, err
+    data = json.loads(out)
+    assert set(data) >= {"points", "links", "scales", "segments", "structure"}
+    names = {"A", "B", "C", "S1", "S2"} | ({"D", "E", "S3"} if n % 2 else {"S3"})
+    assert names <= set(data["points"])
+    for p in data["points"].values():
+        assert set(p) == {"position", "velocity", "acceleration"}
+        assert all(len(p[k]) == 2 for k in p)
+    assert set(data["links"]) == {"1", "2", "3"}
+    assert data["structure"]["W"] == 1
+    kind = "RRR" if n % 2 else "RRP"
+    assert data["structure"]["groups"] == [{"links": [2, 3], "kind": kind}]
+    assert set(data["scales"]) == {"mu_l", "mu_v", "mu_a"}
+    # the crank speed is ω1·l_AB, as in the table
+    import math
+
+    from plans.variants import load_table
+
+    row = load_table()[1][n]
+    vb = math.hypot(*data["points"]["B"]["velocity"])
+    assert vb == pytest.approx(math.pi * row["rpm"] / 30 * row["AB"], rel=1e-12)
+
+
+def test_solve_press_json_includes_coincident_point(capsys):
+    code, out, _ = run(capsys, "solve", "samples/press.toml", "--json")
+    data = json.loads(out)
+    assert code == 0
+    a3 = data["points"]["A3"]
+    assert a3["position"] == data["points"]["A"]["position"]
+    assert math_hypot(a3["velocity"]) == pytest.approx(2.7716, rel=1e-4)
+    assert data["links"]["3"]["omega"] == pytest.approx(4.8217, rel=1e-4)
+    assert data["scales"] == {"mu_l": 0.01, "mu_v": 0.05, "mu_a": 1.0}
+    assert data["segments"]["pa"] == pytest.approx(60)
+
+
+def math_hypot(v):
+    import math
+
+    return math.hypot(*v)
+
+
+def test_solve_angle_option_moves_the_crank(capsys):
+    _, out0, _ = run(capsys, "solve", "samples/press.toml", "--json")
+    _, out1, _ = run(capsys, "solve", "samples/press.toml", "--json", "--angle", "40")
+    a0 = json.loads(out0)["points"]["A"]["position"]
+    a1 = json.loads(out1)["points"]["A"]["position"]
+    # 40° clockwise from +y is 50° from +x
+    import math
+
+    assert a1 == pytest.approx([0.15 * math.cos(math.radians(50)), 0.15 * math.sin(math.radians(50))])
+    assert a0 != a1
+
+
+def test_solve_text_table(capsys):
+    code, out, _ = run(capsys, "solve", "samples/fourbar.toml")
+    assert code == 0
+    assert "II1(2,3)" in out
+    assert "double rocker (non-Grashof: 0.2725 > 0.2375)" in out
+    assert "cannot make a full turn" in out
+
+
+def test_unreachable_angle_is_reported_not_nan(capsys):
+    code, out, err = run(capsys, "solve", "samples/fourbar.toml", "--angle", "180")
+    assert code == 2
+    assert out == ""
+    assert "group 2–3 (RRR) cannot be assembled at φ1 = 180°" in err
+    assert "nan" not in err.lower()
+
+
+def test_report_russian_uses_decimal_comma(capsys):
+    code, out, _ = run(capsys, "report", "samples/press.toml", "--lang", "ru")
+    assert code == 0
+    assert "`a^k_A3A = 2·ω3·V_A3A = 2·4,822·1,148 = 11,07 м/с²`" in out
+    assert "`μv = V_A / pa = 3 / 60 = 0,05 (м/с)/мм`" in out
+    assert "`bc = ba3·BC / BA3 = 55,43·75 / 57,48 = 72,33 мм`" in out
+
+
+def test_report_english(capsys):
+    code, out, _ = run(capsys, "report", "samples/press.toml")
+    assert code == 0
+    assert "`a^n_A3B = V_A3B² / l_A3B = 2.772² / 0.5748 = 13.36 m/s²`" in out
+    assert "`ε3 = a^t_A3B / l_A3B = 11.89 / 0.5748 = 20.69 rad/s², counter-clockwise`" in out
+    assert "Through k draw a line ∥ BC, through n1 a line ⊥ BA3; they meet at a3." in out

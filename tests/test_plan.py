@@ -1,0 +1,128 @@
+"""The single-position plans: seed numbers, recorded constructions and invariants."""
+
+import math
+
+import numpy as np
+import pytest
+
+from plans.mechanism import load
+from plans.plan import solve_position
+from plans.variants import variant
+
+
+@pytest.fixture(scope="module")
+def press():
+    return solve_position(load("samples/press.toml"))
+
+
+@pytest.fixture(scope="module")
+def fourbar():
+    return solve_position(load("samples/fourbar.toml"))
+
+
+def test_press_seed_numbers_within_drawing_precision(press):
+    seg = press.segments
+    # seed 000 at μv = 0.05, μa = 1: its measured segments, a few percent off
+    assert seg["pa"] == pytest.approx(60, abs=1e-9)
+    assert seg["pa3"] == pytest.approx(55, rel=0.03)
+    assert seg["aa3"] == pytest.approx(23, rel=0.03)
+    assert seg["BA3"] == pytest.approx(57, rel=0.03)
+    assert seg["ak"] == pytest.approx(11.09, rel=0.03)
+    assert seg["bn1"] == pytest.approx(13.26, rel=0.03)
+    assert press.omega[3] == pytest.approx(4.82, rel=0.01)
+    assert seg["OB"] == pytest.approx(44) and seg["BC"] == pytest.approx(75)
+
+
+def test_press_exact_values_closed_form(press):
+    # RPR with the rocker pivot fixed: V_A3 is V_A's component ⊥ BA, V_A3A the ∥ one
+    A = 0.15 * complex(math.cos(math.radians(60)), math.sin(math.radians(60)))
+    B = -0.44j
+    u = (A - B) / abs(A - B)
+    vA = 1j * 20 * A
+    v_par = (vA * u.conjugate()).real
+    v_perp = (vA * u.conjugate()).imag
+    assert abs(press.velocity.value("a3")) == pytest.approx(abs(v_perp), rel=1e-12)
+    assert press.segments["aa3"] * 0.05 == pytest.approx(abs(v_par), rel=1e-12)
+    w3 = v_perp / abs(A - B)
+    assert press.omega[3] == pytest.approx(w3, rel=1e-12)
+    # a^k = 2 ω3 V_A3A and a^n = ω3² l_A3B
+    assert press.segments["ak"] == pytest.approx(2 * abs(w3) * abs(v_par), rel=1e-12)
+    assert press.segments["bn1"] == pytest.approx(w3**2 * abs(A - B), rel=1e-12)
+
+
+def test_coriolis_direction_is_relative_velocity_turned_by_omega(press):
+    v = press.velocity
+    a = press.acceleration
+    vrel = v.value("a3") - v.value("a")  # V_A3A
+    cor = a.value("k") - a.value("a")  # a^k_A3A drawn from a
+    w3 = press.omega[3]
+    assert cor == pytest.approx(2j * w3 * vrel, rel=1e-12)
+
+
+def test_constructions_are_recorded(press):
+    a3 = press.velocity.points["a3"].source
+    assert a3.kind == "intersection"
+    assert [ln.through for ln in a3.lines] == ["a", "b"]
+    assert [ln.relation for ln in a3.lines] == ["∥ BC", "⊥ BA3"]
+    acc_a3 = press.acceleration.points["a3"].source
+    assert [ln.through for ln in acc_a3.lines] == ["k", "n1"]
+    c = press.velocity.points["c"].source
+    assert c.kind == "similarity" and (c.base, c.other) == ("b", "a3")
+    assert c.equation == "bc = ba3·BC/BA3"
+    d = press.velocity.points["d"].source
+    assert [ln.through for ln in d.lines] == ["c", "p"]
+
+
+def test_each_intersection_lies_on_both_recorded_lines(press, fourbar):
+    for sol in (press, fourbar):
+        for plan in (sol.velocity, sol.acceleration):
+            for pt in plan.points.values():
+                for ln in pt.source.lines:
+                    start = plan.value(ln.through)
+                    off = pt.value - start
+                    # the point is on the line: the offset is parallel to its direction
+                    cross = (off.conjugate() * ln.direction).imag
+                    assert abs(cross) <= 1e-12 * max(1.0, abs(pt.value))
+
+
+def test_similarity_points_agree_with_direct_computation(press, fourbar):
+    for sol in (press, fourbar):
+        m = sol.motion
+        for plan, store in ((sol.velocity, m.velocity), (sol.acceleration, m.acceleration)):
+            for name, values in store.items():
+                pt = plan.points[name.lower()]
+                assert pt.value == pytest.approx(complex(values[0]), rel=1e-12, abs=1e-12)
+
+
+def test_vector_lengths_in_mm_equal_values_over_mu(press):
+    for key, mm in press.segments.items():
+        if key.startswith("p") and key[1:] in press.velocity.points:
+            assert mm * press.mu_v == pytest.approx(abs(press.velocity.value(key[1:])), rel=1e-12)
+
+
+def test_fourbar_seed_001_numbers(fourbar):
+    v, a = fourbar.velocity, fourbar.acceleration
+    assert abs(v.value("c")) == pytest.approx(0.92, rel=0.03)
+    assert abs(v.value("e")) == pytest.approx(1.22, rel=0.03)
+    assert abs(a.value("c")) == pytest.approx(12, rel=0.03)
+    assert abs(v.value("b")) == pytest.approx(math.pi * 149.2 / 30 * 0.0625, rel=1e-12)
+
+
+def test_velocities_are_derivatives_of_positions():
+    mech = load("samples/press.toml")
+    h = 1e-6
+    sols = [solve_position(mech, mech.driver.phi + k * h) for k in (-1, 0, 1)]
+    w1 = mech.driver.omega
+    for name in sols[1].positions:
+        fd = (sols[2].positions[name] - sols[0].positions[name]) / (2 * h) * w1
+        exact = complex(sols[1].motion.velocity[name][0])
+        if name in sols[1].motion.coincident:
+            continue  # a coincident point is a different material point at each instant
+        assert fd == pytest.approx(exact, rel=1e-6, abs=1e-8)
+
+
+@pytest.mark.parametrize("n", range(10))
+def test_variant_plans_solve(n):
+    sol = solve_position(variant(n))
+    assert sol.segments["pb"] > 0
+    assert all(np.isfinite(v) for v in sol.segments.values())

@@ -1,0 +1,65 @@
+"""Chebyshev's mobility and the Assur decomposition."""
+
+import pytest
+
+from plans.errors import StructureError
+from plans.mechanism import from_dict, load
+from plans.structure import DyadKind, analyse
+from plans.variants import variant
+
+
+def test_press_structure_matches_seed_000():
+    st = analyse(load("samples/press.toml"))
+    assert (st.n, st.p5, st.p4, st.W) == (5, 7, 0, 1)
+    assert [(g.links, g.kind) for g in st.groups] == [((2, 3), DyadKind.RPR), ((4, 5), DyadKind.RRP)]
+    assert st.formula() == "I(0,1) → II3(2,3) → II2(4,5)"
+    assert st.chebyshev() == "W = 3n − 2p5 − p4 = 3·5 − 2·7 − 0 = 1"
+    assert st.mechanism_class == 2
+
+
+def test_fourbar_structure_matches_seed_001():
+    st = analyse(load("samples/fourbar.toml"))
+    assert (st.n, st.p5, st.W) == (3, 4, 1)
+    assert [(g.links, g.kind) for g in st.groups] == [((2, 3), DyadKind.RRR)]
+
+
+@pytest.mark.parametrize("n", range(10))
+def test_variants_decompose(n):
+    st = analyse(variant(n))
+    kind = DyadKind.RRP if n % 2 == 0 else DyadKind.RRR
+    assert st.W == 1 and [g.kind for g in st.groups] == [kind]
+
+
+def _fourbar(**extra):
+    data = {
+        "frame": {"A": [0, 0], "D": [-0.2, 0]},
+        "driver": {"angle_deg": 40, "omega": 10},
+        "links": {
+            "1": {"axis": ["A", "B"], "points": {"B": 0.05}},
+            "2": {"axis": ["B", "C"], "points": {"C": 0.2}},
+            "3": {"axis": ["D", "C"], "points": {"C": 0.15}},
+        },
+        "assembly": {"C": "above BD"},
+    }
+    data["links"].update(extra)
+    return data
+
+
+def test_locked_chain_reports_W():
+    data = _fourbar()
+    data["links"]["3"]["points"]["B"] = 0.1  # a fourth hinge makes a structure
+    with pytest.raises(StructureError, match=r"3·3 − 2·5 − 0 = -1"):
+        analyse(from_dict(data, "locked.toml"))
+
+
+def test_class_three_group_is_named():
+    # a four-bar plus a triad (ternary link 4 held by links 5, 6, 7): W = 3·7 − 2·10 = 1,
+    # but no class-II group can be split off
+    data = _fourbar()
+    data["frame"].update({"H": [0.3, 0.0], "I": [0.3, 0.3]})
+    data["links"]["4"] = {"axis": ["E", "F"], "points": {"F": 0.1, "G": [0.05, 0.05]}}
+    data["links"]["5"] = {"axis": ["H", "E"], "points": {"E": 0.2}}
+    data["links"]["6"] = {"axis": ["C", "F"], "points": {"F": 0.2}}
+    data["links"]["7"] = {"axis": ["I", "G"], "points": {"G": 0.2}}
+    with pytest.raises(StructureError, match=r"links 4, 5, 6, 7 do not form class-II groups"):
+        analyse(from_dict(data, "triad.toml"))
