@@ -14,7 +14,7 @@ import numpy as np
 def cross(a, b):
     """z-component of a × b (positive when b is counter-clockwise from a).
 
-    >>> cross(1 + 0j, 1j)
+    >>> float(cross(1 + 0j, 1j))
     1.0
     """
     return (np.conj(a) * b).imag
@@ -23,7 +23,7 @@ def cross(a, b):
 def dot(a, b):
     """Scalar product of two plane vectors.
 
-    >>> dot(3 + 4j, 1 + 0j)
+    >>> float(dot(3 + 4j, 1 + 0j))
     3.0
     """
     return (np.conj(a) * b).real
