@@ -1,0 +1,293 @@
+"""``plans check MEAS.toml``: a hand-drawn plan against the computed one, and the mistake.
+
+Exit status: 0 every item within tolerance, 1 something is not, 2 bad input.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+
+from .cli import EXIT_DEVIATIONS, EXIT_OK, write_output
+from .errors import InputError
+from .fmt import num
+
+
+def configure(p) -> None:
+    p.add_argument("file", metavar="MEAS.toml",
+                   help="the measurement file: mechanism, crank position, the student's scale "
+                        "factors and the segments measured on the drawing (mm)")
+    p.add_argument("--tolerance", metavar="TOL",
+                   help='allowed deviation, e.g. "5%%", "1mm" or "5%%,1mm" '
+                        "(default: the larger of 1 mm and 5 %%)")
+    p.add_argument("--json", action="store_true", help="machine-readable output")
+    p.add_argument("--svg", metavar="OUT.svg",
+                   help="also draw the student's plan over the computed one")
+    p.add_argument("--lang", choices=("en", "ru"), default="en",
+                   help="language of the report (ru: decimal commas)")
+    p.add_argument("-o", "--output", metavar="FILE", help="write the report to FILE instead of stdout")
+
+
+def run(args) -> int:
+    from . import check as ck
+
+    meas = ck.load(args.file)
+    tol = meas.tolerance
+    if args.tolerance is not None:
+        try:
+            tol = ck.parse_tolerance(args.tolerance)
+        except ValueError as exc:
+            raise InputError("command line", f"--tolerance: {exc}") from None
+    result = ck.check(meas, tol)
+    if args.svg:
+        from drawing.check_overlay import overlay_svg
+
+        write_output(args.svg, overlay_svg(result, lang=args.lang))
+    if args.json:
+        text = json.dumps(to_json(result), ensure_ascii=False, indent=2) + "\n"
+    else:
+        text = to_text(result, args.lang)
+    write_output(args.output, text)
+    return EXIT_OK if result.ok else EXIT_DEVIATIONS
+
+
+# ---------------------------------------------------------------------------------------
+
+WORDS = {
+    "en": {
+        "head": "Check of a hand-drawn plan",
+        "mech": "Mechanism",
+        "from_x": "from +x",
+        "scales": "Student's scale factors",
+        "tol": "Tolerance",
+        "cols": ("segment", "measured", "computed", "deviation", "%", "verdict"),
+        "vcols": ("value", "student", "computed", "deviation", "%", "verdict"),
+        "positions": "Plan of positions (μl), mm",
+        "velocity": "Velocity plan (pole p, μv), mm",
+        "acceleration": "Acceleration plan (pole π, μa), mm",
+        "values": "Values the student computed",
+        "ok": "ok",
+        "bad": "BEYOND",
+        "sense": "wrong sense",
+        "all_ok": "Overall: all {n} items within tolerance.",
+        "some": "Overall: {k} of {n} items beyond tolerance: {names}.",
+        "diag": "Diagnosis",
+        "none": "no single mistake explains this.",
+        "closest": "closest: {what}; it explains {ex} but not {un}",
+        "explains": "explains",
+        "all_of": "all {k} items beyond tolerance",
+        "k_of": "{e} of the {k} items beyond tolerance; not {un}",
+        "correction": "correction",
+        "also": "equally consistent with",
+        "warning": "warning",
+        "ccw": "ccw",
+        "cw": "cw",
+    },
+    "ru": {
+        "head": "Проверка плана, построенного вручную",
+        "mech": "Механизм",
+        "from_x": "от +x",
+        "scales": "Масштабные коэффициенты студента",
+        "tol": "Допуск",
+        "cols": ("отрезок", "измерено", "расчёт", "отклонение", "%", "вывод"),
+        "vcols": ("величина", "студент", "расчёт", "отклонение", "%", "вывод"),
+        "positions": "План положений (μl), мм",
+        "velocity": "План скоростей (полюс p, μv), мм",
+        "acceleration": "План ускорений (полюс π, μa), мм",
+        "values": "Величины, вычисленные студентом",
+        "ok": "в допуске",
+        "bad": "ВНЕ ДОПУСКА",
+        "sense": "не то направление",
+        "all_ok": "Итог: все {n} величин в допуске.",
+        "some": "Итог: {k} из {n} вне допуска: {names}.",
+        "diag": "Диагноз",
+        "none": "ни одна отдельная ошибка этого не объясняет.",
+        "closest": "ближе всего: {what}; объясняет {ex}, но не {un}",
+        "explains": "объясняет",
+        "all_of": "все {k} величин вне допуска",
+        "k_of": "{e} из {k} величин вне допуска; не объясняет {un}",
+        "correction": "исправление",
+        "also": "столь же хорошо объясняет",
+        "warning": "предупреждение",
+        "ccw": "против ч.с.",
+        "cw": "по ч.с.",
+    },
+}
+
+
+def _signed(x: float, lang: str, decimals: int | None = None) -> str:
+    """+0.43 / −4.23: a deviation with its sign (a true minus sign)."""
+    if not math.isfinite(x):
+        return "—"
+    s = f"{abs(x):.{decimals}f}" if decimals is not None else num(abs(x), 3)
+    if float(s) == 0:
+        return s.replace(".", ",") if lang == "ru" else s
+    s = ("+" if x > 0 else "−") + s
+    return s.replace(".", ",") if lang == "ru" else s
+
+
+def _pct(x: float, lang: str) -> str:
+    return _signed(x, lang, 1)
+
+
+UNITS_RU = {"mm": "мм", "m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с", "rad/s²": "рад/с²",
+            "m/mm": "м/мм", "(m/s)/mm": "(м/с)/мм", "(m/s²)/mm": "(м/с²)/мм"}
+
+
+def _u(unit: str, lang: str) -> str:
+    return UNITS_RU.get(unit, unit) if lang == "ru" else unit
+
+
+def _sense(x: float, w) -> str:
+    return w["ccw"] if x > 0 else w["cw"] if x < 0 else ""
+
+
+def _row(d, lang, w) -> list[str]:
+    it = d.item
+    meas = num(it.measured, 4, lang)
+    comp = num(abs(d.computed), 4, lang)
+    if it.kind in ("omega", "epsilon"):
+        if it.sense:
+            meas += " " + _sense(it.sense, w)
+        comp += " " + _sense(d.computed, w)
+    verdict = w["ok"] if d.ok else w["bad"]
+    if d.sense_ok is False:
+        verdict += f" ({w['sense']})"
+    name = it.name + ("" if it.kind == "segment" else f", {_u(it.unit, lang)}")
+    dev = _signed(d.deviation, lang, 2 if it.kind == "segment" else None)
+    return [name, meas, comp, dev, _pct(d.percent, lang), verdict]
+
+
+def _table(rows: list[list[str]], head: tuple[str, ...]) -> list[str]:
+    widths = [max(len(r[i]) for r in [list(head), *rows]) for i in range(len(head))]
+    out = []
+    for r in [list(head), *rows]:
+        cells = [r[0].ljust(widths[0])] + [r[i].rjust(widths[i]) for i in range(1, 5)] + [r[5]]
+        out.append("  " + "  ".join(cells).rstrip())
+    return out
+
+
+def to_text(result, lang: str = "en") -> str:
+    w = WORDS[lang]
+    meas = result.measurement
+    sol = meas.solution
+    mech = meas.mechanism
+    out = [f"{w['head']}: {meas.source}"]
+    if meas.title:
+        out.append(f"  {meas.title}")
+    deg = math.degrees(sol.phi) % 360
+    out.append(f"{w['mech']}: {mech.name} ({mech.source}), φ1 = {num(deg, 4, lang)}° {w['from_x']}")
+    mu = meas.mu
+    out.append(f"{w['scales']}: μl = {num(mu['mu_l'], 4, lang)} {_u('m/mm', lang)}, "
+               f"μv = {num(mu['mu_v'], 4, lang)} {_u('(m/s)/mm', lang)}, "
+               f"μa = {num(mu['mu_a'], 4, lang)} {_u('(m/s²)/mm', lang)}")
+    out.append(f"{w['tol']}: {result.tolerance.describe(lang)}")
+    groups = [("positions", lambda it: it.kind == "segment" and it.plan == "positions"),
+              ("velocity", lambda it: it.kind == "segment" and it.plan == "velocity"),
+              ("acceleration", lambda it: it.kind == "segment" and it.plan == "acceleration"),
+              ("values", lambda it: it.kind != "segment")]
+    for key, pick in groups:
+        devs = [d for d in result.deviations if pick(d.item)]
+        if not devs:
+            continue
+        out.append("")
+        out.append(w[key])
+        out += _table([_row(d, lang, w) for d in devs], w["vcols"] if key == "values" else w["cols"])
+    out.append("")
+    n = len(result.deviations)
+    failed = result.failed
+    if not failed:
+        out.append(w["all_ok"].format(n=n))
+    else:
+        out.append(w["some"].format(k=len(failed), n=n, names=", ".join(d.item.name for d in failed)))
+        out += diagnosis_lines(result, lang)
+    for warn in sol.warnings:
+        out.append(f"{w['warning']}: {warn}")
+    return "\n".join(out) + "\n"
+
+
+def diagnosis_lines(result, lang: str = "en") -> list[str]:
+    w = WORDS[lang]
+    diag = result.diagnosis
+    k = len(result.failed)
+    if diag.best is None:
+        lines = [f"{w['diag']}: {w['none']}"]
+        c = diag.closest
+        if c is not None:
+            lines.append("  " + w["closest"].format(what=c.mistake.describe(lang),
+                                                     ex=", ".join(c.explained),
+                                                     un=", ".join(c.unexplained)))
+        return lines
+    b = diag.best
+    lines = [f"{w['diag']}: {b.mistake.describe(lang)}."]
+    if b.unexplained:
+        ex = w["k_of"].format(e=len(b.explained), k=k, un=", ".join(b.unexplained))
+    else:
+        ex = w["all_of"].format(k=k)
+    lines.append(f"  {w['explains']}: {', '.join(b.explained)} ({ex})")
+    lines.append(f"  {w['correction']}: {b.mistake.correction(lang)}")
+    for alt in diag.alternatives:
+        lines.append(f"  {w['also']}: {alt.mistake.describe(lang)}")
+    return lines
+
+
+def _finding(f, lang="en"):
+    if f is None:
+        return None
+    m = f.mistake
+    return {
+        "kind": m.kind,
+        "family": m.family,
+        "plan": m.plan,
+        "target": m.target,
+        "description": m.describe(lang),
+        "correction": m.correction(lang),
+        "explains": list(f.explained),
+        "unexplained": list(f.unexplained),
+        "breaks": list(f.broken),
+        "score": f.score,
+    }
+
+
+def to_json(result) -> dict:
+    meas = result.measurement
+    items = []
+    for d in result.deviations:
+        it = d.item
+        items.append({
+            "key": it.key,
+            "name": it.name,
+            "kind": it.kind,
+            "plan": it.plan,
+            "from": it.start,
+            "to": it.end,
+            "link": it.link or None,
+            "unit": it.unit,
+            "measured": it.measured,
+            "sense": {1: "ccw", -1: "cw"}.get(it.sense),
+            "computed": abs(d.computed),
+            "computed_sense": ({1: "ccw", -1: "cw"}.get(int(math.copysign(1, d.computed)))
+                               if it.kind in ("omega", "epsilon") and d.computed else None),
+            "deviation": d.deviation,
+            "percent": d.percent if math.isfinite(d.percent) else None,
+            "limit": d.limit,
+            "ok": d.ok,
+        })
+    diag = result.diagnosis
+    return {
+        "file": meas.source,
+        "mechanism": meas.mechanism.source,
+        "phi_deg": math.degrees(meas.solution.phi) % 360,
+        "scales": dict(meas.mu),
+        "tolerance": {"percent": result.tolerance.percent, "mm": result.tolerance.mm},
+        "items": items,
+        "ok": result.ok,
+        "failed": [d.item.name for d in result.failed],
+        "diagnosis": None if result.ok else {
+            "explained": diag.best is not None,
+            "best": _finding(diag.best),
+            "alternatives": [_finding(f) for f in diag.alternatives],
+            "closest": _finding(diag.closest),
+            "tried": diag.tried,
+        },
+    }
