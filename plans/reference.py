@@ -136,7 +136,7 @@ def _build(mech: Mechanism) -> _Model:
 
     def par(name: str) -> sp.Symbol:
         if name not in params:
-            params[name] = sp.Symbol("p%d" % len(params), real=True)
+            params[name] = sp.Symbol(f"p{len(params)}", real=True)
         return params[name]
 
     def world(lid: int, name: str):
@@ -321,7 +321,9 @@ def _lu(A: list[list]) -> tuple[list[list], list[int]]:
     for c in range(n):
         p = max(range(c, n), key=lambda r: abs(a[r][c]))
         if not a[p][c]:
-            raise ReferenceError("singular loop-closure Jacobian (a dead point or a locked chain)")
+            raise ReferenceError(
+                "singular loop-closure Jacobian (a dead point or a locked chain)"
+            )
         if p != c:
             a[c], a[p] = a[p], a[c]
             perm[c], perm[p] = perm[p], perm[c]
@@ -419,7 +421,9 @@ def reference(
         points: dict[str, tuple[list, list, list]] = {
             n: ([], [], []) for n in [*names, *coincident]
         }
-        links: dict[int, tuple[list, list]] = {lid: ([], []) for lid in (0, *mdl.link_ids)}
+        links: dict[int, tuple[list, list]] = {
+            lid: ([], []) for lid in (0, *mdl.link_ids)
+        }
         valid = np.array([bool(v) for v in motion.valid], dtype=bool)
         worst = 0.0
         for k, ph in enumerate(phi):
@@ -435,7 +439,9 @@ def reference(
             q0 = _start(mech, mdl, motion, k, float(ph))
             q, qd, qdd, res = _solve_one(mdl, q0, phm, omega, params, mp, tol)
             worst = max(worst, float(res))
-            kin = {0: (mp.mpc(0), mp.mpc(1), mp.mpc(0), mp.mpc(0), mp.mpf(0), mp.mpf(0))}
+            kin = {
+                0: (mp.mpc(0), mp.mpc(1), mp.mpc(0), mp.mpc(0), mp.mpf(0), mp.mpf(0))
+            }
             for lid in mdl.link_ids:
                 i = mdl.index(lid)
                 o = mp.mpc(q[i], q[i + 1])
@@ -447,7 +453,7 @@ def reference(
                 wl.append(kin[lid][4])
                 el.append(kin[lid][5])
 
-            def state(lid, X):
+            def state(lid, X, kin=kin):
                 o, _rot, vo, ao, w, e = kin[lid]
                 r = X - o
                 return vo + mp.j * w * r, ao + (mp.j * e - w * w) * r
@@ -489,7 +495,9 @@ def reference(
 # ---------------------------------------------------------------------------------------
 
 
-def errors(motion: Motion, ref: ReferenceMotion | ReferenceArrays) -> dict[str, np.ndarray]:
+def errors(
+    motion: Motion, ref: ReferenceMotion | ReferenceArrays
+) -> dict[str, np.ndarray]:
     """Per-angle relative errors of the engine (see the module docstring for the norm).
 
     Keys: position, velocity, acceleration, omega, epsilon; each an array over the angles
@@ -519,7 +527,9 @@ def errors(motion: Motion, ref: ReferenceMotion | ReferenceArrays) -> dict[str, 
         ("omega", "omega", arr.omega, 0.0),
         ("epsilon", "epsilon", arr.epsilon, w1sq),
     ):
-        diff = np.max([np.abs(getattr(motion.links[i], attr) - rr[i]) for i in moving], axis=0)
+        diff = np.max(
+            [np.abs(getattr(motion.links[i], attr) - rr[i]) for i in moving], axis=0
+        )
         scale = np.max([np.abs(rr[i]) for i in moving], axis=0)
         out[key] = _ratio(diff, np.maximum(scale, floor), ok)
     return out
@@ -531,7 +541,9 @@ def _ratio(diff, scale, ok):
     return r
 
 
-def max_rel_error(motion: Motion, ref: ReferenceMotion | ReferenceArrays) -> dict[str, float]:
+def max_rel_error(
+    motion: Motion, ref: ReferenceMotion | ReferenceArrays
+) -> dict[str, float]:
     """Largest relative error of the engine's positions, velocities, accelerations, ω and
     ε against the reference over the angles valid in both (norm: module docstring).
 

@@ -27,7 +27,9 @@ class Scene:
     kinds: tuple[str, ...]  # the dyad kinds in attachment order, e.g. ("RPR", "RRP")
     lo_deg: float  # crank range (degrees from +x) over which it assembles
     hi_deg: float
-    toml: str | None = None  # the mechanism file; None: ``sample`` is a file in samples/
+    toml: str | None = (
+        None  # the mechanism file; None: ``sample`` is a file in samples/
+    )
     sample: str | None = None
 
     @property
