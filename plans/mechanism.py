@@ -15,6 +15,9 @@ Lengths are metres, angles degrees in the file and radians inside, time seconds.
 
 from __future__ import annotations
 
+import ast
+import difflib
+import json
 import math
 import re
 import tomllib
@@ -128,65 +131,259 @@ class Mechanism:
 # ---------------------------------------------------------------------------------------
 # loading and validation
 # ---------------------------------------------------------------------------------------
+#
+# Every problem is collected (not raised at the first one) as a key path and a message;
+# when the file's text is known each path is located to its line. The messages say what is
+# wrong and what would be right, on one line each, and never echo more than a few dozen
+# characters of what the file holds, so that a hostile file cannot flood the terminal.
 
 REFERENCES = {"+x": 0.0, "+y": 90.0, "-x": 180.0, "-y": 270.0}
 SENSES = {"ccw": 1.0, "cw": -1.0}
 
+MAX_FILE = 1_000_000  # bytes: a mechanism file is a few KB
+MAX_LINKS = 200
+MAX_FRAME = 200  # fixed points
+MAX_LINK_POINTS = 200  # points on one link
+MAX_POINTS = 1000  # points in all
+MAX_ITEMS = 200  # sliders, trace, assembly hints, title fields
+MAX_TEXT = 200  # names and hints, characters
+MAX_PROBLEMS = 50  # reported; the rest are counted
+MIN_LINK = 1e-6  # m: the shortest link (a micrometre)
+SPEED = (1e-6, MAX_ABS)  # rad/s, rpm
+SCALE = (1e-9, MAX_ABS)  # μl m/mm, μv (m/s)/mm, μa (m/s²)/mm
+SAME = 1e-12  # m: two points of one link closer than this are the same place
+
 
 def load(path: str | Path) -> Mechanism:
     """Read and validate a mechanism file; every problem is reported, located."""
-    path = Path(path)
+    data, text = read_toml(path, "a mechanism file is a few KB")
+    return from_dict(data, str(path), text=text)
+
+
+def read_toml(path: str | Path, typical: str = "") -> tuple[dict, str]:
+    """The parsed TOML and the text of a file, or an :class:`InputError` saying why not.
+
+    Reads at most :data:`MAX_FILE` bytes (a 10 GB file or ``/dev/zero`` is refused, not
+    read); refuses binary data, text that is not UTF-8, and TOML syntax errors, each with
+    its line.
+    """
     source = str(path)
     try:
-        raw = path.read_bytes()
+        with open(path, "rb") as fh:
+            raw = fh.read(MAX_FILE + 1)
+    except IsADirectoryError:
+        raise InputError(source, "is a folder, not a file") from None
     except OSError as exc:
-        raise InputError(source, f"cannot read the file: {exc.strerror}") from None
-    if len(raw) > 1_000_000:
-        raise InputError(source, "file is larger than 1 MB; a mechanism file is a few KB")
+        raise InputError(source, f"cannot read the file: {exc.strerror or exc}") from None
+    if len(raw) > MAX_FILE:
+        raise InputError(
+            source, f"the file is larger than {MAX_FILE // 1_000_000} MB" + (f"; {typical}" if typical else "")
+        )
+    nul = raw.find(b"\x00")
+    if nul >= 0:
+        line = raw.count(b"\n", 0, nul) + 1
+        raise InputError(source, f"line {line}: binary data (a NUL byte): not a TOML text file")
     try:
-        data = tomllib.loads(raw.decode("utf-8"))
+        text = raw.decode("utf-8")
     except UnicodeDecodeError as exc:
-        raise InputError(source, f"not UTF-8 text (byte {exc.start})") from None
+        line = raw.count(b"\n", 0, exc.start) + 1
+        raise InputError(
+            source,
+            f"line {line}: not UTF-8 text (byte 0x{raw[exc.start]:02x}); save the file as UTF-8",
+        ) from None
+    return parse_toml(text, source), text
+
+
+def parse_toml(text: str, source: str) -> dict:
+    """``tomllib.loads`` with its errors turned into one located line each."""
+    text = text.removeprefix("\ufeff")
+    try:
+        return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise InputError(source, f"TOML syntax error: {exc}") from None
-    return from_dict(data, source)
+        raise InputError(source, _toml_problem(str(exc), text)) from None
+    except RecursionError:
+        raise InputError(source, "TOML nested too deeply: a mechanism file has at most three levels") from None
+    except (ValueError, OverflowError, MemoryError) as exc:  # e.g. an integer of 5000 digits
+        what = "a number with too many digits" if "digits" in str(exc) else type(exc).__name__
+        raise InputError(source, f"TOML value out of range: {what}") from None
+
+
+_TOML_AT = re.compile(r"^(?P<msg>.*?)\s*\((?:at line (?P<line>\d+), column (?P<col>\d+)|at end of document)\)$", re.S)
+_TOML_HINTS = (
+    ("Invalid value", "a value is a number, \"text\" in double quotes, [a, list] or { a = table }"),
+    ("Cannot overwrite a value", "a name given twice: each key once"),
+    ("Cannot declare", "a table given twice: merge the two sections"),
+    ("Duplicate inline table key", "a name given twice: each key once"),
+    ("Expected '=' after a key", "write key = value"),
+    ("Unclosed array", "a [ is not closed by ]"),
+    ("Unclosed inline table", "a { is not closed by } on the same line"),
+    ("Unterminated string", "a \" is not closed on the same line"),
+    ("Illegal character", "texts are on one line, in double quotes"),
+    ("Expected newline or end of document", "one key = value per line; numbers as 0.15, 1e-3"),
+    ("Invalid statement", "a line is key = value, [table], [[array]] or # comment"),
+    ("Expected ']'", "a table header is [name] on its own line"),
+)
+
+
+def _toml_problem(message: str, text: str) -> str:
+    m = _TOML_AT.match(message)
+    msg = m.group("msg") if m else message
+    if m and m.group("line"):
+        where = f"line {m.group('line')}, column {m.group('col')}"
+        line = int(m.group("line"))
+    else:
+        line = max(text.count("\n") + (0 if text.endswith("\n") else 1), 1)
+        where = f"line {line} (end of file)"
+    if msg.startswith("Cannot overwrite a value"):
+        dup = _first_duplicate("\n".join(text.split("\n")[:line]))
+        if dup:
+            key, first, again = dup
+            return (
+                f"line {again}: TOML syntax error: {key} is given twice (first at line {first}): "
+                "each name once"
+            )
+    twice = re.match(r"Cannot declare \((.*)\) twice", msg)
+    if twice:
+        try:
+            name = ".".join(_k(p) for p in ast.literal_eval(f"({twice.group(1)})"))
+            return f"{where}: TOML syntax error: the table [{name}] is given twice: merge the two sections"
+        except (ValueError, SyntaxError, TypeError, RecursionError, MemoryError):
+            pass
+    hint = next((h for prefix, h in _TOML_HINTS if msg.startswith(prefix)), "")
+    msg = _oneline(msg[:1].lower() + msg[1:], 120)
+    return f"{where}: TOML syntax error: {msg}" + (f" ({hint})" if hint else "")
+
+
+def _oneline(text: str, limit: int = 200) -> str:
+    """``text`` on one line, at most ``limit`` characters."""
+    text = "".join(c if c.isprintable() else repr(c)[1:-1] for c in text)
+    return text if len(text) <= limit else text[: limit - 1] + "…"
+
+
+def _show(value: Any, limit: int = 40) -> str:
+    """A value of the file, quoted and cut short, for a message."""
+    if isinstance(value, str):
+        return '"' + _oneline(value, limit).replace('"', '\\"') + '"'
+    if isinstance(value, dict):
+        return "a table"
+    if isinstance(value, list):
+        return f"a list of {len(value)}"
+    if isinstance(value, int) and not isinstance(value, bool) and abs(value) > 10**15:
+        return f"{'-' if value < 0 else ''}an integer of {len(str(abs(value))) if abs(value) < 10**4000 else 'thousands of'} digits"
+    return _oneline(repr(value), limit)
+
+
+_SIMPLE_KEY = re.compile(r"^[A-Za-z0-9_'-]{1,40}$")
+
+
+def _k(key: Any) -> str:
+    """A key of the file as it appears in a key path."""
+    if isinstance(key, str) and _SIMPLE_KEY.match(key):
+        return key
+    return _show(key, 30)
+
+
+def _known(names, limit: int = 20) -> str:
+    names = sorted(names)
+    if not names:
+        return "none"
+    if len(names) > limit:
+        return ", ".join(names[:limit]) + f"… ({len(names)} in all)"
+    return ", ".join(names)
+
+
+def _unknown_point(name: str, known, why: str = "") -> str:
+    close = difflib.get_close_matches(name, list(known), n=1, cutoff=0.5)
+    guess = f'did you mean "{close[0]}"? ' if close else ""
+    why = f": {why}" if why else ""
+    return f"unknown point {_show(name)}{why} — {guess}known points: {_known(known)}"
 
 
 class _Problems:
-    def __init__(self, source: str):
+    """Problems found in one file: (key path, message), located when it is raised."""
+
+    def __init__(self, source: str, text: str | None = None):
         self.source = source
-        self.items: list[str] = []
+        self.text = text
+        self.items: list[tuple[str, str]] = []
 
     def add(self, where: str, what: str) -> None:
-        self.items.append(f"{where}: {what}")
+        self.items.append((where, what))
+
+    def __bool__(self) -> bool:
+        return bool(self.items)
+
+    def lines(self) -> list[str]:
+        index = _locate(self.text) if self.text else {}
+        located = []
+        for n, (where, what) in enumerate(self.items):
+            line = _line_of(where, index)
+            text = f"{where}: {what}" if where else what
+            if line:
+                text = f"line {line}: {text}"
+            located.append((line or 0, n, _oneline(text, 400)))
+        out: list[str] = []
+        for _, _, text in sorted(located):
+            if text not in out:
+                out.append(text)
+        if len(out) > MAX_PROBLEMS:
+            more = len(out) - MAX_PROBLEMS
+            out = out[:MAX_PROBLEMS] + [f"… and {more} more problems"]
+        return out
 
     def raise_if_any(self) -> None:
         if self.items:
-            raise InputError(self.source, self.items)
+            raise InputError(self.source, self.lines())
 
 
-def _number(value: Any, where: str, problems: _Problems, *, positive=False, default=None):
+def _number(value: Any, where: str, problems: _Problems, *, positive=False, default=None,
+            unit: str = "m", low: float | None = None, high: float = MAX_ABS):
+    """A finite number within range, else ``None`` and a problem.
+
+    ``low``: the smallest admissible magnitude (lengths are checked where they are known,
+    between two points: a coordinate of 1e-300 is just 0).
+    """
     if value is None:
         if default is not None:
             return default
         problems.add(where, "missing (a number is needed)")
         return None
     if isinstance(value, bool) or not isinstance(value, int | float):
-        problems.add(where, f"must be a number, got {type(value).__name__} {value!r:.40}")
+        hint = ""
+        if isinstance(value, str):
+            try:
+                float(value.strip()[:40])
+                hint = f": write {value.strip()[:40]} without quotes"
+            except ValueError:
+                pass
+        problems.add(where, f"must be a number, got {_show(value)}{hint}")
+        return None
+    if isinstance(value, int) and abs(value) > high:  # also 10**400, which float() refuses
+        problems.add(where, f"{_show(value)} is out of range: at most {high:g} {unit}")
         return None
     x = float(value)
-    if not math.isfinite(x) or abs(x) > MAX_ABS:
-        problems.add(where, f"{value!r:.40} is out of range (|x| ≤ {MAX_ABS:g})")
+    if math.isnan(x):
+        problems.add(where, f"nan is not a number: give a value in {unit}")
+        return None
+    if not math.isfinite(x):
+        problems.add(where, f"{_show(value)} is out of range: at most {high:g} {unit}")
+        return None
+    if abs(x) > high:
+        problems.add(where, f"{x:g} is out of range: at most {high:g} {unit} (a typo?)")
         return None
     if positive and x <= 0:
-        problems.add(where, f"must be positive, got {value}")
+        hint = ' (the sense of rotation is sense = "cw" or "ccw")' if where.startswith("driver") else ""
+        problems.add(where, f"must be positive, got {x:g}{hint}")
+        return None
+    if low is not None and abs(x) < low:
+        problems.add(where, f"{x:g} is too small: at least {low:g} {unit}")
         return None
     return x
 
 
 def _pair(value: Any, where: str, problems: _Problems) -> complex | None:
     if not (isinstance(value, list) and len(value) == 2):
-        problems.add(where, f"must be [x, y] in metres, got {value!r:.60}")
+        problems.add(where, f"must be [x, y] in metres, got {_show(value)}")
         return None
     x = _number(value[0], where + "[0]", problems)
     y = _number(value[1], where + "[1]", problems)
@@ -197,27 +394,61 @@ def _name(value: Any, where: str, problems: _Problems) -> str | None:
     if not isinstance(value, str) or not POINT_NAME.match(value):
         problems.add(
             where,
-            f"{value!r:.40} is not a point name (a capital letter, then letters/digits)",
+            f"{_show(value)} is not a point name: a capital letter, then up to 11 "
+            "letters, digits, _ or ' (e.g. C, S3, A')",
         )
         return None
     if RESERVED.match(value):
         problems.add(
-            where, f'"{value}" is reserved for plan construction points (p, n1, k…)'
+            where, f'"{value}" is reserved for plan construction points (p, n1, k…): rename it'
         )
         return None
+    return value
+
+
+def _text(value: Any, where: str, problems: _Problems, default: str) -> str:
+    if value is None:
+        return default
+    if not isinstance(value, str) or len(value) > MAX_TEXT:
+        got = f"{len(value)} characters" if isinstance(value, str) else _show(value)
+        problems.add(where, f"must be a text of at most {MAX_TEXT} characters, got {got}")
+        return default
     return value
 
 
 def _check_keys(table: dict, allowed: set[str], where: str, problems: _Problems):
     for key in table:
         if key not in allowed:
-            close = ", ".join(sorted(allowed))
-            problems.add(f"{where}.{key}" if where else key, f"unknown key (known: {close})")
+            path = f"{where}.{_k(key)}" if where else _k(key)
+            problems.add(path, f"unknown key — {_guess(key, allowed)}known: {', '.join(sorted(allowed))}")
 
 
-def from_dict(data: dict, source: str = "<mechanism>") -> Mechanism:
-    """Build a :class:`Mechanism` from parsed TOML, reporting every problem at once."""
-    pr = _Problems(source)
+def _guess(key: Any, allowed) -> str:
+    """'did you mean "AD"? ' for a key close to one of ``allowed``, else ''."""
+    key = str(key)[:40]
+    same = [a for a in allowed if a.lower() == key.lower()]
+    close = same or difflib.get_close_matches(key, list(allowed), n=1, cutoff=0.6)
+    return f'did you mean "{close[0]}"? ' if close else ""
+
+
+def _ids(links) -> str:
+    return ", ".join(str(i) for i in sorted(links)) or "none"
+
+
+def _fmt(z: complex) -> str:
+    return f"[{z.real:g}, {z.imag:g}]"
+
+
+def _link_id(value: Any) -> int | None:
+    return value if isinstance(value, int) and not isinstance(value, bool) else None
+
+
+def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = None) -> Mechanism:
+    """Build a :class:`Mechanism` from parsed TOML, reporting every problem at once.
+
+    ``text``: the file's text, to locate each problem to its line.
+    """
+    pr = _Problems(source, text)
     if not isinstance(data, dict):
         raise InputError(source, "the file must be a TOML table")
     _check_keys(
@@ -226,192 +457,201 @@ def from_dict(data: dict, source: str = "<mechanism>") -> Mechanism:
          "output", "title"},
         "", pr,
     )
-    name = data.get("name", Path(source).stem)
-    if not isinstance(name, str) or len(name) > 200:
-        pr.add("name", "must be a text of at most 200 characters")
-        name = "mechanism"
+    name = _text(data.get("name"), "name", pr, Path(source).stem[:MAX_TEXT] or "mechanism")
 
     # frame -------------------------------------------------------------------------
     frame: dict[str, complex] = {}
+    named: set[str] = set()  # every point name the file uses, valid coordinates or not
     raw_frame = data.get("frame")
     if not isinstance(raw_frame, dict) or not raw_frame:
-        pr.add("frame", "missing: the fixed pivots, e.g. O = [0.0, 0.0]")
+        got = "" if raw_frame is None else f" (got {_show(raw_frame)})"
+        pr.add("frame", f"missing: the fixed pivots, a table such as [frame] O = [0.0, 0.0]{got}")
+        raw_frame = {}
+    if len(raw_frame) > MAX_FRAME:
+        pr.add("frame", f"{len(raw_frame)} fixed points: at most {MAX_FRAME}")
         raw_frame = {}
     for key, value in raw_frame.items():
-        nm = _name(key, f"frame.{key}", pr)
-        xy = _pair(value, f"frame.{key}", pr)
+        where = f"frame.{_k(key)}"
+        nm = _name(key, where, pr)
+        if nm:
+            named.add(nm)
+        xy = _pair(value, where, pr)
         if nm and xy is not None:
             frame[nm] = xy
+    _coincident(frame, set(frame), "frame", "fixed points", pr)
 
     # links -------------------------------------------------------------------------
     links: dict[int, Link] = {}
+    bad_links: set[int] = set()  # links with a problem of their own: no follow-up messages
     raw_links = data.get("links")
     if not isinstance(raw_links, dict) or not raw_links:
-        pr.add("links", "missing: the moving links, e.g. [links.1] axis = [\"O\", \"A\"]")
+        got = "" if raw_links is None else f" (got {_show(raw_links)})"
+        pr.add("links", f'missing: the moving links, e.g. [links.1] axis = ["O", "A"]{got}')
         raw_links = {}
-    if len(raw_links) > 200:
-        pr.add("links", f"{len(raw_links)} links: at most 200 are supported")
+    if len(raw_links) > MAX_LINKS:
+        pr.add("links", f"{len(raw_links)} links: at most {MAX_LINKS} are supported")
         raw_links = {}
+    total_points = 0
     for key, body in raw_links.items():
-        where = f"links.{key}"
-        if not (isinstance(key, str) and key.isdigit() and 0 < int(key) < 1000):
-            pr.add(where, "links are numbered 1, 2, 3… (0 is the frame)")
+        where = f"links.{_k(key)}"
+        if not (isinstance(key, str) and key.isascii() and key.isdigit() and key == str(int(key))
+                and 0 < int(key) < 1000):
+            if key == "0":
+                pr.add(where, "link 0 is the frame: give fixed points in [frame]")
+            else:
+                pr.add(where, "links are numbered 1, 2, 3… up to 999, without leading zeros (0 is the frame)")
             continue
         lid = int(key)
         if not isinstance(body, dict):
-            pr.add(where, "must be a table with axis and points")
+            pr.add(where, f'must be a table with axis and points, e.g. [links.{lid}] axis = ["B", "C"], got {_show(body)}')
+            bad_links.add(lid)
             continue
         _check_keys(body, {"name", "axis", "points"}, where, pr)
-        lname = body.get("name", f"link {lid}")
-        if not isinstance(lname, str) or len(lname) > 200:
-            pr.add(where + ".name", "must be a text of at most 200 characters")
-            lname = f"link {lid}"
-        points: dict[str, complex] = {}
-        axis = body.get("axis")
-        if axis is not None:
-            if not (isinstance(axis, list) and len(axis) == 2):
-                pr.add(where + ".axis", 'must be two point names, e.g. ["B", "C"]')
-                axis = None
-            else:
-                a0 = _name(axis[0], where + ".axis[0]", pr)
-                a1 = _name(axis[1], where + ".axis[1]", pr)
-                axis = (a0, a1) if a0 and a1 else None
-                if axis and a0 == a1:
-                    pr.add(where + ".axis", f'both ends are "{a0}": an axis needs two points')
-                    axis = None
-                if axis:
-                    points[a0] = 0j
-        raw_points = body.get("points", {})
-        if not isinstance(raw_points, dict):
-            pr.add(where + ".points", "must be a table, e.g. { C = 0.75, S3 = 0.25 }")
-            raw_points = {}
-        if len(raw_points) > 1000:
-            pr.add(where + ".points", "more than 1000 points on one link")
-            raw_points = {}
-        for pname, spec in raw_points.items():
-            pw = f"{where}.points.{pname}"
-            nm = _name(pname, pw, pr)
-            if nm is None:
-                continue
-            if isinstance(spec, list):
-                if len(spec) != 2:
-                    pr.add(pw, "must be a distance along the axis or [along, across]")
-                    continue
-                x = _number(spec[0], pw + "[0]", pr)
-                y = _number(spec[1], pw + "[1]", pr)
-                if x is None or y is None:
-                    continue
-                local = complex(x, y)
-            else:
-                x = _number(spec, pw, pr)
-                if x is None:
-                    continue
-                local = complex(x, 0.0)
-            if axis and nm == axis[0] and local != 0:
-                pr.add(pw, f'"{nm}" is the origin of the axis: its position is 0')
-                continue
-            points[nm] = local
-        if axis:
-            a1 = axis[1]
-            if a1 not in points:
-                pr.add(where + ".points", f'the axis end "{a1}" needs its distance, e.g. {a1} = 0.2')
-            elif points[a1].imag != 0 or points[a1].real <= MIN_LEN:
-                pr.add(
-                    f"{where}.points.{a1}",
-                    f'the axis end "{a1}" must lie on the axis at a positive distance, '
-                    f"got {_fmt(points[a1])}",
-                )
-        if not points:
-            pr.add(where, "has no points")
-        links[lid] = Link(lid, lname, points, axis)
+        lname = _text(body.get("name"), where + ".name", pr, f"link {lid}")
+        link, ok = _link(lid, lname, body, where, pr, named)
+        total_points += len(link.points)
+        if not ok:
+            bad_links.add(lid)
+        links[lid] = link
+    if total_points > MAX_POINTS:
+        pr.add("links", f"{total_points} points in all: at most {MAX_POINTS}")
 
     # sliders -----------------------------------------------------------------------
     sliders: list[Slider] = []
     raw_sliders = data.get("sliders", [])
     if not isinstance(raw_sliders, list):
-        pr.add("sliders", "must be an array of tables: [[sliders]]")
+        pr.add("sliders", f"must be an array of tables, [[sliders]] link = … guide = {{…}}, got {_show(raw_sliders)}")
         raw_sliders = []
+    if len(raw_sliders) > MAX_ITEMS:
+        pr.add("sliders", f"{len(raw_sliders)} sliders: at most {MAX_ITEMS}")
+        raw_sliders = []
+    sliding: dict[int, int] = {}  # link → index of its [[sliders]] entry
+    pairs: list[tuple[int, int | None]] = []  # (link, guide's link) of every entry, valid or not
     for i, body in enumerate(raw_sliders):
         where = f"sliders[{i}]"
         if not isinstance(body, dict):
-            pr.add(where, "must be a table with link and guide")
+            pr.add(where, f"must be a table with link and guide, got {_show(body)}")
             continue
         _check_keys(body, {"link", "point", "guide"}, where, pr)
-        lid = body.get("link")
-        if not isinstance(lid, int) or isinstance(lid, bool) or lid not in links:
-            pr.add(where + ".link", f"{lid!r:.20} is not a moving link (known: {_ids(links)})")
+        raw_lid = body.get("link")
+        lid = _link_id(raw_lid)
+        if lid is None or lid not in links:
+            if lid not in bad_links:
+                got = "missing" if raw_lid is None else f"{_show(raw_lid, 20)} is not a moving link"
+                pr.add(where + ".link", f"{got} (moving links: {_ids(links)})")
             continue
+        if lid in sliding:
+            pr.add(
+                where + ".link",
+                f"link {lid} already slides on a guide (sliders[{sliding[lid]}]): a link slides "
+                "on one guide; the link that carries a guide is named in guide.link",
+            )
+            continue
+        sliding[lid] = i
+        raw_guide = body.get("guide")
+        pairs.append((lid, _link_id(raw_guide.get("link", 0)) if isinstance(raw_guide, dict) else None))
         link = links[lid]
         point = body.get("point")
         if point is None:
             point = next(iter(link.points), None)
-        elif point not in link.points:
-            pr.add(
-                where + ".point",
-                f'"{point}" is not a point of link {lid} (its points: {", ".join(link.points)})',
-            )
+        elif not isinstance(point, str) or point not in link.points:
+            if lid not in bad_links:
+                pr.add(
+                    where + ".point",
+                    f"{_show(point)} is not a point of link {lid} (its points: {_known(link.points)})",
+                )
             continue
-        guide = _guide(body.get("guide"), where + ".guide", pr, links, frame, lid)
+        guide = _guide(body.get("guide"), where + ".guide", pr, links, frame, lid, bad_links)
         if guide is None or point is None:
             continue
         if guide.link == lid:
-            pr.add(where + ".guide.link", "a link cannot slide on its own guide")
+            pr.add(where + ".guide.link", f"link {lid} cannot slide on its own guide: name the link that carries the guide (0 = frame)")
             continue
         if link.axis is None and link.points.get(point, 0j) != 0j:
             pr.add(f"links.{lid}.points.{point}", "the sliding point of a link without an axis is its origin: 0")
             continue
         sliders.append(Slider(lid, guide, point))
     for lid, link in links.items():
-        if link.axis is None:
-            own = [s for s in sliders if s.link == lid]
-            if not own:
-                pr.add(
-                    f"links.{lid}.axis",
-                    'missing: a link that does not slide on a guide needs an axis, e.g. axis = ["B", "C"]',
-                )
+        if link.axis is None and lid not in sliding and lid not in bad_links:
+            pr.add(
+                f"links.{lid}",
+                'has no axis and does not slide on a guide: give axis = ["B", "C"], or a '
+                f"[[sliders]] entry with link = {lid}",
+            )
 
     # driver ------------------------------------------------------------------------
-    driver = _driver(data.get("driver"), pr, links, frame)
+    driver = _driver(data.get("driver"), pr, links, frame, bad_links, named)
+
+    # joints: every link attached by two pairs, no joint with two names ---------------
+    raw_driver = data.get("driver")
+    drv = _link_id(raw_driver.get("link", 1)) if isinstance(raw_driver, dict) else None
+    _connections(frame, links, pairs, drv, bad_links, pr)
 
     # assembly hints, scales, output, trace, title ---------------------------------
-    assembly = data.get("assembly", {})
-    if not isinstance(assembly, dict) or not all(
-        isinstance(k, str) and isinstance(v, str) for k, v in assembly.items()
-    ):
-        pr.add("assembly", 'must be a table of hints, e.g. C = "above BD"')
-        assembly = {}
-    scales = {}
-    raw_scales = data.get("scales", {})
-    if not isinstance(raw_scales, dict):
-        pr.add("scales", "must be a table: mu_l, mu_v, mu_a")
-        raw_scales = {}
-    _check_keys(raw_scales, {"mu_l", "mu_v", "mu_a"}, "scales", pr)
-    for key in ("mu_l", "mu_v", "mu_a"):
-        if key in raw_scales:
-            val = _number(raw_scales[key], f"scales.{key}", pr, positive=True)
-            if val is not None:
-                scales[key] = val
     all_points = set(frame)
     for link in links.values():
         all_points |= set(link.points)
-    trace = data.get("trace", [])
-    if not isinstance(trace, list) or not all(isinstance(t, str) for t in trace):
-        pr.add("trace", 'must be a list of point names, e.g. ["C", "S3"]')
-        trace = []
-    for t in trace:
-        if t not in all_points:
-            pr.add("trace", f'unknown point "{t}" (known: {", ".join(sorted(all_points))})')
-    output = data.get("output")
-    if output is not None and output not in all_points:
-        pr.add("output", f'unknown point "{output}" (known: {", ".join(sorted(all_points))})')
+    all_points |= named
+    assembly = data.get("assembly", {})
+    if not isinstance(assembly, dict):
+        pr.add("assembly", f'must be a table of hints, e.g. [assembly] C = "above BD", got {_show(assembly)}')
+        assembly = {}
+    if len(assembly) > MAX_ITEMS:
+        pr.add("assembly", f"{len(assembly)} hints: at most {MAX_ITEMS}")
+        assembly = {}
+    hints: dict[str, str] = {}
     for k, hint in assembly.items():
+        where = f"assembly.{_k(k)}"
         if k not in all_points:
-            pr.add(f"assembly.{k}", f'unknown point "{k}" (known: {", ".join(sorted(all_points))})')
+            pr.add(where, _unknown_point(k, all_points))
+            continue
+        if not isinstance(hint, str) or len(hint) > MAX_TEXT:
+            pr.add(where, f'must be a hint such as "above BD" or "right of C", got {_show(hint)}')
+            continue
+        problem = _hint_problem(hint, sorted(all_points, key=len, reverse=True))
+        if problem:
+            pr.add(where, f"{_show(hint)}: {problem}")
+            continue
+        hints[k] = hint
+    scales = {}
+    raw_scales = data.get("scales", {})
+    if not isinstance(raw_scales, dict):
+        pr.add("scales", f"must be a table: [scales] mu_l = 0.01, mu_v = …, mu_a = …, got {_show(raw_scales)}")
+        raw_scales = {}
+    _check_keys(raw_scales, {"mu_l", "mu_v", "mu_a"}, "scales", pr)
+    units = {"mu_l": "m/mm", "mu_v": "(m/s)/mm", "mu_a": "(m/s²)/mm"}
+    for key in ("mu_l", "mu_v", "mu_a"):
+        if key in raw_scales:
+            val = _number(raw_scales[key], f"scales.{key}", pr, positive=True, unit=units[key],
+                          low=SCALE[0], high=SCALE[1])
+            if val is not None:
+                scales[key] = val
+    trace = data.get("trace", [])
+    if not isinstance(trace, list) or len(trace) > MAX_ITEMS:
+        pr.add("trace", f'must be a list of at most {MAX_ITEMS} point names, e.g. ["C", "S3"], got {_show(trace)}')
+        trace = []
+    for i, t in enumerate(trace):
+        if not isinstance(t, str):
+            pr.add(f"trace[{i}]", f'must be a point name, e.g. "C", got {_show(t)}')
+        elif t not in all_points:
+            pr.add(f"trace[{i}]", _unknown_point(t, all_points))
+    trace = [t for t in trace if isinstance(t, str) and t in all_points]
+    output = data.get("output")
+    if output is not None:
+        if not isinstance(output, str):
+            pr.add("output", f'must be a point name, e.g. "C", got {_show(output)}')
+            output = None
+        elif output not in all_points:
+            pr.add("output", _unknown_point(output, all_points))
     title = data.get("title", {})
-    if not isinstance(title, dict) or not all(isinstance(v, str | int) for v in title.values()):
-        pr.add("title", "must be a table of texts for the title block")
+    if not isinstance(title, dict) or len(title) > MAX_ITEMS:
+        pr.add("title", f"must be a table of texts for the title block, got {_show(title)}")
         title = {}
-    title = {str(k): str(v)[:500] for k, v in title.items()}
+    for k, v in title.items():
+        if isinstance(v, bool) or not isinstance(v, str | int):
+            pr.add(f"title.{_k(k)}", f"must be a text, got {_show(v)}")
+    title = {str(k)[:MAX_TEXT]: str(v)[:500] for k, v in title.items()
+             if isinstance(v, str | int) and not isinstance(v, bool)}
 
     pr.raise_if_any()
     assert driver is not None
@@ -421,7 +661,7 @@ def from_dict(data: dict, source: str = "<mechanism>") -> Mechanism:
         links=links,
         sliders=tuple(sliders),
         driver=driver,
-        assembly=dict(assembly),
+        assembly=hints,
         scales=scales,
         trace=tuple(trace),
         output=output,
@@ -430,38 +670,212 @@ def from_dict(data: dict, source: str = "<mechanism>") -> Mechanism:
     )
 
 
-def _fmt(z: complex) -> str:
-    return f"[{z.real:g}, {z.imag:g}]"
+def _link(lid: int, lname: str, body: dict, where: str, pr: _Problems, named: set[str]):
+    """One link's points in its own coordinates; ``ok`` False when it has a problem."""
+    before = len(pr.items)
+    points: dict[str, complex] = {}
+    axis = body.get("axis")
+    if axis is not None:
+        if not (isinstance(axis, list) and len(axis) == 2):
+            pr.add(where + ".axis", f'must be two point names, e.g. ["B", "C"], got {_show(axis)}')
+            axis = None
+        else:
+            a0 = _name(axis[0], where + ".axis[0]", pr)
+            a1 = _name(axis[1], where + ".axis[1]", pr)
+            named |= {a for a in (a0, a1) if a}
+            axis = (a0, a1) if a0 and a1 else None
+            if axis and a0 == a1:
+                pr.add(where + ".axis", f'zero-length link: both ends of the axis are "{a0}"; an axis runs between two points')
+                axis = None
+            if axis:
+                points[a0] = 0j
+    raw_points = body.get("points", {})
+    if not isinstance(raw_points, dict):
+        pr.add(where + ".points", f"must be a table, e.g. points = {{ C = 0.75, S3 = [0.25, 0.02] }}, got {_show(raw_points)}")
+        raw_points = {}
+    if len(raw_points) > MAX_LINK_POINTS:
+        pr.add(where + ".points", f"{len(raw_points)} points on one link: at most {MAX_LINK_POINTS}")
+        raw_points = {}
+    failed: set[str] = set()
+    for pname, spec in raw_points.items():
+        pw = f"{where}.points.{_k(pname)}"
+        nm = _name(pname, pw, pr)
+        if nm is None:
+            continue
+        named.add(nm)
+        if isinstance(spec, list):
+            if len(spec) != 2:
+                pr.add(pw, f"must be a distance along the axis or [along, across], got {_show(spec)}")
+                failed.add(nm)
+                continue
+            x = _number(spec[0], pw + "[0]", pr)
+            y = _number(spec[1], pw + "[1]", pr)
+            if x is None or y is None:
+                failed.add(nm)
+                continue
+            local = complex(x, y)
+        else:
+            if isinstance(spec, dict):
+                pr.add(pw, "must be a distance along the axis or [along, across], got a table")
+                failed.add(nm)
+                continue
+            x = _number(spec, pw, pr)
+            if x is None:
+                failed.add(nm)
+                continue
+            local = complex(x, 0.0)
+        if axis and nm == axis[0] and local != 0:
+            pr.add(pw, f'"{nm}" is the origin of the axis: its position is 0 (or leave it out)')
+            failed.add(nm)
+            continue
+        points[nm] = local
+    if axis:
+        a0, a1 = axis
+        if a1 in failed:
+            pass
+        elif a1 not in points:
+            pr.add(
+                where + ".points",
+                f'the axis end "{a1}" is not among the points of link {lid} '
+                f"(its points: {_known(set(raw_points) - {a0}) if raw_points else 'none'}): "
+                f"give its distance from {a0}, e.g. {a1} = 0.2",
+            )
+        else:
+            end = points[a1]
+            pw = f"{where}.points.{a1}"
+            if abs(end) < SAME:
+                pr.add(pw, f'zero-length link: the axis end "{a1}" is at the origin "{a0}"; give the length {a0}{a1} in metres')
+            elif end.imag != 0:
+                pr.add(pw, f'the axis end "{a1}" must lie on the axis: give its distance, {a1} = {abs(end):g}, not {_fmt(end)}')
+            elif end.real < 0:
+                pr.add(pw, f"negative length {end.real:g}: the length {a0}{a1} is positive (write {a1} = {-end.real:g})")
+            elif end.real < MIN_LINK:
+                pr.add(pw, f"link length {end.real:g} m is too short: at least {MIN_LINK:g} m")
+    if not points and not failed and len(pr.items) == before:
+        pr.add(where, f'has no points: give axis = ["B", "C"] and points = {{ C = 0.3 }}')
+    return Link(lid, lname, points, axis), len(pr.items) == before
 
 
-def _ids(links) -> str:
-    return ", ".join(str(i) for i in sorted(links)) or "none"
+def _coincident(points: dict[str, complex], joints: set[str], where: str, what: str,
+                pr: _Problems, tol: float = MIN_LEN) -> None:
+    """Two joints at one place: a zero-length link between them, or one joint with two names."""
+    names = [n for n in points if n in joints]
+    if len(names) > 60:  # keep it linear-ish for big files; cells of the tolerance
+        cells: dict[tuple[int, int], str] = {}
+        for n in names:
+            z = points[n]
+            key = (round(z.real / tol), round(z.imag / tol))
+            if key in cells:
+                pr.add(f"{where}.{n}" if where == "frame" else where,
+                       f'{what} "{cells[key]}" and "{n}" are at the same place {_fmt(z)}: one joint has one name')
+            cells.setdefault(key, n)
+        return
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            if abs(points[a] - points[b]) < tol:
+                pr.add(
+                    f"{where}.{b}" if where == "frame" else where,
+                    f'{what} "{a}" and "{b}" are at the same place {_fmt(points[b])}: a '
+                    "zero-length link between them; if they are one joint, give it one name",
+                )
 
 
-def _guide(body, where, pr: _Problems, links, frame, slider_link) -> Guide | None:
+def _connections(frame, links, pairs, drv, bad_links, pr: _Problems) -> None:
+    """Links attached by fewer than two pairs (a typo in a point name, usually), and two
+    joints of one link at the same place."""
+    carriers: dict[str, list[int]] = {name: [0] for name in frame}
+    for lid, link in sorted(links.items()):
+        for name in link.points:
+            carriers.setdefault(name, []).append(lid)
+    slides: dict[int, list[str]] = {lid: [] for lid in links}
+    for lid, gl in pairs:
+        slides[lid].append("its slider")
+        if gl in slides:
+            slides[gl].append(f"the guide of link {lid}")
+    for lid, link in sorted(links.items()):
+        if lid in bad_links:
+            continue
+        joints = {n for n in link.points if len(carriers[n]) > 1}
+        _coincident(link.points, joints, f"links.{lid}.points", f"joints of link {lid}", pr, SAME)
+        if lid == drv:
+            continue
+        pairs = [f'"{n}"' for n in sorted(joints)] + slides[lid]
+        if len(pairs) >= 2:
+            continue
+        free = [n for n in link.points if len(carriers[n]) == 1]
+        others = {n for n, c in carriers.items() if c != [lid]}
+        what = (f"link {lid} is not connected to anything" if not pairs
+                else f"link {lid} is attached by one pair only ({pairs[0]})")
+        need = "a link of a mechanism is attached by at least two pairs (joints named on two links, or a slider)"
+        if link.axis and link.axis[0] in free:
+            why = f"it is on no other link and not in [frame], so {what}"
+            pr.add(f"links.{lid}.axis[0]", _unknown_point(link.axis[0], others, why))
+        elif free and others:
+            guesses = []
+            for n in free:
+                close = difflib.get_close_matches(n, list(others), n=1, cutoff=0.5)
+                if close:
+                    guesses.append(f'"{n}" → "{close[0]}"?')
+            hint = f"; a misspelt joint? {', '.join(guesses)}" if guesses else ""
+            pr.add(f"links.{lid}", f"{what}: {need}{hint}")
+        else:
+            pr.add(f"links.{lid}", f"{what}: {need}")
+
+
+def _hint_problem(hint: str, names: list[str]) -> str | None:
+    """Why an [assembly] hint cannot be read, or None."""
+    from .kinematics import parse_hint
+
+    try:
+        parse_hint(hint, names)
+    except ValueError as exc:
+        return _oneline(str(exc), 120)
+    return None
+
+
+def _guide(body, where, pr: _Problems, links, frame, slider_link, bad_links) -> Guide | None:
     if not isinstance(body, dict):
-        pr.add(where, 'missing: e.g. { link = 0, through = [0, 0.35], angle_deg = 0 } or { link = 3 }')
+        got = "missing" if body is None else f"must be a table, got {_show(body)}"
+        pr.add(where, f"{got}: e.g. guide = {{ link = 0, through = [0, 0.35], angle_deg = 0 }} or {{ link = 3 }}")
         return None
-    _check_keys(body, {"link", "through", "angle_deg", "offset", "label"}, where, pr)
-    gl = body.get("link", 0)
-    if not isinstance(gl, int) or isinstance(gl, bool) or (gl != 0 and gl not in links):
-        pr.add(where + ".link", f"{gl!r:.20} is not a link (0 = frame; moving: {_ids(links)})")
+    _check_keys(body, {"link", "through", "angle_deg", "direction", "offset", "label"}, where, pr)
+    raw = body.get("link", 0)
+    gl = _link_id(raw)
+    if gl is None or (gl != 0 and gl not in links):
+        if gl not in bad_links:
+            pr.add(where + ".link", f"{_show(raw, 20)} is not a link (0 = frame; moving: {_ids(links)})")
         return None
-    angle = _number(body.get("angle_deg", 0.0), where + ".angle_deg", pr)
+    if gl in bad_links:
+        return None
+    if "direction" in body:
+        if "angle_deg" in body:
+            pr.add(where, "give angle_deg or direction, not both")
+            return None
+        d = _pair(body["direction"], where + ".direction", pr)
+        if d is None:
+            return None
+        if abs(d) < SAME:
+            pr.add(where + ".direction", f"guide direction of zero length {_fmt(d)}: give a vector along the guide, e.g. [1, 0]")
+            return None
+        direction = d / abs(d)
+    else:
+        angle = _number(body.get("angle_deg", 0.0), where + ".angle_deg", pr, unit="°")
+        if angle is None:
+            return None
+        direction = complex(math.cos(math.radians(angle)), math.sin(math.radians(angle)))
     offset = _number(body.get("offset", 0.0), where + ".offset", pr)
-    if angle is None or offset is None:
+    if offset is None:
         return None
-    direction = complex(math.cos(math.radians(angle)), math.sin(math.radians(angle)))
     through = body.get("through")
     label = body.get("label")
     if gl == 0:
         if isinstance(through, str):
             if through not in frame:
-                pr.add(where + ".through", f'"{through}" is not a fixed point (known: {", ".join(frame)})')
+                pr.add(where + ".through", f"{_show(through)} is not a fixed point (fixed points: {_known(frame)}); or give [x, y]")
                 return None
             point = frame[through]
         elif through is None:
-            pr.add(where + ".through", "missing: a point [x, y] or a fixed point name")
+            pr.add(where + ".through", "missing: a point of the guide, [x, y] or a fixed point name")
             return None
         else:
             point = _pair(through, where + ".through", pr)
@@ -471,11 +885,11 @@ def _guide(body, where, pr: _Problems, links, frame, slider_link) -> Guide | Non
     else:
         link = links[gl]
         if link.axis is None:
-            pr.add(where + ".link", f"link {gl} has no axis to carry a guide")
+            pr.add(where + ".link", f"link {gl} has no axis to carry a guide: give it an axis, or let the guide be on another link")
             return None
         if isinstance(through, str):
             if through not in link.points:
-                pr.add(where + ".through", f'"{through}" is not a point of link {gl}')
+                pr.add(where + ".through", f"{_show(through)} is not a point of link {gl} (its points: {_known(link.points)})")
                 return None
             point = link.points[through]
         elif through is None:
@@ -486,61 +900,75 @@ def _guide(body, where, pr: _Problems, links, frame, slider_link) -> Guide | Non
                 return None
         default_label = "".join(link.axis)
     point = point + offset * 1j * direction
-    if label is not None and not isinstance(label, str):
-        pr.add(where + ".label", "must be a text")
+    if label is not None and (not isinstance(label, str) or len(label) > 20):
+        pr.add(where + ".label", f'must be a short text (at most 20 characters), e.g. "x-x", got {_show(label)}')
         label = None
     return Guide(gl, point, direction, label or default_label)
 
 
-def _driver(body, pr: _Problems, links, frame) -> Driver | None:
+def _driver(body, pr: _Problems, links, frame, bad_links, named) -> Driver | None:
     where = "driver"
     if not isinstance(body, dict):
-        pr.add(where, "missing: [driver] with link, angle_deg and omega or rpm")
+        got = "missing" if body is None else f"must be a table, got {_show(body)}"
+        pr.add(where, f"{got}: [driver] with link, angle_deg, and omega (rad/s) or rpm")
         return None
     _check_keys(
         body, {"link", "angle_deg", "from", "measured", "omega", "rpm", "sense"}, where, pr
     )
-    lid = body.get("link", 1)
-    if not isinstance(lid, int) or isinstance(lid, bool) or lid not in links:
-        pr.add(where + ".link", f"{lid!r:.20} is not a moving link (known: {_ids(links)})")
+    raw = body.get("link", 1)
+    lid = _link_id(raw)
+    if lid is None or lid not in links:
+        if lid not in bad_links:
+            pr.add(where + ".link", f"{_show(raw, 20)} is not a moving link (moving links: {_ids(links)})")
         return None
     link = links[lid]
     if link.axis is None:
-        pr.add(f"links.{lid}.axis", 'the crank needs an axis from its pivot to its pin, e.g. ["O", "A"]')
+        if lid not in bad_links:
+            pr.add(f"links.{lid}.axis", f'missing: the crank (link {lid}) needs an axis from its fixed pivot to its pin, e.g. ["O", "A"]')
         return None
     pivot, tip = link.axis
     if pivot not in frame:
         pr.add(
             f"links.{lid}.axis[0]",
             f'the crank turns about "{pivot}", which is not a fixed point in [frame] '
-            f'(fixed: {", ".join(frame) or "none"}): the driver must be attached to the frame',
+            f"(fixed points: {_known(frame)}): the driver must be attached to the frame",
         )
-    angle = _number(body.get("angle_deg"), where + ".angle_deg", pr)
+    else:
+        also = sorted(n for n in link.points if n in frame and n != pivot)
+        if also:
+            pr.add(
+                f"links.{lid}.points.{also[0]}",
+                f'the crank is hinged to the frame at "{pivot}" and at "{also[0]}": it could '
+                "not turn; a crank has one fixed pivot",
+            )
+    angle = _number(body.get("angle_deg"), where + ".angle_deg", pr, unit="°")
     ref = body.get("from", "+x")
     if ref not in REFERENCES:
-        pr.add(where + ".from", f'{ref!r:.20} is not a reference (one of "+x", "+y", "-x", "-y")')
+        pr.add(where + ".from", f'{_show(ref, 20)} is not a reference: one of "+x", "+y", "-x", "-y"')
         ref = "+x"
     measured = body.get("measured", "ccw")
     if measured not in SENSES:
-        pr.add(where + ".measured", f'{measured!r:.20} must be "ccw" or "cw"')
+        pr.add(where + ".measured", f'{_show(measured, 20)}: must be "ccw" or "cw"')
         measured = "ccw"
     sense = body.get("sense", "ccw")
     if sense not in SENSES:
-        pr.add(where + ".sense", f'{sense!r:.20} must be "ccw" or "cw"')
+        pr.add(where + ".sense", f'{_show(sense, 20)}: must be "ccw" or "cw" (the sign of ω goes here)')
         sense = "ccw"
     rpm = None
     if "omega" in body and "rpm" in body:
         pr.add(where, "give omega (rad/s) or rpm, not both")
         return None
     if "rpm" in body:
-        rpm = _number(body["rpm"], where + ".rpm", pr, positive=True)
+        rpm = _number(body["rpm"], where + ".rpm", pr, positive=True, unit="rpm",
+                      low=SPEED[0], high=SPEED[1])
         omega = None if rpm is None else math.pi * rpm / 30.0
     elif "omega" in body:
-        omega = _number(body["omega"], where + ".omega", pr, positive=True)
+        omega = _number(body["omega"], where + ".omega", pr, positive=True, unit="rad/s",
+                        low=SPEED[0], high=SPEED[1])
     else:
         pr.add(where + ".omega", "missing: the crank speed, omega in rad/s or rpm")
         omega = None
-    if angle is None or omega is None:
+    if angle is None or omega is None or tip not in link.points:
         return None
     phi = math.radians(REFERENCES[ref] + SENSES[measured] * angle)
     return Driver(
@@ -555,3 +983,222 @@ def _driver(body, pr: _Problems, links, frame) -> Driver | None:
         measured=measured,
         rpm=rpm,
     )
+
+
+# ---------------------------------------------------------------------------------------
+# where is a key? (line numbers for the messages)
+# ---------------------------------------------------------------------------------------
+
+_BARE = re.compile(r"[A-Za-z0-9_-]+")
+
+
+def _join(path: list[str]) -> str:
+    out = ""
+    for part in path:
+        out += part if part.startswith("[") or not out else "." + part
+    return out
+
+
+def _line_of(where: str, index: dict[str, int]) -> int | None:
+    """The line of ``where`` or of the nearest enclosing key that is in the file."""
+    while where:
+        if where in index:
+            return index[where]
+        cut = max(where.rfind("."), where.rfind("["))
+        if cut <= 0:
+            return None
+        where = where[:cut]
+    return None
+
+
+def _locate(text: str) -> dict[str, int]:
+    """Key path ("links.3.points.C", "sliders[1].guide", "frame.O[0]") → line, for a TOML
+    text that parses. Best effort: never raises; an unlocated problem keeps its key path."""
+    loc = _Locator(text)
+    try:
+        loc.document()
+    except Exception:  # noqa: BLE001 - a locator must not turn a message into a crash
+        pass
+    return loc.index
+
+
+def _first_duplicate(text: str) -> tuple[str, int, int] | None:
+    """The first key given twice in ``text``: (key path, first line, second line)."""
+    loc = _Locator(text)
+    try:
+        loc.document()
+    except Exception:  # noqa: BLE001
+        pass
+    return loc.duplicate
+
+
+class _Locator:
+    """A small reader of valid TOML that notes the line where each key is defined."""
+
+    def __init__(self, text: str):
+        self.s = text
+        self.i = 0
+        self.line = 1
+        self.index: dict[str, int] = {}
+        self.defined: dict[str, int] = {}
+        self.duplicate: tuple[str, int, int] | None = None
+        self.aot: dict[str, int] = {}  # array of tables → index of its current element
+
+    def _note(self, path: list[str], line: int, *, value: bool = False) -> None:
+        key = _join(path)
+        self.index.setdefault(key, line)
+        if value:
+            if key in self.defined and self.duplicate is None:
+                self.duplicate = (key, self.defined[key], line)
+            self.defined.setdefault(key, line)
+
+    def _peek(self) -> str:
+        return self.s[self.i] if self.i < len(self.s) else ""
+
+    def _advance(self, n: int = 1) -> None:
+        self.line += self.s.count("\n", self.i, self.i + n)
+        self.i += n
+
+    def _skip(self, newlines: bool = False) -> None:
+        s = self.s
+        while self.i < len(s):
+            c = s[self.i]
+            if c in " \t\r" or (newlines and c == "\n"):
+                self._advance()
+            elif c == "#":
+                end = s.find("\n", self.i)
+                self.i = len(s) if end < 0 else end
+            else:
+                return
+
+    def _expect(self, token: str) -> None:
+        self._skip()
+        if not self.s.startswith(token, self.i):
+            raise ValueError(f"expected {token!r} at line {self.line}")
+        self._advance(len(token))
+
+    def _key(self) -> list[str]:
+        parts = []
+        while True:
+            self._skip()
+            if self._peek() in "\"'":
+                parts.append(_k(self._string()))
+            else:
+                m = _BARE.match(self.s, self.i)
+                if not m:
+                    raise ValueError(f"no key at line {self.line}")
+                parts.append(_k(m.group()))
+                self._advance(len(m.group()))
+            self._skip()
+            if self._peek() != ".":
+                return parts
+            self._advance()
+
+    def _string(self) -> str:
+        s, q = self.s, self.s[self.i]
+        if s.startswith(q * 3, self.i):
+            end = self.i + 3
+            while True:
+                end = s.find(q * 3, end)
+                if end < 0:
+                    raise ValueError("unterminated string")
+                if q == '"' and s[end - 1] == "\\":
+                    end += 1
+                    continue
+                break
+            while s.startswith(q, end + 3):
+                end += 1
+            raw = s[self.i + 3 : end]
+            self._advance(end + 3 - self.i)
+            return raw
+        j = self.i + 1
+        while s[j] != q:
+            j += 2 if (q == '"' and s[j] == "\\") else 1
+        raw = s[self.i + 1 : j]
+        self._advance(j + 1 - self.i)
+        if q == '"' and "\\" in raw:
+            try:
+                raw = json.loads(f'"{raw}"')
+            except ValueError:
+                pass
+        return raw
+
+    def _resolve(self, parts: list[str]) -> list[str]:
+        """Header key → path, with the current element of every array of tables in it."""
+        out: list[str] = []
+        for part in parts:
+            out.append(part)
+            n = self.aot.get(_join(out))
+            if n is not None:
+                out[-1] = f"{part}[{n}]"
+        return out
+
+    def document(self) -> None:
+        table: list[str] = []
+        while True:
+            self._skip(newlines=True)
+            if self.i >= len(self.s):
+                return
+            line = self.line
+            if self.s.startswith("[[", self.i):
+                self._advance(2)
+                parts = self._key()
+                self._expect("]]")
+                base = self._resolve(parts[:-1]) + [parts[-1]]
+                key = _join(base)
+                n = self.aot.get(key, -1) + 1
+                self.aot[key] = n
+                self.index.setdefault(key, line)
+                table = base[:-1] + [f"{parts[-1]}[{n}]"]
+                self._note(table, line)
+            elif self._peek() == "[":
+                self._advance()
+                parts = self._key()
+                self._expect("]")
+                table = self._resolve(parts)
+                self._note(table, line)
+            else:
+                parts = self._key()
+                self._expect("=")
+                self._note(table + parts, line, value=True)
+                self._value(table + parts)
+
+    def _value(self, path: list[str]) -> None:
+        self._skip()
+        c = self._peek()
+        if c in "\"'":
+            self._string()
+        elif c == "[":
+            self._advance()
+            n = 0
+            while True:
+                self._skip(newlines=True)
+                if self._peek() == "]":
+                    self._advance()
+                    return
+                self._note([*path, f"[{n}]"], self.line)
+                self._value([*path, f"[{n}]"])
+                n += 1
+                self._skip(newlines=True)
+                if self._peek() == ",":
+                    self._advance()
+        elif c == "{":
+            self._advance()
+            while True:
+                self._skip()
+                if self._peek() == "}":
+                    self._advance()
+                    return
+                line = self.line
+                parts = self._key()
+                self._expect("=")
+                self._note(path + parts, line, value=True)
+                self._value(path + parts)
+                self._skip()
+                if self._peek() == ",":
+                    self._advance()
+        else:
+            m = re.compile(r"[^,\]}\n#]*").match(self.s, self.i)
+            if not m.group().strip():
+                raise ValueError(f"no value at line {self.line}")
+            self._advance(len(m.group()))
