@@ -14,66 +14,94 @@ S1, S2 mid-link, S3 = C; links 1 = AB, 2 = BC, 3 = slider.
 
 from __future__ import annotations
 
-import tomllib
 from importlib import resources
 from pathlib import Path
 
 from .errors import InputError
-from .mechanism import Mechanism, from_dict
+from .mechanism import (
+    MAX_ABS,
+    MIN_LINK,
+    Mechanism,
+    _guess,
+    _k,
+    _number,
+    _Problems,
+    _show,
+    from_dict,
+    parse_toml,
+    read_toml,
+)
 
 BUILTIN = "Table 2 (built in)"
 COLUMNS = ("AB", "BC", "CD", "AD", "phi_deg", "rpm")
+KINDS = ("crank-slider", "four-bar")
+MAX_ROWS = 10_000
+#: top-level keys a table may have besides its rows
+TABLE_KEYS = {"variant", "title", "name", "source", "note"}
+ROW_KEYS = {"n", "kind", *COLUMNS}
 
 
 def load_table(path: str | Path | None = None) -> tuple[str, dict[int, dict]]:
+    """The rows of a variant table by their number ``n``; every problem is reported at
+    once, each with its line."""
     if path is None:
         text = resources.files("plans").joinpath("data/table2.toml").read_text("utf-8")
         source = BUILTIN
+        data = parse_toml(text, source)
     else:
         source = str(path)
-        try:
-            text = Path(path).read_text("utf-8")
-        except (OSError, UnicodeDecodeError) as exc:
-            raise InputError(source, f"cannot read the table: {exc}") from None
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(source, f"TOML syntax error: {exc}") from None
+        data, text = read_toml(path, "a variant table is a few KB")
+    pr = _Problems(source, text)
+    for key in data:
+        if key not in TABLE_KEYS:
+            pr.add(_k(key), "unknown key — a table has [[variant]] rows (and title, name, source, note)")
     rows = data.get("variant")
     if not isinstance(rows, list) or not rows:
-        raise InputError(source, "variant: missing; the table needs [[variant]] rows")
+        got = "" if rows is None else f" (got {_show(rows)})"
+        pr.add("variant", f"missing: the table needs [[variant]] rows with n, AB, BC, CD, AD, phi_deg, rpm{got}")
+        pr.raise_if_any()
+    if len(rows) > MAX_ROWS:
+        pr.add("variant", f"{len(rows)} rows: at most {MAX_ROWS}")
+        pr.raise_if_any()
     table: dict[int, dict] = {}
-    problems = []
+    first: dict[int, int] = {}
     for i, row in enumerate(rows):
         where = f"variant[{i}]"
         if not isinstance(row, dict):
-            problems.append(f"{where}: must be a table")
+            pr.add(where, f"must be a table ([[variant]] n = …, AB = …), got {_show(row)}")
             continue
         n = row.get("n")
-        if not isinstance(n, int) or isinstance(n, bool) or n < 0:
-            problems.append(f"{where}.n: must be a whole number ≥ 0, got {n!r:.20}")
+        if isinstance(n, bool) or not isinstance(n, int) or not 0 <= n < 10**6:
+            got = "missing" if n is None else f"got {_show(n, 20)}"
+            pr.add(where + ".n", f"the variant number must be a whole number 0…999999, {got}")
             continue
-        if n in table:
-            problems.append(f"{where}.n: variant {n} appears twice")
+        for key in row:
+            if key not in ROW_KEYS:
+                pr.add(f"{where}.{_k(key)}", f"unknown column (variant {n}) — {_guess(key, ROW_KEYS)}known: {', '.join(sorted(ROW_KEYS))}")
+        if n in first:
+            pr.add(where + ".n", f"variant {n} appears twice (first as variant[{first[n]}]): each number once")
             continue
+        first[n] = i
         kind = row.get("kind", "crank-slider" if n % 2 == 0 else "four-bar")
-        if kind not in ("crank-slider", "four-bar"):
-            problems.append(f'{where}.kind: must be "crank-slider" or "four-bar", got {kind!r:.30}')
+        if kind not in KINDS:
+            pr.add(where + ".kind", f'must be "crank-slider" or "four-bar", got {_show(kind, 30)} (variant {n})')
             continue
         need = COLUMNS if kind == "four-bar" else ("AB", "BC", "phi_deg", "rpm")
-        bad = False
+        values = {}
+        before = len(pr.items)
         for col in need:
-            v = row.get(col)
-            if isinstance(v, bool) or not isinstance(v, int | float):
-                problems.append(f"{where}.{col}: missing or not a number (variant {n})")
-                bad = True
-            elif col not in ("phi_deg",) and not (0 < v < 1e6):
-                problems.append(f"{where}.{col}: must be positive, got {v} (variant {n})")
-                bad = True
-        if not bad:
-            table[n] = dict(row, kind=kind)
-    if problems:
-        raise InputError(source, problems)
+            cw = f"{where}.{col}"
+            if col not in row:
+                pr.add(cw, f"missing: {kind} variant {n} needs {', '.join(need)}")
+            elif col == "phi_deg":
+                values[col] = _number(row[col], cw, pr, unit="°")
+            elif col == "rpm":
+                values[col] = _number(row[col], cw, pr, positive=True, unit="rpm", low=1e-6, high=MAX_ABS)
+            else:
+                values[col] = _number(row[col], cw, pr, positive=True, low=MIN_LINK, high=MAX_ABS)
+        if len(pr.items) == before:
+            table[n] = dict(row, kind=kind, **values)
+    pr.raise_if_any()
     return source, table
 
 
@@ -120,7 +148,9 @@ def variant_dict(row: dict) -> dict:
 def variant(n: int, table: str | Path | None = None) -> Mechanism:
     source, rows = load_table(table)
     if n not in rows:
-        raise InputError(source, f"variant {n} is not in the table (it has {', '.join(map(str, sorted(rows)))})")
+        have = sorted(rows)
+        listed = ", ".join(map(str, have)) if len(have) <= 30 else f"{have[0]}…{have[-1]}, {len(have)} rows"
+        raise InputError(source, f"variant {n} is not in the table (it has {listed})")
     return from_dict(variant_dict(rows[n]), f"{source}, variant {n}")
 
 
