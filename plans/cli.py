@@ -40,26 +40,67 @@ def add_source(p: argparse.ArgumentParser, *, allow_all: bool = False) -> None:
 
 
 def mechanism_from(args):
-    """The mechanism named by FILE or --variant, with --angle applied."""
+    """The mechanism named by FILE or --variant, with --angle applied.
+
+    Refuses, before anything is computed, an output (``-o``) that is one of the inputs, and
+    remembers the inputs so that :func:`write_output` refuses them too.
+    """
+    import math
+    import re
+
     from . import mechanism, variants
 
     if (args.file is None) == (args.variant is None):
         raise InputError("command line", "give a mechanism FILE or --variant N (one of them)")
+    inputs = [p for p in (args.file, getattr(args, "table", None)) if p]
+    _INPUTS[:] = inputs
+    out = getattr(args, "output", None)
+    if out not in (None, "-"):
+        for inp in inputs:
+            if _same_file(out, inp):
+                raise InputError(
+                    "command line",
+                    f"-o {_arg(out)} is the input file {_arg(inp)}: the tool never writes into "
+                    "its inputs; choose another output name",
+                )
+    angle = getattr(args, "angle", None)
+    if angle is not None and not (math.isfinite(angle) and abs(angle) <= mechanism.MAX_ABS):
+        raise InputError(
+            "command line", f"--angle {angle:g} is out of range: a crank angle in degrees, |angle| ≤ 1e6"
+        )
     if args.variant is not None:
-        try:
-            n = int(args.variant)
-        except ValueError:
-            raise InputError("command line", f"--variant: {args.variant!r} is not a number") from None
-        mech = variants.variant(n, args.table)
+        text = str(args.variant).strip()
+        if not re.fullmatch(r"[+-]?\d{1,9}", text):
+            raise InputError("command line", f"--variant: {_arg(args.variant)} is not a variant number (0, 1, 2…)")
+        mech = variants.variant(int(text), args.table)
     else:
         mech = mechanism.load(args.file)
-    if getattr(args, "angle", None) is not None:
-        import math
-
+    if angle is not None:
         d = mech.driver
-        ref = mechanism.REFERENCES[d.reference] + mechanism.SENSES[d.measured] * args.angle
+        ref = mechanism.REFERENCES[d.reference] + mechanism.SENSES[d.measured] * angle
         mech = mech.with_phi(math.radians(ref))
     return mech
+
+
+#: the input files of the running command (set by mechanism_from): never written over
+_INPUTS: list[str] = []
+
+
+def _arg(value) -> str:
+    """A command-line value for a message: one line, cut short."""
+    text = "".join(c if c.isprintable() else "?" for c in str(value))
+    return repr(text if len(text) <= 60 else text[:59] + "…")
+
+
+def _same_file(a, b) -> bool:
+    import os
+
+    try:
+        if os.path.exists(a) and os.path.exists(b):
+            return os.path.samefile(a, b)
+        return Path(a).resolve() == Path(b).resolve()
+    except (OSError, ValueError, RuntimeError):
+        return False
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -115,8 +156,12 @@ def main(argv: list[str] | None = None) -> int:
 
 def write_output(path: str | None, text: str | bytes) -> None:
     """Write to stdout ('-' or None) or atomically to a file: a temporary file in the
-    target folder, renamed over the target only when complete."""
+    target folder, renamed over the target only when complete, so an existing output is
+    replaced only by a complete new one. Refuses the command's input files, a folder,
+    and a folder that does not exist; a file that cannot be written is bad input (exit 2),
+    not an internal error."""
     import os
+    import stat
     import tempfile
 
     if path in (None, "-"):
@@ -125,16 +170,49 @@ def write_output(path: str | None, text: str | bytes) -> None:
         else:
             sys.stdout.write(text)
         return
+    where = _arg(path)[1:-1]
+    for inp in _INPUTS:
+        if _same_file(path, inp):
+            raise InputError(where, f"is the input file {_arg(inp)}: the tool never writes into its inputs")
     target = Path(path)
+    data = text.encode("utf-8") if isinstance(text, str) else text
+    try:
+        st = target.stat()
+    except FileNotFoundError:
+        st = None
+    except OSError as exc:
+        raise InputError(where, f"cannot write: {exc.strerror}") from None
+    if st is not None and stat.S_ISDIR(st.st_mode):
+        raise InputError(where, "is a folder: give a file name")
+    if st is not None and not stat.S_ISREG(st.st_mode):  # /dev/null, a pipe: no rename
+        try:
+            with open(target, "wb") as fh:
+                fh.write(data)
+        except OSError as exc:
+            raise InputError(where, f"cannot write: {exc.strerror}") from None
+        return
     folder = target.parent if str(target.parent) else Path(".")
     if not folder.is_dir():
-        raise InputError(str(path), f"the folder {folder} does not exist")
-    data = text.encode("utf-8") if isinstance(text, str) else text
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=folder)
+        raise InputError(where, f"the folder {_arg(folder)} does not exist")
+    if st is not None:
+        mode = stat.S_IMODE(st.st_mode)
+    else:
+        umask = os.umask(0o022)
+        os.umask(umask)
+        mode = 0o666 & ~umask
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=folder)
+    except OSError as exc:
+        raise InputError(where, f"cannot write in the folder {_arg(folder)}: {exc.strerror}") from None
     try:
         with os.fdopen(fd, "wb") as fh:
             fh.write(data)
+            fh.flush()
+            os.fsync(fh.fileno())
+        os.chmod(tmp, mode)
         os.replace(tmp, target)
-    except BaseException:
+    except BaseException as exc:
         Path(tmp).unlink(missing_ok=True)
+        if isinstance(exc, OSError):
+            raise InputError(where, f"cannot write: {exc.strerror or exc}") from None
         raise
