@@ -5,21 +5,23 @@ machine**, so that a layout (and its tests) is the same everywhere.  The rule
 is GOST 2.304 type B, with *h* the capital height:
 
 * capitals and digits 0.6 h wide, lowercase 0.5 h, punctuation and spaces 0.3 h;
-  the widest letters (M, W, Ж, Ш, Щ, Ы, Ю, №; m, w, ж, ш, щ, ы, ю) 0.8 h and
-  0.6 h, because they are that wide in osifont;
+* Latin and Greek letters 0.1 h wider, the widest letters (Ж, Ш, Щ, Ы, Ю, №, M,
+  W; ж, ш, щ, ы, ю, м, и, й, m, w, ω) 0.9 h and 0.65 h, I, i, l, 1 0.3 h,
+  dashes 0.45 h: the classes as osifont draws them;
 * 0.2 h of letter spacing between characters;
 * height h above the baseline, descent 0.3 h below it.
 
 Against osifont's real advances the rule is within about ±10 % on words.
 
 >>> text_width("Изм.", 2.5)
-6.25
+6.625
 >>> text_box(Text((0, 0), "AB", size=10)).bounds
-(0.0, -10.0, 14.0, 3.0)
+(0.0, -10.0, 16.0, 3.0)
 """
 
 from __future__ import annotations
 
+import itertools
 import math
 import unicodedata
 from collections.abc import Iterable, Sequence
@@ -63,25 +65,36 @@ __all__ = [
 SPACING = 0.2  # letter spacing, in h
 DESCENT = 0.3  # below the baseline, in h
 LINE_PITCH = 1.7  # baseline to baseline, in h (GOST 2.304 type B minimum)
-_WIDE_CAPS = frozenset("MWЖШЩЫЮ№")
-_WIDE_LOWER = frozenset("mwжшщыю")
+SLANT = math.tan(math.radians(15))  # lean of 75° letters per unit of height
+_WIDE = {  # letters much wider than their class in osifont: width in h
+    **dict.fromkeys("ЖШЩЫЮ№MW", 0.9),
+    **dict.fromkeys("жшщыюмийmwω", 0.65),
+}
+_NARROW = {**dict.fromkeys("Iil1|", 0.3), **dict.fromkeys("-–—", 0.45)}
 
 
 def char_width(c: str) -> float:
     """Width of one character in units of h, without the letter spacing.
 
-    >>> char_width("A"), char_width("a"), char_width("."), char_width("Ж")
-    (0.6, 0.5, 0.3, 0.8)
+    The GOST type B classes, with Latin and Greek letters one step wider
+    than Cyrillic ones because osifont draws them so (measured: Latin
+    lowercase 0.58 h, Cyrillic 0.46 h, before spacing).
+
+    >>> [char_width(c) for c in "ДдAa."]
+    [0.6, 0.5, 0.7, 0.6, 0.3]
     """
-    if c in _WIDE_CAPS:
-        return 0.8
-    if c in _WIDE_LOWER:
-        return 0.6
+    if c in _WIDE:
+        return _WIDE[c]
+    if c in _NARROW:
+        return _NARROW[c]
     if c.isspace() or unicodedata.category(c).startswith("P"):
         return 0.3
+    wider = 0.1 if unicodedata.name(c, "").startswith(("LATIN", "GREEK")) else 0.0
     if c.islower():
-        return 0.5
-    return 0.6
+        return 0.5 + wider
+    if c.isalpha():
+        return 0.6 + wider
+    return 0.6  # digits and symbols
 
 
 def text_width(text: str, size: float) -> float:
@@ -92,8 +105,12 @@ def text_width(text: str, size: float) -> float:
 
 
 def text_box(t: Text) -> Polygon:
-    """The box of ``t`` on the sheet: advance × (h + descent), anchor and rotation honoured."""
-    w = text_width(t.text, t.size)
+    """The box of ``t`` on the sheet: advance × (h + descent).
+
+    Anchor, baseline, rotation and horizontal stretch are honoured; the lean
+    of slanted letters is not (it is left to the clearances).
+    """
+    w = text_width(t.text, t.size) * t.stretch
     x0 = {"start": 0.0, "middle": -w / 2, "end": -w}[t.anchor]
     base = t.baseline_shift
     top, bottom = base - t.size, base + DESCENT * t.size
@@ -107,16 +124,25 @@ def text_box(t: Text) -> Polygon:
 # ---------------------------------------------------------------- fitting into cells
 
 
-def _two_lines(text: str, size: float) -> tuple[str, str] | None:
+def _wrap(text: str, size: float, lines: int) -> tuple[str, ...] | None:
+    """``text`` broken at spaces into ``lines`` lines of the least widest width."""
     words = text.split()
-    if len(words) < 2:
+    if len(words) < lines:
         return None
-    splits = ((" ".join(words[:i]), " ".join(words[i:])) for i in range(1, len(words)))
-    return min(splits, key=lambda s: max(text_width(s[0], size), text_width(s[1], size)))
+    best: tuple[str, ...] | None = None
+    best_w = math.inf
+    for cuts in itertools.combinations(range(1, len(words)), lines - 1):
+        bounds = (0, *cuts, len(words))
+        parts = tuple(" ".join(words[a:b]) for a, b in itertools.pairwise(bounds))
+        w = max(text_width(p, size) for p in parts)
+        if w < best_w:
+            best, best_w = parts, w
+    return best
 
 
 def _need(lines: Sequence[str], size: float) -> tuple[float, float]:
-    """Width and height a block needs with its capitals centred in a cell."""
+    """Advance of the widest line, and the height a block needs with its
+    capitals centred in a cell (room for the descent above and below)."""
     width = max(text_width(s, size) for s in lines)
     block = size * (1 + LINE_PITCH * (len(lines) - 1))
     return width, block + 2 * DESCENT * size
@@ -131,21 +157,31 @@ def fit_text(
     align: Literal["start", "middle"] = "middle",
     pad: float = 0.3,
     inset: float = 0.7,
+    slant: float = SLANT,
+    min_stretch: float = 0.8,
 ) -> tuple[Text, ...]:
     """Lines of ``text`` set inside ``cell``, as large as they fit.
 
-    Sizes are tried largest first; at each size one line, then (if
-    ``max_lines`` is 2) the best two-line break at a space.  The capitals of
-    the block are centred vertically; horizontally the lines are centred, or
-    start ``inset`` mm from the left edge.  ``pad`` mm stays free on every side.
-    If nothing fits even at the smallest size, that layout is shrunk below it
-    just enough to fit, so that text never leaves its cell.
+    1. Sizes are tried largest first; at each size one line, then two and
+       more up to ``max_lines``, broken at spaces into lines of even width.
+    2. If nothing fits, the smallest size is condensed horizontally, down to
+       ``min_stretch`` (KiCad's GOST sheet writes "Изм." at 80 % width).
+    3. If that is not enough either, it is shrunk below the smallest size, so
+       that text never leaves its cell.
+
+    The capitals of the block are centred vertically; horizontally the lines
+    are centred, or start ``inset`` mm from the left edge.  ``pad`` mm stays
+    free on every side (make it half the cell's line width plus a little), and
+    the lean of slanted letters (``slant`` × h, tan 15°) is counted in.
 
     >>> [(t.text, t.size) for t in fit_text("Масштаб", Rect(0, 0, 18, 5), sizes=(2.5,))]
     [('Масштаб', 2.5)]
-    >>> [t.text for t in fit_text("Кинематический анализ", Rect(0, 0, 40, 15),
+    >>> [t.text for t in fit_text("Кинематический анализ", Rect(0, 0, 60, 20),
     ...                              sizes=(5.0,), max_lines=2)]
     ['Кинематический', 'анализ']
+    >>> cell = Rect(0, 0, 7, 5)
+    >>> [(t.size, t.stretch) for t in fit_text("Изм.", cell, sizes=(2.5,), pad=0.45)]
+    [(2.5, 0.81)]
     """
     if not text:
         return ()
@@ -153,34 +189,46 @@ def fit_text(
     avail_w = cell.w - 2 * pad - (inset - pad if align == "start" else 0.0)
     avail_h = cell.h - 2 * pad
 
-    def layouts(size: float) -> Iterable[tuple[str, ...]]:
-        yield (text,)
-        if max_lines >= 2 and (two := _two_lines(text, size)):
-            yield two
+    def layouts(size: float) -> list[tuple[str, ...]]:
+        out = [(text,)]
+        for n in range(2, max_lines + 1):
+            if wrapped := _wrap(text, size, n):
+                out.append(wrapped)
+        return out
 
-    chosen: tuple[float, tuple[str, ...]] | None = None
+    def stretch_needed(lines: tuple[str, ...], size: float) -> float:
+        """Horizontal scale making the block fit (>1: room to spare; 0: too tall)."""
+        w, h = _need(lines, size)
+        if h > avail_h + 1e-9:
+            return 0.0
+        return (avail_w - slant * size) / w if w > 0 else math.inf
+
+    chosen: tuple[float, float, tuple[str, ...]] | None = None
     for size in sizes:
         for lines in layouts(size):
-            w, h = _need(lines, size)
-            if w <= avail_w + 1e-9 and h <= avail_h + 1e-9:
-                chosen = (size, lines)
+            if stretch_needed(lines, size) >= 1 - 1e-9:
+                chosen = (size, 1.0, lines)
                 break
         if chosen:
             break
-    if chosen is None:  # last resort: shrink the best layout of the smallest size
+    if chosen is None:
         size = sizes[-1]
-        best = min(layouts(size), key=lambda ls: max(_need(ls, size)[0] / avail_w, _need(ls, size)[1] / avail_h))
-        w, h = _need(best, size)
-        scale = min(avail_w / w, avail_h / h)
-        chosen = (math.floor(size * scale * 100) / 100, best)
+        lines = max(layouts(size), key=lambda ls: stretch_needed(ls, size))
+        k = stretch_needed(lines, size)
+        if k >= min_stretch:
+            chosen = (size, math.floor(k * 100) / 100, lines)
+        else:  # shrink at the narrowest stretch until both width and height fit
+            w, h = _need(lines, size)
+            scale = min(avail_w / (w * min_stretch + slant * size), avail_h / h)
+            chosen = (math.floor(size * scale * 100) / 100, min_stretch, lines)
 
-    size, lines = chosen
+    size, stretch, lines = chosen
     pitch = LINE_PITCH * size
     cx, cy = cell.center
     first = cy + size / 2 - pitch * (len(lines) - 1) / 2  # baseline of line 1
     x = cx if align == "middle" else cell.x + inset
     return tuple(
-        Text((x, first + i * pitch), line, size=size, anchor=align)
+        Text((x, first + i * pitch), line, size=size, anchor=align, stretch=stretch)
         for i, line in enumerate(lines)
     )
 
@@ -218,8 +266,10 @@ class Placement:
     clear: bool
 
 
-def _candidate(anchor: Point, direction: str, gap: float, label: str, size: float) -> Text:
-    """The label set ``gap`` mm from ``anchor`` (box edge or corner) towards ``direction``."""
+def _candidate(
+    anchor: Point, direction: str, gap: float, label: str, size: float
+) -> Text:
+    """The label ``gap`` mm from ``anchor`` (box edge or corner) to ``direction``."""
     ax, ay = anchor
     d = gap * math.sqrt(0.5)
     low = DESCENT * size  # the box's bottom is the descent, under the baseline
@@ -275,7 +325,11 @@ def place_labels(
             for direction in _directions(req.prefer):
                 text = _candidate(req.anchor, direction, gap, req.text, req.size)
                 box = text_box(text)
-                hits = [] if tree is None else [static[i] for i in tree.query(box, predicate="intersects")]
+                hits = (
+                    []
+                    if tree is None
+                    else [static[i] for i in tree.query(box, predicate="intersects")]
+                )
                 if placed:
                     mask = shapely.intersects(box, np.asarray(placed, dtype=object))
                     hits += [p for p, m in zip(placed, mask, strict=True) if m]
@@ -283,7 +337,11 @@ def place_labels(
                 if not hits and outside <= 1e-9:
                     best = (0.0, text, box)
                     break
-                cost = sum(box.intersection(g).area for g in hits) + outside + 1e-6 * len(hits)
+                cost = (
+                    sum(box.intersection(g).area for g in hits)
+                    + outside
+                    + 1e-6 * len(hits)
+                )
                 if best is None or cost < best[0]:
                     best = (cost, text, box)
             if best is not None and best[0] == 0.0:
@@ -295,7 +353,9 @@ def place_labels(
     return out
 
 
-def obstacles_of(items: Iterable[Item], style: Style | None = None, clearance: float = 0.3) -> list[BaseGeometry]:
+def obstacles_of(
+    items: Iterable[Item], style: Style | None = None, clearance: float = 0.3
+) -> list[BaseGeometry]:
     """Geometry of drawn items, widened by half the line width + ``clearance`` mm.
 
     Lines become buffered strokes, an arrow its shaft and head, a circle its
@@ -312,7 +372,11 @@ def obstacles_of(items: Iterable[Item], style: Style | None = None, clearance: f
             half = style.width(it.line) / 2 + clearance
             out += [ln.buffer(half) for ln in lines]
             if it.base is not None:
-                out.append(LineString([it.p1, it.p2]).buffer(style.width(it.base) / 2 + clearance))
+                out.append(
+                    LineString([it.p1, it.p2]).buffer(
+                        style.width(it.base) / 2 + clearance
+                    )
+                )
             continue
         half = style.width(it.line) / 2 + clearance
         if isinstance(it, Segment):
@@ -332,7 +396,7 @@ def obstacles_of(items: Iterable[Item], style: Style | None = None, clearance: f
 
 
 def overlaps(texts: Sequence[Text], tolerance: float = 1e-6) -> list[tuple[int, int]]:
-    """Index pairs ``(i, j)``, i < j, of texts whose boxes share more than ``tolerance`` mm².
+    """Pairs ``(i, j)``, i < j, of texts whose boxes share over ``tolerance`` mm².
 
     >>> overlaps([Text((0, 0), "AB"), Text((3, 0), "CD"), Text((50, 0), "EF")])
     [(0, 1)]
@@ -342,5 +406,9 @@ def overlaps(texts: Sequence[Text], tolerance: float = 1e-6) -> list[tuple[int, 
         return []
     tree = shapely.STRtree(boxes)
     left, right = tree.query(boxes, predicate="intersects")
-    pairs = sorted({(int(i), int(j)) for i, j in zip(left, right, strict=True) if i < j})
-    return [(i, j) for i, j in pairs if boxes[i].intersection(boxes[j]).area > tolerance]
+    pairs = sorted(
+        {(int(i), int(j)) for i, j in zip(left, right, strict=True) if i < j}
+    )
+    return [
+        (i, j) for i, j in pairs if boxes[i].intersection(boxes[j]).area > tolerance
+    ]

@@ -88,7 +88,12 @@ class Rect:
 
     def corners(self) -> tuple[Point, Point, Point, Point]:
         """Corners clockwise on the sheet, from the top-left one."""
-        return ((self.x, self.y), (self.x1, self.y), (self.x1, self.y1), (self.x, self.y1))
+        return (
+            (self.x, self.y),
+            (self.x1, self.y),
+            (self.x1, self.y1),
+            (self.x, self.y1),
+        )
 
 
 @dataclass(frozen=True, slots=True)
@@ -184,7 +189,10 @@ class Arrow:
         if n <= self.head_len:
             return None
         k = (n - self.head_len) / n
-        end = (self.p1[0] + (self.p2[0] - self.p1[0]) * k, self.p1[1] + (self.p2[1] - self.p1[1]) * k)
+        end = (
+            self.p1[0] + (self.p2[0] - self.p1[0]) * k,
+            self.p1[1] + (self.p2[1] - self.p1[1]) * k,
+        )
         return (self.p1, end)
 
 
@@ -204,6 +212,8 @@ class Text:
         baseline: where ``pos`` lies across the line: ``"alphabetic"`` (on the
             baseline), ``"middle"`` (half the capital height above it) or
             ``"hanging"`` (at the top of the capitals).
+        stretch: horizontal scale of the letters (0.8 = condensed to 80 %),
+            the way a tight table cell is filled without a smaller size.
     """
 
     pos: Point
@@ -213,9 +223,12 @@ class Text:
     rotate_deg: float = 0.0
     italic: bool = True
     baseline: Literal["alphabetic", "middle", "hanging"] = "alphabetic"
+    stretch: float = 1.0
 
     def __post_init__(self) -> None:
         _set(self, "pos", _pt(self.pos))
+        if not self.stretch > 0:
+            raise ValueError(f"text stretch must be positive, got {self.stretch}")
         if not isinstance(self.text, str):
             raise TypeError(f"text must be a str, got {type(self.text).__name__}")
         if not self.size > 0:
@@ -223,7 +236,9 @@ class Text:
         if self.anchor not in _ANCHORS:
             raise ValueError(f"anchor must be one of {_ANCHORS}, got {self.anchor!r}")
         if self.baseline not in _BASELINES:
-            raise ValueError(f"baseline must be one of {_BASELINES}, got {self.baseline!r}")
+            raise ValueError(
+                f"baseline must be one of {_BASELINES}, got {self.baseline!r}"
+            )
 
     @property
     def baseline_shift(self) -> float:
@@ -232,7 +247,9 @@ class Text:
         >>> Text((0, 0), "A", size=5, baseline="middle").baseline_shift
         2.5
         """
-        return {"alphabetic": 0.0, "middle": self.size / 2, "hanging": self.size}[self.baseline]
+        return {"alphabetic": 0.0, "middle": self.size / 2, "hanging": self.size}[
+            self.baseline
+        ]
 
 
 @dataclass(frozen=True, slots=True)
@@ -275,11 +292,16 @@ class Hatch:
         if n < 1e-9:
             return ()
         ux, uy = (self.p2[0] - self.p1[0]) / n, (self.p2[1] - self.p1[1]) / n
-        nx, ny = -uy * self.side, ux * self.side  # +90° on a y-down sheet = right-hand side
+        nx, ny = (
+            -uy * self.side,
+            ux * self.side,
+        )  # +90° on a y-down sheet = right-hand side
         a = math.radians(self.angle_deg)
         dx = self.length * (nx * math.sin(a) - ux * math.cos(a))
         dy = self.length * (ny * math.sin(a) - uy * math.cos(a))
-        back = max(0.0, self.length * math.cos(a))  # leaning back: keep the first one inside
+        back = max(
+            0.0, self.length * math.cos(a)
+        )  # leaning back: keep the first one inside
         count = int((n - back) / self.spacing + 1e-9) + 1 if n > back else 1
         first = back + ((n - back) - (count - 1) * self.spacing) / 2 if n > back else n
         out = []
@@ -320,7 +342,9 @@ class Layer:
 
     def __post_init__(self) -> None:
         if not _LAYER_NAME.match(self.name):
-            raise ValueError(f"layer name must match [A-Za-z][A-Za-z0-9_-]*, got {self.name!r}")
+            raise ValueError(
+                f"layer name must match [A-Za-z][A-Za-z0-9_-]*, got {self.name!r}"
+            )
         _set(self, "items", tuple(self.items))
 
 
@@ -361,7 +385,7 @@ class Scene:
         raise KeyError(name)
 
     def items(self, layer: str | None = None) -> tuple[Item, ...]:
-        """All primitives (of one layer, if named), groups resolved by :func:`flatten`."""
+        """All primitives (of layer ``layer`` if given); groups flattened."""
         layers = self.layers if layer is None else (self.layer(layer),)
         return flatten(item for lay in layers for item in lay.items)
 

@@ -72,8 +72,8 @@ THIN_LINES: tuple[Seg, ...] = (
     (140, 20, 140, 35), (145, 20, 145, 35),
 )  # fmt: skip
 
-#: Fixed wording of the block.  English signer labels are abbreviated where
-#: the full word would not fit the 17 mm cell at 2.5 mm ("Tech. check" needs 18).
+#: Fixed wording of the block.  Labels too wide for their cell at 2.5 mm
+#: ("Tech. check" needs 18 mm of a 17 mm cell) are condensed by fit_text.
 LABELS: dict[str, dict[str, tuple[str, ...] | str]] = {
     "ru": {
         "signers": ("Разраб.", "Пров.", "Т.контр.", "", "Н.контр.", "Утв."),
@@ -82,7 +82,7 @@ LABELS: dict[str, dict[str, tuple[str, ...] | str]] = {
         "sheet": "Лист", "sheets": "Листов", "copied": "Копировал", "format": "Формат",
     },
     "en": {
-        "signers": ("Drawn", "Checked", "Tech. chk.", "", "Norm. chk.", "Approved"),
+        "signers": ("Drawn", "Checked", "Tech. check", "", "Norm. check", "Approved"),
         "header": ("Rev.", "Sheet", "Doc. No.", "Sign.", "Date"),
         "lit": "Lit.", "mass": "Mass", "scale": "Scale",
         "sheet": "Sheet", "sheets": "Sheets", "copied": "Copied", "format": "Format",
@@ -98,7 +98,9 @@ class Sheet:
 
     def __post_init__(self) -> None:
         if self.name not in FORMATS:
-            raise ValueError(f"unknown sheet format {self.name!r}; known: {', '.join(FORMATS)}")
+            raise ValueError(
+                f"unknown sheet format {self.name!r}; known: {', '.join(FORMATS)}"
+            )
 
     @property
     def width(self) -> float:
@@ -173,7 +175,9 @@ class TitleBlock:
             if isinstance(value, int | float):
                 object.__setattr__(self, f.name, str(value))
             elif not isinstance(value, str):
-                raise TypeError(f"TitleBlock.{f.name} must be a str, got {type(value).__name__}")
+                raise TypeError(
+                    f"TitleBlock.{f.name} must be a str, got {type(value).__name__}"
+                )
 
 
 def _block_to_sheet(block: Rect, x0: float, y0: float, x1: float, y1: float) -> Rect:
@@ -182,7 +186,9 @@ def _block_to_sheet(block: Rect, x0: float, y0: float, x1: float, y1: float) -> 
 
 
 def _sizes(style: Style, largest: float) -> tuple[float, ...]:
-    return tuple(s for s in style.font_sizes if s <= largest) or (min(style.font_sizes),)
+    return tuple(s for s in style.font_sizes if s <= largest) or (
+        min(style.font_sizes),
+    )
 
 
 def title_block_texts(
@@ -199,18 +205,44 @@ def title_block_texts(
     words = LABELS[lang]
     blk = sheet.title_block
     out: list[tuple[Text, Rect]] = []
+    # keep clear of the cell's own lines: half a main line plus 0.1 mm
+    room = {"pad": style.s / 2 + 0.1, "inset": 1.0, "slant": style.slant_tan}
 
-    def put(value: str, x0: float, y0: float, x1: float, y1: float, largest: float = 2.5,
-            lines: int = 1, align: Literal["start", "middle"] = "middle") -> None:  # fmt: skip
+    def put(
+        value: str,
+        x0: float,
+        y0: float,
+        x1: float,
+        y1: float,
+        largest: float = 2.5,
+        lines: int = 1,
+        align: Literal["start", "middle"] = "middle",
+    ) -> None:
         cell = _block_to_sheet(blk, x0, y0, x1, y1)
-        for t in fit_text(value, cell, sizes=_sizes(style, largest), max_lines=lines, align=align):
+        for t in fit_text(
+            value,
+            cell,
+            sizes=_sizes(style, largest),
+            max_lines=lines,
+            align=align,
+            **room,
+        ):
             out.append((t, cell))
 
     # left part: header row, then the six signature rows
-    for label, (x0, x1) in zip(words["header"], ((0, 7), (7, 17), (17, 40), (40, 55), (55, 65)), strict=True):
+    for label, (x0, x1) in zip(
+        words["header"], ((0, 7), (7, 17), (17, 40), (40, 55), (55, 65)), strict=True
+    ):
         put(label, x0, 30, x1, 35)
     tb = title_block
-    signers = (tb.developer, tb.checker, tb.tech_control, "", tb.norm_control, tb.approver)
+    signers = (
+        tb.developer,
+        tb.checker,
+        tb.tech_control,
+        "",
+        tb.norm_control,
+        tb.approver,
+    )
     for i, (label, surname) in enumerate(zip(words["signers"], signers, strict=True)):
         top = 30 - 5 * i
         put(label, 0, top - 5, 17, top, align="start")
@@ -219,7 +251,7 @@ def title_block_texts(
 
     # right part
     put(tb.designation, 65, 40, 185, 55, largest=7)
-    put(tb.name, 65, 15, 135, 40, largest=7, lines=2)
+    put(tb.name, 65, 15, 135, 40, largest=7, lines=3)
     put(tb.material, 65, 0, 135, 15, largest=5)
     put(tb.organisation, 135, 0, 185, 15, largest=5, lines=2)
     put(words["lit"], 135, 35, 150, 40)
@@ -236,13 +268,23 @@ def title_block_texts(
 
     # field 26: the designation upside down in the top-left corner of the frame
     f26 = sheet.field26
-    for t in fit_text(tb.designation, f26, sizes=_sizes(style, 5)):
+    for t in fit_text(tb.designation, f26, sizes=_sizes(style, 5), **room):
         cx, cy = f26.center
-        out.append((replace(t, pos=(2 * cx - t.pos[0], 2 * cy - t.pos[1]), rotate_deg=180.0), f26))
+        out.append(
+            (
+                replace(
+                    t, pos=(2 * cx - t.pos[0], 2 * cy - t.pos[1]), rotate_deg=180.0
+                ),
+                f26,
+            )
+        )
 
     # fields 31 and 32 in the bottom margin, under the block
     y = sheet.height - MARGIN_BOTTOM / 2
-    for text, x0, x1 in ((words["copied"], 75, 135), (f"{words['format']} {sheet.name}", 145, 185)):
+    for text, x0, x1 in (
+        (words["copied"], 75, 135),
+        (f"{words['format']} {sheet.name}", 145, 185),
+    ):
         cell = Rect(blk.x + x0, blk.y1, x1 - x0, MARGIN_BOTTOM)
         out.append((Text((cell.x, y), text, size=2.5, baseline="middle"), cell))
     return tuple(out)
@@ -265,15 +307,28 @@ def frame_scene(
     title_block = title_block or TitleBlock()
     frame_items: list = []
     if trim:
-        frame_items.append(Polyline(Rect(0, 0, sheet.width, sheet.height).corners(), LineType.THIN, closed=True))
+        frame_items.append(
+            Polyline(
+                Rect(0, 0, sheet.width, sheet.height).corners(),
+                LineType.THIN,
+                closed=True,
+            )
+        )
     frame_items.append(Polyline(sheet.frame.corners(), LineType.MAIN, closed=True))
 
     blk = sheet.title_block
     lines: list = []
     for table, kind in ((THICK_LINES, LineType.MAIN), (THIN_LINES, LineType.THIN)):
         for x0, y0, x1, y1 in table:
-            lines.append(Segment((blk.x + x0, blk.y1 - y0), (blk.x + x1, blk.y1 - y1), kind))
+            lines.append(
+                Segment((blk.x + x0, blk.y1 - y0), (blk.x + x1, blk.y1 - y1), kind)
+            )
     f26 = sheet.field26
-    lines += [Segment((f26.x1, f26.y), (f26.x1, f26.y1)), Segment((f26.x, f26.y1), (f26.x1, f26.y1))]
+    lines += [
+        Segment((f26.x1, f26.y), (f26.x1, f26.y1)),
+        Segment((f26.x, f26.y1), (f26.x1, f26.y1)),
+    ]
     texts = [t for t, _ in title_block_texts(sheet, title_block, lang, style)]
-    return Scene((Layer("frame", tuple(frame_items)), Layer("title-block", (*lines, *texts))))
+    return Scene(
+        (Layer("frame", tuple(frame_items)), Layer("title-block", (*lines, *texts)))
+    )

@@ -22,30 +22,44 @@ from drawing.styles import LineType, Style
 
 
 def test_text_width_follows_the_fixed_rule():
-    # И 0.6 + з 0.5 + м 0.5 + . 0.3, plus 3 letter spacings of 0.2
-    assert text_width("Изм.", 2.5) == pytest.approx(2.5 * (0.6 + 0.5 + 0.5 + 0.3 + 0.6))
-    assert text_width("AB", 10) == pytest.approx(14.0)
-    assert text_width("ab", 10) == pytest.approx(12.0)
-    assert text_width("a b", 10) == pytest.approx(10 * (0.5 + 0.3 + 0.5 + 0.4))
-    assert text_width("Ш", 5) == pytest.approx(4.0)  # wide capital
+    # И 0.6 + з 0.5 + м 0.65 (wide) + . 0.3, plus 3 letter spacings of 0.2
+    assert text_width("Изм.", 2.5) == pytest.approx(
+        2.5 * (0.6 + 0.5 + 0.65 + 0.3 + 0.6)
+    )
+    assert text_width("ДД", 10) == pytest.approx(14.0)  # Cyrillic capitals 0.6
+    assert text_width("AB", 10) == pytest.approx(16.0)  # Latin capitals 0.7
+    assert text_width("ab", 10) == pytest.approx(14.0)  # Latin lowercase 0.6
+    assert text_width("дд", 10) == pytest.approx(12.0)  # Cyrillic lowercase 0.5
+    assert text_width("a b", 10) == pytest.approx(10 * (0.6 + 0.3 + 0.6 + 0.4))
+    assert text_width("Ш", 5) == pytest.approx(4.5)  # wide capital
+    assert text_width("23", 10) == pytest.approx(14.0)  # digits 0.6
+    assert text_width("1-", 10) == pytest.approx(9.5)  # narrow 1 (0.3), hyphen 0.45
     assert text_width("", 5) == 0.0
 
 
 def test_text_box_honours_anchor_and_baseline():
-    t = Text((100, 50), "AB", size=10)  # 14 wide, 10 above the baseline, 3 below
+    t = Text((100, 50), "ДД", size=10)  # 14 wide, 10 above the baseline, 3 below
     assert text_box(t).bounds == pytest.approx((100, 40, 114, 53))
-    assert text_box(Text((100, 50), "AB", size=10, anchor="middle")).bounds == pytest.approx((93, 40, 107, 53))
-    assert text_box(Text((100, 50), "AB", size=10, anchor="end")).bounds == pytest.approx((86, 40, 100, 53))
-    assert text_box(Text((100, 50), "AB", size=10, baseline="middle")).bounds == pytest.approx((100, 45, 114, 58))
-    assert text_box(Text((100, 50), "AB", size=10, baseline="hanging")).bounds == pytest.approx((100, 50, 114, 63))
+    assert text_box(
+        Text((100, 50), "ДД", size=10, anchor="middle")
+    ).bounds == pytest.approx((93, 40, 107, 53))
+    assert text_box(
+        Text((100, 50), "ДД", size=10, anchor="end")
+    ).bounds == pytest.approx((86, 40, 100, 53))
+    assert text_box(
+        Text((100, 50), "ДД", size=10, baseline="middle")
+    ).bounds == pytest.approx((100, 45, 114, 58))
+    assert text_box(
+        Text((100, 50), "ДД", size=10, baseline="hanging")
+    ).bounds == pytest.approx((100, 50, 114, 63))
 
 
 def test_text_box_honours_rotation():
     # 90° clockwise on the sheet: the text runs downwards from pos
-    b = text_box(Text((0, 0), "AB", size=10, rotate_deg=90)).bounds
+    b = text_box(Text((0, 0), "ДД", size=10, rotate_deg=90)).bounds
     assert b == pytest.approx((-3, 0, 10, 14))
     # 180°: upside down about pos
-    b = text_box(Text((0, 0), "AB", size=10, rotate_deg=180)).bounds
+    b = text_box(Text((0, 0), "ДД", size=10, rotate_deg=180)).bounds
     assert b == pytest.approx((-14, -3, 0, 10))
 
 
@@ -57,14 +71,16 @@ def test_fit_text_takes_the_largest_size_that_fits():
 
 
 def test_fit_text_wraps_to_two_lines_before_shrinking():
-    # one line would need 2.5 mm (70.5 mm wide); two lines fit at 5 mm (72 mm)
-    cell = Rect(0, 0, 75, 25)
+    # one line would need 2.5 mm (74 mm wide); two lines fit at 5 mm (76.5 mm)
+    cell = Rect(0, 0, 80, 25)
     text = "Кинематический анализ рычажного механизма"
     lines = fit_text(text, cell, sizes=(7, 5, 3.5, 2.5), max_lines=2)
     assert len(lines) == 2
     assert " ".join(t.text for t in lines) == text
     assert lines[0].size == lines[1].size == 5
-    assert lines[1].pos[1] - lines[0].pos[1] == pytest.approx(1.7 * 5)  # GOST type B line pitch
+    assert lines[1].pos[1] - lines[0].pos[1] == pytest.approx(
+        1.7 * 5
+    )  # GOST type B line pitch
     for t in lines:
         assert box(*cell.bounds).contains(text_box(t))
 
@@ -77,7 +93,9 @@ def test_fit_text_shrinks_below_the_smallest_size_rather_than_overflow():
 
 
 def test_fit_text_start_alignment_keeps_the_inset():
-    (t,) = fit_text("Разраб.", Rect(0, 0, 17, 5), sizes=(2.5,), align="start", inset=0.7)
+    (t,) = fit_text(
+        "Разраб.", Rect(0, 0, 17, 5), sizes=(2.5,), align="start", inset=0.7
+    )
     assert t.pos == pytest.approx((0.7, 2.5 + 1.25))  # capitals centred on the row
     assert fit_text("", Rect(0, 0, 17, 5)) == ()
 
@@ -92,16 +110,22 @@ def test_label_avoids_a_line_through_the_preferred_place():
     assert free[0].clear and blocked[0].clear
     assert not blocked[0].box.intersects(obstacles[0])
     # "ne" was taken by the line; the label went next door, still 1 mm from the point
-    ne_box = text_box(Text((50 + math.sqrt(0.5), 50 - math.sqrt(0.5) - 1.05), "b", size=3.5))
+    ne_box = text_box(
+        Text((50 + math.sqrt(0.5), 50 - math.sqrt(0.5) - 1.05), "b", size=3.5)
+    )
     assert ne_box.intersects(obstacles[0])
-    assert blocked[0].box.distance(shapely.Point(anchor)) == pytest.approx(1.0, abs=0.01)
+    assert blocked[0].box.distance(shapely.Point(anchor)) == pytest.approx(
+        1.0, abs=0.01
+    )
     assert blocked[0].box.centroid.x > 50  # clockwise neighbour "e" first
 
 
 def test_labels_avoid_each_other_and_the_taken_boxes():
     anchor = (20.0, 20.0)
     taken = [text_box(Text((21, 18.95), "XX", size=3.5))]  # sits where "ne" would go
-    reqs = [LabelRequest(anchor, name, 3.5, prefer="ne") for name in ("a", "b", "c", "d")]
+    reqs = [
+        LabelRequest(anchor, name, 3.5, prefer="ne") for name in ("a", "b", "c", "d")
+    ]
     placed = place_labels(reqs, obstacles=[], taken=taken)
     assert all(p.clear for p in placed)
     assert overlaps([p.text for p in placed]) == []
@@ -110,10 +134,14 @@ def test_labels_avoid_each_other_and_the_taken_boxes():
 
 def test_label_stays_inside_the_region_and_reports_failure():
     region = box(0, 0, 100, 100)
-    (p,) = place_labels([LabelRequest((99.5, 0.5), "long label", 3.5, prefer="ne")], region=region)
+    (p,) = place_labels(
+        [LabelRequest((99.5, 0.5), "long label", 3.5, prefer="ne")], region=region
+    )
     assert p.clear and region.contains(p.box)
     # a point boxed in on every side: the least bad candidate comes back, flagged
-    wall = shapely.Point(50, 50).buffer(30).difference(shapely.Point(50, 50).buffer(0.5))
+    wall = (
+        shapely.Point(50, 50).buffer(30).difference(shapely.Point(50, 50).buffer(0.5))
+    )
     (q,) = place_labels([LabelRequest((50, 50), "c", 3.5)], obstacles=[wall])
     assert not q.clear
 
@@ -121,33 +149,49 @@ def test_label_stays_inside_the_region_and_reports_failure():
 def test_obstacles_of_widens_lines_by_half_the_width_and_clearance():
     style = Style()
     seg, arrow, ring, disc = obstacles_of(
-        [Segment((0, 0), (10, 0)), Arrow((0, 10), (3, 10)), Circle((0, 30), 5), Circle((0, 50), 1, fill="white")],
+        [
+            Segment((0, 0), (10, 0)),
+            Arrow((0, 10), (3, 10)),
+            Circle((0, 30), 5),
+            Circle((0, 50), 1, fill="white"),
+        ],
         style,
     )
     assert seg.bounds == pytest.approx((-0.65, -0.65, 10.65, 0.65), abs=0.01)
     assert arrow.contains(shapely.Point(2.9, 10))  # short arrow: a head only
-    assert not ring.contains(shapely.Point(0, 30)) and ring.contains(shapely.Point(5, 30))
+    assert not ring.contains(shapely.Point(0, 30)) and ring.contains(
+        shapely.Point(5, 30)
+    )
     assert disc.contains(shapely.Point(0, 50))
 
 
 def test_overlaps_ignores_boxes_that_only_touch():
-    a = Text((0, 0), "AB", size=10)  # x 0…14
-    b = Text((14, 0), "CD", size=10)  # x 14…28: shares an edge
-    c = Text((27, 0), "EF", size=10)  # overlaps b
+    a = Text((0, 0), "ДД", size=10)  # x 0…14
+    b = Text((14, 0), "ББ", size=10)  # x 14…28: shares an edge
+    c = Text((27, 0), "ГГ", size=10)  # overlaps b
     assert overlaps([a, b, c]) == [(1, 2)]
 
 
 @settings(max_examples=40, deadline=None)
 @given(
     st.lists(
-        st.tuples(st.floats(10, 90), st.floats(10, 90), st.sampled_from(["a", "b2", "s3", "n_BA"])),
+        st.tuples(
+            st.floats(10, 90),
+            st.floats(10, 90),
+            st.sampled_from(["a", "b2", "s3", "n_BA"]),
+        ),
         min_size=1,
         max_size=8,
     )
 )
 def test_labels_placed_clear_never_overlap(points):
-    lines = [LineString([(0, 0), (100, 100)]).buffer(0.65), LineString([(0, 100), (100, 0)]).buffer(0.65)]
-    placed = place_labels([LabelRequest((x, y), s) for x, y, s in points], obstacles=lines)
+    lines = [
+        LineString([(0, 0), (100, 100)]).buffer(0.65),
+        LineString([(0, 100), (100, 0)]).buffer(0.65),
+    ]
+    placed = place_labels(
+        [LabelRequest((x, y), s) for x, y, s in points], obstacles=lines
+    )
     clear = [p for p in placed if p.clear]
     assert overlaps([p.text for p in clear]) == []
     for p in clear:

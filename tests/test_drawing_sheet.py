@@ -48,18 +48,28 @@ def block_coords(sheet, seg):
     """A title-block segment as (x0, y0, x1, y1) from the block's bottom-left, y up."""
     blk = sheet.title_block
     (ax, ay), (bx, by) = seg.p1, seg.p2
-    return tuple(round(v, 6) for v in (ax - blk.x, blk.y1 - ay, bx - blk.x, blk.y1 - by))
+    return tuple(
+        round(v, 6) for v in (ax - blk.x, blk.y1 - ay, bx - blk.x, blk.y1 - by)
+    )
 
 
 def block_segments(sheet, kind):
     items = frame_scene(sheet, FULL).items("title-block")
     segs = [it for it in items if isinstance(it, Segment) and it.line is kind]
-    return {block_coords(sheet, s) for s in segs if sheet.title_block.x - 0.1 <= s.p1[0]}
+    return {
+        block_coords(sheet, s) for s in segs if sheet.title_block.x - 0.1 <= s.p1[0]
+    }
 
 
 @pytest.mark.parametrize(
     ("name", "size"),
-    [("A0", (1189, 841)), ("A1", (841, 594)), ("A2", (594, 420)), ("A3", (420, 297)), ("A4", (210, 297))],
+    [
+        ("A0", (1189, 841)),
+        ("A1", (841, 594)),
+        ("A2", (594, 420)),
+        ("A3", (420, 297)),
+        ("A4", (210, 297)),
+    ],
 )
 def test_formats_are_landscape_except_a4(name, size):
     sheet = Sheet(name)
@@ -80,12 +90,27 @@ def test_frame_is_20_5_5_5_from_the_edges_and_the_block_sits_in_its_corner(name)
     b = sheet.title_block
     assert (b.w, b.h) == (185, 55)
     assert (b.x1, b.y1) == (f.x1, f.y1)
-    assert (sheet.field26.x, sheet.field26.y, sheet.field26.w, sheet.field26.h) == (20, 5, 70, 14)
+    assert (sheet.field26.x, sheet.field26.y, sheet.field26.w, sheet.field26.h) == (
+        20,
+        5,
+        70,
+        14,
+    )
     frame_layer = frame_scene(sheet).layer("frame")
     trim, frame = frame_layer.items
-    assert trim.line is LineType.THIN and trim.points == ((0, 0), (sheet.width, 0), (sheet.width, sheet.height), (0, sheet.height))
+    assert trim.line is LineType.THIN and trim.points == (
+        (0, 0),
+        (sheet.width, 0),
+        (sheet.width, sheet.height),
+        (0, sheet.height),
+    )
     assert frame.line is LineType.MAIN and frame.closed
-    assert frame.points == ((20, 5), (sheet.width - 5, 5), (sheet.width - 5, sheet.height - 5), (20, sheet.height - 5))
+    assert frame.points == (
+        (20, 5),
+        (sheet.width - 5, 5),
+        (sheet.width - 5, sheet.height - 5),
+        (20, sheet.height - 5),
+    )
 
 
 def test_a4_title_block_spans_the_whole_frame_width():
@@ -109,7 +134,8 @@ def test_thick_lines_are_at_the_kicad_coordinates():
         (0, 30, 65, 30), (0, 35, 65, 35),  # around the header row of the left part
         (65, 40, 185, 40), (65, 15, 185, 15),  # under field 2, over fields 3 and 9
         (135, 0, 135, 40), (135, 35, 185, 35), (135, 20, 185, 20),
-        (7, 30, 7, 55), (17, 0, 17, 55), (40, 0, 40, 55), (55, 0, 55, 55), (65, 0, 65, 55),
+        (7, 30, 7, 55), (17, 0, 17, 55), (40, 0, 40, 55),
+        (55, 0, 55, 55), (65, 0, 65, 55),
         (150, 20, 150, 40), (167, 20, 167, 40), (155, 15, 155, 20),
         (0, 55, 185, 55), (0, 0, 0, 55),  # top and left edges of the block
     }  # fmt: skip
@@ -124,7 +150,11 @@ def test_thin_lines_are_the_rows_and_the_literal_cells():
 
 def test_field_26_box_is_drawn_thick_in_the_top_left_corner():
     sheet = Sheet("A3")
-    segs = [it for it in frame_scene(sheet).items("title-block") if isinstance(it, Segment) and it.p1[0] < 100]
+    segs = [
+        it
+        for it in frame_scene(sheet).items("title-block")
+        if isinstance(it, Segment) and it.p1[0] < 100
+    ]
     assert {(s.p1, s.p2) for s in segs} == {((90, 5), (90, 19)), ((20, 19), (90, 19))}
     assert all(s.line is LineType.MAIN for s in segs)
 
@@ -132,22 +162,44 @@ def test_field_26_box_is_drawn_thick_in_the_top_left_corner():
 def test_fields_are_written_in_their_cells():
     sheet = Sheet("A1")
     blk = sheet.title_block
-    placed = {t.text: (t, cell) for t, cell in title_block_texts(sheet, FULL) if t.rotate_deg == 0}
+    placed = {
+        t.text: (t, cell)
+        for t, cell in title_block_texts(sheet, FULL)
+        if t.rotate_deg == 0
+    }
     designation, cell = placed["ТММ.КП.12.01.00"]
-    assert (cell.x - blk.x, blk.y1 - cell.y1, cell.w, cell.h) == (65, 40, 120, 15)  # x, bottom, w, h
+    assert (cell.x - blk.x, blk.y1 - cell.y1, cell.w, cell.h) == (
+        65,
+        40,
+        120,
+        15,
+    )  # x, bottom, w, h
     assert designation.size == 7
-    # field 1 wraps to two lines, both in the 70 × 25 cell
-    name_lines = [t for t, c in title_block_texts(sheet, FULL) if c.w == 70 and c.h == 25]
-    assert " ".join(t.text for t in name_lines) == FULL.name
-    assert len(name_lines) == 2
+    # field 1: three lines at 3.5 mm beat one line at 2.5 mm in the 70 × 25 cell
+    name_lines = [
+        t for t, c in title_block_texts(sheet, FULL) if c.w == 70 and c.h == 25
+    ]
+    assert [t.text for t in name_lines] == [
+        "Структурный и",
+        "кинематический анализ",
+        "рычажного механизма",
+    ]
+    assert {t.size for t in name_lines} == {3.5}
     # literal, scale, sheet numbers, signers, header
     assert placed["У"][1].x - blk.x == 135 and placed["У"][1].w == 5
     assert placed["1:10"][1].x - blk.x == 167
     assert placed["4"][1].x - blk.x == 170 and placed["1"][1].x - blk.x == 146
     assert placed["Иванов И.И."][1].x - blk.x == 17
     assert blk.y1 - placed["Иванов И.И."][1].y1 == 25  # the "Разраб." row
-    for label in ("Разраб.", "Пров.", "Т.контр.", "Н.контр.", "Утв.", "Изм.", "№ докум.", "Подп.", "Дата",
-                  "Лит.", "Масса", "Масштаб", "Лист", "Листов", "Копировал", "Формат A1"):  # fmt: skip
+    ru_labels = "Разраб. Пров. Т.контр. Н.контр. Утв. Изм. Лист Подп. Дата Лит. Масса"
+    for label in (
+        *ru_labels.split(),
+        "№ докум.",
+        "Масштаб",
+        "Листов",
+        "Копировал",
+        "Формат A1",
+    ):
         assert label in placed, label
     copied, cell = placed["Копировал"]
     assert copied.pos[0] == blk.x + 75 and cell.y == sheet.height - 5
@@ -155,7 +207,9 @@ def test_fields_are_written_in_their_cells():
 
 def test_field_26_repeats_the_designation_upside_down():
     sheet = Sheet("A1")
-    texts = [t for t, cell in title_block_texts(sheet, FULL) if t.text == FULL.designation]
+    texts = [
+        t for t, cell in title_block_texts(sheet, FULL) if t.text == FULL.designation
+    ]
     assert len(texts) == 2
     f26 = next(t for t in texts if t.rotate_deg == 180)
     assert box(*sheet.field26.bounds).contains(text_box(f26))
@@ -163,8 +217,10 @@ def test_field_26_repeats_the_designation_upside_down():
 
 def test_english_labels():
     texts = {t.text for t, _ in title_block_texts(Sheet("A3"), FULL, lang="en")}
-    for label in ("Drawn", "Checked", "Tech. chk.", "Norm. chk.", "Approved", "Rev.", "Sheet", "Doc. No.",
-                  "Sign.", "Date", "Lit.", "Mass", "Scale", "Sheets", "Copied", "Format A3"):  # fmt: skip
+    signers = ("Drawn", "Checked", "Tech. check", "Norm. check", "Approved")
+    header = ("Rev.", "Sheet", "Doc. No.", "Sign.", "Date")
+    right = ("Lit.", "Mass", "Scale", "Sheets", "Copied", "Format A3")
+    for label in (*signers, *header, *right):
         assert label in texts, label
     assert "Разраб." not in texts
     with pytest.raises(ValueError, match="lang"):
@@ -172,7 +228,9 @@ def test_english_labels():
 
 
 @pytest.mark.parametrize("lang", ["ru", "en"])
-@pytest.mark.parametrize("tb", [FULL, LONG, TitleBlock()], ids=["full", "long", "empty"])
+@pytest.mark.parametrize(
+    "tb", [FULL, LONG, TitleBlock()], ids=["full", "long", "empty"]
+)
 def test_no_title_block_text_overlaps_another_or_leaves_its_cell(lang, tb):
     sheet = Sheet("A1")
     placed = title_block_texts(sheet, tb, lang=lang)
@@ -185,7 +243,11 @@ def test_no_title_block_text_overlaps_another_or_leaves_its_cell(lang, tb):
 def test_no_title_block_text_crosses_a_line(tb):
     sheet = Sheet("A2")
     scene = frame_scene(sheet, tb)
-    lines = [LineString([s.p1, s.p2]) for s in scene.items("title-block") if isinstance(s, Segment)]
+    lines = [
+        LineString([s.p1, s.p2])
+        for s in scene.items("title-block")
+        if isinstance(s, Segment)
+    ]
     for t in scene.items("title-block"):
         if isinstance(t, Text):
             inner = text_box(t).buffer(-0.05)
