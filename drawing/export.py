@@ -1,0 +1,73 @@
+"""Write a sheet to disk: SVG as is, PNG and PDF through cairosvg (optional).
+
+Every writer is atomic: the bytes go to a temporary file in the target's own
+directory, which then replaces the target (``os.replace``), so a reader never
+sees half a sheet and a failed export leaves the old file in place.
+
+cairosvg is an optional dependency (``pip install 'vector-plans[export]'``),
+imported only when a PNG or PDF is asked for.  It does not read the embedded
+``@font-face``: it renders with the fonts installed on the machine (the
+Debian package ``fonts-osifont`` gives the same family).
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+from types import ModuleType
+
+__all__ = [
+    "ExportUnavailableError",
+    "write_bytes_atomic",
+    "write_pdf",
+    "write_png",
+    "write_svg",
+]
+
+_HINT = "PNG and PDF export needs cairosvg: pip install 'vector-plans[export]'"
+
+
+class ExportUnavailableError(ImportError):
+    """cairosvg (or the cairo library under it) is missing."""
+
+
+def _cairosvg() -> ModuleType:
+    try:
+        import cairosvg
+    except (ImportError, OSError) as exc:  # OSError: the cairo C library is absent
+        raise ExportUnavailableError(f"{_HINT} ({exc})") from exc
+    return cairosvg
+
+
+def write_bytes_atomic(data: bytes, path: str | os.PathLike[str]) -> Path:
+    """Write ``data`` to ``path`` through a temporary file in the same directory."""
+    target = Path(path)
+    fd, tmp = tempfile.mkstemp(
+        prefix=f".{target.name}.", suffix=".tmp", dir=target.parent
+    )
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            fh.write(data)
+        os.replace(tmp, target)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+    return target
+
+
+def write_svg(svg: str, path: str | os.PathLike[str]) -> Path:
+    """Save the SVG text (UTF-8)."""
+    return write_bytes_atomic(svg.encode("utf-8"), path)
+
+
+def write_png(svg: str, path: str | os.PathLike[str], dpi: float = 150) -> Path:
+    """Render the SVG to a PNG at ``dpi`` (an A1 sheet at 150 dpi is 4967 × 3508 px)."""
+    png = _cairosvg().svg2png(bytestring=svg.encode("utf-8"), dpi=dpi)
+    return write_bytes_atomic(png, path)
+
+
+def write_pdf(svg: str, path: str | os.PathLike[str]) -> Path:
+    """Render the SVG to a one-page PDF of the sheet's real size."""
+    pdf = _cairosvg().svg2pdf(bytestring=svg.encode("utf-8"))
+    return write_bytes_atomic(pdf, path)
