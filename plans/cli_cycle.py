@@ -1,0 +1,442 @@
+"""``plans cycle``: every point and link over N crank positions of the cycle.
+
+The positions are numbered from an extreme position of the output, as the course numbers
+them (``plans.cycle.analyse_cycle``): position 0 starts the working (slower) stroke. For a
+linkage whose crank cannot make a full turn, the N positions span the crank range where it
+assembles.
+
+Each position carries its conditioning: for every group the sine of the angle between the
+two lines the plans intersect (``Construction.sine``; 1 = perpendicular, 0 = parallel, a
+dead point or toggle), and for a slotted link (RPR) also how far the block is from the
+rocker's pivot relative to the loop (|QP| / (|OQ| + |OP|), O the crank's pivot): near 0
+the rocker's ω = V / |QP| loses its digits. A figure below ``WARN_SINE`` (≈ 2°) makes a
+warning, below ``SINGULAR_SINE`` (or a group that does not close) an error: the values of
+that position are then left out (``—`` in the table, empty in CSV, null in JSON) and the
+command exits with status 2 after writing everything else.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from .cli import EXIT_INPUT, EXIT_OK, add_source, mechanism_from, write_output
+from .fmt import num
+
+MAX_POSITIONS = 1_000_000
+
+
+def configure(p) -> None:
+    add_source(p)
+    p.add_argument("--positions", type=int, default=12, metavar="N",
+                   help="number of crank positions (default 12), numbered from an extreme position")
+    fmt = p.add_mutually_exclusive_group()
+    fmt.add_argument("--csv", action="store_true", help="one row per position (SI units)")
+    fmt.add_argument("--json", action="store_true", help="machine-readable output (SI units)")
+    p.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of stdout")
+
+
+@dataclass(frozen=True)
+class Status:
+    """Conditioning and diagnostics of one position."""
+
+    ok: bool  # solved: every group closes and no figure is singular
+    min_sine: float  # the smallest |sin| between intersected lines (NaN if it does not close)
+    figures: dict[str, float]  # per group: "group 2–3 (RPR)" → |sin|; "… pivot" → |QP| ratio
+    warnings: tuple[str, ...]
+    errors: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class CycleTable:
+    mechanism: object
+    cycle: object
+    motion: object
+    status: tuple[Status, ...]
+    points: tuple[str, ...]
+    links: tuple[int, ...]
+    output_values: object | None  # array: s (m) or ψ (rad) of the output, or None
+
+
+def run(args) -> int:
+    import sys
+
+    from .errors import InputError
+
+    n = args.positions
+    if not 1 <= n <= MAX_POSITIONS:
+        raise InputError("command line", f"--positions: {n} is not within 1…{MAX_POSITIONS}")
+    mech = mechanism_from(args)
+    table = compute(mech, n)
+    if args.json:
+        import json
+
+        text = json.dumps(to_json(table), ensure_ascii=False, indent=1, allow_nan=False) + "\n"
+    elif args.csv:
+        text = to_csv(table)
+    else:
+        text = to_text(table)
+    write_output(args.output, text)
+    warned = [i for i, s in enumerate(table.status) if s.warnings]
+    failed = [i for i, s in enumerate(table.status) if s.errors]
+    if warned:
+        worst = min(warned, key=lambda i: table.status[i].min_sine)
+        print(
+            f"plans cycle: warning: {len(warned)} of {n} positions are near-singular "
+            f"(smallest figure at position {worst}: "
+            f"{_fig(min(table.status[worst].figures.values()))})",
+            file=sys.stderr,
+        )
+    for i in failed:
+        for e in table.status[i].errors:
+            print(f"plans cycle: error: position {i}: {e}", file=sys.stderr)
+    return EXIT_INPUT if failed else EXIT_OK
+
+
+# ---------------------------------------------------------------------------------------
+# computing
+# ---------------------------------------------------------------------------------------
+
+
+def compute(mech, n_positions: int, solver=None) -> CycleTable:
+    import numpy as np
+
+    from .cycle import analyse_cycle
+    from .kinematics import Solver
+
+    solver = solver or Solver(mech)
+    cycle = analyse_cycle(mech, n_positions=n_positions, solver=solver)
+    phi = np.array(cycle.positions, dtype=float)
+    with np.errstate(all="ignore"):
+        motion = solver.solve(phi)
+        status = conditioning(mech, motion)
+        out_values = cycle.output.value(motion, mech) if cycle.output is not None else None
+    points = tuple(motion.position)
+    links = tuple(sorted(lid for lid in motion.links if lid != 0))
+    return CycleTable(mech, cycle, motion, status, points, links, out_values)
+
+
+def conditioning(mech, motion) -> tuple[Status, ...]:
+    """Per position: the figures of every group, warnings and errors (see the module doc)."""
+    import numpy as np
+
+    from .kinematics import SINGULAR_SINE, WARN_SINE
+    from .structure import DyadKind
+
+    n = len(motion.phi)
+    O = mech.frame[mech.driver.pivot]
+    per_group = []
+    for g in motion.groups:
+        sine = np.abs(np.asarray(g.velocity.sine, dtype=float))
+        pivot = None
+        if g.group.kind == DyadKind.RPR:
+            P, Q = motion.position[g.group.P], motion.position[g.group.Q]
+            loop = np.abs(Q - O) + np.abs(P - O)
+            with np.errstate(all="ignore"):
+                pivot = np.where(loop > 0, np.abs(P - Q) / np.where(loop > 0, loop, 1.0), 0.0)
+        per_group.append((g, sine, pivot))
+    out = []
+    for k in range(n):
+        deg = _deg(mech, float(motion.phi[k]))
+        figures: dict[str, float] = {}
+        warnings: list[str] = []
+        errors: list[str] = []
+        for g, sine, pivot in per_group:
+            label = g.group.label
+            r0, r1 = g.velocity.routes
+            if not bool(g.valid[k]):
+                errors.append(
+                    f"{label} cannot be assembled at φ1 = {deg:.6g}°: needs {g.admissible}, "
+                    f"misses by {float(g.gap[k]):.6g} m"
+                )
+                figures[label] = math.nan
+                continue
+            s = float(sine[k])
+            s = s if math.isfinite(s) else 0.0
+            figures[label] = s
+            ang = math.degrees(math.asin(min(s, 1.0)))
+            if s < SINGULAR_SINE:
+                errors.append(
+                    f"{label} at φ1 = {deg:.6g}°: the lines {r0.relation} and {r1.relation} "
+                    f"are parallel (angle {ang:.3g}°, sin = {s:.3g}): a singular position "
+                    "(dead point), the plan has no unique solution"
+                )
+            elif s < WARN_SINE:
+                warnings.append(
+                    f"{label} at φ1 = {deg:.6g}°: near-singular, the lines {r0.relation} and "
+                    f"{r1.relation} meet at {ang:.3g}° (sin = {s:.3g})"
+                )
+            if pivot is not None:
+                q = float(pivot[k])
+                q = q if math.isfinite(q) else 0.0
+                figures[f"{label} pivot"] = q
+                P, Q = g.group.P, g.group.Q
+                if q < SINGULAR_SINE:
+                    errors.append(
+                        f"{label} at φ1 = {deg:.6g}°: the block {P} is on the rocker's pivot "
+                        f"{Q} (|{Q}{P}| ratio {q:.3g}): the rocker's ω is undefined"
+                    )
+                elif q < WARN_SINE:
+                    warnings.append(
+                        f"{label} at φ1 = {deg:.6g}°: the block {P} passes close to the "
+                        f"rocker's pivot {Q} (|{Q}{P}| / (|O{Q}| + |O{P}|) = {q:.3g}): the "
+                        "rocker's ω and ε lose digits"
+                    )
+        sines = [v for key, v in figures.items() if not key.endswith(" pivot")]
+        if not sines:
+            min_sine = 1.0
+        elif all(math.isfinite(v) for v in sines):
+            min_sine = min(sines)
+        else:
+            min_sine = math.nan
+        out.append(Status(not errors, min_sine, figures, tuple(warnings), tuple(errors)))
+    return tuple(out)
+
+
+def _deg(mech, phi: float) -> float:
+    """φ1 in degrees, counter-clockwise from +x, in [0, 360)."""
+    return math.degrees(phi) % 360.0
+
+
+def file_angle(mech, phi: float) -> float:
+    """φ1 in the file's own convention (its reference direction and sense), in [0, 360)."""
+    from .mechanism import REFERENCES, SENSES
+
+    d = mech.driver
+    return (SENSES[d.measured] * (math.degrees(phi) - REFERENCES[d.reference])) % 360.0
+
+
+def _fig(x: float) -> str:
+    return "—" if not math.isfinite(x) else f"{x:.3g}"
+
+
+def _ok(x) -> float | None:
+    x = float(x)
+    return x if math.isfinite(x) else None
+
+
+# ---------------------------------------------------------------------------------------
+# output
+# ---------------------------------------------------------------------------------------
+
+
+def _cycle_summary(t: CycleTable) -> dict:
+    c = t.cycle
+    out = {
+        "full_turn": c.full_turn,
+        "output": None if c.output is None else {
+            "point": c.output.point, "kind": c.output.kind, "link": c.output.link},
+        "extremes_phi_deg": [_deg(t.mechanism, x) for x in c.extremes],
+        "stroke": c.stroke,
+        "theta_deg": None if c.theta is None else math.degrees(c.theta),
+        "K": c.K,
+        "grashof": c.grashof,
+        "notes": list(c.notes),
+    }
+    return out
+
+
+def _numbering(t: CycleTable) -> str:
+    c = t.cycle
+    if not c.full_turn:
+        return "over the crank range where the linkage assembles (it cannot make a full turn)"
+    if len(c.extremes) == 2:
+        return "from the extreme position that starts the working stroke"
+    return "from the given crank position (the output has no two extreme positions)"
+
+
+def to_json(t: CycleTable) -> dict:
+    m, mech = t.motion, t.mechanism
+    rows = []
+    for k, st in enumerate(t.status):
+        phi = float(m.phi[k])
+        good = st.ok
+        row = {
+            "index": k,
+            "phi_deg": _deg(mech, phi),
+            "angle_deg": file_angle(mech, phi),
+            "solved": good,
+            "conditioning": {
+                "min_sine": _ok(st.min_sine),
+                "figures": {key: _ok(v) for key, v in st.figures.items()},
+            },
+            "warnings": list(st.warnings),
+            "errors": list(st.errors),
+        }
+        if t.output_values is not None:
+            row["output"] = _ok(t.output_values[k]) if good else None
+        row["points"] = {
+            name: {
+                key: ([float(z.real), float(z.imag)] if good else None)
+                for key, z in (
+                    ("position", complex(m.position[name][k])),
+                    ("velocity", complex(m.velocity[name][k])),
+                    ("acceleration", complex(m.acceleration[name][k])),
+                )
+            }
+            for name in t.points
+        }
+        row["links"] = {
+            str(i): {
+                "omega": _ok(m.links[i].omega[k]) if good else None,
+                "epsilon": _ok(m.links[i].epsilon[k]) if good else None,
+            }
+            for i in t.links
+        }
+        rows.append(row)
+    return {
+        "mechanism": mech.name,
+        "positions": len(rows),
+        "numbering": _numbering(t),
+        "omega1": mech.driver.omega,
+        "cycle": _cycle_summary(t),
+        "point_names": list(t.points),
+        "link_ids": list(t.links),
+        "rows": rows,
+    }
+
+
+def _csv_header(t: CycleTable) -> list[str]:
+    head = ["index", "phi_deg", "angle_deg", "solved", "min_sine"]
+    for label in t.status[0].figures if t.status else ():
+        head.append(f"pivot {label[: -len(' pivot')]}" if label.endswith(" pivot") else f"sine {label}")
+    if t.output_values is not None:
+        head.append(f"output {t.cycle.output.point}")
+    for name in t.points:
+        head += [f"{name}.{q}" for q in ("x", "y", "vx", "vy", "ax", "ay")]
+    for i in t.links:
+        head += [f"omega{i}", f"epsilon{i}"]
+    head += ["warnings", "errors"]
+    return head
+
+
+def to_csv(t: CycleTable) -> str:
+    import csv
+    import io
+
+    m, mech = t.motion, t.mechanism
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(_csv_header(t))
+
+    def f(x) -> str:
+        x = float(x)
+        return repr(x) if math.isfinite(x) else ""
+
+    for k, st in enumerate(t.status):
+        phi = float(m.phi[k])
+        good = st.ok
+        row = [k, f(_deg(mech, phi)), f(file_angle(mech, phi)), int(good), f(st.min_sine)]
+        row += [f(v) for v in st.figures.values()]
+        if t.output_values is not None:
+            row.append(f(t.output_values[k]) if good else "")
+        for name in t.points:
+            for arr in (m.position[name], m.velocity[name], m.acceleration[name]):
+                z = complex(arr[k])
+                row += [f(z.real), f(z.imag)] if good else ["", ""]
+        for i in t.links:
+            st_i = m.links[i]
+            row += [f(st_i.omega[k]), f(st_i.epsilon[k])] if good else ["", ""]
+        row += ["; ".join(st.warnings), "; ".join(st.errors)]
+        w.writerow(row)
+    return buf.getvalue()
+
+
+def _table(title: str, head: list[str], rows: list[list[str]]) -> list[str]:
+    widths = [max(len(h), *(len(r[i]) for r in rows)) for i, h in enumerate(head)]
+    out = ["", title]
+    out.append("  " + "  ".join(h.rjust(wd) for h, wd in zip(head, widths, strict=True)))
+    for r in rows:
+        out.append("  " + "  ".join(c.rjust(wd) for c, wd in zip(r, widths, strict=True)))
+    return out
+
+
+def to_text(t: CycleTable) -> str:
+    m, mech, c = t.motion, t.mechanism, t.cycle
+    d = mech.driver
+    n = len(t.status)
+    sense = "ccw" if d.omega > 0 else "cw"
+    lines = [mech.name, ""]
+    lines.append(
+        f"{n} crank positions, numbered {_numbering(t)}; ω1 = {num(abs(d.omega))} rad/s {sense}"
+    )
+    lines.append(
+        f"φ1: degrees from {d.reference}, measured {d.measured} (the file's convention)"
+    )
+    if c.grashof:
+        lines.append(f"Grashof: {c.grashof}")
+    for note in c.notes:
+        lines.append(note)
+    if c.stroke is not None and c.output is not None:
+        if c.output.kind == "linear":
+            lines.append(f"stroke of {c.output.point}: H = {num(c.stroke)} m")
+        else:
+            lines.append(f"swing of link {c.output.link}: ψ = {num(math.degrees(c.stroke))}°")
+        if c.theta is not None:
+            lines.append(f"θ = {num(math.degrees(c.theta))}°, K = {num(c.K)}")
+    moving = [p for p in t.points if p not in mech.frame]
+    fixed = [p for p in t.points if p in mech.frame]
+    if fixed:
+        lines.append(
+            "fixed points: "
+            + ", ".join(f"{p} ({num(mech.frame[p].real)}, {num(mech.frame[p].imag)}) m" for p in fixed)
+        )
+
+    def lead(k: int) -> list[str]:
+        return [str(k), f"{file_angle(mech, float(m.phi[k])):.2f}"]
+
+    def cell(k: int, value) -> str:
+        return num(float(value)) if t.status[k].ok else "—"
+
+    base = ["№", "φ1 °"]
+    for title, key in (("x of points (m)", "x"), ("y of points (m)", "y")):
+        rows = [
+            lead(k) + [cell(k, getattr(complex(m.position[p][k]), "real" if key == "x" else "imag"))
+                       for p in moving]
+            for k in range(n)
+        ]
+        lines += _table(title, base + moving, rows)
+    for title, store in (("|V| of points (m/s)", m.velocity), ("|a| of points (m/s²)", m.acceleration)):
+        rows = [lead(k) + [cell(k, abs(complex(store[p][k]))) for p in moving] for k in range(n)]
+        lines += _table(title, base + moving, rows)
+    head = base + [f"ω{i}" for i in t.links] + [f"ε{i}" for i in t.links]
+    rows = [
+        lead(k)
+        + [cell(k, m.links[i].omega[k]) for i in t.links]
+        + [cell(k, m.links[i].epsilon[k]) for i in t.links]
+        for k in range(n)
+    ]
+    lines += _table("ω (rad/s) and ε (rad/s²) of links, counter-clockwise positive", head, rows)
+    out_head = []
+    if t.output_values is not None:
+        unit = "m" if c.output.kind == "linear" else "°"
+        out_head = [f"{'s' if c.output.kind == 'linear' else 'ψ'}_{c.output.point} {unit}"]
+    labels = list(t.status[0].figures) if t.status else []
+    head = base + out_head + ["min sin"] + [_short(x) for x in labels] + ["status"]
+    rows = []
+    for k, st in enumerate(t.status):
+        r = lead(k)
+        if out_head:
+            v = float(t.output_values[k])
+            if c.output.kind != "linear":
+                v = math.degrees(v)
+            r.append(num(v) if st.ok else "—")
+        r.append(_fig(st.min_sine))
+        r += [_fig(st.figures.get(x, math.nan)) for x in labels]
+        r.append("error" if st.errors else "warning" if st.warnings else "ok")
+        rows.append(r)
+    lines += _table("Conditioning (sine of the angle between the intersected lines)", head, rows)
+    notes = [(k, "error", e) for k, st in enumerate(t.status) for e in st.errors]
+    notes += [(k, "warning", w) for k, st in enumerate(t.status) for w in st.warnings]
+    if notes:
+        lines.append("")
+        for k, kind, text in sorted(notes, key=lambda x: (x[0], x[1] != "error")):
+            lines.append(f"position {k}: {kind}: {text}")
+    return "\n".join(lines) + "\n"
+
+
+def _short(label: str) -> str:
+    """'group 2–3 (RPR)' → 'sin 2–3'; 'group 2–3 (RPR) pivot' → 'QP 2–3'."""
+    parts = label.split()
+    links = parts[1] if len(parts) > 1 else label
+    return f"QP {links}" if label.endswith(" pivot") else f"sin {links}"

@@ -1,0 +1,169 @@
+"""``plans cycle``: the N positions of the cycle, run in-process as a user would run it."""
+
+import csv
+import io
+import json
+import math
+
+import numpy as np
+import pytest
+
+from plans import mechanism
+from plans.cli import main
+from plans.cycle import analyse_cycle
+from plans.kinematics import WARN_SINE, Solver
+from plans.plan import solve_position
+
+PRESS = "samples/press.toml"
+FOURBAR = "samples/fourbar.toml"
+
+
+def run(capsys, *argv):
+    code = main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_press_table_has_every_section_and_row(capsys):
+    code, out, err = run(capsys, "cycle", PRESS)
+    assert code == 0, err
+    assert "numbered from the extreme position that starts the working stroke" in out
+    sections = ["x of points (m)", "y of points (m)", "|V| of points (m/s)",
+                "|a| of points (m/s²)", "ω (rad/s) and ε (rad/s²)", "Conditioning"]
+    for s in sections:
+        assert s in out
+    cond = out.split("Conditioning")[1].splitlines()[2:]
+    rows = [line.split() for line in cond if line.strip()]
+    assert [r[0] for r in rows] == [str(i) for i in range(12)]
+    assert all(r[-1] == "ok" for r in rows)
+    assert "stroke of D: H = 0.5114 m" in out
+    assert err == ""
+
+
+def test_press_json_agrees_with_the_plan_of_each_position(capsys):
+    code, out, err = run(capsys, "cycle", PRESS, "--json", "--positions", "8")
+    assert code == 0, err
+    data = json.loads(out)
+    mech = mechanism.load(PRESS)
+    solver = Solver(mech)
+    cyc = analyse_cycle(mech, n_positions=8, solver=solver)
+    assert data["positions"] == 8 and len(data["rows"]) == 8
+    assert data["cycle"]["full_turn"] is True
+    assert data["link_ids"] == [1, 2, 3, 4, 5]
+    assert {"A", "A3", "C", "D", "S3", "S4"} <= set(data["point_names"])
+    for row, phi in zip(data["rows"], cyc.positions, strict=True):
+        assert row["phi_deg"] == pytest.approx(math.degrees(phi) % 360, abs=1e-9)
+        # the file measures φ1 clockwise from +y
+        assert row["angle_deg"] == pytest.approx((90 - row["phi_deg"]) % 360, abs=1e-9)
+        assert row["solved"] and row["warnings"] == [] and row["errors"] == []
+        sol = solve_position(mech, phi, solver=solver)
+        scale_v = max(abs(complex(*p["velocity"])) for p in row["points"].values())
+        scale_a = max(abs(complex(*p["acceleration"])) for p in row["points"].values())
+        for name, p in row["points"].items():
+            assert complex(*p["position"]) == pytest.approx(sol.positions[name], abs=1e-14)
+            v = complex(sol.motion.velocity[name][0])
+            a = complex(sol.motion.acceleration[name][0])
+            assert abs(complex(*p["velocity"]) - v) <= 1e-13 * scale_v
+            assert abs(complex(*p["acceleration"]) - a) <= 1e-13 * scale_a
+        for lid, w in row["links"].items():
+            assert w["omega"] == pytest.approx(sol.omega[int(lid)], rel=1e-12, abs=1e-12)
+            assert w["epsilon"] == pytest.approx(sol.epsilon[int(lid)], rel=1e-12, abs=1e-9)
+        sines = [abs(float(g.velocity.sine[0])) for g in sol.motion.groups]
+        assert row["conditioning"]["min_sine"] == pytest.approx(min(sines), rel=1e-12)
+    # numbered from an extreme position: the slider D stands still at position 0
+    v0 = complex(*data["rows"][0]["points"]["D"]["velocity"])
+    assert abs(v0) < 1e-9
+    assert data["rows"][0]["output"] == pytest.approx(max(r["output"] for r in data["rows"]))
+
+
+def test_csv_carries_the_same_numbers_as_json(capsys):
+    _, out_json, _ = run(capsys, "cycle", PRESS, "--json", "--positions", "5")
+    code, out_csv, err = run(capsys, "cycle", PRESS, "--csv", "--positions", "5")
+    assert code == 0, err
+    rows = list(csv.DictReader(io.StringIO(out_csv)))
+    data = json.loads(out_json)
+    assert len(rows) == 5
+    head = rows[0].keys()
+    for col in ("index", "phi_deg", "angle_deg", "min_sine", "sine group 2–3 (RPR)",
+                "pivot group 2–3 (RPR)", "sine group 4–5 (RRP)", "D.vx", "A3.ay", "omega3",
+                "epsilon5", "warnings", "errors"):
+        assert col in head
+    for r, j in zip(rows, data["rows"], strict=True):
+        assert int(r["index"]) == j["index"]
+        assert float(r["D.x"]) == j["points"]["D"]["position"][0]
+        assert float(r["C.vy"]) == j["points"]["C"]["velocity"][1]
+        assert float(r["A3.ax"]) == j["points"]["A3"]["acceleration"][0]
+        assert float(r["omega3"]) == j["links"]["3"]["omega"]
+        assert float(r["min_sine"]) == j["conditioning"]["min_sine"]
+
+
+def test_variant_to_a_file(capsys, tmp_path):
+    target = tmp_path / "cycle.csv"
+    code, out, err = run(capsys, "cycle", "--variant", "1", "--csv", "--positions", "24",
+                         "-o", str(target))
+    assert code == 0, err
+    assert out == ""
+    rows = list(csv.DictReader(io.StringIO(target.read_text("utf-8"))))
+    assert [int(r["index"]) for r in rows] == list(range(24))
+    assert not list(tmp_path.glob(".*.tmp"))
+
+
+def test_a_linkage_that_cannot_turn_fully_warns_at_its_limits(capsys):
+    code, out, err = run(capsys, "cycle", FOURBAR, "--json", "--positions", "9")
+    assert code == 0, err
+    data = json.loads(out)
+    assert data["cycle"]["full_turn"] is False
+    assert "cannot make a full turn" in data["numbering"]
+    rows = data["rows"]
+    # the range ends where the coupler and rocker fold: near-singular, with the figure
+    for row in (rows[0], rows[-1]):
+        assert row["solved"]
+        assert row["conditioning"]["min_sine"] < WARN_SINE
+        assert len(row["warnings"]) == 1
+        assert "near-singular" in row["warnings"][0]
+        assert f"sin = {row['conditioning']['min_sine']:.3g}" in row["warnings"][0]
+    assert all(r["warnings"] == [] for r in rows[2:-2])
+    assert "warning: 2 of 9 positions are near-singular" in err
+
+
+def test_singular_positions_are_errors_with_no_values(capsys, monkeypatch):
+    import plans.kinematics
+
+    # make every position with |sin| < 0.7 count as singular, so the error path runs
+    monkeypatch.setattr(plans.kinematics, "SINGULAR_SINE", 0.7)
+    code, out, err = run(capsys, "cycle", FOURBAR, "--json", "--positions", "9")
+    assert code == 2
+    rows = json.loads(out)["rows"]
+    bad = [r for r in rows if r["errors"]]
+    assert bad and len(bad) < len(rows)
+    for r in bad:
+        assert not r["solved"]
+        assert "a singular position" in r["errors"][0]
+        assert r["points"]["C"]["velocity"] is None
+        assert r["links"]["3"]["omega"] is None
+        assert f"error: position {r['index']}:" in err
+    code, out, err = run(capsys, "cycle", FOURBAR, "--positions", "9")
+    assert code == 2
+    assert "—" in out and "error" in out
+
+
+def test_table_marks_warnings(capsys):
+    code, out, err = run(capsys, "cycle", FOURBAR, "--positions", "5")
+    assert code == 0
+    assert "position 0: warning: group 2–3 (RRR)" in out
+    assert "position 4: warning: group 2–3 (RRR)" in out
+
+
+@pytest.mark.parametrize("n", ["0", "-3", "2000000"])
+def test_positions_out_of_range(capsys, n):
+    code, _, err = run(capsys, "cycle", PRESS, "--positions", n)
+    assert code == 2
+    assert "--positions" in err
+
+
+def test_one_position_and_json_is_strict(capsys):
+    code, out, err = run(capsys, "cycle", PRESS, "--json", "--positions", "1")
+    assert code == 0, err
+    data = json.loads(out, parse_constant=lambda c: pytest.fail(f"non-JSON constant {c}"))
+    assert len(data["rows"]) == 1
+    assert np.isfinite(data["rows"][0]["conditioning"]["min_sine"])
