@@ -1,0 +1,721 @@
+"""``plans bench``: run time per crank position and error against a high-precision reference.
+
+For each bench scene (the two samples and one scene of each dyad kind, from the source
+checkout's ``tests/scenes.py``) and each number N of crank positions (12 … 10⁶), it measures
+
+* ``vectorized`` — ``Solver.solve`` over the N angles at once (positions, velocities,
+  accelerations, ω and ε of everything, with the recorded constructions);
+* ``plan`` — ``solve_position`` angle by angle (the single-position plan builder with
+  its recorded constructions, scale factors and segments), for N up to ``--plan-max``;
+  its error is read from the plan points themselves (the similarity steps included);
+* ``fd h=…`` — a finite-difference baseline from positions only: V ≈ ω1·(X(φ+h) −
+  X(φ−h))/2h, a ≈ ω1²·(X(φ+h) − 2X(φ) + X(φ−h))/h², ω and ε from the links' turns. Its
+  positions come from the same solver, which also computes the plans it throws away,
+  so its time is an upper bound of what a positions-only solver would take;
+* peer packages when installed (``pip install .[bench]``): pylinkage (four-bar and
+  crank-slider scenes; a crank stepped by a constant angle, as the package works).
+
+The error of each is the largest normwise relative error against ``plans.reference``
+(mpmath, 30 digits, from the loop-closure equations): per angle, max over the points of
+|X − X_ref| / max over the points of |X_ref|, for positions, velocities and
+accelerations, and the same over the links for ω and ε (ε scaled by at least ω1²);
+then the largest over the quantities and the angles. The reference is evaluated on at
+most ``--ref-angles`` of the N angles (evenly spaced; the same angles for every N that
+is a multiple of it, so it is computed once per scene).
+
+The table goes to stdout (``--json``: a list of rows ``{"scene", "method", "positions",
+"seconds_per_position", "max_rel_error"}``), the error-versus-time chart (log-log SVG,
+written by hand: no plotting library) to ``--chart`` (default ``bench.svg``).
+The bench needs a source checkout (``tests/scenes.py``, ``samples/``) and sympy.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+from .cli import write_output
+
+ROOT = Path(__file__).resolve().parent.parent
+SIZES = (12, 100, 1_000, 10_000, 100_000, 1_000_000)
+QUICK_SIZES = (12, 100)
+FD_STEPS = (1e-2, 1e-4, 1e-6)
+QUICK_FD_STEPS = (1e-4,)
+#: scene → what it stands for in the table
+BENCH_SCENES = {
+    "press": "sample: RPR + RRP",
+    "fourbar": "sample: RRR, not a full turn",
+    "crank_rocker": "RRR",
+    "crank_slider_offset": "RRP",
+    "slotted_oscillating": "RPR",
+    "tangent": "PRP",
+    "scotch_yoke": "RPP",
+}
+PEERS = ("pylinkage", "pyslvs")
+PEER_MAX = 10_000
+
+
+@dataclass(frozen=True)
+class Row:
+    scene: str
+    method: str
+    positions: int
+    seconds_per_position: float
+    max_rel_error: float | None
+
+    def as_json(self) -> dict:
+        err = self.max_rel_error
+        return {
+            "scene": self.scene,
+            "method": self.method,
+            "positions": self.positions,
+            "seconds_per_position": self.seconds_per_position,
+            "max_rel_error": err if err is not None and math.isfinite(err) else None,
+        }
+
+
+def configure(p) -> None:
+    p.add_argument("--json", action="store_true", help="print the rows as JSON")
+    p.add_argument("--quick", action="store_true",
+                   help="sizes 12 and 100, one FD step, short timing: seconds, for tests")
+    p.add_argument("--max-positions", type=int, default=SIZES[-1], metavar="N",
+                   help=f"largest N of crank positions (default {SIZES[-1]})")
+    p.add_argument("--scene", action="append", metavar="NAME",
+                   help=f"only these scenes (repeatable; default: {', '.join(BENCH_SCENES)})")
+    p.add_argument("--methods", metavar="LIST", default="vectorized,plan,fd,peers",
+                   help="comma-separated subset of vectorized,plan,fd,peers")
+    p.add_argument("--ref-angles", type=int, default=100, metavar="M",
+                   help="angles on which the reference is evaluated (default 100)")
+    p.add_argument("--plan-max", type=int, default=1_000, metavar="N",
+                   help="largest N timed for the single-position plan (default 1000)")
+    p.add_argument("--budget", type=float, default=0.3, metavar="S",
+                   help="seconds spent repeating a short measurement, best run kept (default 0.3)")
+    p.add_argument("--chart", metavar="FILE", default="bench.svg",
+                   help="error-versus-time chart (SVG; default bench.svg; '' for none)")
+    p.add_argument("-o", "--output", metavar="FILE", help="write the table to FILE instead of stdout")
+
+
+def run(args) -> int:
+    import json
+
+    from .errors import InputError
+
+    methods = {m.strip() for m in args.methods.split(",") if m.strip()}
+    unknown = methods - {"vectorized", "plan", "fd", "peers"}
+    if unknown:
+        raise InputError("command line", f"--methods: unknown {', '.join(sorted(unknown))}")
+    if args.max_positions < 1 or args.ref_angles < 1:
+        raise InputError("command line", "--max-positions and --ref-angles must be ≥ 1")
+    scenes = load_scenes()
+    names = args.scene or list(BENCH_SCENES)
+    missing = [n for n in names if n not in scenes]
+    if missing:
+        raise InputError("command line", f"--scene: unknown {', '.join(missing)} "
+                         f"(known: {', '.join(sorted(scenes))})")
+    sizes = [n for n in (QUICK_SIZES if args.quick else SIZES) if n <= args.max_positions]
+    if not sizes:
+        sizes = [args.max_positions]
+    notes: list[str] = []
+    log = (lambda msg: print(msg, file=sys.stderr)) if not args.json else (lambda msg: None)
+    bench = Bench(
+        budget=0.02 if args.quick else args.budget,
+        ref_angles=min(args.ref_angles, 12) if args.quick else args.ref_angles,
+        plan_max=min(args.plan_max, 100) if args.quick else args.plan_max,
+        fd_steps=QUICK_FD_STEPS if args.quick else FD_STEPS,
+        methods=methods,
+        notes=notes,
+        log=log,
+    )
+    rows: list[Row] = []
+    for name in names:
+        rows += bench.scene(name, scenes[name], sizes)
+    if args.json:
+        text = json.dumps([r.as_json() for r in rows], indent=1) + "\n"
+        for n in notes:
+            print(f"plans bench: note: {n}", file=sys.stderr)
+    else:
+        text = to_text(rows, notes)
+    write_output(args.output, text)
+    if args.chart:
+        write_output(args.chart, svg_chart(rows, machine()))
+        if not args.json:
+            print(f"plans bench: chart written to {args.chart}", file=sys.stderr)
+    return 0
+
+
+# ---------------------------------------------------------------------------------------
+# scenes and angles
+# ---------------------------------------------------------------------------------------
+
+
+def load_scenes() -> dict:
+    """``SCENES`` of the checkout's tests/scenes.py (the bench is a development tool)."""
+    import importlib.util
+
+    from .errors import InputError
+
+    path = ROOT / "tests" / "scenes.py"
+    if not path.is_file():
+        raise InputError(str(path), "plans bench runs in a source checkout: it needs tests/scenes.py")
+    spec = importlib.util.spec_from_file_location("_plans_bench_scenes", path)
+    mod = importlib.util.module_from_spec(spec)
+    assert spec.loader is not None
+    sys.modules[spec.name] = mod  # dataclasses look their module up there
+    spec.loader.exec_module(mod)
+    return mod.SCENES
+
+
+def grid(scene, n: int):
+    """N crank angles (rad): a full turn from the scene's start, or the middle 94 % of its
+    crank range. φ_k = lo + span·(k/N): the same k/N gives the bit-identical angle for
+    every N, which lets one reference serve all sizes."""
+    import numpy as np
+
+    if scene.full_turn:
+        lo, span = math.radians(scene.lo_deg), 2 * math.pi
+    else:
+        width = scene.hi_deg - scene.lo_deg
+        lo, span = math.radians(scene.lo_deg + 0.03 * width), math.radians(0.94 * width)
+    return lo + span * (np.arange(n) / n)
+
+
+def subset(n: int, m: int):
+    """Indices of at most ``m`` evenly spaced angles out of ``n``."""
+    import numpy as np
+
+    if n <= m:
+        return np.arange(n)
+    if n % m == 0:
+        return np.arange(m) * (n // m)
+    return np.unique(np.linspace(0, n - 1, m).round().astype(int))
+
+
+def take(motion, idx):
+    """The motion at the angles ``idx`` only (groups dropped)."""
+    from dataclasses import replace
+
+    links = {
+        i: replace(st, origin=st.origin[idx], rotor=st.rotor[idx], v=st.v[idx],
+                   omega=st.omega[idx], a=st.a[idx], epsilon=st.epsilon[idx])
+        for i, st in motion.links.items()
+    }
+    return replace(
+        motion, phi=motion.phi[idx], links=links,
+        position={k: v[idx] for k, v in motion.position.items()},
+        velocity={k: v[idx] for k, v in motion.velocity.items()},
+        acceleration={k: v[idx] for k, v in motion.acceleration.items()},
+        groups=(), valid=motion.valid[idx],
+    )
+
+
+# ---------------------------------------------------------------------------------------
+# error measure
+# ---------------------------------------------------------------------------------------
+
+
+def rel_error(arr, valid, position, velocity, acceleration, omega=None, epsilon=None) -> float:
+    """Largest normwise relative error against the reference arrays ``arr`` (the norm of
+    ``plans.reference.errors``) over the points and links given; inf if a method gives
+    a non-finite value where the reference assembles."""
+    import numpy as np
+
+    ok = np.asarray(valid, dtype=bool) & arr.valid
+    if not ok.any():
+        return math.nan
+    worst = 0.0
+    quantities = [
+        (position, arr.position, 0.0),
+        (velocity, arr.velocity, 0.0),
+        (acceleration, arr.acceleration, 0.0),
+    ]
+    if omega:
+        quantities.append((omega, arr.omega, 0.0))
+    if epsilon:
+        quantities.append((epsilon, arr.epsilon, arr.omega1**2))
+    for eng, ref, floor in quantities:
+        keys = list(eng)
+        diff = np.max([np.abs(np.asarray(eng[k]) - ref[k]) for k in keys], axis=0)
+        scale = np.maximum(np.max([np.abs(ref[k]) for k in keys], axis=0), floor)
+        with np.errstate(all="ignore"):
+            r = diff[ok] / np.where(scale[ok] > 0, scale[ok], 1.0)
+        if not np.isfinite(r).all():
+            return math.inf
+        worst = max(worst, float(r.max()))
+    return worst
+
+
+def motion_error(motion, arr) -> float:
+    moving = [i for i in motion.links if i != 0]
+    return rel_error(
+        arr, motion.valid, motion.position, motion.velocity, motion.acceleration,
+        {i: motion.links[i].omega for i in moving}, {i: motion.links[i].epsilon for i in moving},
+    )
+
+
+# ---------------------------------------------------------------------------------------
+# the measurements
+# ---------------------------------------------------------------------------------------
+
+
+def _best_time(fn, budget: float, first: float | None = None) -> float:
+    """Best wall time of ``fn()`` over repeats filling about ``budget`` seconds."""
+    if first is None:
+        t0 = time.perf_counter()
+        fn()
+        first = time.perf_counter() - t0
+    best = first
+    repeats = min(200, int(budget / max(first, 1e-9)))
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        fn()
+        best = min(best, time.perf_counter() - t0)
+    return best
+
+
+class Bench:
+    def __init__(self, *, budget, ref_angles, plan_max, fd_steps, methods, notes, log):
+        self.budget = budget
+        self.ref_angles = ref_angles
+        self.plan_max = plan_max
+        self.fd_steps = fd_steps
+        self.methods = methods
+        self.notes = notes
+        self.log = log
+        self._refs: dict = {}
+        self._peer_state: dict[str, object] = {}
+
+    # reference ------------------------------------------------------------------------
+    def reference(self, name, mech, phi):
+        key = (name, phi.tobytes())
+        if key not in self._refs:
+            from . import reference
+
+            try:
+                self._refs[key] = reference.reference(mech, phi).arrays()
+            except reference.ReferenceError as exc:
+                self.notes.append(f"{name}: no reference at {len(phi)} angles: {exc}")
+                self._refs[key] = None
+        return self._refs[key]
+
+    # one scene --------------------------------------------------------------------------
+    def scene(self, name, scene, sizes) -> list[Row]:
+        from .kinematics import Solver
+
+        mech = scene.mechanism()
+        solver = Solver(mech)
+        rows: list[Row] = []
+        for n in sizes:
+            phi = grid(scene, n)
+            idx = subset(n, self.ref_angles)
+            arr = self.reference(name, mech, phi[idx])
+            self.log(f"bench {name}: N = {n}")
+            if "vectorized" in self.methods:
+                rows.append(self._vectorized(name, solver, phi, idx, arr))
+            if "plan" in self.methods and n <= self.plan_max:
+                rows.append(self._plan(name, mech, solver, phi, idx, arr))
+            if "fd" in self.methods:
+                for h in self.fd_steps:
+                    rows.append(self._fd(name, mech, solver, phi, idx, arr, h))
+            if "peers" in self.methods:
+                rows += self._peers(name, mech, solver, phi, idx, arr)
+            del phi
+        return rows
+
+    def _vectorized(self, name, solver, phi, idx, arr) -> Row:
+        import numpy as np
+
+        with np.errstate(all="ignore"):
+            t0 = time.perf_counter()
+            motion = solver.solve(phi)
+            first = time.perf_counter() - t0
+            sub = take(motion, idx)
+            del motion
+            best = _best_time(lambda: solver.solve(phi), self.budget, first)
+        err = motion_error(sub, arr) if arr is not None else None
+        return Row(name, "vectorized", len(phi), best / len(phi), err)
+
+    def _plan(self, name, mech, solver, phi, idx, arr) -> Row:
+        import numpy as np
+
+        from .plan import plan_name, solve_position
+
+        def timed():
+            for x in phi:
+                solve_position(mech, float(x), solver=solver)
+
+        best = _best_time(timed, self.budget)
+        err = None
+        if arr is not None:
+            sols = [solve_position(mech, float(x), solver=solver) for x in phi[idx]]
+            names = list(sols[0].motion.position)
+
+            def plan_value(sol, plan, nm, store):
+                pt = plan.points.get(plan_name(nm))
+                return pt.value if pt is not None else complex(store[nm][0])
+
+            pos = {nm: np.array([s.positions[nm] for s in sols]) for nm in names}
+            vel = {nm: np.array([plan_value(s, s.velocity, nm, s.motion.velocity) for s in sols])
+                   for nm in names}
+            acc = {nm: np.array([plan_value(s, s.acceleration, nm, s.motion.acceleration)
+                                 for s in sols]) for nm in names}
+            links = [i for i in sols[0].omega if i != 0]
+            om = {i: np.array([s.omega[i] for s in sols]) for i in links}
+            ep = {i: np.array([s.epsilon[i] for s in sols]) for i in links}
+            err = rel_error(arr, np.ones(len(sols), bool), pos, vel, acc, om, ep)
+        return Row(name, "plan", len(phi), best / len(phi), err)
+
+    def _fd(self, name, mech, solver, phi, idx, arr, h) -> Row:
+        import numpy as np
+
+        names = mech.point_names()
+        links = sorted(mech.links)
+        w1 = mech.driver.omega
+
+        def compute():
+            with np.errstate(all="ignore"):
+                out = []
+                for shift in (-h, 0.0, h):
+                    m = solver.solve(phi + shift)
+                    out.append(({k: m.position[k] for k in names},
+                                {i: m.links[i].rotor for i in links}, m.valid))
+                    del m
+            (xm, rm, vm), (x0, r0, v0), (xp, rp, vp) = out
+            vel = {k: (xp[k] - xm[k]) * (w1 / (2 * h)) for k in names}
+            acc = {k: (xp[k] - 2 * x0[k] + xm[k]) * (w1 * w1 / (h * h)) for k in names}
+            om, ep = {}, {}
+            for i in links:
+                dp = np.angle(rp[i] * np.conj(r0[i]))
+                dm = np.angle(r0[i] * np.conj(rm[i]))
+                om[i] = (dp + dm) * (w1 / (2 * h))
+                ep[i] = (dp - dm) * (w1 * w1 / (h * h))
+            return x0, vel, acc, om, ep, vm & v0 & vp
+
+        t0 = time.perf_counter()
+        result = compute()
+        first = time.perf_counter() - t0
+        x0, vel, acc, om, ep, valid = result
+        err = None
+        if arr is not None:
+            pick = lambda d: {k: v[idx] for k, v in d.items()}  # noqa: E731
+            err = rel_error(arr, valid[idx], pick(x0), pick(vel), pick(acc), pick(om), pick(ep))
+        del result, x0, vel, acc, om, ep
+        best = _best_time(compute, self.budget, first)
+        return Row(name, f"fd h={h:.0e}", len(phi), best / len(phi), err)
+
+    # peers --------------------------------------------------------------------------
+    def _peer_available(self, peer: str) -> bool:
+        if peer not in self._peer_state:
+            import importlib
+
+            try:
+                self._peer_state[peer] = importlib.import_module(peer)
+            except Exception as exc:  # ImportError, or a broken build of the package
+                self._peer_state[peer] = None
+                self.notes.append(
+                    f"peer {peer} is not installed ({type(exc).__name__}): skipped "
+                    "(pip install '.[bench]'; pyslvs has no build for recent Pythons)"
+                )
+        return self._peer_state[peer] is not None
+
+    def _peers(self, name, mech, solver, phi, idx, arr) -> list[Row]:
+        rows = []
+        if self._peer_available("pylinkage"):
+            n = len(phi)
+            if n > PEER_MAX:
+                return rows
+            try:
+                build = _pylinkage_model(self._peer_state["pylinkage"], mech, solver, phi)
+            except NotImplementedError as exc:
+                note = f"pylinkage: {name} skipped ({exc})"
+                if note not in self.notes:
+                    self.notes.append(note)
+                return rows
+            t0 = time.perf_counter()
+            pos, vel, acc = build()
+            first = time.perf_counter() - t0
+            best = _best_time(build, min(self.budget, first), first) if n <= 1000 else first
+            err = None
+            if arr is not None:
+                pick = lambda d: {k: v[idx] for k, v in d.items()}  # noqa: E731
+                import numpy as np
+
+                err = rel_error(arr, np.ones(len(idx), bool), pick(pos), pick(vel), pick(acc))
+            rows.append(Row(name, "pylinkage", n, best / n, err))
+        self._peer_available("pyslvs")
+        return rows
+
+
+def _pylinkage_model(pl, mech, solver, phi):
+    """A pylinkage linkage for a crank + one RRR group on a fixed pivot, or a crank + one
+    RRP group on a fixed guide; returns a function that runs it over ``phi`` (a uniform
+    grid) and gives {point: positions}, velocities, accelerations as complex arrays."""
+    import numpy as np
+
+    from .structure import DyadKind
+
+    groups = solver.structure.groups
+    drv = mech.driver
+    if len(groups) != 1:
+        raise NotImplementedError("more than one group")
+    g = groups[0]
+    if g.P != drv.tip:
+        raise NotImplementedError("the group is not hinged to the crank")
+    if g.kind == DyadKind.RRR:
+        if g.Q not in mech.frame:
+            raise NotImplementedError("the rocker is not hinged to the frame")
+    elif g.kind == DyadKind.RRP:
+        if g.s1.guide.link != 0:
+            raise NotImplementedError("a moving guide")
+    else:
+        raise NotImplementedError(f"no {g.kind.name} group in pylinkage")
+    with np.errstate(all="ignore"):
+        start = solver.solve(phi[:1])
+    C0 = complex(start.position[g.C][0])
+    l2 = abs(mech.links[g.a].points[g.C] - mech.links[g.a].points[g.P])
+    n = len(phi)
+    step = float(phi[1] - phi[0]) if n > 1 else 0.0
+
+    def build():
+        O = mech.frame[drv.pivot]
+        ground = pl.Ground(O.real, O.imag, name=drv.pivot)
+        crank = pl.Crank(anchor=ground, radius=drv.length, angular_velocity=step,
+                         initial_angle=float(phi[0]) - step, name=drv.tip)
+        comps = [ground]
+        if g.kind == DyadKind.RRR:
+            Q = mech.frame[g.Q]
+            gq = pl.Ground(Q.real, Q.imag, name=g.Q)
+            l3 = abs(mech.links[g.b].points[g.C] - mech.links[g.b].points[g.Q])
+            comps.append(gq)
+            dyad = pl.RRRDyad(anchor1=crank.output, anchor2=gq, distance1=l2, distance2=l3,
+                              x=C0.real, y=C0.imag, name=g.C)
+        else:
+            gd = g.s1.guide
+            a, b = gd.point, gd.point + gd.direction
+            la = pl.Ground(a.real, a.imag, name="L1")
+            lb = pl.Ground(b.real, b.imag, name="L2")
+            comps += [la, lb]
+            dyad = pl.RRPDyad(revolute_anchor=crank.output, line_anchor1=la, line_anchor2=lb,
+                              distance=l2, x=C0.real, y=C0.imag, name=g.C)
+        comps += [crank, dyad]
+        linkage = pl.Linkage(comps, name=mech.name)
+        linkage.set_input_velocity(crank, omega=drv.omega)
+        which = ((drv.tip, comps.index(crank)), (g.C, comps.index(dyad)))
+        P = {k: np.empty(n, complex) for k, _ in which}
+        V = {k: np.empty(n, complex) for k, _ in which}
+        A = {k: np.empty(n, complex) for k, _ in which}
+        for k, (pos, vel, acc) in enumerate(linkage.step_with_derivatives(iterations=n)):
+            for nm, i in which:
+                P[nm][k] = complex(*pos[i])
+                V[nm][k] = complex(*vel[i]) if vel[i] is not None else complex("nan")
+                A[nm][k] = complex(*acc[i]) if acc[i] is not None else complex("nan")
+        return P, V, A
+
+    return build
+
+
+# ---------------------------------------------------------------------------------------
+# output
+# ---------------------------------------------------------------------------------------
+
+
+def machine() -> str:
+    import os
+    import platform
+
+    import numpy as np
+
+    cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
+    return (f"{platform.system()} {platform.machine()}, {cores} cores, "
+            f"Python {platform.python_version()}, numpy {np.__version__}")
+
+
+def _err(x: float | None) -> str:
+    if x is None:
+        return "—"
+    if not math.isfinite(x):
+        return "inf" if x == math.inf else "—"
+    return f"{x:.2e}"
+
+
+def _time(sec: float) -> str:
+    if sec >= 1e-3:
+        return f"{sec * 1e3:.3g} ms"
+    if sec >= 1e-6:
+        return f"{sec * 1e6:.3g} µs"
+    return f"{sec * 1e9:.3g} ns"
+
+
+def to_text(rows: list[Row], notes: list[str]) -> str:
+    out = [f"plans bench — {machine()}; one process, numpy on one core", ""]
+    head = ("scene", "method", "N", "time/position", "positions/s", "max rel error")
+    body = [
+        (r.scene, r.method, str(r.positions), _time(r.seconds_per_position),
+         f"{1 / r.seconds_per_position:.3g}" if r.seconds_per_position > 0 else "—",
+         _err(r.max_rel_error))
+        for r in rows
+    ]
+    widths = [max(len(h), *(len(b[i]) for b in body)) if body else len(h) for i, h in enumerate(head)]
+    fmt = lambda cells: "  ".join(  # noqa: E731
+        c.ljust(w) if i < 2 else c.rjust(w) for i, (c, w) in enumerate(zip(cells, widths, strict=True))
+    )
+    out.append(fmt(head))
+    last = None
+    for r, b in zip(rows, body, strict=True):
+        if last is not None and r.scene != last:
+            out.append("")
+        last = r.scene
+        out.append(fmt(b))
+    out += ["", *targets(rows)]
+    if notes:
+        out.append("")
+        out += [f"note: {n}" for n in notes]
+    return "\n".join(out) + "\n"
+
+
+def targets(rows: list[Row]) -> list[str]:
+    """The issue's targets, checked against what was measured."""
+    out = ["targets"]
+
+    def rate(scenes, lo=100_000):
+        rs = [r for r in rows if r.method == "vectorized" and r.scene in scenes and r.positions >= lo]
+        return max((1 / r.seconds_per_position for r in rs), default=None)
+
+    for label, scenes, goal in (("four-bar", ("crank_rocker", "fourbar"), 5e6), ("press", ("press",), 2e6)):
+        got = rate(scenes)
+        if got is None:
+            out.append(f"  vectorized {label} ≥ {goal:.0e} positions/s (N ≥ 1e5): not measured")
+        else:
+            out.append(f"  vectorized {label} ≥ {goal:.0e} positions/s (N ≥ 1e5): "
+                       f"{got:.3g} — {'met' if got >= goal else 'NOT met'}")
+    plan = [r.seconds_per_position for r in rows if r.method == "plan" and r.scene == "press"]
+    if plan:
+        best = min(plan)
+        out.append(f"  plan of the press ≤ 100 µs: {_time(best)} — {'met' if best <= 1e-4 else 'NOT met'}")
+    errs = [r.max_rel_error for r in rows if r.method == "vectorized" and r.max_rel_error is not None]
+    if errs:
+        worst = max(errs)
+        out.append(f"  vectorized max rel error ≤ 1e-13 (well-conditioned scenes): {_err(worst)} — "
+                   f"{'met' if worst <= 1e-13 else 'NOT met'}")
+    return out
+
+
+_COLORS = {
+    "vectorized": "#1f77b4",
+    "plan": "#2ca02c",
+    "pylinkage": "#9467bd",
+}
+_FD_COLORS = ("#ff7f0e", "#d62728", "#8c564b", "#e377c2", "#bcbd22")
+_SHAPES = ("circle", "square", "diamond", "triangle", "cross", "star", "ring")
+
+
+def svg_chart(rows: list[Row], subtitle: str = "") -> str:
+    """Error versus run time per position, log-log, one colour per method, one marker
+    shape per scene; errors below 1e-17 (0 included) are drawn on the floor."""
+    from xml.sax.saxutils import escape
+
+    rows = [r for r in rows if r.seconds_per_position > 0]
+    W, H = 860, 560
+    L, R, T, B = 80, 250, 50, 60
+    floor = 1e-17
+    xs = [r.seconds_per_position for r in rows] or [1e-9, 1e-3]
+    ys = [max(r.max_rel_error, floor) for r in rows
+          if r.max_rel_error is not None and math.isfinite(r.max_rel_error)] or [floor, 1]
+    x0, x1 = math.floor(math.log10(min(xs))), math.ceil(math.log10(max(xs)))
+    y0, y1 = math.floor(math.log10(min(ys))), math.ceil(math.log10(max(max(ys), 1e-12)))
+    x1 = max(x1, x0 + 1)
+    y1 = max(y1, y0 + 1)
+
+    def px(x):
+        return L + (math.log10(x) - x0) / (x1 - x0) * (W - L - R)
+
+    def py(y):
+        return T + (y1 - math.log10(max(y, floor))) / (y1 - y0) * (H - T - B)
+
+    methods = list(dict.fromkeys(r.method for r in rows))
+    colors = {}
+    fd = 0
+    for m in methods:
+        if m in _COLORS:
+            colors[m] = _COLORS[m]
+        else:
+            colors[m] = _FD_COLORS[fd % len(_FD_COLORS)] if m.startswith("fd") else "#7f7f7f"
+            fd += m.startswith("fd")
+    scenes = list(dict.fromkeys(r.scene for r in rows))
+    shapes = {s: _SHAPES[i % len(_SHAPES)] for i, s in enumerate(scenes)}
+
+    def marker(shape, x, y, color, size=5.0):
+        s = size
+        if shape == "circle":
+            return f'<circle cx="{x:.1f}" cy="{y:.1f}" r="{s:.1f}" fill="{color}" fill-opacity="0.75"/>'
+        if shape == "ring":
+            return (f'<circle cx="{x:.1f}" cy="{y:.1f}" r="{s:.1f}" fill="none" stroke="{color}" '
+                    'stroke-width="2"/>')
+        if shape == "square":
+            return (f'<rect x="{x - s:.1f}" y="{y - s:.1f}" width="{2 * s:.1f}" height="{2 * s:.1f}" '
+                    f'fill="{color}" fill-opacity="0.75"/>')
+        if shape == "diamond":
+            pts = f"{x},{y - s * 1.3} {x + s * 1.3},{y} {x},{y + s * 1.3} {x - s * 1.3},{y}"
+        elif shape == "triangle":
+            pts = f"{x},{y - s * 1.3} {x + s * 1.2},{y + s} {x - s * 1.2},{y + s}"
+        elif shape == "star":
+            pts = " ".join(
+                f"{x + (s * 1.4 if k % 2 == 0 else s * 0.6) * math.sin(k * math.pi / 5):.1f},"
+                f"{y - (s * 1.4 if k % 2 == 0 else s * 0.6) * math.cos(k * math.pi / 5):.1f}"
+                for k in range(10)
+            )
+        else:  # cross
+            return (f'<path d="M{x - s},{y - s}L{x + s},{y + s}M{x - s},{y + s}L{x + s},{y - s}" '
+                    f'stroke="{color}" stroke-width="2.2"/>')
+        return f'<polygon points="{pts}" fill="{color}" fill-opacity="0.75"/>'
+
+    out = [
+        f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" '
+        f'viewBox="0 0 {W} {H}" font-family="DejaVu Sans, Arial, sans-serif" font-size="12">',
+        f'<rect width="{W}" height="{H}" fill="white"/>',
+        f'<text x="{L}" y="22" font-size="15" font-weight="bold">Max relative error versus '
+        "run time per crank position</text>",
+        f'<text x="{L}" y="40" fill="#555">{escape(subtitle)}</text>',
+    ]
+    for e in range(x0, x1 + 1):
+        x = px(10.0**e)
+        out.append(f'<line x1="{x:.1f}" y1="{T}" x2="{x:.1f}" y2="{H - B}" stroke="#ddd"/>')
+        out.append(f'<text x="{x:.1f}" y="{H - B + 18}" text-anchor="middle">1e{e}</text>')
+    for e in range(y0, y1 + 1):
+        y = py(10.0**e)
+        out.append(f'<line x1="{L}" y1="{y:.1f}" x2="{W - R}" y2="{y:.1f}" stroke="#ddd"/>')
+        out.append(f'<text x="{L - 6}" y="{y + 4:.1f}" text-anchor="end">1e{e}</text>')
+    if y0 <= -13 <= y1:
+        y = py(1e-13)
+        out.append(f'<line x1="{L}" y1="{y:.1f}" x2="{W - R}" y2="{y:.1f}" stroke="#888" '
+                   'stroke-dasharray="6 4"/>')
+        out.append(f'<text x="{W - R - 4}" y="{y - 4:.1f}" text-anchor="end" fill="#666">'
+                   "target 1e-13</text>")
+    out.append(f'<rect x="{L}" y="{T}" width="{W - L - R}" height="{H - T - B}" fill="none" stroke="#333"/>')
+    out.append(f'<text x="{(L + W - R) / 2:.1f}" y="{H - 18}" text-anchor="middle">'
+               "wall time per position (s)</text>")
+    out.append(f'<text transform="translate(20 {(T + H - B) / 2:.1f}) rotate(-90)" '
+               'text-anchor="middle">max relative error (normwise)</text>')
+    for r in rows:
+        if r.max_rel_error is None or not math.isfinite(r.max_rel_error):
+            continue
+        out.append(marker(shapes[r.scene], px(r.seconds_per_position), py(r.max_rel_error),
+                          colors[r.method]))
+    lx, ly = W - R + 18, T + 6
+    out.append(f'<text x="{lx}" y="{ly}" font-weight="bold">method</text>')
+    for i, m in enumerate(methods):
+        y = ly + 18 * (i + 1)
+        out.append(f'<rect x="{lx}" y="{y - 9}" width="12" height="12" fill="{colors[m]}"/>')
+        out.append(f'<text x="{lx + 18}" y="{y + 1}">{escape(m)}</text>')
+    ly += 18 * (len(methods) + 2)
+    out.append(f'<text x="{lx}" y="{ly}" font-weight="bold">scene</text>')
+    for i, s in enumerate(scenes):
+        y = ly + 18 * (i + 1)
+        out.append(marker(shapes[s], lx + 6, y - 3, "#444", 4.5))
+        out.append(f'<text x="{lx + 18}" y="{y + 1}">{escape(s)}</text>')
+    out.append(f'<text x="{L}" y="{H - 4}" fill="#777" font-size="10">errors ≤ 1e-17 '
+               "(0 included) drawn at 1e-17; reference: mpmath, 30 digits</text>")
+    out.append("</svg>")
+    return "\n".join(out) + "\n"
