@@ -10,15 +10,16 @@ numbers on it are millimetres at the student's scale factors):
   joins a computed point to where the student's drawing puts it when they differ;
 * below: the legend, the verdict and the diagnosis.
 
-A standalone SVG written with svgwrite (text is escaped by it); labels are placed
-greedily so that no two overlap and none sits on a point.
+A small standalone SVG written with xml.etree (which escapes every text): the sheet
+renderer (drawing.svg) draws GOST sheets in one colour, and this picture needs two.
+Labels are placed greedily so that no two overlap and none sits on a point.
 """
 
 from __future__ import annotations
 
 import math
 
-import svgwrite
+import xml.etree.ElementTree as ET
 
 from plans.check import MU_KEY, CheckResult, recorded_segments, rebuild
 
@@ -60,6 +61,54 @@ WORDS = {
         "nothing": "(на этом плане ничего не измерено)",
     },
 }
+
+
+def _f(x) -> str:
+    return f"{x:.2f}".rstrip("0").rstrip(".") if isinstance(x, float) else str(x)
+
+
+class _El:
+    """An SVG element with the few calls this picture needs (attribute names with
+    underscores become hyphens: font_size → font-size)."""
+
+    def __init__(self, tag: str, text: str | None = None, **attrs):
+        self.el = ET.Element(tag, {k.replace("_", "-"): _f(v) for k, v in attrs.items()})
+        if text is not None:
+            self.el.text = text
+
+    def add(self, child: _El) -> _El:
+        self.el.append(child.el)
+        return child
+
+
+class _Doc(_El):
+    def __init__(self, width: float, height: float):
+        super().__init__("svg", xmlns="http://www.w3.org/2000/svg", width=f"{width:.0f}px",
+                         height=f"{height:.0f}px", viewBox=f"0 0 {width:.0f} {height:.0f}")
+
+    @staticmethod
+    def rect(insert, size, **kw) -> _El:
+        return _El("rect", x=float(insert[0]), y=float(insert[1]), width=float(size[0]),
+                   height=float(size[1]), **kw)
+
+    @staticmethod
+    def text(text: str, insert, **kw) -> _El:
+        return _El("text", text, x=float(insert[0]), y=float(insert[1]), **kw)
+
+    @staticmethod
+    def line(p, q, **kw) -> _El:
+        return _El("line", x1=float(p[0]), y1=float(p[1]), x2=float(q[0]), y2=float(q[1]), **kw)
+
+    @staticmethod
+    def circle(c, r, **kw) -> _El:
+        return _El("circle", cx=float(c[0]), cy=float(c[1]), r=float(r), **kw)
+
+    @staticmethod
+    def g(**kw) -> _El:
+        return _El("g", **kw)
+
+    def tostring(self) -> str:
+        return '<?xml version="1.0" encoding="utf-8"?>\n' + ET.tostring(self.el, encoding="unicode")
 
 
 def _num(x: float, lang: str, digits: int = 4) -> str:
@@ -144,8 +193,7 @@ def overlay_svg(result: CheckResult, lang: str = "en") -> str:
     lists = {kind: _deviation_list(result, kind, lang) for kind in ("velocity", "acceleration")}
     below = max(len(v) for v in lists.values())
     height = MARGIN * 2 + 22 + PANEL + 14 * below + 40 + 16 * (len(foot) + 1)
-    dwg = svgwrite.Drawing(size=(f"{width:.0f}px", f"{height:.0f}px"), profile="full", debug=False)
-    dwg["viewBox"] = f"0 0 {width:.0f} {height:.0f}"
+    dwg = _Doc(width, height)
     dwg.add(dwg.rect((0, 0), (width, height), fill="white"))
     dwg.add(dwg.text(w["title"].format(src=meas.source), insert=(MARGIN, MARGIN),
                      font_size=FONT + 2, font_family="sans-serif", fill=BLACK))
