@@ -329,6 +329,108 @@ point = "D"
 guide = { link = 0, through = [0.0, -0.05], angle_deg = 20 }
 """
 
+# --- RPR + RPP whose outer guide is carried by a moving link: a yoke slides on the
+# slotted link (at 15° to it, offset 0.1), the block on the crank pin A moves in the
+# yoke's 60° slot; Coriolis terms in both routes of the RPP group ----------------------
+YOKE_ON_ROCKER = """
+name = "Yoke sliding on a slotted link"
+output = "D"
+[frame]
+O = [0.0, 0.0]
+B = [0.0, -0.44]
+[driver]
+link = 1
+angle_deg = 60
+omega = 20
+[links.1]
+axis = ["O", "A"]
+points = { A = 0.15 }
+[links.2]
+points = { A = 0 }
+[links.3]
+axis = ["B", "C"]
+points = { C = 0.75 }
+[links.4]
+name = "block in the yoke"
+points = { A = 0 }
+[links.5]
+name = "yoke on the rocker"
+axis = ["D", "E"]
+points = { E = 0.2, S5 = [0.1, 0.03] }
+[[sliders]]
+link = 2
+guide = { link = 3 }
+[[sliders]]
+link = 4
+guide = { link = 5, angle_deg = 60 }
+[[sliders]]
+link = 5
+point = "D"
+guide = { link = 3, offset = 0.1, angle_deg = 15 }
+"""
+
+# --- RPR + PRP on two moving guides: a block G slides on a guide of the crank (⊥ to it,
+# 0.05 from O) and is hinged to a block sliding on the slotted link's offset guide. The
+# guides turn parallel near φ = 200° and 340°: the range is 0°…180° -----------------------
+PRP_TWO_MOVING = """
+name = "Cross-slide on the crank and the slotted link"
+output = "G"
+[frame]
+O = [0.0, 0.0]
+B = [0.0, -0.3]
+[driver]
+link = 1
+angle_deg = 20
+omega = 8
+[links.1]
+axis = ["O", "A"]
+points = { A = 0.1 }
+[links.2]
+points = { A = 0 }
+[links.3]
+axis = ["B", "C"]
+points = { C = 0.5 }
+[links.4]
+points = { G = 0 }
+[links.5]
+points = { G = 0 }
+[[sliders]]
+link = 2
+guide = { link = 3 }
+[[sliders]]
+link = 4
+point = "G"
+guide = { link = 1, angle_deg = 90, through = [0.05, 0.0] }
+[[sliders]]
+link = 5
+point = "G"
+guide = { link = 3, offset = 0.03 }
+"""
+
+# --- RPR, general: the rocker's pivot B off its axis, the guide through [0.05, −0.02] at
+# 75° to the axis, extra points on every link ----------------------------------------------
+SLOTTED_GENERAL = """
+name = "Slotted link, general guide"
+[frame]
+O = [0.0, 0.0]
+B = [0.05, -0.3]
+[driver]
+link = 1
+angle_deg = 20
+omega = 8
+[links.1]
+axis = ["O", "A"]
+points = { A = 0.1, S1 = [0.03, 0.02] }
+[links.2]
+points = { A = 0, M = [0.01, 0.02] }
+[links.3]
+axis = ["C", "X"]
+points = { X = 0.5, B = [0.1, 0.05], S3 = [0.2, -0.01] }
+[[sliders]]
+link = 2
+guide = { link = 3, through = [0.05, -0.02], angle_deg = 75 }
+"""
+
 _rad = math.radians
 
 SCENES: dict[str, Scene] = {
@@ -344,6 +446,9 @@ SCENES: dict[str, Scene] = {
         Scene("tangent", ("PRP",), -75.0, 75.0, TANGENT),
         Scene("scotch_yoke", ("RPP",), 0.0, 360.0, SCOTCH_YOKE),
         Scene("yoke_inclined", ("RPP",), 0.0, 360.0, YOKE_INCLINED),
+        Scene("prp_two_moving", ("RPR", "PRP"), 0.0, 180.0, PRP_TWO_MOVING),
+        Scene("slotted_general", ("RPR",), 0.0, 360.0, SLOTTED_GENERAL),
+        Scene("yoke_on_rocker", ("RPR", "RPP"), 0.0, 360.0, YOKE_ON_ROCKER),
         Scene("press", ("RPR", "RRP"), 0.0, 360.0, sample="press.toml"),
         # not Grashof: BD must stay within [BC − CD, BC + CD] = [0.1075, 0.3125]
         Scene("fourbar", ("RRR",), -125.0, 125.0, sample="fourbar.toml"),
