@@ -31,7 +31,6 @@ from __future__ import annotations
 
 import math
 import re
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -151,21 +150,22 @@ TOP_KEYS = {"title", "mechanism", "variant", "table", "angle_deg", "tolerance", 
 
 def load(path: str | Path) -> Measurement:
     """Read and validate a measurement file; every problem is reported, located."""
+    from .mechanism import read_toml
+
+    data, text = read_toml(path, "a measurement file is a few KB")
     path = Path(path)
-    source = str(path)
-    try:
-        raw = path.read_bytes()
-    except OSError as exc:
-        raise InputError(source, f"cannot read the file: {exc.strerror}") from None
-    if len(raw) > 1_000_000:
-        raise InputError(source, "file is larger than 1 MB; a measurement file is a few KB")
-    try:
-        data = tomllib.loads(raw.decode("utf-8"))
-    except UnicodeDecodeError as exc:
-        raise InputError(source, f"not UTF-8 text (byte {exc.start})") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(source, f"TOML syntax error: {exc}") from None
-    return from_dict(data, source, path.parent)
+    return from_dict(data, str(path), path.parent, text=text)
+
+
+def _raise(source: str, text: str | None, problems: list[str]):
+    """Every problem at once, each "key: what" located to its line when the text is known."""
+    from .mechanism import _Problems
+
+    pr = _Problems(source, text)
+    for p in problems:
+        where, _, what = p.partition(": ")
+        pr.add(where, what)
+    raise InputError(source, pr.lines())
 
 
 def _num(value: Any, where: str, problems: list[str], *, positive=False,
@@ -186,7 +186,8 @@ def _num(value: Any, where: str, problems: list[str], *, positive=False,
     return x
 
 
-def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = None) -> Measurement:
+def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = None, *,
+              text: str | None = None) -> Measurement:
     """Build a :class:`Measurement` from parsed TOML (the mechanism is loaded and solved)."""
     from . import mechanism as mechmod
     from . import variants
@@ -278,18 +279,24 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
     if not raw_segments and not raw_values:
         problems.append("segments: nothing to check: give the measured segments, e.g. "
                         "[segments] pa3 = 55")
-    if problems or mech is None:
-        raise InputError(source, problems or ["mechanism: missing"])
-    # solve at the student's scales ------------------------------------------------------
-    if isinstance(mech, int):
-        m = variants.variant(mech, table)
-    else:
-        m = mechmod.load(mech)
-    if angle is not None:
-        d = m.driver
-        ref = mechmod.REFERENCES[d.reference] + mechmod.SENSES[d.measured] * angle
-        m = m.with_phi(math.radians(ref))
-    sol = solve_position(m, mu=dict(mu))
+    if mech is None:
+        _raise(source, text, problems or ["mechanism: missing"])
+    # solve at the student's scales (the names are checked against the plans even when
+    # other keys have problems, so that every problem is reported at once) -------------
+    try:
+        if isinstance(mech, int):
+            m = variants.variant(mech, table)
+        else:
+            m = mechmod.load(mech)
+        if angle is not None:
+            d = m.driver
+            ref = mechmod.REFERENCES[d.reference] + mechmod.SENSES[d.measured] * angle
+            m = m.with_phi(math.radians(ref))
+        sol = solve_position(m, mu=dict(mu))
+    except PlansError:
+        if problems:  # these first; the mechanism's own problems once they are fixed
+            _raise(source, text, problems)
+        raise
     names = _Names(sol)
     items: list[Item] = []
     for key, scope, name, x in segs:
@@ -310,7 +317,7 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
             problems.append(f"scales.{MU_KEY[plan]}: missing: the scale factor the student "
                             f"used for {what}")
     if problems:
-        raise InputError(source, problems)
+        _raise(source, text, problems)
     return Measurement(source, m, sol, {k: sol_mu(sol, k) for k in MU_KEY.values()},
                        tuple(items), tol, title, angle)
 

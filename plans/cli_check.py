@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import json
 import math
+from pathlib import Path
 
 from .cli import EXIT_DEVIATIONS, EXIT_OK, write_output
 from .errors import InputError
@@ -30,8 +31,15 @@ def configure(p) -> None:
 
 def run(args) -> int:
     from . import check as ck
+    from . import cli
 
+    cli._INPUTS[:] = [args.file]
+    _refuse_inputs(args, [args.file])
     meas = ck.load(args.file)
+    mech_file = meas.mechanism.source
+    if Path(mech_file).is_file():
+        cli._INPUTS.append(mech_file)
+        _refuse_inputs(args, [mech_file])
     tol = meas.tolerance
     if args.tolerance is not None:
         try:
@@ -49,6 +57,19 @@ def run(args) -> int:
         text = to_text(result, args.lang)
     write_output(args.output, text)
     return EXIT_OK if result.ok else EXIT_DEVIATIONS
+
+
+def _refuse_inputs(args, inputs) -> None:
+    """Never write the report or the picture over an input, and say so before computing."""
+    from .cli import _arg, _same_file
+
+    for opt, out in (("-o", args.output), ("--svg", args.svg)):
+        if out in (None, "-"):
+            continue
+        for inp in inputs:
+            if _same_file(out, inp):
+                raise InputError("command line", f"{opt} {_arg(out)} is the input file {_arg(inp)}: "
+                                 "the tool never writes into its inputs; choose another name")
 
 
 # ---------------------------------------------------------------------------------------
