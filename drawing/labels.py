@@ -34,6 +34,9 @@ from shapely.geometry import LineString, Polygon
 from shapely.geometry.base import BaseGeometry
 
 from drawing.scene import (
+    INDEX_SIZE,
+    SUB_SHIFT,
+    SUP_SHIFT,
     Arrow,
     Circle,
     Hatch,
@@ -41,6 +44,7 @@ from drawing.scene import (
     Point,
     Polyline,
     Rect,
+    Run,
     Segment,
     Text,
     flatten,
@@ -58,6 +62,7 @@ __all__ = [
     "obstacles_of",
     "overlaps",
     "place_labels",
+    "runs_width",
     "text_box",
     "text_width",
 ]
@@ -104,16 +109,30 @@ def text_width(text: str, size: float) -> float:
     return size * (sum(char_width(c) for c in text) + SPACING * (len(text) - 1))
 
 
+def runs_width(runs: Sequence[Run], size: float) -> float:
+    """Advance of marked-up runs: indices at 0.7 h, in turn after their base."""
+    total, count = 0.0, 0
+    for r in runs:
+        h = size if r.level == 0 else size * INDEX_SIZE
+        total += text_width(r.text, h) + (SPACING * h if count else 0.0)
+        count += 1
+    return total
+
+
 def text_box(t: Text) -> Polygon:
     """The box of ``t`` on the sheet: advance × (h + descent).
 
     Anchor, baseline, rotation and horizontal stretch are honoured; the lean
     of slanted letters is not (it is left to the clearances).
     """
-    w = text_width(t.text, t.size) * t.stretch
+    runs = t.runs()
+    w = runs_width(runs, t.size) * t.stretch
     x0 = {"start": 0.0, "middle": -w / 2, "end": -w}[t.anchor]
-    base = t.baseline_shift
-    top, bottom = base - t.size, base + DESCENT * t.size
+    base, h = t.baseline_shift, t.size
+    levels = {r.level for r in runs}
+    up = SUP_SHIFT + INDEX_SIZE if 1 in levels else 1.0
+    down = SUB_SHIFT + DESCENT * INDEX_SIZE if -1 in levels else DESCENT
+    top, bottom = base - h * max(1.0, up), base + h * max(DESCENT, down)
     a = math.radians(t.rotate_deg)
     ca, sa = math.cos(a), math.sin(a)
     px, py = t.pos
@@ -243,13 +262,15 @@ class LabelRequest:
     """A label wanted next to ``anchor`` (the point being lettered).
 
     ``prefer`` is a compass direction on the sheet (``"n"`` is up):
-    n, ne, e, se, s, sw, w, nw.
+    n, ne, e, se, s, sw, w, nw.  ``markup``: ``"s_3"`` has a subscript 3
+    (see :class:`drawing.scene.Text`).
     """
 
     anchor: Point
     text: str
     size: float = 3.5
     prefer: str = "ne"
+    markup: bool = True
 
     def __post_init__(self) -> None:
         if self.prefer not in _COMPASS:
@@ -266,25 +287,31 @@ class Placement:
     clear: bool
 
 
-def _candidate(
-    anchor: Point, direction: str, gap: float, label: str, size: float
-) -> Text:
-    """The label ``gap`` mm from ``anchor`` (box edge or corner) to ``direction``."""
-    ax, ay = anchor
-    d = gap * math.sqrt(0.5)
-    low = DESCENT * size  # the box's bottom is the descent, under the baseline
-    table: dict[str, tuple[float, float, str, str]] = {
-        "e": (ax + gap, ay, "start", "middle"),
-        "w": (ax - gap, ay, "end", "middle"),
-        "n": (ax, ay - gap - low, "middle", "alphabetic"),
-        "s": (ax, ay + gap, "middle", "hanging"),
-        "ne": (ax + d, ay - d - low, "start", "alphabetic"),
-        "nw": (ax - d, ay - d - low, "end", "alphabetic"),
-        "se": (ax + d, ay + d, "start", "hanging"),
-        "sw": (ax - d, ay + d, "end", "hanging"),
-    }
-    x, y, anchor_kind, baseline = table[direction]
-    return Text((x, y), label, size=size, anchor=anchor_kind, baseline=baseline)  # type: ignore[arg-type]
+_UNIT = {
+    "n": (0, -1), "ne": (1, -1), "e": (1, 0), "se": (1, 1),
+    "s": (0, 1), "sw": (-1, 1), "w": (-1, 0), "nw": (-1, -1),
+}  # fmt: skip
+
+
+def _candidate(req: LabelRequest, direction: str, gap: float) -> Text:
+    """The label with its box ``gap`` mm from the anchor towards ``direction``.
+
+    Sideways (e, w) the capitals are centred on the anchor's height; up or
+    down, the box's near edge is ``gap`` away; diagonally its near corner is.
+    """
+    ux, uy = _UNIT[direction]
+    d = gap if ux == 0 or uy == 0 else gap * math.sqrt(0.5)
+    kind = "start" if ux > 0 else "end" if ux < 0 else "middle"
+    ax, ay = req.anchor
+    probe = Text((ax, ay), req.text, req.size, anchor=kind, markup=req.markup)
+    _, top, _, bottom = text_box(probe).bounds  # relative to a baseline at ay
+    if uy < 0:
+        y = ay - d - (bottom - ay)
+    elif uy > 0:
+        y = ay + d + (ay - top)
+    else:
+        y = ay + req.size / 2
+    return Text((ax + ux * d, y), req.text, req.size, anchor=kind, markup=req.markup)  # type: ignore[arg-type]
 
 
 def _directions(prefer: str) -> list[str]:
@@ -323,7 +350,7 @@ def place_labels(
         best: tuple[float, Text, Polygon] | None = None
         for gap in distances:
             for direction in _directions(req.prefer):
-                text = _candidate(req.anchor, direction, gap, req.text, req.size)
+                text = _candidate(req, direction, gap)
                 box = text_box(text)
                 hits = (
                     []

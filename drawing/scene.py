@@ -37,10 +37,12 @@ __all__ = [
     "Point",
     "Polyline",
     "Rect",
+    "Run",
     "Scene",
     "Segment",
     "Text",
     "flatten",
+    "parse_markup",
     "translate",
 ]
 
@@ -214,6 +216,10 @@ class Text:
             ``"hanging"`` (at the top of the capitals).
         stretch: horizontal scale of the letters (0.8 = condensed to 80 %),
             the way a tight table cell is filled without a smaller size.
+        markup: read ``_`` and ``^`` as sub- and superscript marks, for the
+            method's notation: ``"V_{BA}"``, ``"a^n_{BA}"``, ``"s_3"``,
+            ``"μ_v"``; one character, or a group in braces; ``\\`` escapes.
+            Indices are 0.7 h, written in turn after their base (not stacked).
     """
 
     pos: Point
@@ -224,6 +230,7 @@ class Text:
     italic: bool = True
     baseline: Literal["alphabetic", "middle", "hanging"] = "alphabetic"
     stretch: float = 1.0
+    markup: bool = False
 
     def __post_init__(self) -> None:
         _set(self, "pos", _pt(self.pos))
@@ -250,6 +257,66 @@ class Text:
         return {"alphabetic": 0.0, "middle": self.size / 2, "hanging": self.size}[
             self.baseline
         ]
+
+    def runs(self) -> tuple[Run, ...]:
+        """The text as runs of one level; plain text is one run.
+
+        >>> [(r.text, r.level) for r in Text((0, 0), "a^n_{BA}", markup=True).runs()]
+        [('a', 0), ('n', 1), ('BA', -1)]
+        """
+        return parse_markup(self.text) if self.markup else (Run(self.text, 0),)
+
+
+#: Size of indices relative to the line, and the shift of their baselines in h
+#: (down for subscripts, up for superscripts).
+INDEX_SIZE = 0.7
+SUB_SHIFT = 0.3
+SUP_SHIFT = 0.45
+
+
+@dataclass(frozen=True, slots=True)
+class Run:
+    """A piece of text at one level: 0 on the line, -1 subscript, +1 superscript."""
+
+    text: str
+    level: int = 0
+
+
+def parse_markup(s: str) -> tuple[Run, ...]:
+    """Split ``"x_{ab}^c"``-style text into runs (see :class:`Text` ``markup``).
+
+    >>> [(r.text, r.level) for r in parse_markup(r"V_{BA} = 2\\_x")]
+    [('V', 0), ('BA', -1), (' = 2_x', 0)]
+    """
+    runs: list[Run] = []
+    buf: list[str] = []
+    i = 0
+
+    def flush(level: int = 0) -> None:
+        if buf:
+            runs.append(Run("".join(buf), level))
+            buf.clear()
+
+    while i < len(s):
+        ch = s[i]
+        if ch == "\\" and i + 1 < len(s):
+            buf.append(s[i + 1])
+            i += 2
+        elif ch in "_^" and i + 1 < len(s):
+            flush()
+            level = -1 if ch == "_" else 1
+            if s[i + 1] == "{" and (end := s.find("}", i + 2)) != -1:
+                buf.append(s[i + 2 : end])
+                i = end + 1
+            else:
+                buf.append(s[i + 1])
+                i += 2
+            flush(level)
+        else:
+            buf.append(ch)
+            i += 1
+    flush()
+    return tuple(r for r in runs if r.text)
 
 
 @dataclass(frozen=True, slots=True)

@@ -23,6 +23,9 @@ import svgwrite
 from svgwrite.base import BaseElement
 
 from drawing.scene import (
+    INDEX_SIZE,
+    SUB_SHIFT,
+    SUP_SHIFT,
     Arrow,
     Circle,
     Group,
@@ -165,6 +168,25 @@ class _Writer:
             return [g]
         raise TypeError(f"not a drawing item: {type(it).__name__}")
 
+    def fill_runs(self, el: BaseElement, t: Text) -> None:
+        """Plain text, or one ``<tspan>`` per run shifted by ``dy`` for indices."""
+        runs = t.runs()
+        if all(r.level == 0 for r in runs):
+            el.text = _clean("".join(r.text for r in runs))
+            return
+        el.text = ""
+        small = fmt(t.size * INDEX_SIZE / self.style.cap_height)
+        shift = {0: 0.0, -1: SUB_SHIFT * t.size, 1: -SUP_SHIFT * t.size}
+        now = 0.0
+        for r in runs:
+            span = self.dwg.tspan(_clean(r.text))
+            if r.level:
+                span["font-size"] = small
+            if (dy := shift[r.level] - now) != 0:
+                span["dy"] = fmt(dy)
+            now = shift[r.level]
+            el.add(span)
+
     def text(self, t: Text) -> BaseElement:
         """A ``<text>``; the slant is a shear about the capitals' middle line.
 
@@ -173,8 +195,8 @@ class _Writer:
         upright text is written with ``x``/``y`` only.
         """
         el = self.dwg.text("")
-        el.text = _clean(t.text)
         h = t.size
+        self.fill_runs(el, t)
         el["font-size"] = fmt(h / self.style.cap_height)
         if t.anchor != "start":
             el["text-anchor"] = t.anchor

@@ -196,3 +196,21 @@ def test_labels_placed_clear_never_overlap(points):
     assert overlaps([p.text for p in clear]) == []
     for p in clear:
         assert not any(p.box.intersects(g) for g in lines)
+
+
+def test_markup_indices_are_smaller_and_widen_the_box():
+    plain = text_box(Text((0, 0), "V", size=10)).bounds
+    indexed = text_box(Text((0, 0), "V_{BA}", size=10, markup=True)).bounds
+    # V at 10 mm (0.7 h), then "BA" at 7 mm after a spacing of its own size
+    assert indexed[2] == pytest.approx(10 * 0.7 + 7 * 0.2 + 7 * (0.7 + 0.2 + 0.7))
+    assert indexed[3] == pytest.approx(10 * (0.3 + 0.3 * 0.7))  # subscript hangs lower
+    assert plain[1] == indexed[1] == -10
+    sup = text_box(Text((0, 0), "a^n", size=10, markup=True)).bounds
+    assert sup[1] == pytest.approx(-10 * (0.45 + 0.7))  # superscript reaches higher
+
+
+def test_placed_label_with_index_keeps_its_gap():
+    (p,) = place_labels([LabelRequest((50, 50), "s_3", 5, prefer="n")])
+    assert p.text.markup and p.box.bounds[3] == pytest.approx(49.0)  # 1 mm above
+    (q,) = place_labels([LabelRequest((50, 50), "a^n", 5, prefer="s")])
+    assert q.box.bounds[1] == pytest.approx(51.0)  # 1 mm below, superscript included
