@@ -157,6 +157,15 @@ class Solver:
 
     # -------------------------------------------------------------------------------
     def solve(self, phi) -> Motion:
+        """Every point and link at the crank angles ``phi`` (rad from +x, any shape).
+
+        Where a group does not close, ``valid`` is False and the values there are
+        meaningless (never shown): numpy's warnings for them are silenced here.
+        """
+        with np.errstate(all="ignore"):
+            return self._solve(phi)
+
+    def _solve(self, phi) -> Motion:
         mech = self.mech
         phi = np.atleast_1d(np.asarray(phi, dtype=float))
         zero = np.zeros_like(phi)
