@@ -18,10 +18,9 @@ Labels are placed greedily so that no two overlap and none sits on a point.
 from __future__ import annotations
 
 import math
-
 import xml.etree.ElementTree as ET
 
-from plans.check import MU_KEY, CheckResult, recorded_segments, rebuild
+from plans.check import MU_KEY, CheckResult, rebuild, recorded_segments
 
 PANEL = 340.0  # user units (px) of one plan's square
 MARGIN = 24.0
@@ -278,18 +277,20 @@ def _wrap(text: str, width: int) -> list[str]:
 
 
 def _legend(dwg, x, y, w):
-    g = dwg.g(font_size=SMALL, font_family="sans-serif")
+    def text(t, at, color, **kw):
+        g.add(dwg.text(t, insert=(at, y), fill=color, font_size=SMALL, **kw))
+
+    g = dwg.g(font_family="sans-serif")
     g.add(dwg.line((x, y - 3), (x + 24, y - 3), stroke=BLACK, stroke_width=1.2))
-    g.add(dwg.text(w["legend_c"], insert=(x + 30, y), fill=BLACK))
+    text(w["legend_c"], x + 30, BLACK)
     x2 = x + 40 + text_width(w["legend_c"], SMALL)
     g.add(dwg.line((x2, y - 3), (x2 + 24, y - 3), stroke=RED, stroke_width=1.4,
                    stroke_dasharray="5,3"))
     g.add(dwg.circle((x2 + 12, y - 3), 2.6, fill="none", stroke=RED, stroke_width=1))
-    g.add(dwg.text(w["legend_s"], insert=(x2 + 30, y), fill=RED))
+    text(w["legend_s"], x2 + 30, RED)
     x3 = x2 + 40 + text_width(w["legend_s"], SMALL)
-    g.add(dwg.text("pd −4.2", insert=(x3, y), fill=RED, font_weight="bold"))
-    g.add(dwg.text(w["legend_d"], insert=(x3 + 12 + 1.15 * text_width("pd −4.2", SMALL), y),
-                   fill=RED))
+    text("pd −4.2", x3, RED, font_weight="bold")
+    text(w["legend_d"], x3 + 12 + 1.2 * text_width("pd −4.2", SMALL), RED)
     dwg.add(g)
 
 
@@ -321,7 +322,7 @@ def _panel(dwg, origin, plan, mu, student, items, failed, lang, w):
     for z in names:
         labels.block(*sc(z), 3.5)
     # the student's plan
-    for d, it in items:
+    for _, it in items:
         if it.start in student and it.end in student:
             p, q = sc(student[it.start]), sc(student[it.end])
             bad = id(it) in failed

@@ -84,17 +84,15 @@ def parse_tolerance(text: str, base: Tolerance | None = None) -> Tolerance:
     """
     base = base or Tolerance()
     pct, mm = base.percent, base.mm
-    parts = [p.strip() for p in str(text).replace(";", ",").split(",") if p.strip()]
-    if not parts:
-        raise ValueError('a tolerance reads "5%", "1mm" or "5%,1mm"')
-    for part in parts:
-        m = re.fullmatch(r"([0-9]*[.,]?[0-9]+)\s*(%|mm|мм)?", part)
-        if not m:
-            raise ValueError(f'"{part}" is not a tolerance (e.g. "5%", "1mm" or "5%,1mm")')
-        x = float(m.group(1).replace(",", "."))
+    token = r"(\d+(?:[.,]\d+)?)\s*(%|mm|мм)?"
+    text = str(text).strip()
+    if not re.fullmatch(rf"{token}(?:\s*[,;]?\s*{token})*", text):
+        raise ValueError(f'"{text[:40]}" is not a tolerance (e.g. "5%", "1mm" or "5%,1mm")')
+    for number, unit in re.findall(token, text):
+        x = float(number.replace(",", "."))
         if not math.isfinite(x) or x > 1000:
-            raise ValueError(f'"{part}" is out of range')
-        if m.group(2) in ("mm", "мм"):
+            raise ValueError(f'"{number}" is out of range')
+        if unit in ("mm", "мм"):
             mm = x
         else:
             pct = x

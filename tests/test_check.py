@@ -1,0 +1,599 @@
+"""``plans check``: a hand-drawn plan against the computed one, and the mistake named.
+
+Measurement files are built from the engine's own plans: exact lengths plus drawing
+noise (all must pass), the same with one common mistake injected (that mistake must be
+named), and the worked example's own measured segments (seed 000, sections 1.4–1.5).
+Where it is simple, a mistake is injected independently of the checker's replay: the
+Coriolis vector reversed is redrawn here by hand, the other branch is a second solution,
+a scale mistake multiplies the lengths.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from plans import check as ck
+from plans import mechanism
+from plans.cli import main
+from plans.kinematics import Solver
+from plans.plan import solve_position
+
+SAMPLES = Path(__file__).resolve().parents[1] / "samples"
+PRESS = SAMPLES / "press.toml"
+FOURBAR = SAMPLES / "fourbar.toml"
+MU_PRESS = {"mu_l": 0.01, "mu_v": 0.05, "mu_a": 1.0}
+
+# a four-bar whose coupler point E is off the line BC: a triangle, so that a mirrored
+# similarity figure differs from the right one
+TRIANGLE = """
+name = "Four-bar with a coupler triangle"
+[frame]
+A = [0.0, 0.0]
+D = [-0.135, 0.0]
+[driver]
+link = 1
+angle_deg = 40
+rpm = 149.2
+sense = "ccw"
+[links.1]
+axis = ["A", "B"]
+points = { B = 0.0625 }
+[links.2]
+axis = ["B", "C"]
+points = { C = 0.21, E = [0.12, 0.07] }
+[links.3]
+axis = ["D", "C"]
+points = { C = 0.1025 }
+[assembly]
+C = "above BD"
+"""
+
+
+def run(capsys, *argv):
+    code = main([str(a) for a in argv])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def ascii_name(name: str) -> str:
+    return name.replace("π", "pi")
+
+
+def plan_segments(sol) -> list[ck.Item]:
+    """Every segment the two plans name, as items to measure."""
+    out = []
+    for kind, plan in (("velocity", sol.velocity), ("acceleration", sol.acceleration)):
+        for name, (a, b) in ck.recorded_segments(plan).items():
+            out.append(ck.Item("segments." + name, name, "segment", kind, 0.0, a, b))
+    return out
+
+
+def write_meas(path: Path, mech: Path | str, segments: dict[str, float], mu: dict[str, float],
+               values: dict | None = None, extra: str = "") -> Path:
+    lines = [f'mechanism = "{mech}"', extra, "[scales]"]
+    lines += [f"{k} = {v!r}" for k, v in mu.items()]
+    lines.append("[segments]")
+    lines += [f"{ascii_name(k)} = {v:.2f}" for k, v in segments.items()]
+    if values:
+        lines.append("[values]")
+        lines += [f"{json.dumps(k)} = {json.dumps(v)}" for k, v in values.items()]
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return path
+
+
+def measured(sol, state: ck.State, mu, rng, noise=0.3) -> dict[str, float]:
+    """What a student who draws ``state`` measures, with drawing noise of ± ``noise`` mm."""
+    return {it.name: max(ck.expected(it, state, mu) + rng.uniform(-noise, noise), 0.0)
+            for it in plan_segments(sol)}
+
+
+def find(sol, kind, target=None, plan=None, **info) -> ck.Mistake:
+    for mk in ck.hypotheses(sol):
+        if mk.kind == kind and (target is None or mk.target == target) and \
+                (plan is None or mk.plan == plan) and all(mk.get(k) == v for k, v in info.items()):
+            return mk
+    raise LookupError((kind, target, plan, info))
+
+
+@pytest.fixture(scope="module")
+def press():
+    return solve_position(mechanism.load(PRESS), mu=MU_PRESS)
+
+
+# ---------------------------------------------------------------------------------------
+# the replay of the constructions is the engine's plan when nothing is changed
+# ---------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("source", [PRESS, FOURBAR, "variant:2", "variant:5"])
+def test_replay_without_mistake_is_the_engine_plan(source):
+    from plans.variants import variant
+
+    mech = variant(int(source.split(":")[1])) if isinstance(source, str) else mechanism.load(source)
+    sol = solve_position(mech)
+    rep = ck._Replayer(sol)
+    st = rep.run(ck.Mistake("term-scale", "acceleration", "no such term", 7.0))
+    scale = max(abs(p.value) for p in sol.acceleration.points.values())
+    for plan, vals in ((sol.velocity, st.velocity), (sol.acceleration, st.acceleration)):
+        top = max(abs(p.value) for p in plan.points.values())
+        for name, p in plan.points.items():
+            assert abs(vals[name] - p.value) <= 1e-12 * top, (plan.kind, name)
+    for lid in sol.omega:
+        assert st.omega[lid] == pytest.approx(sol.omega[lid], abs=1e-12)
+        assert st.epsilon[lid] == pytest.approx(sol.epsilon[lid], abs=1e-11 * scale)
+
+
+# ---------------------------------------------------------------------------------------
+# (a) drawing noise within tolerance: everything passes
+# ---------------------------------------------------------------------------------------
+
+
+@settings(max_examples=12, deadline=None)
+@given(seed=st.integers(0, 2**32 - 1), which=st.sampled_from([PRESS, FOURBAR]))
+def test_noise_within_tolerance_passes(tmp_path_factory, seed, which):
+    sol = solve_position(mechanism.load(which))
+    mu = {"mu_l": sol.mu_l, "mu_v": sol.mu_v, "mu_a": sol.mu_a}
+    segs = measured(sol, ck.simulate(sol, None), mu, np.random.default_rng(seed), noise=0.95)
+    path = write_meas(tmp_path_factory.mktemp("m") / "m.toml", which, segs, mu)
+    res = ck.check(ck.load(path))
+    assert res.ok, [(d.item.name, d.deviation) for d in res.failed]
+    assert res.diagnosis.best is None
+
+
+def test_noise_passes_on_the_command_line(tmp_path, capsys, press):
+    segs = measured(press, ck.simulate(press, None), MU_PRESS, np.random.default_rng(7), noise=0.5)
+    path = write_meas(tmp_path / "ok.toml", PRESS, segs, MU_PRESS,
+                      values={"omega3": "4.8 ccw", "epsilon4": 52})
+    code, out, err = run(capsys, "check", path)
+    assert code == 0, out + err
+    assert "BEYOND" not in out
+    assert "all 23 items within tolerance" in out
+
+
+# ---------------------------------------------------------------------------------------
+# (b) each common mistake injected is named
+# ---------------------------------------------------------------------------------------
+
+
+def diagnose(tmp_path, mech, segs, mu, values=None) -> ck.CheckResult:
+    path = write_meas(tmp_path / "m.toml", mech, segs, mu, values)
+    res = ck.check(ck.load(path))
+    assert not res.ok
+    return res
+
+
+def named(res: ck.CheckResult) -> ck.Mistake:
+    assert res.diagnosis.best is not None, [d.item.name for d in res.failed]
+    return res.diagnosis.best.mistake
+
+
+def coriolis_reversed_by_hand(sol):
+    """The acceleration plan of the press with a^k_A3A laid off the wrong way, redrawn
+    from the vector equations (numpy's 2×2 solve, not the checker's replay)."""
+    P = sol.positions
+    a_A = sol.acceleration.points["a"].value
+    g1 = sol.motion.groups[0]
+    (r1, r2) = g1.acceleration.routes
+    ak = complex(r1.terms[0].value[0])
+    an = complex(r2.terms[0].value[0])
+    u, d = complex(r1.direction[0]), complex(r2.direction[0])
+
+    def meet(p1, d1, p2, d2):  # p1 + s·d1 = p2 + t·d2
+        A = np.array([[d1.real, -d2.real], [d1.imag, -d2.imag]])
+        s, _ = np.linalg.solve(A, [(p2 - p1).real, (p2 - p1).imag])
+        return p1 + s * d1
+
+    k = a_A - ak
+    a3 = meet(k, u, an, d)
+    c = a3 * (P["C"] - P["B"]) / (P["A3"] - P["B"])  # b is at the pole
+    s3 = a3 * (P["S3"] - P["B"]) / (P["A3"] - P["B"])
+    v = sol.velocity.points
+    vdc = v["d"].value - v["c"].value
+    r = P["D"] - P["C"]
+    n2 = c - abs(vdc) ** 2 / abs(r) ** 2 * r
+    dd = meet(n2, 1j * r, 0j, 1 + 0j)
+    s4 = c + (P["S4"] - P["C"]) / r * (dd - c)
+    mm = {"πa": a_A, "πa3": a3, "πc": c, "πs3": s3, "πd": dd, "πs4": s4, "ak": a_A - k,
+          "bn1": an, "ka3": a3 - k, "n1a3": a3 - an, "cn2": n2 - c, "n2d": dd - n2}
+    return {name: abs(z) / sol.mu_a for name, z in mm.items()}
+
+
+def test_coriolis_reversed_by_hand_is_named(tmp_path, press, capsys):
+    exact = {k: v for k, v in press.segments.items() if k[0].islower() or k[0] == "π"}
+    segs = dict(exact) | coriolis_reversed_by_hand(press)
+    rng = np.random.default_rng(1)
+    segs = {k: v + rng.uniform(-0.3, 0.3) for k, v in segs.items()}
+    res = diagnose(tmp_path, PRESS, segs, MU_PRESS)
+    mk = named(res)
+    assert (mk.kind, mk.target) == ("coriolis-reversed", "a^k_A3A")
+    assert {"n1a3", "πa3", "πc", "πd"} <= set(res.diagnosis.best.explained)
+    code, out, _ = run(capsys, "check", tmp_path / "m.toml")
+    assert code == 1
+    assert "Diagnosis: the Coriolis vector a^k_A3A points the wrong way." in out
+    assert "turn the relative velocity V_A3A by 90° in the sense of ω3" in out
+
+
+def test_omega_sense_is_named_when_the_sense_is_reported(tmp_path, press):
+    mk = find(press, "omega-sense", "ω3")
+    state = ck.simulate(press, mk, MU_PRESS)
+    segs = measured(press, state, MU_PRESS, np.random.default_rng(2))
+    w3 = state.omega[3]  # the student's ω3: clockwise, the true one is counter-clockwise
+    assert w3 < 0 < press.omega[3]
+    res = diagnose(tmp_path, PRESS, segs, MU_PRESS,
+                   values={"omega3": f"{abs(w3):.2f} cw"})
+    got = named(res)
+    assert (got.kind, got.target) == ("omega-sense", "ω3")
+    assert "ω3" in got.correction() and "relative velocity" in got.correction()
+    # without the reported sense the plans alone cannot tell it from a reversed a^k
+    res = diagnose(tmp_path, PRESS, segs, MU_PRESS)
+    kinds = {named(res).kind} | {f.mistake.kind for f in res.diagnosis.alternatives}
+    assert kinds == {"coriolis-reversed", "omega-sense"}
+
+
+def test_other_branch_is_named(tmp_path, press):
+    mech = press.mechanism
+    solver = Solver(mech)
+    flipped = (solver.sigmas[0], -solver.sigmas[1])
+    other = solve_position(mech, solver=Solver(mech, sigmas=flipped), mu=MU_PRESS)
+    rng = np.random.default_rng(3)
+    segs = {k: v + rng.uniform(-0.3, 0.3) for k, v in other.segments.items()
+            if k[0].islower() or k[0] == "π"}
+    got = named(diagnose(tmp_path, PRESS, segs, MU_PRESS))
+    assert (got.kind, got.target) == ("branch", "group 4–5 (RRP)")
+    assert "other branch" in got.describe()
+
+
+@pytest.mark.parametrize("plan, factor", [("velocity", 10.0), ("acceleration", 0.1)])
+def test_scale_factor_of_ten_is_named(tmp_path, press, plan, factor):
+    pole = "p" if plan == "velocity" else "π"
+    rng = np.random.default_rng(4)
+    segs = {}
+    for it in plan_segments(press):
+        L = press.segments[it.name] * (factor if it.plan == plan else 1.0)
+        segs[it.name] = L + rng.uniform(-0.3, 0.3)
+    got = named(diagnose(tmp_path, PRESS, segs, MU_PRESS))
+    assert (got.kind, got.plan) == ("scale", plan)
+    assert ("10 times too large" if factor > 1 else "10 times too small") in got.describe()
+    assert pole
+
+
+def test_swapped_scale_factors_are_named(tmp_path, press):
+    swapped = solve_position(press.mechanism, mu={"mu_l": 0.01, "mu_v": 1.0, "mu_a": 0.05})
+    rng = np.random.default_rng(5)
+    segs = {it.name: swapped.segments[it.name] + rng.uniform(-0.3, 0.3) for it in plan_segments(press)}
+    got = named(diagnose(tmp_path, PRESS, segs, MU_PRESS))
+    assert (got.kind, got.plan) == ("scale-swapped", "both")
+    assert "μv and μa swapped" in got.describe()
+
+
+CASES = [
+    # (mechanism, kind, target, plan, info)
+    (PRESS, "coriolis-omitted", "a^k_A3A", None, {}),
+    (PRESS, "coriolis-half", "a^k_A3A", None, {}),
+    (PRESS, "normal-reversed", "a^n_A3B", None, {}),
+    (PRESS, "normal-omitted", "a^n_A3B", None, {}),
+    (PRESS, "normal-reversed", "a^n_AO", None, {}),
+    (FOURBAR, "normal-reversed", "a^n_CD", None, {}),
+    (FOURBAR, "normal-omitted", "a^n_CB", None, {}),
+    (PRESS, "line-swapped", "V_DC", "velocity", {}),
+    (PRESS, "line-swapped", "a^t_DC", "acceleration", {}),
+    (FOURBAR, "line-swapped", "V_CB", "velocity", {}),
+    (FOURBAR, "line-swapped", "a^t_CD", "acceleration", {}),
+    (FOURBAR, "branch", "group 2–3 (RRR)", None, {}),
+    (PRESS, "term-scale", "a^n_A3B", None, {}),
+    (PRESS, "similarity-ratio", "c", "both", {"how": "inverse"}),
+    (PRESS, "similarity-ratio", "c", "velocity", {"how": "sibling:s3"}),
+    (FOURBAR, "similarity-ratio", "e", "acceleration", {"how": "inverse"}),
+    ("triangle", "similarity-mirrored", "e", "both", {"how": "mirror"}),
+    ("triangle", "similarity-mirrored", "e", "acceleration", {"how": "mirror"}),
+]
+
+
+@pytest.mark.parametrize("source, kind, target, plan, info", CASES,
+                         ids=[f"{Path(str(c[0])).stem}-{c[1]}-{c[2]}-{c[3] or ''}" for c in CASES])
+def test_injected_mistake_is_named(tmp_path, source, kind, target, plan, info):
+    if source == "triangle":
+        source = tmp_path / "triangle.toml"
+        source.write_text(TRIANGLE, encoding="utf-8")
+    sol = solve_position(mechanism.load(source))
+    mu = {"mu_l": sol.mu_l, "mu_v": sol.mu_v, "mu_a": sol.mu_a}
+    mk = find(sol, kind, target, plan, **info)
+    segs = measured(sol, ck.simulate(sol, mk, mu), mu, np.random.default_rng(6))
+    res = diagnose(tmp_path, source, segs, mu)
+    got = named(res)
+    assert got == mk, (got.kind, got.target, got.plan, got.info)
+    assert not res.diagnosis.best.broken and not res.diagnosis.best.unexplained
+    assert got.describe() and got.correction()
+
+
+@pytest.mark.parametrize("source", [PRESS, FOURBAR])
+def test_every_mistake_is_named_or_indistinguishable(source):
+    """Every mistake the checker knows, injected with noise: either it stays within
+    tolerance, or it is named (first or as an equally good explanation)."""
+    sol = solve_position(mechanism.load(source))
+    mu = {"mu_l": sol.mu_l, "mu_v": sol.mu_v, "mu_a": sol.mu_a}
+    items = plan_segments(sol)
+    rng = np.random.default_rng(8)
+    seen = 0
+    for mk in ck.hypotheses(sol):
+        try:
+            state = ck.simulate(sol, mk, mu)
+        except (ck._Degenerate, ck.PlansError):
+            continue
+        meas_items = tuple(
+            ck.Item(it.key, it.name, it.kind, it.plan,
+                    max(ck.expected(it, state, mu) + rng.uniform(-0.3, 0.3), 0.0), it.start, it.end)
+            for it in items)
+        res = ck.check(ck.Measurement("test", sol.mechanism, sol, mu, meas_items))
+        if res.ok:
+            continue
+        seen += 1
+        d = res.diagnosis
+        assert d.best is not None, (mk.kind, mk.target, mk.plan)
+        assert mk in [d.best.mistake, *[a.mistake for a in d.alternatives]], (
+            mk.kind, mk.target, mk.plan, d.best.mistake.kind, d.best.mistake.target)
+    assert seen >= 25
+
+
+def test_one_stray_segment_besides_the_mistake(tmp_path, press, capsys):
+    """A mistake plus one segment misread: the mistake is still named, and the stray
+    segment is said to be unexplained (all but one in four deviations must be explained)."""
+    state = ck.simulate(press, find(press, "coriolis-reversed"), MU_PRESS)
+    segs = measured(press, state, MU_PRESS, np.random.default_rng(9))
+    segs["pc"] *= 1.3
+    path = write_meas(tmp_path / "stray.toml", PRESS, segs, MU_PRESS)
+    code, out, _ = run(capsys, "check", path)
+    assert code == 1
+    assert "Diagnosis: the Coriolis vector a^k_A3A points the wrong way." in out
+    assert "(7 of the 8 items beyond tolerance; not pc)" in out
+
+
+def test_no_single_mistake(tmp_path, press, capsys):
+    """Two unrelated mistakes at once, one on each plan: no single one explains them."""
+    wrong_v = ck.simulate(press, find(press, "similarity-ratio", "c", "velocity", how="inverse"), MU_PRESS)
+    wrong_a = ck.simulate(press, find(press, "coriolis-reversed"), MU_PRESS)
+    rng = np.random.default_rng(9)
+    segs = {}
+    for it in plan_segments(press):
+        state = wrong_v if it.plan == "velocity" else wrong_a
+        segs[it.name] = ck.expected(it, state, MU_PRESS) + rng.uniform(-0.3, 0.3)
+    path = write_meas(tmp_path / "two.toml", PRESS, segs, MU_PRESS)
+    code, out, _ = run(capsys, "check", path)
+    assert code == 1
+    assert "Diagnosis: no single mistake explains this." in out
+    assert "closest: the Coriolis vector a^k_A3A points the wrong way" not in out or "but not" in out
+
+
+# ---------------------------------------------------------------------------------------
+# (c) the worked example's own measurements
+# ---------------------------------------------------------------------------------------
+
+SEED = {  # segment: (measured by the student, computed, beyond tolerance?)
+    "pa3": (55, 55.43, False), "aa3": (23, 22.96, False), "pc": (70, 72.33, False),
+    "cd": (10, 9.552, False), "pd": (66, 70.23, True), "ak": (11.09, 11.07, False),
+    "bn1": (13.26, 13.36, False), "n1a3": (13, 11.89, True), "πc": (25, 23.34, True),
+    "πd": (25, 20.82, True),
+}
+
+
+def test_seed_000_measurements(capsys):
+    res = ck.check(ck.load(SAMPLES / "check_press.toml"))
+    by_name = {d.item.name: d for d in res.deviations}
+    for name, (m, c, bad) in SEED.items():
+        d = by_name[name]
+        assert d.item.measured == m
+        assert abs(d.computed) == pytest.approx(c, abs=0.006)
+        assert d.deviation == pytest.approx(m - abs(d.computed))
+        assert d.ok is not bad, name
+    assert not by_name["ε3"].ok and by_name["ω3"].ok
+    assert res.diagnosis.best is None
+    code, out, err = run(capsys, "check", SAMPLES / "check_press.toml")
+    assert code == 1, err
+    for name, (_m, c, bad) in SEED.items():
+        line = next(ln for ln in out.splitlines() if ln.split() and ln.split()[0] == name)
+        assert line.endswith("BEYOND") is bad, line
+        assert f"{c:.4g}" in line
+    pd_row = next(ln for ln in out.splitlines() if ln.strip().startswith("pd "))
+    assert pd_row.split()[1:] == ["66", "70.23", "−4.23", "−6.0", "BEYOND"]
+    assert "Overall: 6 of 15 items beyond tolerance: pd, n1a3, πa3, πc, πd, ε3." in out
+    assert "no single mistake explains this" in out
+
+
+def test_seed_in_russian_with_decimal_commas(capsys):
+    code, out, _ = run(capsys, "check", SAMPLES / "check_press.toml", "--lang", "ru")
+    assert code == 1
+    assert "План скоростей" in out and "ВНЕ ДОПУСКА" in out
+    assert "55,43" in out and "−4,23" in out
+    assert "ни одна отдельная ошибка этого не объясняет" in out
+
+
+def test_seed_json(capsys):
+    code, out, _ = run(capsys, "check", SAMPLES / "check_press.toml", "--json")
+    assert code == 1
+    data = json.loads(out)
+    assert data["ok"] is False
+    assert data["failed"] == ["pd", "n1a3", "πa3", "πc", "πd", "ε3"]
+    item = next(i for i in data["items"] if i["name"] == "pd")
+    assert item["plan"] == "velocity" and item["from"] == "p" and item["to"] == "d"
+    assert item["deviation"] == pytest.approx(66 - 70.229, abs=1e-3)
+    assert data["diagnosis"]["explained"] is False
+    assert data["tolerance"] == {"percent": 5.0, "mm": 1.0}
+
+
+def test_tolerance_option(capsys):
+    code, out, _ = run(capsys, "check", SAMPLES / "check_press.toml", "--tolerance", "25%,5mm")
+    assert code == 0, out
+    code, out, _ = run(capsys, "check", SAMPLES / "check_press.toml", "--tolerance", "1%,0.1mm")
+    assert code == 1 and out.count("BEYOND") > 6
+    assert ck.parse_tolerance("2 %") == ck.Tolerance(2.0, 1.0)
+    assert ck.parse_tolerance("0,5mm") == ck.Tolerance(5.0, 0.5)
+    with pytest.raises(ValueError):
+        ck.parse_tolerance("five")
+
+
+# ---------------------------------------------------------------------------------------
+# names, values, validation
+# ---------------------------------------------------------------------------------------
+
+
+def test_segment_names(tmp_path, press):
+    path = tmp_path / "names.toml"
+    path.write_text(
+        f'mechanism = "{PRESS}"\n[scales]\nmu_l = 0.01\nmu_v = 0.05\nmu_a = 1\n'
+        '[segments]\npia3 = 17.9\n"πa3" = 17.9\nba3 = 55.4\npa3 = 55.4\nBA3 = 57.5\n'
+        'a3pi = 17.9\n[segments.acceleration]\ncd = 16\nbc = 23.3\n', encoding="utf-8")
+    meas = ck.load(path)
+    items = {it.key: it for it in meas.items}
+    assert (items["segments.pia3"].plan, items["segments.pia3"].name) == ("acceleration", "πa3")
+    assert items['segments.πa3'].start == items["segments.pia3"].start == "π"
+    assert items["segments.a3pi"].end == "π"
+    assert (items["segments.ba3"].plan, items["segments.ba3"].start) == ("velocity", "b")
+    assert items["segments.BA3"].plan == "positions"
+    assert items["segments.acceleration.cd"].plan == "acceleration"
+    res = ck.check(meas)
+    by = {d.item.key: d for d in res.deviations}
+    assert abs(by["segments.ba3"].computed) == pytest.approx(press.segments["pa3"])
+    assert abs(by["segments.BA3"].computed) == pytest.approx(57.48, abs=0.01)
+    assert abs(by["segments.acceleration.bc"].computed) == pytest.approx(press.segments["πc"])
+
+
+def test_values_and_senses(tmp_path, press):
+    path = write_meas(tmp_path / "v.toml", PRESS, {"pa3": 55.4}, MU_PRESS, values={
+        "omega3": "4.82 ccw", "omega4": "1.6 ccw", "epsilon3": 20.7, "V_A3": 2.77,
+        "V_A3A": 1.15, "a^k_A3A": 11.07, "a_C": 23.3, "a^t_DC": 15.6})
+    res = ck.check(ck.load(path))
+    by = {d.item.name: d for d in res.deviations}
+    assert by["ω3"].ok and by["ω3"].sense_ok is True
+    assert not by["ω4"].ok and by["ω4"].sense_ok is False  # ω4 is clockwise
+    for name in ("V_A3", "V_A3A", "a^k_A3A", "a_C", "a^t_DC", "ε3"):
+        assert by[name].ok, name
+    assert by["a^k_A3A"].computed == pytest.approx(11.07, abs=0.01)
+
+
+BAD = [
+    ('mechanism = "nowhere.toml"\n[segments]\npa = 1\n', "mechanism: nowhere.toml: no such file"),
+    ('variant = "two"\n[segments]\npa = 1\n', "variant: must be a whole number"),
+    ('mechanism = "M"\nvariant = 2\n', "one of them"),
+    ('mechanism = "M"\nfoo = 1\n[scales]\nmu_v = 0.05\n[segments]\npa = 60\n', "foo: unknown key"),
+    ('mechanism = "M"\n[scales]\nmu_v = 0.05\n[segments]\npz = 60\n',
+     'segments.pz: unknown segment "pz"; known: OB, OA'),
+    ('mechanism = "M"\n[scales]\nmu_v = 0.05\n[segments]\npa = -3\n', "segments.pa: a length"),
+    ('mechanism = "M"\n[segments]\npa = 60\n', "scales.mu_v: missing"),
+    ('mechanism = "M"\n[scales]\nmu_v = 0\n[segments]\npa = 60\n', "scales.mu_v: must be positive"),
+    ('mechanism = "M"\n[scales]\nmu_v = 0.05\nmu_a = 1\n[segments]\nbc = 60\n',
+     "segments.bc: \"bc\" names a segment on the acceleration and the velocity plans"),
+    ('mechanism = "M"\n[scales]\nmu_v = 0.05\n[segments]\npa = 60\n[values]\nomega3 = "4 sideways"\n',
+     'values.omega3: write a magnitude and a sense'),
+    ('mechanism = "M"\n[scales]\nmu_v = 0.05\n[segments]\npa = 60\n[values]\nomega9 = 1\n',
+     "values.omega9: there is no link 9"),
+    ('mechanism = "M"\n[scales]\nmu_v = 0.05\n[segments]\npa = 60\n[values]\nV_Q = 1\n',
+     'values.V_Q: unknown value "V_Q"'),
+    ('mechanism = "M"\ntolerance = "lots"\n[scales]\nmu_v = 0.05\n[segments]\npa = 60\n', "tolerance:"),
+    ('mechanism = "M"\n', "segments: nothing to check"),
+    ('mechanism = "M"\n[segments\n', "TOML"),
+]
+
+
+@pytest.mark.parametrize("text, expect", BAD, ids=[b[1][:30] for b in BAD])
+def test_bad_measurement_files(tmp_path, capsys, text, expect):
+    path = tmp_path / "bad.toml"
+    path.write_text(text.replace('"M"', json.dumps(str(PRESS))), encoding="utf-8")
+    code, out, err = run(capsys, "check", path)
+    assert code == 2
+    assert out == ""
+    assert "Traceback" not in err
+    lines = err.strip().splitlines()
+    hit = [ln for ln in lines if expect in ln]
+    assert hit, err
+    assert all(ln.startswith(f"plans check: {path}: ") for ln in lines), err
+
+
+def test_unknown_segment_is_one_line(tmp_path, capsys):
+    path = tmp_path / "u.toml"
+    path.write_text(f'mechanism = {json.dumps(str(PRESS))}\n[scales]\nmu_v = 0.05\n'
+                    "[segments]\npq = 1\n", encoding="utf-8")
+    code, _, err = run(capsys, "check", path)
+    assert code == 2
+    (line,) = err.strip().splitlines()
+    assert "segments.pq" in line and "pa3" in line and "n1a3" in line and str(path) in line
+
+
+def test_variant_and_angle(tmp_path, capsys):
+    sol = solve_position(mechanism.load(FOURBAR))
+    path = tmp_path / "var.toml"
+    path.write_text('variant = 1\nangle_deg = 40\n[scales]\nmu_v = 0.02\n[segments]\npb = 1\n',
+                    encoding="utf-8")
+    code, out, _ = run(capsys, "check", path)
+    assert code == 1 and "pb" in out
+    meas = ck.load(path)
+    assert math.degrees(meas.solution.phi) == pytest.approx(40)
+    assert sol.mechanism.name != meas.mechanism.name
+
+
+# ---------------------------------------------------------------------------------------
+# the overlay
+# ---------------------------------------------------------------------------------------
+
+
+def _boxes(svg: str):
+    from drawing.check_overlay import text_width
+
+    root = ET.fromstring(svg)
+    out = []
+    for el in root.iter("{http://www.w3.org/2000/svg}text"):
+        size = float(el.get("font-size") or el.get("font_size") or 11)
+        x, y = float(el.get("x")), float(el.get("y"))
+        w = text_width(el.text or "", size) * (1.15 if el.get("font-weight") == "bold" else 1)
+        out.append((el.text, (x, y - size * 0.8, x + w, y + size * 0.2)))
+    return out
+
+
+@pytest.mark.parametrize("case", ["seed", "coriolis"])
+def test_svg_overlay(tmp_path, capsys, press, case):
+    if case == "seed":
+        meas_path = SAMPLES / "check_press.toml"
+    else:
+        state = ck.simulate(press, find(press, "coriolis-reversed"), MU_PRESS)
+        meas_path = write_meas(tmp_path / "c.toml", PRESS,
+                               measured(press, state, MU_PRESS, np.random.default_rng(3)), MU_PRESS)
+    out_svg = tmp_path / "o.svg"
+    code, _, _ = run(capsys, "check", meas_path, "--svg", out_svg)
+    assert code == 1
+    svg = out_svg.read_text(encoding="utf-8")
+    root = ET.fromstring(svg)  # well-formed
+    assert root.tag.endswith("svg")
+    texts = [t for t, _ in _boxes(svg)]
+    assert any("beyond tolerance" in (t or "") for t in texts)
+    if case == "coriolis":
+        assert any("Coriolis" in (t or "") for t in texts)
+        assert "k′" in texts  # the student's k, on the other side of a
+    else:
+        assert "d′" in texts
+    boxes = [b for t, b in _boxes(svg)]
+    for i, a in enumerate(boxes):
+        for b in boxes[i + 1:]:
+            w = min(a[2], b[2]) - max(a[0], b[0])
+            h = min(a[3], b[3]) - max(a[1], b[1])
+            assert not (w > 0.5 and h > 0.5), "overlapping labels"
+
+
+def test_rebuild_places_measured_points(press):
+    meas = ck.load(SAMPLES / "check_press.toml")
+    res = ck.check(meas)
+    pts = ck.rebuild(res)
+    v = pts["velocity"]
+    assert abs(v["a3"]) == pytest.approx(55)
+    assert abs(v["c"]) == pytest.approx(70)
+    assert abs(v["d"]) == pytest.approx(66, abs=0.5)  # two circles that almost meet
+    a = pts["acceleration"]
+    assert abs(a["n1"]) == pytest.approx(13.26)
+    assert abs(a["a3"] - a["n1"]) == pytest.approx(13)
+    assert abs(a["a3"]) == pytest.approx(19)
