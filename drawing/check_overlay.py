@@ -124,8 +124,12 @@ def text_width(text: str, size: float) -> float:
             w += 0.3
         elif c in " −-()":
             w += 0.4
+        elif c in "жмшщыюфЖМШЩЫЮФ":
+            w += 0.9
         elif c.isupper() or c in "mwMWπ":
             w += 0.75
+        elif "а" <= c.lower() <= "я" or c == "ё":
+            w += 0.64
         else:
             w += 0.58
     return w * size
@@ -191,7 +195,7 @@ def overlay_svg(result: CheckResult, lang: str = "en") -> str:
     foot = _footer(result, lang)
     lists = {kind: _deviation_list(result, kind, lang) for kind in ("velocity", "acceleration")}
     below = max(len(v) for v in lists.values())
-    height = MARGIN * 2 + 22 + PANEL + 14 * below + 40 + 16 * (len(foot) + 1)
+    height = MARGIN * 2 + 22 + PANEL + 14 * below + 56 + 16 * (len(foot) + 1)
     dwg = _Doc(width, height)
     dwg.add(dwg.rect((0, 0), (width, height), fill="white"))
     dwg.add(dwg.text(w["title"].format(src=meas.source), insert=(MARGIN, MARGIN),
@@ -212,8 +216,7 @@ def overlay_svg(result: CheckResult, lang: str = "en") -> str:
             dwg.add(dwg.text(line, insert=(x0, top + 12 + PANEL + 16 + 14 * j), font_size=SMALL,
                              font_family="sans-serif", fill=RED))
     y = top + 12 + PANEL + 14 * below + 32
-    _legend(dwg, MARGIN, y, w)
-    y += 22
+    y = _legend(dwg, MARGIN, y, w) + 22
     for line, color in foot:
         dwg.add(dwg.text(line, insert=(MARGIN, y), font_size=FONT, font_family="sans-serif",
                          fill=color))
@@ -276,22 +279,30 @@ def _wrap(text: str, width: int) -> list[str]:
     return lines
 
 
-def _legend(dwg, x, y, w):
-    def text(t, at, color, **kw):
-        g.add(dwg.text(t, insert=(at, y), fill=color, font_size=SMALL, **kw))
-
+def _legend(dwg, x, y, w) -> float:
+    """The legend from (x, y), wrapped to the picture's width; returns the y after it."""
     g = dwg.g(font_family="sans-serif")
-    g.add(dwg.line((x, y - 3), (x + 24, y - 3), stroke=BLACK, stroke_width=1.2))
-    text(w["legend_c"], x + 30, BLACK)
-    x2 = x + 40 + text_width(w["legend_c"], SMALL)
-    g.add(dwg.line((x2, y - 3), (x2 + 24, y - 3), stroke=RED, stroke_width=1.4,
-                   stroke_dasharray="5,3"))
-    g.add(dwg.circle((x2 + 12, y - 3), 2.6, fill="none", stroke=RED, stroke_width=1))
-    text(w["legend_s"], x2 + 30, RED)
-    x3 = x2 + 40 + text_width(w["legend_s"], SMALL)
-    text("pd −4.2", x3, RED, font_weight="bold")
-    text(w["legend_d"], x3 + 12 + 1.2 * text_width("pd −4.2", SMALL), RED)
+    right = x + 2 * PANEL + MARGIN
+    entries = [("computed", w["legend_c"]), ("student", w["legend_s"]), ("deviation", w["legend_d"])]
+    at = x
+    for kind, label in entries:
+        sample = 24.0 if kind != "deviation" else 1.2 * text_width("pd −4.2", SMALL)
+        need = sample + 6 + text_width(label, SMALL)
+        if at > x and at + need > right:
+            at, y = x, y + 16
+        if kind == "computed":
+            g.add(dwg.line((at, y - 3), (at + 24, y - 3), stroke=BLACK, stroke_width=1.2))
+        elif kind == "student":
+            g.add(dwg.line((at, y - 3), (at + 24, y - 3), stroke=RED, stroke_width=1.4,
+                           stroke_dasharray="5,3"))
+            g.add(dwg.circle((at + 12, y - 3), 2.6, fill="none", stroke=RED, stroke_width=1))
+        else:
+            g.add(dwg.text("pd −4.2", insert=(at, y), fill=RED, font_size=SMALL, font_weight="bold"))
+        g.add(dwg.text(label, insert=(at + sample + 6, y), fill=BLACK if kind == "computed" else RED,
+                       font_size=SMALL))
+        at += need + 16
     dwg.add(g)
+    return y
 
 
 def _panel(dwg, origin, plan, mu, student, items, failed, lang, w):

@@ -564,8 +564,8 @@ def _boxes(svg: str):
     return out
 
 
-@pytest.mark.parametrize("case", ["seed", "coriolis"])
-def test_svg_overlay(tmp_path, capsys, press, case):
+@pytest.mark.parametrize("case, lang", [("seed", "en"), ("coriolis", "en"), ("coriolis", "ru")])
+def test_svg_overlay(tmp_path, capsys, press, case, lang):
     if case == "seed":
         meas_path = SAMPLES / "check_press.toml"
     else:
@@ -573,15 +573,15 @@ def test_svg_overlay(tmp_path, capsys, press, case):
         meas_path = write_meas(tmp_path / "c.toml", PRESS,
                                measured(press, state, MU_PRESS, np.random.default_rng(3)), MU_PRESS)
     out_svg = tmp_path / "o.svg"
-    code, _, _ = run(capsys, "check", meas_path, "--svg", out_svg)
+    code, _, _ = run(capsys, "check", meas_path, "--svg", out_svg, "--lang", lang)
     assert code == 1
     svg = out_svg.read_text(encoding="utf-8")
     root = ET.fromstring(svg)  # well-formed
     assert root.tag.endswith("svg")
     texts = [t for t, _ in _boxes(svg)]
-    assert any("beyond tolerance" in (t or "") for t in texts)
+    assert any(("beyond tolerance" if lang == "en" else "вне допуска") in (t or "") for t in texts)
     if case == "coriolis":
-        assert any("Coriolis" in (t or "") for t in texts)
+        assert any(("Coriolis" if lang == "en" else "Кориолиса") in (t or "") for t in texts)
         assert "k′" in texts  # the student's k, on the other side of a
     else:
         assert "d′" in texts
