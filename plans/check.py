@@ -833,11 +833,6 @@ class Deviation:
     ok: bool
     sense_ok: bool | None = None  # ω, ε with a sense given
 
-    @property
-    def mm(self) -> float:
-        """The deviation in mm of drawing (segments) or in the item's unit."""
-        return self.deviation
-
 
 def compare(item: Item, computed: float, tol: Tolerance) -> Deviation:
     mag = abs(computed)

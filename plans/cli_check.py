@@ -100,6 +100,7 @@ WORDS = {
         "k_of": "{e} of the {k} items beyond tolerance; not {un}",
         "correction": "correction",
         "also": "equally consistent with",
+        "hint": ' (the sense of ω{link} tells them apart: give it in [values], e.g. omega{link} = "4.8 ccw")',
         "warning": "warning",
         "ccw": "ccw",
         "cw": "cw",
@@ -129,6 +130,7 @@ WORDS = {
         "k_of": "{e} из {k} величин вне допуска; не объясняет {un}",
         "correction": "исправление",
         "also": "столь же хорошо объясняет",
+        "hint": ' (их различает направление ω{link}: укажите его в [values], например omega{link} = "4.8 ccw")',
         "warning": "предупреждение",
         "ccw": "против ч.с.",
         "cw": "по ч.с.",
@@ -247,8 +249,13 @@ def diagnosis_lines(result, lang: str = "en") -> list[str]:
         ex = w["all_of"].format(k=k)
     lines.append(f"  {w['explains']}: {', '.join(b.explained)} ({ex})")
     lines.append(f"  {w['correction']}: {b.mistake.correction(lang)}")
+    reported = {it.link for it in result.measurement.items if it.kind == "omega" and it.sense}
     for alt in diag.alternatives:
-        lines.append(f"  {w['also']}: {alt.mistake.describe(lang)}")
+        line = f"  {w['also']}: {alt.mistake.describe(lang)}"
+        ids = {m.link for m in (alt.mistake, b.mistake) if m.kind == "omega-sense"}
+        if ids and not ids & reported:
+            line += w["hint"].format(link=min(ids))
+        lines.append(line)
     return lines
 
 
