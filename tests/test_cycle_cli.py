@@ -167,3 +167,23 @@ def test_one_position_and_json_is_strict(capsys):
     data = json.loads(out, parse_constant=lambda c: pytest.fail(f"non-JSON constant {c}"))
     assert len(data["rows"]) == 1
     assert np.isfinite(data["rows"][0]["conditioning"]["min_sine"])
+
+
+def test_cycle_pays_for_no_heavy_import(tmp_path):
+    """Commands that do not draw load neither plotting, geometry nor symbolic packages."""
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parent.parent
+    code = (
+        "import sys\n"
+        "from plans.cli import main\n"
+        f"assert main(['cycle', {str(root / PRESS)!r}, '--json', '-o', {str(tmp_path / 'c.json')!r}]) == 0\n"
+        f"assert main(['solve', {str(root / PRESS)!r}, '--json', '-o', {str(tmp_path / 's.json')!r}]) == 0\n"
+        "heavy = ('matplotlib', 'shapely', 'svgwrite', 'sympy', 'mpmath', 'cairosvg', 'pylinkage')\n"
+        "print(sorted({m.split('.')[0] for m in sys.modules} & set(heavy)))\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         cwd=tmp_path, env={"PYTHONPATH": str(root), "PATH": ""}, check=True)
+    assert out.stdout.strip() == "[]"
