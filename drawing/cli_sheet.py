@@ -1,0 +1,214 @@
+"""``plans sheet``: drawing sheet 1 (plan of positions, velocity and acceleration
+plans, kinematic diagrams, tables) as one SVG in real millimetres.
+
+    plans sheet samples/press.toml -o press.svg
+    plans sheet --variant 3 --format A2 --lang en --plans 1,4 -o v3.svg --png v3.png
+    plans sheet --variant all -o sheets/      # one sheet per variant
+
+The views are placed automatically (:mod:`drawing.layout`), the plans at one
+sheet millimetre per plan millimetre, so that a vector measured on the sheet is
+the engine's segment length.
+"""
+
+from __future__ import annotations
+
+import argparse
+import copy
+import math
+import sys
+from pathlib import Path
+
+from plans.cli import EXIT_INPUT, EXIT_OK, add_source, mechanism_from, write_output
+from plans.errors import InputError, PlansError
+
+FIELDS = {
+    "name": "name", "designation": "designation", "student": "developer",
+    "developer": "developer", "group": "organisation", "organisation": "organisation",
+    "organization": "organisation", "university": "organisation", "checker": "checker",
+    "sheet": "sheet", "sheets": "sheets", "date": "date", "material": "material",
+    "literal": "literal", "approver": "approver", "scale": "scale",
+}  # fmt: skip
+
+
+def configure(p) -> None:
+    add_source(p, allow_all=True)
+    p.add_argument("-o", "--output", metavar="OUT.svg",
+                   help="SVG file, '-' for stdout, or a folder with --variant all (default: stdout)")
+    p.add_argument("--format", default="A1", choices=["A0", "A1", "A2", "A3", "A4"],
+                   help="sheet format (default A1)")
+    p.add_argument("--lang", default="ru", choices=["ru", "en"], help="language of the sheet (default ru)")
+    p.add_argument("--positions", type=int, default=12, metavar="N",
+                   help="crank positions on the plan of positions (default 12)")
+    p.add_argument("--plans", metavar="1,4",
+                   help="position numbers (from an extreme position) to draw the plans for; "
+                        "default: the position given in the file")
+    p.add_argument("--title-block", nargs="*", default=[], metavar="KEY=VALUE",
+                   help="title-block fields: " + ", ".join(sorted(FIELDS)))
+    p.add_argument("--png", metavar="FILE", help="also write a PNG (needs cairosvg)")
+    p.add_argument("--pdf", metavar="FILE", help="also write a PDF (needs cairosvg)")
+    p.add_argument("--dpi", type=float, default=100.0, help="PNG resolution (default 100)")
+
+
+def _title_fields(mech, pairs, scale: str) -> dict[str, str]:
+    out = {"name": mech.name, "scale": scale}
+    items = list((mech.title or {}).items())
+    for pair in pairs:
+        if "=" not in pair:
+            raise InputError("--title-block", f"{pair!r} is not KEY=VALUE")
+        k, v = pair.split("=", 1)
+        items.append((k.strip(), v))
+    for k, v in items:
+        key = FIELDS.get(k.lower())
+        if key is None:
+            raise InputError("--title-block", f"unknown field {k!r}; known: {', '.join(sorted(FIELDS))}")
+        out[key] = str(v)
+    return out
+
+
+def _parse_plans(text: str | None, n: int) -> list[int] | None:
+    if text is None:
+        return None
+    try:
+        nums = [int(t) for t in text.split(",") if t.strip()]
+    except ValueError:
+        raise InputError("--plans", f"{text!r} is not a list of position numbers like 1,4") from None
+    bad = [k for k in nums if not 0 <= k < n]
+    if bad or not nums:
+        raise InputError("--plans", f"position numbers run from 0 to {n - 1}, got {text!r}")
+    return nums
+
+
+def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
+                plans: list[int] | None = None, title: list[str] = ()):
+    """(scene, sheet, info) for ``mech``; info holds the solutions drawn."""
+    import numpy as np
+
+    from drawing import views as V
+    from drawing.layout import place_views
+    from drawing.scene import Layer, Scene
+    from drawing.sheet import Sheet, TitleBlock, frame_scene
+    from plans.cycle import analyse_cycle
+    from plans.fmt import num
+    from plans.kinematics import Solver
+    from plans.plan import solve_position
+    from plans.scales import gost_scale
+
+    if not 3 <= n_positions <= 72:
+        raise InputError("--positions", f"give 3 to 72 positions, got {n_positions}")
+    sheet = Sheet(fmt)
+    solver = Solver(mech)
+    cycle = analyse_cycle(mech, n_positions, solver=solver)
+    given = solve_position(mech, solver=solver)
+    chosen = _parse_plans(None if plans is None else ",".join(map(str, plans)), len(cycle.positions))
+    sols: list[tuple[str, str, object]] = []
+    if chosen is None:
+        deg = mech.driver.angle_deg
+        sols.append(("0" if False else "g", f"φ_1 = {num(deg, 4, lang)}°", given))
+    else:
+        for k in chosen:
+            sols.append((str(k), f"{k}", solve_position(mech, cycle.positions[k], solver=solver)))
+    # the whole turn (or the reachable range) for trajectories
+    if cycle.full_turn:
+        phis = np.linspace(0.0, 2 * math.pi, 361)
+    else:
+        lo, hi = cycle.reachable[0] if cycle.reachable else (0.0, 2 * math.pi)
+        phis = np.linspace(lo, hi, 361)
+    motion_all = solver.solve(phis)
+
+    views = [V.positions_view(given, cycle, motion_all, phis, lang)]
+    for tag, label, sol in sols:
+        views.append(V.plan_view(sol, "velocity", tag, lang, label))
+        views.append(V.plan_view(sol, "acceleration", tag, lang, label))
+    diag = V.diagrams_view(mech, cycle, lang)
+    notes: list[str] = []
+    if diag is not None:
+        views.append(diag)
+    else:
+        why = "; ".join(cycle.notes) or ("no stroke of the output" if lang == "en" else "нет хода выходного звена")
+        notes.append(V.WORDS[lang]["no_diagrams"] + why)
+    tabsols = [(label if tag != "g" else "φ", sol) for tag, label, sol in sols]
+    tabsols = [(t.replace("φ_1 = ", ""), s) for t, s in tabsols]
+    views.append(V.segments_table_view(tabsols, lang))
+    views.append(V.omega_table_view(tabsols, lang))
+    if notes:
+        views.append(V.note_view(notes))
+    placed = place_views(sheet, views)
+    tb = TitleBlock(**_title_fields(mech, title, gost_scale(given.mu_l)))
+    scene = frame_scene(sheet, tb, lang=lang)
+    scene = scene + Scene((Layer("views", tuple(p.group() for p in placed)),))
+    return scene, sheet, {"solutions": sols, "cycle": cycle, "placed": placed}
+
+
+def render(mech, args) -> str:
+    from drawing.svg import to_svg
+
+    plans = None
+    if args.plans is not None:
+        plans = [int(t) for t in args.plans.split(",") if t.strip()] if all(
+            t.strip().lstrip("-").isdigit() for t in args.plans.split(",") if t.strip()) else None
+        if plans is None:
+            raise InputError("--plans", f"{args.plans!r} is not a list of position numbers like 1,4")
+    scene, sheet, _ = build_sheet(mech, args.format, args.lang, args.positions, plans, args.title_block)
+    return to_svg(scene, sheet, title=mech.name)
+
+
+def _extras(svg: str, args) -> None:
+    from drawing import export
+
+    if args.png:
+        export.write_png(svg, args.png, dpi=args.dpi)
+    if args.pdf:
+        export.write_pdf(svg, args.pdf)
+
+
+def run(args) -> int:
+    if str(args.variant).strip().lower() == "all" and args.file is None:
+        return _batch(args)
+    mech = mechanism_from(args)
+    svg = render(mech, args)
+    write_output(args.output, svg)
+    _extras(svg, args)
+    return EXIT_OK
+
+
+def _batch(args) -> int:
+    from plans.variants import variant_numbers
+
+    if not args.output or args.output == "-":
+        raise InputError("-o", "with --variant all give a folder: -o DIR/")
+    out = Path(args.output)
+    if out.exists() and not out.is_dir():
+        raise InputError("-o", f"{args.output} is not a folder")
+    out.mkdir(parents=True, exist_ok=True)
+    numbers = list(variant_numbers())
+    tty = sys.stderr.isatty()
+    failed: list[tuple[int, str]] = []
+    for i, n in enumerate(numbers, 1):
+        if tty:
+            print(f"\rsheet {i}/{len(numbers)}: variant {n} ", end="", file=sys.stderr, flush=True)
+        a = copy.copy(args)
+        a.variant = str(n)
+        a.output = str(out / f"variant-{n}.svg")
+        a.png = str(out / f"variant-{n}.png") if args.png else None
+        a.pdf = str(out / f"variant-{n}.pdf") if args.pdf else None
+        try:
+            mech = mechanism_from(a)
+            svg = render(mech, a)
+            write_output(a.output, svg)
+            _extras(svg, a)
+        except (PlansError, ValueError, ArithmeticError) as exc:
+            failed.append((n, str(exc)))
+    if tty:
+        print(file=sys.stderr)
+    for n, msg in failed:
+        print(f"variant {n}: {msg}", file=sys.stderr)
+    if failed:
+        print(f"{len(failed)} of {len(numbers)} sheets failed", file=sys.stderr)
+        return EXIT_INPUT
+    return EXIT_OK
+
+
+if __name__ == "__main__":  # pragma: no cover
+    from plans.cli import main
+
+    sys.exit(main(["sheet", *sys.argv[1:]]))

@@ -1,0 +1,72 @@
+"""Placing the views of a sheet: first fit on a 5 mm grid inside the drawing area.
+
+Each view is a box (0, 0)–(w, h) of local sheet mm (:class:`drawing.views.View`).
+A view is put at the first grid position, top to bottom and left to right,
+where its box, widened by ``GAP``, stays inside the free field of the sheet
+(frame less the title block and field 26, less ``MARGIN``) and meets no box
+placed before it.  Nothing is scaled.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from shapely.geometry import box
+from shapely.prepared import prep
+
+from drawing.scene import Group, Rect
+from drawing.sheet import Sheet
+
+__all__ = ["LayoutError", "Placed", "place_views"]
+
+GAP = 6.0
+MARGIN = 4.0
+STEP = 5.0
+
+
+class LayoutError(ValueError):
+    """A view does not fit on the sheet."""
+
+
+@dataclass(frozen=True)
+class Placed:
+    view: object
+    rect: Rect
+
+    def group(self) -> Group:
+        return Group(tuple(self.view.items), (self.rect.x, self.rect.y), name=f"view {self.view.name}")
+
+
+def place_views(sheet: Sheet, views, order: str = "rows") -> list[Placed]:
+    """Positions for ``views`` in their order; :class:`LayoutError` if one does not fit.
+
+    ``order="columns"`` scans top to bottom first (fills the left columns first).
+    """
+    area = sheet.drawing_area().buffer(-MARGIN)
+    free = prep(area)
+    x0, y0, x1, y1 = area.bounds
+    placed: list[Placed] = []
+    boxes = []
+    for v in views:
+        spot = None
+        xs = [x0 + STEP * i for i in range(int((x1 - x0 - v.w) / STEP) + 1)]
+        ys = [y0 + STEP * j for j in range(int((y1 - y0 - v.h) / STEP) + 1)]
+        pairs = ((x, y) for y in ys for x in xs) if order == "rows" else ((x, y) for x in xs for y in ys)
+        for x, y in pairs:
+            b = box(x, y, x + v.w, y + v.h)
+            if not free.contains(b):
+                continue
+            wide = b.buffer(GAP, join_style=2)
+            if any(wide.intersects(o) for o in boxes):
+                continue
+            spot = (x, y)
+            break
+        if spot is None:
+            raise LayoutError(
+                f"the view {v.name!r} ({v.w:.0f} × {v.h:.0f} mm) does not fit on {sheet.name} "
+                "beside the others; try a larger --format or fewer --plans"
+            )
+        r = Rect(spot[0], spot[1], v.w, v.h)
+        placed.append(Placed(v, r))
+        boxes.append(box(*r.bounds))
+    return placed

@@ -1,0 +1,576 @@
+"""The views of sheet 1: plan of positions, velocity and acceleration plans,
+kinematic diagrams and tables, each built in its own box of sheet millimetres.
+
+A view is drawn with its top-left corner at (0, 0); :mod:`drawing.layout` moves
+it to its place on the sheet with a :class:`~drawing.scene.Group` offset.  The
+plans are drawn at exactly one sheet millimetre per plan millimetre (the
+engine's μv, μa), and every plan vector is a group of class ``vec v-pa3`` /
+``vec a-πa3`` so that its length can be measured on the SVG.
+
+Labels of a view are placed with :func:`drawing.labels.place_labels` against
+the view's own lines (``obstacles_of``) and kept inside the view's box, so no
+label of one view can meet another view.
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from shapely.geometry import box as shp_box
+
+from drawing.labels import LabelRequest, obstacles_of, place_labels, text_box, text_width
+from drawing.scene import (
+    Arrow,
+    Circle,
+    Hatch,
+    Item,
+    Polyline,
+    Segment,
+    Text,
+    flatten,
+    translate,
+)
+from drawing.styles import LineType
+from plans.fmt import num
+
+__all__ = [
+    "View",
+    "diagrams_view",
+    "note_view",
+    "omega_table_view",
+    "plan_view",
+    "positions_view",
+    "segments_table_view",
+]
+
+PAD = 6.0  # room around a drawing inside its view box, for labels
+CAPTION = 5.0  # caption size, mm
+LETTER = 3.5  # letters of points, mm
+JOINT_R = 1.0
+HEAD = dict(head_len=3.5, head_width=1.0)
+
+WORDS = {
+    "ru": {
+        "positions": "План положений",
+        "velocity": "План скоростей",
+        "acceleration": "План ускорений",
+        "diagrams": "Кинематические диаграммы",
+        "segments": "Отрезки планов",
+        "angular": "Угловые скорости и ускорения",
+        "segment": "Отрезок",
+        "mm": "мм",
+        "value": "Величина",
+        "link": "Звено",
+        "position": "положение",
+        "m": "м",
+        "stroke": "H",
+        "swing": "ψ",
+        "no_diagrams": "Диаграммы не строятся: ",
+        "rad": "рад",
+        "deg": "°",
+        "ms": "м/с",
+        "ms2": "м/с²",
+        "rads": "рад/с",
+        "rads2": "рад/с²",
+        "ccw": "против ч.с.",
+        "cw": "по ч.с.",
+    },
+    "en": {
+        "positions": "Plan of positions",
+        "velocity": "Velocity plan",
+        "acceleration": "Acceleration plan",
+        "diagrams": "Kinematic diagrams",
+        "segments": "Plan segments",
+        "angular": "Angular velocities and accelerations",
+        "segment": "Segment",
+        "mm": "mm",
+        "value": "Value",
+        "link": "Link",
+        "position": "position",
+        "m": "m",
+        "stroke": "H",
+        "swing": "ψ",
+        "no_diagrams": "No diagrams: ",
+        "rad": "rad",
+        "deg": "°",
+        "ms": "m/s",
+        "ms2": "m/s²",
+        "rads": "rad/s",
+        "rads2": "rad/s²",
+        "ccw": "ccw",
+        "cw": "cw",
+    },
+}
+
+
+@dataclass
+class View:
+    """Items in local sheet mm, box (0, 0)–(w, h)."""
+
+    name: str
+    items: list[Item] = field(default_factory=list)
+    w: float = 0.0
+    h: float = 0.0
+
+
+def _markup(name: str) -> str:
+    """``a3`` → ``a_3``, ``S4`` → ``S_4``, ``n1`` → ``n_1`` (index after the letters)."""
+    i = len(name)
+    while i > 0 and name[i - 1].isdigit():
+        i -= 1
+    if 0 < i < len(name):
+        return f"{name[:i]}_{{{name[i:]}}}"
+    return name
+
+
+def _shift(items: list[Item], dx: float, dy: float) -> list[Item]:
+    return [translate(it, dx, dy) for it in flatten(items)]
+
+
+def _bbox(items: list[Item]) -> tuple[float, float, float, float]:
+    xs: list[float] = []
+    ys: list[float] = []
+    for it in flatten(items):
+        if isinstance(it, Text):
+            b = text_box(it).bounds
+            xs += [b[0], b[2]]
+            ys += [b[1], b[3]]
+        elif isinstance(it, Circle):
+            xs += [it.center[0] - it.r, it.center[0] + it.r]
+            ys += [it.center[1] - it.r, it.center[1] + it.r]
+        elif isinstance(it, Polyline):
+            xs += [p[0] for p in it.points]
+            ys += [p[1] for p in it.points]
+        else:
+            xs += [it.p1[0], it.p2[0]]
+            ys += [it.p1[1], it.p2[1]]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def _finish(
+    name: str,
+    drawing: list[Item],
+    labels: list[LabelRequest],
+    caption: str,
+    under: list[str] = (),
+    pad: float = PAD,
+) -> View:
+    """Frame ``drawing`` with room for its labels, letter it, caption on top,
+    ``under`` (equations) below; shift everything to the box (0, 0)–(w, h)."""
+    x0, y0, x1, y1 = _bbox(drawing)
+    region = shp_box(x0 - pad, y0 - pad, x1 + pad, y1 + pad)
+    placed = place_labels(labels, obstacles_of(drawing), region=region)
+    items = list(drawing) + [p.text for p in placed]
+    x0, y0, x1, y1 = _bbox(items)
+    top = y0 - 2.0
+    cap = Text(((x0 + x1) / 2, top), caption, size=CAPTION, anchor="middle", markup=True)
+    items.append(cap)
+    y = y1 + 2.0
+    for line in under:
+        y += 3.5 + 2.0
+        items.append(Text((x0, y), line, size=2.5, markup=True, baseline="alphabetic"))
+    bx0, by0, bx1, by1 = _bbox(items)
+    items = _shift(items, -bx0 + 1, -by0 + 1)
+    return View(name, items, bx1 - bx0 + 2, by1 - by0 + 2)
+
+
+# ----------------------------------------------------------------- plans
+
+
+def _plan_xy(value: complex, mu: float) -> tuple[float, float]:
+    z = value / mu
+    return (z.real, -z.imag)
+
+
+def plan_view(sol, kind: str, tag: str, lang: str = "ru", label: str | None = None) -> View:
+    """The velocity (``kind="velocity"``) or acceleration plan of ``sol``.
+
+    ``tag`` distinguishes the position (``"3"``) in the ids of its vectors.
+    """
+    plan = sol.velocity if kind == "velocity" else sol.acceleration
+    mu = plan.mu
+    pts = {n: _plan_xy(p.value, mu) for n, p in plan.points.items()}
+    pts.setdefault(plan.pole, (0.0, 0.0))
+    items: list[Item] = []
+    letter = "v" if kind == "velocity" else "a"
+    # construction lines of the intersections, thin, under the vectors
+    for p in plan.points.values():
+        if p.source.kind != "intersection":
+            continue
+        for line in p.source.lines:
+            if line.through not in pts:
+                continue
+            tx, ty = pts[line.through]
+            dx, dy = line.direction.real, -line.direction.imag
+            px, py = pts[p.name]
+            t = (px - tx) * dx + (py - ty) * dy
+            a, b = min(0.0, t) - 6.0, max(0.0, t) + 6.0
+            items.append(
+                Segment((tx + a * dx, ty + a * dy), (tx + b * dx, ty + b * dy), LineType.THIN)
+            )
+    # the vectors
+    from drawing.scene import Group
+
+    for v in plan.vectors:
+        p1, p2 = pts[v.start], pts[v.end]
+        if math.dist(p1, p2) < 1e-6:
+            continue
+        arrow = Arrow(p1, p2, LineType.MAIN, **HEAD)
+        items.append(Group((arrow,), name=f"vec {letter}-{v.start}{v.end}-{tag}"))
+    # the points: pole dot, joints of the letters; coincident points share a label
+    groups: list[tuple[tuple[float, float], list[str]]] = []
+    for name in [plan.pole, *[n for n in plan.points if n != plan.pole]]:
+        xy = pts[name]
+        for g in groups:
+            if math.dist(g[0], xy) < 0.8:
+                g[1].append(name)
+                break
+        else:
+            groups.append((xy, [name]))
+    items.append(Circle(pts[plan.pole], 0.6, LineType.MAIN, fill="black"))
+    # prefer the side away from the pole
+    cx = sum(x for x, _ in pts.values()) / len(pts)
+    cy = sum(y for _, y in pts.values()) / len(pts)
+    reqs = []
+    for xy, names in groups:
+        ang = math.degrees(math.atan2(-(xy[1] - cy), xy[0] - cx)) % 360
+        prefer = ("e", "ne", "n", "nw", "w", "sw", "s", "se")[int(((ang + 22.5) % 360) // 45)]
+        reqs.append(LabelRequest(xy, ",".join(_markup(n) for n in names), LETTER, prefer))
+    title = WORDS[lang][kind]
+    unit = "(м/с)/мм" if lang == "ru" and kind == "velocity" else (
+        "(м/с²)/мм" if lang == "ru" else ("(m/s)/mm" if kind == "velocity" else "(m/s²)/mm"))
+    mu_name = "μ_v" if kind == "velocity" else "μ_a"
+    caption = f"{title} ({label or tag}), {mu_name} = {num(mu, 4, lang)} {unit}"
+    eqs: list[str] = []
+    for p in plan.points.values():
+        if p.source.kind == "intersection" and p.source.equation:
+            eqs.append(p.source.equation)
+    return _finish(f"{kind}-{tag}", items, reqs, caption, eqs)
+
+
+# ----------------------------------------------------------------- positions
+
+
+def _sheet(z: complex, mu_l: float) -> tuple[float, float]:
+    return (z.real / mu_l, -z.imag / mu_l)
+
+
+def _link_segments(mech, pos: dict[str, complex], mu_l: float, line: LineType) -> list[Item]:
+    out: list[Item] = []
+    slider_links = {s.link for s in mech.sliders}
+    for lid, link in mech.links.items():
+        names = [n for n in link.points if n in pos]
+        if lid in slider_links and len(names) <= 1:
+            continue
+        if link.axis and link.axis[0] in pos:
+            root = link.axis[0]
+        elif names:
+            root = names[0]
+        else:
+            continue
+        # the farthest point first, so a point on the axis does not make a stub
+        for n in names:
+            if n != root and abs(pos[n] - pos[root]) > 1e-12:
+                out.append(Segment(_sheet(pos[root], mu_l), _sheet(pos[n], mu_l), line))
+    return out
+
+
+def _block(center: tuple[float, float], direction: complex, line: LineType,
+           w: float = 8.0, h: float = 5.0) -> Polyline:
+    """A slider / slide block: a small rectangle along ``direction`` (model)."""
+    ux, uy = direction.real, -direction.imag
+    n = math.hypot(ux, uy) or 1.0
+    ux, uy = ux / n, uy / n
+    vx, vy = -uy, ux
+    cx, cy = center
+    corners = [
+        (cx + sx * ux * w / 2 + sy * vx * h / 2, cy + sx * uy * w / 2 + sy * vy * h / 2)
+        for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))
+    ]
+    return Polyline(corners, line, closed=True)
+
+
+def _guide_dir(mech, slider, pos) -> complex:
+    g = slider.guide
+    if g.link == 0:
+        return g.direction
+    link = mech.links[g.link]
+    if link.axis and all(a in pos for a in link.axis):
+        d = pos[link.axis[1]] - pos[link.axis[0]]
+        return d / abs(d) if abs(d) > 1e-12 else 1
+    return 1
+
+
+def _support(xy: tuple[float, float]) -> list[Item]:
+    """A fixed pivot: a small triangle standing on a hatched base."""
+    x, y = xy
+    return [
+        Polyline([(x, y), (x - 3, y + 5), (x + 3, y + 5)], LineType.MAIN, closed=True),
+        Hatch((x - 5, y + 5), (x + 5, y + 5), side=1, spacing=1.6, length=2.0),
+    ]
+
+
+def positions_view(sol, cycle, motion_all, phis_all, lang: str = "ru") -> View:
+    """Plan of positions at μl: the given position heavy, the cycle's positions
+    and the two extreme ones thin, trajectories, pivots, sliders, stroke H."""
+    from plans.kinematics import Solver
+
+    mech, mu_l = sol.mechanism, sol.mu_l
+    items: list[Item] = []
+    labels: list[LabelRequest] = []
+    solver = Solver(mech)
+
+    def positions_at(phis):
+        m = solver.solve(np.asarray(phis, dtype=float))
+        out = []
+        for i in range(len(phis)):
+            if not bool(np.asarray(m.valid)[i]):
+                out.append(None)
+                continue
+            out.append({n: complex(np.asarray(a)[i]) for n, a in m.position.items()})
+        return out
+
+    # trajectories
+    valid = np.asarray(motion_all.valid, dtype=bool)
+    for name in (*mech.trace, mech.driver.tip):
+        if name not in motion_all.position:
+            continue
+        z = np.asarray(motion_all.position[name])
+        run: list[tuple[float, float]] = []
+        for ok, zz in zip(valid, z, strict=True):
+            if ok:
+                run.append(_sheet(complex(zz), mu_l))
+            elif len(run) > 1:
+                items.append(Polyline(run, LineType.DASHED if name != mech.driver.tip else LineType.THIN))
+                run = []
+            else:
+                run = []
+        if len(run) > 1:
+            closed = bool(valid.all()) and cycle.full_turn
+            items.append(Polyline(run, LineType.DASHED if name != mech.driver.tip else LineType.THIN,
+                                  closed=closed))
+    # fixed guides: the axis dash-dot over the reach of the slider
+    all_pos = motion_all.position
+    for s in mech.sliders:
+        if s.guide.link != 0:
+            continue
+        d = s.guide.direction
+        z = np.asarray(all_pos[s.point])[valid]
+        t = ((z - s.guide.point) * np.conj(d)).real
+        a, b = float(t.min()) - 0.1 * (np.ptp(t) + 0.05), float(t.max()) + 0.1 * (np.ptp(t) + 0.05)
+        items.append(Segment(_sheet(s.guide.point + a * d, mu_l), _sheet(s.guide.point + b * d, mu_l),
+                             LineType.DASH_DOT_THIN))
+    # the cycle's positions, numbered, and the extreme positions
+    tip = mech.driver.tip
+    for k, pos in enumerate(positions_at(cycle.positions)):
+        if pos is None:
+            continue
+        items += _link_segments(mech, pos, mu_l, LineType.THIN)
+        labels.append(LabelRequest(_sheet(pos[tip], mu_l), str(k), 2.5, "ne", markup=False))
+    for pos in positions_at(cycle.extremes):
+        if pos is None:
+            continue
+        items += _link_segments(mech, pos, mu_l, LineType.DASH_DOUBLE_DOT_THIN)
+    # the given position, heavy
+    pos = sol.positions
+    items += _link_segments(mech, pos, mu_l, LineType.MAIN)
+    for s in mech.sliders:
+        if s.point in pos:
+            items.append(_block(_sheet(pos[s.point], mu_l), _guide_dir(mech, s, pos), LineType.MAIN))
+    for name in mech.frame:
+        items += _support(_sheet(pos[name], mu_l))
+    joints = set()
+    for lid, link in mech.links.items():
+        for n in link.points:
+            if n in pos and len(mech.links_of(n)) > 1:
+                joints.add(n)
+    for n in sorted(joints):
+        items.append(Circle(_sheet(pos[n], mu_l), JOINT_R, LineType.MAIN, fill="white"))
+    for n in mech.point_names():
+        if n in pos:
+            labels.insert(0, LabelRequest(_sheet(pos[n], mu_l), _markup(n), LETTER, "nw"))
+    # stroke H of a linear output
+    out = cycle.output
+    w = WORDS[lang]
+    if out is not None and cycle.stroke and out.kind == "linear" and len(cycle.extremes) == 2:
+        ext = positions_at(cycle.extremes)
+        if all(e is not None for e in ext):
+            p1, p2 = (_sheet(e[out.point], mu_l) for e in ext)
+            x0, y0, x1, y1 = _bbox(items)
+            dy = y1 + 8.0
+            items += [Segment(p1, (p1[0], dy + 2), LineType.THIN), Segment(p2, (p2[0], dy + 2), LineType.THIN)]
+            items += [Arrow((p1[0] + (p2[0] - p1[0]) / 2, dy), (p1[0], dy), LineType.THIN, 3.0, 1.0),
+                      Arrow((p1[0] + (p2[0] - p1[0]) / 2, dy), (p2[0], dy), LineType.THIN, 3.0, 1.0)]
+            items.append(Text(((p1[0] + p2[0]) / 2, dy - 1.0), f"H = {num(cycle.stroke, 4, lang)} {w['m']}",
+                              size=3.5, anchor="middle"))
+    caption = f"{w['positions']}, μ_l = {num(mu_l, 4, lang)} {w['m']}/{w['mm']}"
+    return _finish("positions", items, labels, caption, pad=8.0)
+
+
+# ----------------------------------------------------------------- diagrams
+
+
+def diagrams_view(mech, cycle, lang: str = "ru", width: float = 180.0, height: float = 40.0) -> View | None:
+    """s(φ), v(φ), a(φ) of the output over one turn from the first position."""
+    from plans.kinematics import Solver
+
+    out = cycle.output
+    if out is None or not cycle.stroke or not cycle.full_turn or not cycle.positions:
+        return None
+    sense = 1.0 if mech.driver.omega >= 0 else -1.0
+    phi0 = cycle.positions[0]
+    phis = phi0 + sense * np.linspace(0.0, 2 * math.pi, 361)
+    m = Solver(mech).solve(phis)
+    if not np.asarray(m.valid).all():
+        return None
+    s = np.asarray(out.value(m, mech), dtype=float)
+    if np.iscomplexobj(s):
+        s = np.abs(s)
+    s = s - s[0]
+    v = np.asarray(out.rate(m, mech, "velocity"), dtype=float)
+    a = np.asarray(out.rate(m, mech, "acceleration"), dtype=float)
+    linear = out.kind == "linear"
+    w = WORDS[lang]
+    units = (w["m"], w["ms"], w["ms2"]) if linear else (w["rad"], w["rads"], w["rads2"])
+    names = ("s", "v", "a") if linear else ("ψ", "ω", "ε")
+    items: list[Item] = []
+    y = 0.0
+    for data, name, unit in zip((s, v, a), names, units, strict=True):
+        lo, hi = float(min(data.min(), 0)), float(max(data.max(), 0))
+        span = hi - lo or 1.0
+        mu = _nice(span / height)
+        y_zero = y + hi / mu
+        h = (hi - lo) / mu
+        xs = np.linspace(0, width, len(data))
+        ys = y_zero - data / mu
+        items.append(Segment((0, y_zero), (width + 6, y_zero), LineType.THIN))
+        items.append(Arrow((0, y + h + 2), (0, y - 6), LineType.THIN, 3.0, 1.0))
+        items.append(Polyline(list(zip(xs.tolist(), ys.tolist(), strict=True)), LineType.MAIN))
+        for k in range(len(cycle.positions) + 1):
+            x = width * k / len(cycle.positions)
+            items.append(Segment((x, y_zero - 1), (x, y_zero + 1), LineType.THIN))
+            if k % 2 == 0:
+                items.append(Text((x, y_zero + 1.5), str(k % len(cycle.positions) if k else 0),
+                                  size=2.5, anchor="middle", baseline="hanging", italic=True))
+        items.append(Text((2, y - 6), f"{name}, {unit}", size=3.5, baseline="hanging"))
+        items.append(Text((width + 6, y_zero - 1.5), "φ", size=3.5, anchor="end"))
+        items.append(Text((width - 2, y - 6), f"μ_{{{name}}} = {num(mu, 3, lang)} {unit}/{w['mm']}",
+                          size=2.5, anchor="end", baseline="hanging", markup=True))
+        y += h + 16.0
+    mu_phi = 2 * math.pi / width
+    caption = f"{w['diagrams']}, μ_φ = {num(mu_phi, 3, lang)} {w['rad']}/{w['mm']}"
+    return _finish("diagrams", items, [], caption, pad=2.0)
+
+
+def _nice(x: float) -> float:
+    """The next value ≥ x of the series 1, 2, 2.5, 4, 5 × 10^k."""
+    if x <= 0:
+        return 1.0
+    e = math.floor(math.log10(x))
+    for m in (1, 2, 2.5, 4, 5, 10):
+        if m * 10**e >= x * (1 - 1e-12):
+            return m * 10**e
+    return 10 ** (e + 1)
+
+
+# ----------------------------------------------------------------- tables
+
+
+def _table(name: str, caption: str, header: list[str], rows: list[list[str]],
+           widths: list[float], row_h: float = 7.0) -> View:
+    items: list[Item] = []
+    total_w = sum(widths)
+    n = len(rows) + 1
+    for i in range(n + 1):
+        items.append(Segment((0, i * row_h), (total_w, i * row_h), LineType.MAIN if i in (0, 1, n) else LineType.THIN))
+    x = 0.0
+    for wd in [0.0, *widths]:
+        x += wd
+        items.append(Segment((x, 0), (x, n * row_h), LineType.MAIN))
+    for r, row in enumerate([header, *rows]):
+        x = 0.0
+        for c, (cell, wd) in enumerate(zip(row, widths, strict=True)):
+            size = 2.5 if r else 3.5
+            t = Text((x + wd / 2, r * row_h + row_h / 2), cell, size=size, anchor="middle",
+                     baseline="middle", markup=True)
+            bw = text_box(t).bounds
+            if bw[2] - bw[0] > wd - 1.5:
+                t = Text(t.pos, cell, size=size, anchor="middle", baseline="middle", markup=True,
+                         stretch=max(0.5, (wd - 1.5) / (bw[2] - bw[0])))
+            items.append(t)
+            x += wd
+    items.append(Text((total_w / 2, -2.0), caption, size=CAPTION, anchor="middle", markup=True))
+    bx0, by0, bx1, by1 = _bbox(items)
+    items = _shift(items, -bx0 + 1, -by0 + 1)
+    return View(name, items, bx1 - bx0 + 2, by1 - by0 + 2)
+
+
+def segments_table_view(sols: list[tuple[str, object]], lang: str = "ru") -> View:
+    """Segments of both plans (mm) and their values (SI) for the chosen positions."""
+    w = WORDS[lang]
+    header = [w["segment"]]
+    for tag, _ in sols:
+        header += [f"{tag}: {w['mm']}", f"{tag}: SI"]
+    keys: list[tuple[str, str, str, str]] = []  # kind, start, end, label
+    seen = set()
+    for _, sol in sols:
+        for kind, plan in (("v", sol.velocity), ("a", sol.acceleration)):
+            for v in plan.vectors:
+                key = (kind, v.start, v.end)
+                if key not in seen:
+                    seen.add(key)
+                    keys.append((kind, v.start, v.end, v.label))
+    rows = []
+    for kind, a, b, label in keys:
+        row = [f"{a}{b}: {label}"]
+        for _, sol in sols:
+            plan = sol.velocity if kind == "v" else sol.acceleration
+            if a in plan.points or a == plan.pole:
+                mm = plan.mm(a, b) if b in plan.points else float("nan")
+                row += [num(mm, 4, lang), f"{num(mm * plan.mu, 4, lang)} {plan.unit if lang == 'en' else (w['ms'] if kind == 'v' else w['ms2'])}"]
+            else:
+                row += ["—", "—"]
+        rows.append(row)
+    widths = [40.0] + [22.0, 28.0] * len(sols)
+    return _table("segments", w["segments"], header, rows, widths, row_h=6.0)
+
+
+def omega_table_view(sols: list[tuple[str, object]], lang: str = "ru") -> View:
+    w = WORDS[lang]
+    header = [w["link"]]
+    for tag, _ in sols:
+        header += [f"{tag}: ω, {w['rads']}", f"{tag}: ε, {w['rads2']}"]
+    first = sols[0][1]
+    rows = []
+    for lid in sorted(first.omega):
+        row = [f"{lid}"]
+        for _, sol in sols:
+            om, ep = sol.omega.get(lid, 0.0), sol.epsilon.get(lid, 0.0)
+            row += [_signed(om, lang), _signed(ep, lang)]
+        rows.append(row)
+    widths = [16.0] + [34.0, 34.0] * len(sols)
+    return _table("angular", w["angular"], header, rows, widths, row_h=6.0)
+
+
+def _signed(x: float, lang: str) -> str:
+    w = WORDS[lang]
+    if abs(x) < 1e-12:
+        return "0"
+    return f"{num(abs(x), 4, lang)} {w['ccw'] if x > 0 else w['cw']}"
+
+
+def note_view(lines: list[str], width: float = 180.0) -> View:
+    items: list[Item] = []
+    y = 0.0
+    for line in lines:
+        y += 5.0
+        items.append(Text((0, y), line, size=3.5))
+    bx0, by0, bx1, by1 = _bbox(items)
+    items = _shift(items, -bx0 + 1, -by0 + 1)
+    return View("note", items, bx1 - bx0 + 2, by1 - by0 + 2)
+
+
+_ = (cmath, text_width)  # kept for callers that letter by hand
