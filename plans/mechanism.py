@@ -293,8 +293,7 @@ def _known(names, limit: int = 20) -> str:
 
 
 def _unknown_point(name: str, known, why: str = "") -> str:
-    close = difflib.get_close_matches(name, list(known), n=1, cutoff=0.5)
-    guess = f'did you mean "{close[0]}"? ' if close else ""
+    guess = _guess(name, known, cutoff=0.5)
     why = f": {why}" if why else ""
     return f"unknown point {_show(name)}{why} — {guess}known points: {_known(known)}"
 
@@ -328,7 +327,7 @@ class _Problems:
                 out.append(text)
         if len(out) > MAX_PROBLEMS:
             more = len(out) - MAX_PROBLEMS
-            out = out[:MAX_PROBLEMS] + [f"… and {more} more problems"]
+            out = [*out[:MAX_PROBLEMS], f"… and {more} more problems"]
         return out
 
     def raise_if_any(self) -> None:
@@ -423,11 +422,11 @@ def _check_keys(table: dict, allowed: set[str], where: str, problems: _Problems)
             problems.add(path, f"unknown key — {_guess(key, allowed)}known: {', '.join(sorted(allowed))}")
 
 
-def _guess(key: Any, allowed) -> str:
+def _guess(key: Any, allowed, cutoff: float = 0.6) -> str:
     """'did you mean "AD"? ' for a key close to one of ``allowed``, else ''."""
     key = str(key)[:40]
-    same = [a for a in allowed if a.lower() == key.lower()]
-    close = same or difflib.get_close_matches(key, list(allowed), n=1, cutoff=0.6)
+    same = sorted(a for a in allowed if a.lower() == key.lower())
+    close = same or difflib.get_close_matches(key, sorted(allowed), n=1, cutoff=cutoff)
     return f'did you mean "{close[0]}"? ' if close else ""
 
 
@@ -441,6 +440,13 @@ def _fmt(z: complex) -> str:
 
 def _link_id(value: Any) -> int | None:
     return value if isinstance(value, int) and not isinstance(value, bool) else None
+
+
+def _not_a_link(value: Any, what: str, known: str) -> str:
+    """The message for a link number that is not one (and for "3", which is not 3)."""
+    if isinstance(value, str) and value.strip().isdigit() and len(value) < 10:
+        return f"{_show(value, 20)} is text: write the number without quotes, {value.strip()} ({known})"
+    return f"{_show(value, 20)} is not {what} ({known})"
 
 
 def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = None) -> Mechanism:
@@ -462,6 +468,7 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
     # frame -------------------------------------------------------------------------
     frame: dict[str, complex] = {}
     named: set[str] = set()  # every point name the file uses, valid coordinates or not
+    frame_names: set[str] = set()
     raw_frame = data.get("frame")
     if not isinstance(raw_frame, dict) or not raw_frame:
         got = "" if raw_frame is None else f" (got {_show(raw_frame)})"
@@ -475,6 +482,7 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
         nm = _name(key, where, pr)
         if nm:
             named.add(nm)
+            frame_names.add(nm)
         xy = _pair(value, where, pr)
         if nm and xy is not None:
             frame[nm] = xy
@@ -537,8 +545,10 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
         lid = _link_id(raw_lid)
         if lid is None or lid not in links:
             if lid not in bad_links:
-                got = "missing" if raw_lid is None else f"{_show(raw_lid, 20)} is not a moving link"
-                pr.add(where + ".link", f"{got} (moving links: {_ids(links)})")
+                if raw_lid is None:
+                    pr.add(where + ".link", f"missing: the number of the sliding link (moving links: {_ids(links)})")
+                else:
+                    pr.add(where + ".link", _not_a_link(raw_lid, "a moving link", f"moving links: {_ids(links)}"))
             continue
         if lid in sliding:
             pr.add(
@@ -571,8 +581,11 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
             pr.add(f"links.{lid}.points.{point}", "the sliding point of a link without an axis is its origin: 0")
             continue
         sliders.append(Slider(lid, guide, point))
+    # what follows is derived from the links and sliders as a whole: only when they are
+    # valid, so that one typo does not come back as a second, misleading message
+    whole = not any(w.split(".")[0].split("[")[0] in ("frame", "links", "sliders") for w, _ in pr.items)
     for lid, link in links.items():
-        if link.axis is None and lid not in sliding and lid not in bad_links:
+        if whole and link.axis is None and lid not in sliding:
             pr.add(
                 f"links.{lid}",
                 'has no axis and does not slide on a guide: give axis = ["B", "C"], or a '
@@ -580,12 +593,13 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
             )
 
     # driver ------------------------------------------------------------------------
-    driver = _driver(data.get("driver"), pr, links, frame, bad_links, named)
+    driver = _driver(data.get("driver"), pr, links, frame, bad_links, frame_names if raw_frame else None)
 
     # joints: every link attached by two pairs, no joint with two names ---------------
     raw_driver = data.get("driver")
     drv = _link_id(raw_driver.get("link", 1)) if isinstance(raw_driver, dict) else None
-    _connections(frame, links, pairs, drv, bad_links, pr)
+    if whole:
+        _connections(frame, links, pairs, drv, bad_links, pr)
 
     # assembly hints, scales, output, trace, title ---------------------------------
     all_points = set(frame)
@@ -605,10 +619,16 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
         if k not in all_points:
             pr.add(where, _unknown_point(k, all_points))
             continue
+        on = [lid for lid, link in links.items() if k in link.points]
+        fixed = "a fixed point" if k in frame else "on the crank only" if drv is not None and on == [drv] else ""
+        if fixed:
+            pr.add(where, f"{k} is {fixed}: it has one position; a hint names the new point of a "
+                   "group that closes two ways (the end of a coupler, a slider)")
+            continue
         if not isinstance(hint, str) or len(hint) > MAX_TEXT:
             pr.add(where, f'must be a hint such as "above BD" or "right of C", got {_show(hint)}')
             continue
-        problem = _hint_problem(hint, sorted(all_points, key=len, reverse=True))
+        problem = _hint_problem(k, hint, sorted(all_points, key=len, reverse=True))
         if problem:
             pr.add(where, f"{_show(hint)}: {problem}")
             continue
@@ -695,7 +715,7 @@ def _link(lid: int, lname: str, body: dict, where: str, pr: _Problems, named: se
         raw_points = {}
     if len(raw_points) > MAX_LINK_POINTS:
         pr.add(where + ".points", f"{len(raw_points)} points on one link: at most {MAX_LINK_POINTS}")
-        raw_points = {}
+        return Link(lid, lname, points, axis), False
     failed: set[str] = set()
     for pname, spec in raw_points.items():
         pw = f"{where}.points.{_k(pname)}"
@@ -731,8 +751,8 @@ def _link(lid: int, lname: str, body: dict, where: str, pr: _Problems, named: se
         points[nm] = local
     if axis:
         a0, a1 = axis
-        if a1 in failed:
-            pass
+        if a1 in failed or ("points" not in body and set(body) - {"name", "axis"}):
+            pass  # a bad value or a misspelt "points": said already
         elif a1 not in points:
             pr.add(
                 where + ".points",
@@ -743,16 +763,16 @@ def _link(lid: int, lname: str, body: dict, where: str, pr: _Problems, named: se
         else:
             end = points[a1]
             pw = f"{where}.points.{a1}"
-            if abs(end) < SAME:
+            if end == 0:
                 pr.add(pw, f'zero-length link: the axis end "{a1}" is at the origin "{a0}"; give the length {a0}{a1} in metres')
             elif end.imag != 0:
                 pr.add(pw, f'the axis end "{a1}" must lie on the axis: give its distance, {a1} = {abs(end):g}, not {_fmt(end)}')
             elif end.real < 0:
                 pr.add(pw, f"negative length {end.real:g}: the length {a0}{a1} is positive (write {a1} = {-end.real:g})")
             elif end.real < MIN_LINK:
-                pr.add(pw, f"link length {end.real:g} m is too short: at least {MIN_LINK:g} m")
+                pr.add(pw, f"link length {end.real:g} m: zero or too short, a link is at least {MIN_LINK:g} m")
     if not points and not failed and len(pr.items) == before:
-        pr.add(where, f'has no points: give axis = ["B", "C"] and points = {{ C = 0.3 }}')
+        pr.add(where, 'has no points: give axis = ["B", "C"] and points = { C = 0.3 }')
     return Link(lid, lname, points, axis), len(pr.items) == before
 
 
@@ -822,14 +842,19 @@ def _connections(frame, links, pairs, drv, bad_links, pr: _Problems) -> None:
             pr.add(f"links.{lid}", f"{what}: {need}")
 
 
-def _hint_problem(hint: str, names: list[str]) -> str | None:
-    """Why an [assembly] hint cannot be read, or None."""
+def _hint_problem(key: str, hint: str, names: list[str]) -> str | None:
+    """Why an [assembly] hint for ``key`` cannot be read or cannot decide anything, or None."""
     from .kinematics import parse_hint
 
     try:
-        parse_hint(hint, names)
+        _, refs = parse_hint(hint, names)
     except ValueError as exc:
-        return _oneline(str(exc), 120)
+        known = f" — known points: {_known(names)}" if "not a point name" in str(exc) else ""
+        return _oneline(str(exc), 120) + known
+    if key in refs:
+        return f"the hint places {key} relative to {key} itself: name other points, e.g. \"above BD\""
+    if len(refs) == 2 and refs[0] == refs[1]:
+        return f"a line needs two different points, not {refs[0]} twice"
     return None
 
 
@@ -843,7 +868,7 @@ def _guide(body, where, pr: _Problems, links, frame, slider_link, bad_links) -> 
     gl = _link_id(raw)
     if gl is None or (gl != 0 and gl not in links):
         if gl not in bad_links:
-            pr.add(where + ".link", f"{_show(raw, 20)} is not a link (0 = frame; moving: {_ids(links)})")
+            pr.add(where + ".link", _not_a_link(raw, "a link", f"0 = frame; moving: {_ids(links)}"))
         return None
     if gl in bad_links:
         return None
@@ -906,7 +931,8 @@ def _guide(body, where, pr: _Problems, links, frame, slider_link, bad_links) -> 
     return Guide(gl, point, direction, label or default_label)
 
 
-def _driver(body, pr: _Problems, links, frame, bad_links, named) -> Driver | None:
+def _driver(body, pr: _Problems, links, frame, bad_links, frame_names) -> Driver | None:
+    """The crank; ``frame_names``: the names in [frame] (None: no [frame] at all)."""
     where = "driver"
     if not isinstance(body, dict):
         got = "missing" if body is None else f"must be a table, got {_show(body)}"
@@ -918,8 +944,8 @@ def _driver(body, pr: _Problems, links, frame, bad_links, named) -> Driver | Non
     raw = body.get("link", 1)
     lid = _link_id(raw)
     if lid is None or lid not in links:
-        if lid not in bad_links:
-            pr.add(where + ".link", f"{_show(raw, 20)} is not a moving link (moving links: {_ids(links)})")
+        if lid not in bad_links and (links or lid is None):
+            pr.add(where + ".link", _not_a_link(raw, "a moving link", f"moving links: {_ids(links)}"))
         return None
     link = links[lid]
     if link.axis is None:
@@ -927,11 +953,14 @@ def _driver(body, pr: _Problems, links, frame, bad_links, named) -> Driver | Non
             pr.add(f"links.{lid}.axis", f'missing: the crank (link {lid}) needs an axis from its fixed pivot to its pin, e.g. ["O", "A"]')
         return None
     pivot, tip = link.axis
-    if pivot not in frame:
+    if frame_names is None or (pivot in frame_names and pivot not in frame):
+        pass  # [frame] missing, or the pivot's coordinates are wrong: said already
+    elif pivot not in frame:
+        swapped = f' (the axis runs from the fixed pivot to the pin: ["{tip}", "{pivot}"]?)' if tip in frame else ""
         pr.add(
             f"links.{lid}.axis[0]",
             f'the crank turns about "{pivot}", which is not a fixed point in [frame] '
-            f"(fixed points: {_known(frame)}): the driver must be attached to the frame",
+            f"(fixed points: {_known(frame)}): the driver must be attached to the frame{swapped}",
         )
     else:
         also = sorted(n for n in link.points if n in frame and n != pivot)
@@ -1017,7 +1046,7 @@ def _locate(text: str) -> dict[str, int]:
     loc = _Locator(text)
     try:
         loc.document()
-    except Exception:  # noqa: BLE001 - a locator must not turn a message into a crash
+    except Exception:
         pass
     return loc.index
 
@@ -1027,7 +1056,7 @@ def _first_duplicate(text: str) -> tuple[str, int, int] | None:
     loc = _Locator(text)
     try:
         loc.document()
-    except Exception:  # noqa: BLE001
+    except Exception:
         pass
     return loc.duplicate
 
@@ -1144,12 +1173,12 @@ class _Locator:
                 self._advance(2)
                 parts = self._key()
                 self._expect("]]")
-                base = self._resolve(parts[:-1]) + [parts[-1]]
+                base = [*self._resolve(parts[:-1]), parts[-1]]
                 key = _join(base)
                 n = self.aot.get(key, -1) + 1
                 self.aot[key] = n
                 self.index.setdefault(key, line)
-                table = base[:-1] + [f"{parts[-1]}[{n}]"]
+                table = [*base[:-1], f"{parts[-1]}[{n}]"]
                 self._note(table, line)
             elif self._peek() == "[":
                 self._advance()
