@@ -16,7 +16,15 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-HEAVY = ("matplotlib", "shapely", "svgwrite", "sympy", "mpmath", "cairosvg", "pylinkage")
+HEAVY = (
+    "matplotlib",
+    "shapely",
+    "svgwrite",
+    "sympy",
+    "mpmath",
+    "cairosvg",
+    "pylinkage",
+)
 
 
 def wall(argv: list[str], runs: int) -> tuple[float, float]:
@@ -38,8 +46,14 @@ def heavy_loaded(command: list[str]) -> list[str]:
         f"print(sorted({{m.split('.')[0] for m in sys.modules}} & set({HEAVY!r})))\n"
     )
     env = {**os.environ, "PYTHONPATH": str(ROOT)}
-    out = subprocess.run([sys.executable, "-c", code], cwd=ROOT, env=env, check=True,
-                         capture_output=True, text=True)
+    out = subprocess.run(
+        [sys.executable, "-c", code],
+        cwd=ROOT,
+        env=env,
+        check=True,
+        capture_output=True,
+        text=True,
+    )
     return eval(out.stdout.strip())  # a printed list of names
 
 
@@ -52,16 +66,29 @@ def main() -> None:
         ("python -c pass", [py, "-c", "pass"]),
         ("import numpy", [py, "-c", "import numpy"]),
         ("import plans", [py, "-c", "import plans"]),
-        ("plans solve press --json", [py, "-m", "plans", "solve", "samples/press.toml", "--json"]),
-        ("plans cycle press --json", [py, "-m", "plans", "cycle", "samples/press.toml", "--json"]),
+        (
+            "plans solve press --json",
+            [py, "-m", "plans", "solve", "samples/press.toml", "--json"],
+        ),
+        (
+            "plans cycle press --json",
+            [py, "-m", "plans", "cycle", "samples/press.toml", "--json"],
+        ),
     ]
-    print(f"load average {os.getloadavg()[0]:.1f}, {args.runs} runs each (best / median)")
+    print(
+        f"load average {os.getloadavg()[0]:.1f}, {args.runs} runs each (best / median)"
+    )
     for label, argv in rows:
         best, med = wall(argv, args.runs)
         print(f"  {label:28s} {best * 1e3:7.0f} ms / {med * 1e3:7.0f} ms")
-    for cmd in (["solve", "samples/press.toml", "--json"], ["cycle", "samples/press.toml", "--json"],
-                ["report", "samples/press.toml"]):
-        print(f"  heavy packages loaded by plans {' '.join(cmd)}: {heavy_loaded(cmd) or 'none'}")
+    for cmd in (
+        ["solve", "samples/press.toml", "--json"],
+        ["cycle", "samples/press.toml", "--json"],
+        ["report", "samples/press.toml"],
+    ):
+        print(
+            f"  heavy packages loaded by plans {' '.join(cmd)}: {heavy_loaded(cmd) or 'none'}"
+        )
 
 
 if __name__ == "__main__":

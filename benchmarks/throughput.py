@@ -24,8 +24,9 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
 
-from plans.kinematics import Solver  # noqa: E402
 from scenes import SCENES  # noqa: E402
+
+from plans.kinematics import Solver  # noqa: E402
 
 
 def best(fn, runs=3):
@@ -42,8 +43,13 @@ def concat(parts):
     if isinstance(f, np.ndarray):
         return np.concatenate(parts) if f.ndim else f
     if dataclasses.is_dataclass(f) and not isinstance(f, type):
-        return dataclasses.replace(f, **{x.name: concat([getattr(p, x.name) for p in parts])
-                                         for x in dataclasses.fields(f)})
+        return dataclasses.replace(
+            f,
+            **{
+                x.name: concat([getattr(p, x.name) for p in parts])
+                for x in dataclasses.fields(f)
+            },
+        )
     if isinstance(f, dict):
         return {k: concat([p[k] for p in parts]) for k in f}
     if isinstance(f, tuple):
@@ -61,15 +67,25 @@ def main() -> None:
         solver = Solver(SCENES[name].mechanism())
         for n in (1_000, 10_000, 100_000, 1_000_000):
             phi = np.linspace(0, 2 * np.pi, n, endpoint=False)
-            whole = best(lambda phi=phi: solver.solve(phi))
+            whole = best(lambda phi=phi, solver=solver: solver.solve(phi))
             line = f"{name:14s} N={n:8d} whole {n / whole / 1e6:5.2f} M/s"
             if n > args.block:
                 b = args.block
-                blocks = best(lambda phi=phi: [solver.solve(phi[i:i + b]) for i in range(0, n, b)])
-                glued = best(lambda phi=phi: concat(
-                    [solver.solve(phi[i:i + b]) for i in range(0, n, b)]), runs=2)
-                line += (f" | blocks of {b}: {n / blocks / 1e6:5.2f} M/s discarded, "
-                         f"{n / glued / 1e6:5.2f} M/s glued into one Motion")
+                blocks = best(
+                    lambda phi=phi, solver=solver, b=b, n=n: [
+                        solver.solve(phi[i : i + b]) for i in range(0, n, b)
+                    ]
+                )
+                glued = best(
+                    lambda phi=phi, solver=solver, b=b, n=n: concat(
+                        [solver.solve(phi[i : i + b]) for i in range(0, n, b)]
+                    ),
+                    runs=2,
+                )
+                line += (
+                    f" | blocks of {b}: {n / blocks / 1e6:5.2f} M/s discarded, "
+                    f"{n / glued / 1e6:5.2f} M/s glued into one Motion"
+                )
             print(line, flush=True)
 
 

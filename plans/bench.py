@@ -85,23 +85,63 @@ class Row:
 
 def configure(p) -> None:
     p.add_argument("--json", action="store_true", help="print the rows as JSON")
-    p.add_argument("--quick", action="store_true",
-                   help="sizes 12 and 100, one FD step, short timing: seconds, for tests")
-    p.add_argument("--max-positions", type=int, default=SIZES[-1], metavar="N",
-                   help=f"largest N of crank positions (default {SIZES[-1]})")
-    p.add_argument("--scene", action="append", metavar="NAME",
-                   help=f"only these scenes (repeatable; default: {', '.join(BENCH_SCENES)})")
-    p.add_argument("--methods", metavar="LIST", default="vectorized,plan,fd,peers",
-                   help="comma-separated subset of vectorized,plan,fd,peers")
-    p.add_argument("--ref-angles", type=int, default=100, metavar="M",
-                   help="angles on which the reference is evaluated (default 100)")
-    p.add_argument("--plan-max", type=int, default=1_000, metavar="N",
-                   help="largest N timed for the single-position plan (default 1000)")
-    p.add_argument("--budget", type=float, default=0.3, metavar="S",
-                   help="seconds spent repeating a short measurement, best run kept (default 0.3)")
-    p.add_argument("--chart", metavar="FILE", default="bench.svg",
-                   help="error-versus-time chart (SVG; default bench.svg; '' for none)")
-    p.add_argument("-o", "--output", metavar="FILE", help="write the table to FILE instead of stdout")
+    p.add_argument(
+        "--quick",
+        action="store_true",
+        help="sizes 12 and 100, one FD step, short timing: seconds, for tests",
+    )
+    p.add_argument(
+        "--max-positions",
+        type=int,
+        default=SIZES[-1],
+        metavar="N",
+        help=f"largest N of crank positions (default {SIZES[-1]})",
+    )
+    p.add_argument(
+        "--scene",
+        action="append",
+        metavar="NAME",
+        help=f"only these scenes (repeatable; default: {', '.join(BENCH_SCENES)})",
+    )
+    p.add_argument(
+        "--methods",
+        metavar="LIST",
+        default="vectorized,plan,fd,peers",
+        help="comma-separated subset of vectorized,plan,fd,peers",
+    )
+    p.add_argument(
+        "--ref-angles",
+        type=int,
+        default=100,
+        metavar="M",
+        help="angles on which the reference is evaluated (default 100)",
+    )
+    p.add_argument(
+        "--plan-max",
+        type=int,
+        default=1_000,
+        metavar="N",
+        help="largest N timed for the single-position plan (default 1000)",
+    )
+    p.add_argument(
+        "--budget",
+        type=float,
+        default=0.3,
+        metavar="S",
+        help="seconds spent repeating a short measurement, best run kept (default 0.3)",
+    )
+    p.add_argument(
+        "--chart",
+        metavar="FILE",
+        default="bench.svg",
+        help="error-versus-time chart (SVG; default bench.svg; '' for none)",
+    )
+    p.add_argument(
+        "-o",
+        "--output",
+        metavar="FILE",
+        help="write the table to FILE instead of stdout",
+    )
 
 
 def run(args) -> int:
@@ -112,20 +152,31 @@ def run(args) -> int:
     methods = {m.strip() for m in args.methods.split(",") if m.strip()}
     unknown = methods - {"vectorized", "plan", "fd", "peers"}
     if unknown:
-        raise InputError("command line", f"--methods: unknown {', '.join(sorted(unknown))}")
+        raise InputError(
+            "command line", f"--methods: unknown {', '.join(sorted(unknown))}"
+        )
     if args.max_positions < 1 or args.ref_angles < 1:
         raise InputError("command line", "--max-positions and --ref-angles must be ≥ 1")
     scenes = load_scenes()
     names = args.scene or list(BENCH_SCENES)
     missing = [n for n in names if n not in scenes]
     if missing:
-        raise InputError("command line", f"--scene: unknown {', '.join(missing)} "
-                         f"(known: {', '.join(sorted(scenes))})")
-    sizes = [n for n in (QUICK_SIZES if args.quick else SIZES) if n <= args.max_positions]
+        raise InputError(
+            "command line",
+            f"--scene: unknown {', '.join(missing)} "
+            f"(known: {', '.join(sorted(scenes))})",
+        )
+    sizes = [
+        n for n in (QUICK_SIZES if args.quick else SIZES) if n <= args.max_positions
+    ]
     if not sizes:
         sizes = [args.max_positions]
     notes: list[str] = []
-    log = (lambda msg: print(msg, file=sys.stderr)) if not args.json else (lambda msg: None)
+    log = (
+        (lambda msg: print(msg, file=sys.stderr))
+        if not args.json
+        else (lambda msg: None)
+    )
     bench = Bench(
         budget=0.02 if args.quick else args.budget,
         ref_angles=min(args.ref_angles, 12) if args.quick else args.ref_angles,
@@ -165,7 +216,9 @@ def load_scenes() -> dict:
 
     path = ROOT / "tests" / "scenes.py"
     if not path.is_file():
-        raise InputError(str(path), "plans bench runs in a source checkout: it needs tests/scenes.py")
+        raise InputError(
+            str(path), "plans bench runs in a source checkout: it needs tests/scenes.py"
+        )
     spec = importlib.util.spec_from_file_location("_plans_bench_scenes", path)
     mod = importlib.util.module_from_spec(spec)
     assert spec.loader is not None
@@ -204,16 +257,26 @@ def take(motion, idx):
     from dataclasses import replace
 
     links = {
-        i: replace(st, origin=st.origin[idx], rotor=st.rotor[idx], v=st.v[idx],
-                   omega=st.omega[idx], a=st.a[idx], epsilon=st.epsilon[idx])
+        i: replace(
+            st,
+            origin=st.origin[idx],
+            rotor=st.rotor[idx],
+            v=st.v[idx],
+            omega=st.omega[idx],
+            a=st.a[idx],
+            epsilon=st.epsilon[idx],
+        )
         for i, st in motion.links.items()
     }
     return replace(
-        motion, phi=motion.phi[idx], links=links,
+        motion,
+        phi=motion.phi[idx],
+        links=links,
         position={k: v[idx] for k, v in motion.position.items()},
         velocity={k: v[idx] for k, v in motion.velocity.items()},
         acceleration={k: v[idx] for k, v in motion.acceleration.items()},
-        groups=(), valid=motion.valid[idx],
+        groups=(),
+        valid=motion.valid[idx],
     )
 
 
@@ -222,7 +285,9 @@ def take(motion, idx):
 # ---------------------------------------------------------------------------------------
 
 
-def rel_error(arr, valid, position, velocity, acceleration, omega=None, epsilon=None) -> float:
+def rel_error(
+    arr, valid, position, velocity, acceleration, omega=None, epsilon=None
+) -> float:
     """Largest normwise relative error against the reference arrays ``arr`` (the norm of
     ``plans.reference.errors``) over the points and links given; inf if a method gives
     a non-finite value where the reference assembles."""
@@ -256,8 +321,13 @@ def rel_error(arr, valid, position, velocity, acceleration, omega=None, epsilon=
 def motion_error(motion, arr) -> float:
     moving = [i for i in motion.links if i != 0]
     return rel_error(
-        arr, motion.valid, motion.position, motion.velocity, motion.acceleration,
-        {i: motion.links[i].omega for i in moving}, {i: motion.links[i].epsilon for i in moving},
+        arr,
+        motion.valid,
+        motion.position,
+        motion.velocity,
+        motion.acceleration,
+        {i: motion.links[i].omega for i in moving},
+        {i: motion.links[i].epsilon for i in moving},
     )
 
 
@@ -266,7 +336,9 @@ def motion_error(motion, arr) -> float:
 # ---------------------------------------------------------------------------------------
 
 
-def _best_time(fn, budget: float, first: float | None = None, at_least: int = 0) -> float:
+def _best_time(
+    fn, budget: float, first: float | None = None, at_least: int = 0
+) -> float:
     """Best wall time of ``fn()`` over repeats filling about ``budget`` seconds (and
     ``at_least`` repeats after the first run, on a machine shared with other work)."""
     if first is None:
@@ -340,8 +412,12 @@ class Bench:
             first = time.perf_counter() - t0
             sub = take(motion, idx)
             del motion
-            best = _best_time(lambda: solver.solve(phi), self.budget, first,
-                              at_least=0 if self.budget < 0.1 else 2)
+            best = _best_time(
+                lambda: solver.solve(phi),
+                self.budget,
+                first,
+                at_least=0 if self.budget < 0.1 else 2,
+            )
         err = motion_error(sub, arr) if arr is not None else None
         return Row(name, "vectorized", len(phi), best / len(phi), err)
 
@@ -365,10 +441,21 @@ class Bench:
                 return pt.value if pt is not None else complex(store[nm][0])
 
             pos = {nm: np.array([s.positions[nm] for s in sols]) for nm in names}
-            vel = {nm: np.array([plan_value(s, s.velocity, nm, s.motion.velocity) for s in sols])
-                   for nm in names}
-            acc = {nm: np.array([plan_value(s, s.acceleration, nm, s.motion.acceleration)
-                                 for s in sols]) for nm in names}
+            vel = {
+                nm: np.array(
+                    [plan_value(s, s.velocity, nm, s.motion.velocity) for s in sols]
+                )
+                for nm in names
+            }
+            acc = {
+                nm: np.array(
+                    [
+                        plan_value(s, s.acceleration, nm, s.motion.acceleration)
+                        for s in sols
+                    ]
+                )
+                for nm in names
+            }
             links = [i for i in sols[0].omega if i != 0]
             om = {i: np.array([s.omega[i] for s in sols]) for i in links}
             ep = {i: np.array([s.epsilon[i] for s in sols]) for i in links}
@@ -387,8 +474,13 @@ class Bench:
                 out = []
                 for shift in (-h, 0.0, h):
                     m = solver.solve(phi + shift)
-                    out.append(({k: m.position[k] for k in names},
-                                {i: m.links[i].rotor for i in links}, m.valid))
+                    out.append(
+                        (
+                            {k: m.position[k] for k in names},
+                            {i: m.links[i].rotor for i in links},
+                            m.valid,
+                        )
+                    )
                     del m
             (xm, rm, vm), (x0, r0, v0), (xp, rp, vp) = out
             vel = {k: (xp[k] - xm[k]) * (w1 / (2 * h)) for k in names}
@@ -408,7 +500,9 @@ class Bench:
         err = None
         if arr is not None:
             pick = lambda d: {k: v[idx] for k, v in d.items()}  # noqa: E731
-            err = rel_error(arr, valid[idx], pick(x0), pick(vel), pick(acc), pick(om), pick(ep))
+            err = rel_error(
+                arr, valid[idx], pick(x0), pick(vel), pick(acc), pick(om), pick(ep)
+            )
         del result, x0, vel, acc, om, ep
         best = _best_time(compute, self.budget, first)
         return Row(name, f"fd h={h:.0e}", len(phi), best / len(phi), err)
@@ -422,8 +516,10 @@ class Bench:
                 self._peer_state[peer] = importlib.import_module(peer)
             except Exception as exc:  # ImportError, or a broken build of the package
                 self._peer_state[peer] = None
-                self.notes.append(f"peer {peer} is not installed ({type(exc).__name__}): "
-                                  f"skipped ({PEER_HINTS.get(peer, 'pip install ' + peer)})")
+                self.notes.append(
+                    f"peer {peer} is not installed ({type(exc).__name__}): "
+                    f"skipped ({PEER_HINTS.get(peer, 'pip install ' + peer)})"
+                )
         return self._peer_state[peer] is not None
 
     def _peers(self, name, mech, solver, phi, idx, arr) -> list[Row]:
@@ -433,7 +529,9 @@ class Bench:
             if n > PEER_MAX:
                 return rows
             try:
-                build = _pylinkage_model(self._peer_state["pylinkage"], mech, solver, phi)
+                build = _pylinkage_model(
+                    self._peer_state["pylinkage"], mech, solver, phi
+                )
             except NotImplementedError as exc:
                 note = f"pylinkage: {name} skipped ({exc})"
                 if note not in self.notes:
@@ -442,13 +540,19 @@ class Bench:
             t0 = time.perf_counter()
             pos, vel, acc = build()
             first = time.perf_counter() - t0
-            best = _best_time(build, min(self.budget, first), first) if n <= 1000 else first
+            best = (
+                _best_time(build, min(self.budget, first), first)
+                if n <= 1000
+                else first
+            )
             err = None
             if arr is not None:
                 pick = lambda d: {k: v[idx] for k, v in d.items()}  # noqa: E731
                 import numpy as np
 
-                err = rel_error(arr, np.ones(len(idx), bool), pick(pos), pick(vel), pick(acc))
+                err = rel_error(
+                    arr, np.ones(len(idx), bool), pick(pos), pick(vel), pick(acc)
+                )
             rows.append(Row(name, "pylinkage", n, best / n, err))
         self._peer_available("pyslvs")
         return rows
@@ -485,26 +589,45 @@ def _pylinkage_model(pl, mech, solver, phi):
     step = float(phi[1] - phi[0]) if n > 1 else 0.0
 
     def build():
-        O = mech.frame[drv.pivot]
-        ground = pl.Ground(O.real, O.imag, name=drv.pivot)
-        crank = pl.Crank(anchor=ground, radius=drv.length, angular_velocity=step,
-                         initial_angle=float(phi[0]) - step, name=drv.tip)
+        pivot = mech.frame[drv.pivot]
+        ground = pl.Ground(pivot.real, pivot.imag, name=drv.pivot)
+        crank = pl.Crank(
+            anchor=ground,
+            radius=drv.length,
+            angular_velocity=step,
+            initial_angle=float(phi[0]) - step,
+            name=drv.tip,
+        )
         comps = [ground]
         if g.kind == DyadKind.RRR:
             Q = mech.frame[g.Q]
             gq = pl.Ground(Q.real, Q.imag, name=g.Q)
             l3 = abs(mech.links[g.b].points[g.C] - mech.links[g.b].points[g.Q])
             comps.append(gq)
-            dyad = pl.RRRDyad(anchor1=crank.output, anchor2=gq, distance1=l2, distance2=l3,
-                              x=C0.real, y=C0.imag, name=g.C)
+            dyad = pl.RRRDyad(
+                anchor1=crank.output,
+                anchor2=gq,
+                distance1=l2,
+                distance2=l3,
+                x=C0.real,
+                y=C0.imag,
+                name=g.C,
+            )
         else:
             gd = g.s1.guide
             a, b = gd.point, gd.point + gd.direction
             la = pl.Ground(a.real, a.imag, name="L1")
             lb = pl.Ground(b.real, b.imag, name="L2")
             comps += [la, lb]
-            dyad = pl.RRPDyad(revolute_anchor=crank.output, line_anchor1=la, line_anchor2=lb,
-                              distance=l2, x=C0.real, y=C0.imag, name=g.C)
+            dyad = pl.RRPDyad(
+                revolute_anchor=crank.output,
+                line_anchor1=la,
+                line_anchor2=lb,
+                distance=l2,
+                x=C0.real,
+                y=C0.imag,
+                name=g.C,
+            )
         comps += [crank, dyad]
         linkage = pl.Linkage(comps, name=mech.name)
         linkage.set_input_velocity(crank, omega=drv.omega)
@@ -512,7 +635,9 @@ def _pylinkage_model(pl, mech, solver, phi):
         P = {k: np.empty(n, complex) for k, _ in which}
         V = {k: np.empty(n, complex) for k, _ in which}
         A = {k: np.empty(n, complex) for k, _ in which}
-        for k, (pos, vel, acc) in enumerate(linkage.step_with_derivatives(iterations=n)):
+        for k, (pos, vel, acc) in enumerate(
+            linkage.step_with_derivatives(iterations=n)
+        ):
             for nm, i in which:
                 P[nm][k] = complex(*pos[i])
                 V[nm][k] = complex(*vel[i]) if vel[i] is not None else complex("nan")
@@ -533,12 +658,18 @@ def machine() -> str:
 
     import numpy as np
 
-    cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
+    cores = (
+        len(os.sched_getaffinity(0))
+        if hasattr(os, "sched_getaffinity")
+        else os.cpu_count()
+    )
     load = ""
     if hasattr(os, "getloadavg"):
         load = f", load {os.getloadavg()[0]:.1f}"
-    return (f"{platform.system()} {platform.machine()}, {cores} cores{load}, "
-            f"Python {platform.python_version()}, numpy {np.__version__}")
+    return (
+        f"{platform.system()} {platform.machine()}, {cores} cores{load}, "
+        f"Python {platform.python_version()}, numpy {np.__version__}"
+    )
 
 
 def _err(x: float | None) -> str:
@@ -561,14 +692,23 @@ def to_text(rows: list[Row], notes: list[str]) -> str:
     out = [f"plans bench — {machine()}; one process, numpy on one core", ""]
     head = ("scene", "method", "N", "time/position", "positions/s", "max rel error")
     body = [
-        (r.scene, r.method, str(r.positions), _time(r.seconds_per_position),
-         f"{1 / r.seconds_per_position:.3g}" if r.seconds_per_position > 0 else "—",
-         _err(r.max_rel_error))
+        (
+            r.scene,
+            r.method,
+            str(r.positions),
+            _time(r.seconds_per_position),
+            f"{1 / r.seconds_per_position:.3g}" if r.seconds_per_position > 0 else "—",
+            _err(r.max_rel_error),
+        )
         for r in rows
     ]
-    widths = [max(len(h), *(len(b[i]) for b in body)) if body else len(h) for i, h in enumerate(head)]
+    widths = [
+        max(len(h), *(len(b[i]) for b in body)) if body else len(h)
+        for i, h in enumerate(head)
+    ]
     fmt = lambda cells: "  ".join(  # noqa: E731
-        c.ljust(w) if i < 2 else c.rjust(w) for i, (c, w) in enumerate(zip(cells, widths, strict=True))
+        c.ljust(w) if i < 2 else c.rjust(w)
+        for i, (c, w) in enumerate(zip(cells, widths, strict=True))
     )
     out.append(fmt(head))
     last = None
@@ -589,25 +729,48 @@ def targets(rows: list[Row]) -> list[str]:
     out = ["targets"]
 
     def rate(scenes, lo=100_000):
-        rs = [r for r in rows if r.method == "vectorized" and r.scene in scenes and r.positions >= lo]
+        rs = [
+            r
+            for r in rows
+            if r.method == "vectorized" and r.scene in scenes and r.positions >= lo
+        ]
         return max((1 / r.seconds_per_position for r in rs), default=None)
 
-    for label, scenes, goal in (("four-bar", ("crank_rocker", "fourbar"), 5e6), ("press", ("press",), 2e6)):
+    for label, scenes, goal in (
+        ("four-bar", ("crank_rocker", "fourbar"), 5e6),
+        ("press", ("press",), 2e6),
+    ):
         got = rate(scenes)
         if got is None:
-            out.append(f"  vectorized {label} ≥ {goal:.0e} positions/s (N ≥ 1e5): not measured")
+            out.append(
+                f"  vectorized {label} ≥ {goal:.0e} positions/s (N ≥ 1e5): not measured"
+            )
         else:
-            out.append(f"  vectorized {label} ≥ {goal:.0e} positions/s (N ≥ 1e5): "
-                       f"{got:.3g} — {'met' if got >= goal else 'NOT met'}")
-    plan = [r.seconds_per_position for r in rows if r.method == "plan" and r.scene == "press"]
+            out.append(
+                f"  vectorized {label} ≥ {goal:.0e} positions/s (N ≥ 1e5): "
+                f"{got:.3g} — {'met' if got >= goal else 'NOT met'}"
+            )
+    plan = [
+        r.seconds_per_position
+        for r in rows
+        if r.method == "plan" and r.scene == "press"
+    ]
     if plan:
         best = min(plan)
-        out.append(f"  plan of the press ≤ 100 µs: {_time(best)} — {'met' if best <= 1e-4 else 'NOT met'}")
-    errs = [r.max_rel_error for r in rows if r.method == "vectorized" and r.max_rel_error is not None]
+        out.append(
+            f"  plan of the press ≤ 100 µs: {_time(best)} — {'met' if best <= 1e-4 else 'NOT met'}"
+        )
+    errs = [
+        r.max_rel_error
+        for r in rows
+        if r.method == "vectorized" and r.max_rel_error is not None
+    ]
     if errs:
         worst = max(errs)
-        out.append(f"  vectorized max rel error ≤ 1e-13 (well-conditioned scenes): {_err(worst)} — "
-                   f"{'met' if worst <= 1e-13 else 'NOT met'}")
+        out.append(
+            f"  vectorized max rel error ≤ 1e-13 (well-conditioned scenes): {_err(worst)} — "
+            f"{'met' if worst <= 1e-13 else 'NOT met'}"
+        )
     return out
 
 
@@ -630,8 +793,11 @@ def svg_chart(rows: list[Row], subtitle: str = "") -> str:
     L, R, T, B = 80, 250, 50, 60
     floor = 1e-17
     xs = [r.seconds_per_position for r in rows] or [1e-9, 1e-3]
-    ys = [max(r.max_rel_error, floor) for r in rows
-          if r.max_rel_error is not None and math.isfinite(r.max_rel_error)] or [floor, 1]
+    ys = [
+        max(r.max_rel_error, floor)
+        for r in rows
+        if r.max_rel_error is not None and math.isfinite(r.max_rel_error)
+    ] or [floor, 1]
     x0, x1 = math.floor(math.log10(min(xs))), math.ceil(math.log10(max(xs)))
     y0, y1 = math.floor(math.log10(min(ys))), math.ceil(math.log10(max(max(ys), 1e-12)))
     x1 = max(x1, x0 + 1)
@@ -650,7 +816,9 @@ def svg_chart(rows: list[Row], subtitle: str = "") -> str:
         if m in _COLORS:
             colors[m] = _COLORS[m]
         else:
-            colors[m] = _FD_COLORS[fd % len(_FD_COLORS)] if m.startswith("fd") else "#7f7f7f"
+            colors[m] = (
+                _FD_COLORS[fd % len(_FD_COLORS)] if m.startswith("fd") else "#7f7f7f"
+            )
             fd += m.startswith("fd")
     scenes = list(dict.fromkeys(r.scene for r in rows))
     shapes = {s: _SHAPES[i % len(_SHAPES)] for i, s in enumerate(scenes)}
@@ -660,11 +828,15 @@ def svg_chart(rows: list[Row], subtitle: str = "") -> str:
         if shape == "circle":
             return f'<circle cx="{x:.1f}" cy="{y:.1f}" r="{s:.1f}" fill="{color}" fill-opacity="0.75"/>'
         if shape == "ring":
-            return (f'<circle cx="{x:.1f}" cy="{y:.1f}" r="{s:.1f}" fill="none" stroke="{color}" '
-                    'stroke-width="2"/>')
+            return (
+                f'<circle cx="{x:.1f}" cy="{y:.1f}" r="{s:.1f}" fill="none" stroke="{color}" '
+                'stroke-width="2"/>'
+            )
         if shape == "square":
-            return (f'<rect x="{x - s:.1f}" y="{y - s:.1f}" width="{2 * s:.1f}" height="{2 * s:.1f}" '
-                    f'fill="{color}" fill-opacity="0.75"/>')
+            return (
+                f'<rect x="{x - s:.1f}" y="{y - s:.1f}" width="{2 * s:.1f}" height="{2 * s:.1f}" '
+                f'fill="{color}" fill-opacity="0.75"/>'
+            )
         if shape == "diamond":
             pts = f"{x},{y - s * 1.3} {x + s * 1.3},{y} {x},{y + s * 1.3} {x - s * 1.3},{y}"
         elif shape == "triangle":
@@ -676,8 +848,10 @@ def svg_chart(rows: list[Row], subtitle: str = "") -> str:
                 for k in range(10)
             )
         else:  # cross
-            return (f'<path d="M{x - s},{y - s}L{x + s},{y + s}M{x - s},{y + s}L{x + s},{y - s}" '
-                    f'stroke="{color}" stroke-width="2.2"/>')
+            return (
+                f'<path d="M{x - s},{y - s}L{x + s},{y + s}M{x - s},{y + s}L{x + s},{y - s}" '
+                f'stroke="{color}" stroke-width="2.2"/>'
+            )
         return f'<polygon points="{pts}" fill="{color}" fill-opacity="0.75"/>'
 
     out = [
@@ -690,33 +864,57 @@ def svg_chart(rows: list[Row], subtitle: str = "") -> str:
     ]
     for e in range(x0, x1 + 1):
         x = px(10.0**e)
-        out.append(f'<line x1="{x:.1f}" y1="{T}" x2="{x:.1f}" y2="{H - B}" stroke="#ddd"/>')
-        out.append(f'<text x="{x:.1f}" y="{H - B + 18}" text-anchor="middle">1e{e}</text>')
+        out.append(
+            f'<line x1="{x:.1f}" y1="{T}" x2="{x:.1f}" y2="{H - B}" stroke="#ddd"/>'
+        )
+        out.append(
+            f'<text x="{x:.1f}" y="{H - B + 18}" text-anchor="middle">1e{e}</text>'
+        )
     for e in range(y0, y1 + 1):
         y = py(10.0**e)
-        out.append(f'<line x1="{L}" y1="{y:.1f}" x2="{W - R}" y2="{y:.1f}" stroke="#ddd"/>')
+        out.append(
+            f'<line x1="{L}" y1="{y:.1f}" x2="{W - R}" y2="{y:.1f}" stroke="#ddd"/>'
+        )
         out.append(f'<text x="{L - 6}" y="{y + 4:.1f}" text-anchor="end">1e{e}</text>')
     if y0 <= -13 <= y1:
         y = py(1e-13)
-        out.append(f'<line x1="{L}" y1="{y:.1f}" x2="{W - R}" y2="{y:.1f}" stroke="#888" '
-                   'stroke-dasharray="6 4"/>')
-        out.append(f'<text x="{W - R - 4}" y="{y - 4:.1f}" text-anchor="end" fill="#666">'
-                   "target 1e-13</text>")
-    out.append(f'<rect x="{L}" y="{T}" width="{W - L - R}" height="{H - T - B}" fill="none" stroke="#333"/>')
-    out.append(f'<text x="{(L + W - R) / 2:.1f}" y="{H - 18}" text-anchor="middle">'
-               "wall time per position (s)</text>")
-    out.append(f'<text transform="translate(20 {(T + H - B) / 2:.1f}) rotate(-90)" '
-               'text-anchor="middle">max relative error (normwise)</text>')
+        out.append(
+            f'<line x1="{L}" y1="{y:.1f}" x2="{W - R}" y2="{y:.1f}" stroke="#888" '
+            'stroke-dasharray="6 4"/>'
+        )
+        out.append(
+            f'<text x="{W - R - 4}" y="{y - 4:.1f}" text-anchor="end" fill="#666">'
+            "target 1e-13</text>"
+        )
+    out.append(
+        f'<rect x="{L}" y="{T}" width="{W - L - R}" height="{H - T - B}" fill="none" stroke="#333"/>'
+    )
+    out.append(
+        f'<text x="{(L + W - R) / 2:.1f}" y="{H - 18}" text-anchor="middle">'
+        "wall time per position (s)</text>"
+    )
+    out.append(
+        f'<text transform="translate(20 {(T + H - B) / 2:.1f}) rotate(-90)" '
+        'text-anchor="middle">max relative error (normwise)</text>'
+    )
     for r in rows:
         if r.max_rel_error is None or not math.isfinite(r.max_rel_error):
             continue
-        out.append(marker(shapes[r.scene], px(r.seconds_per_position), py(r.max_rel_error),
-                          colors[r.method]))
+        out.append(
+            marker(
+                shapes[r.scene],
+                px(r.seconds_per_position),
+                py(r.max_rel_error),
+                colors[r.method],
+            )
+        )
     lx, ly = W - R + 18, T + 6
     out.append(f'<text x="{lx}" y="{ly}" font-weight="bold">method</text>')
     for i, m in enumerate(methods):
         y = ly + 18 * (i + 1)
-        out.append(f'<rect x="{lx}" y="{y - 9}" width="12" height="12" fill="{colors[m]}"/>')
+        out.append(
+            f'<rect x="{lx}" y="{y - 9}" width="12" height="12" fill="{colors[m]}"/>'
+        )
         out.append(f'<text x="{lx + 18}" y="{y + 1}">{escape(m)}</text>')
     ly += 18 * (len(methods) + 2)
     out.append(f'<text x="{lx}" y="{ly}" font-weight="bold">scene</text>')
@@ -724,7 +922,9 @@ def svg_chart(rows: list[Row], subtitle: str = "") -> str:
         y = ly + 18 * (i + 1)
         out.append(marker(shapes[s], lx + 6, y - 3, "#444", 4.5))
         out.append(f'<text x="{lx + 18}" y="{y + 1}">{escape(s)}</text>')
-    out.append(f'<text x="{L}" y="{H - 4}" fill="#777" font-size="10">errors ≤ 1e-17 '
-               "(0 included) drawn at 1e-17; reference: mpmath, 30 digits</text>")
+    out.append(
+        f'<text x="{L}" y="{H - 4}" fill="#777" font-size="10">errors ≤ 1e-17 '
+        "(0 included) drawn at 1e-17; reference: mpmath, 30 digits</text>"
+    )
     out.append("</svg>")
     return "\n".join(out) + "\n"

@@ -28,12 +28,23 @@ MAX_POSITIONS = 1_000_000
 
 def configure(p) -> None:
     add_source(p)
-    p.add_argument("--positions", type=int, default=12, metavar="N",
-                   help="number of crank positions (default 12), numbered from an extreme position")
+    p.add_argument(
+        "--positions",
+        type=int,
+        default=12,
+        metavar="N",
+        help="number of crank positions (default 12), numbered from an extreme position",
+    )
     fmt = p.add_mutually_exclusive_group()
-    fmt.add_argument("--csv", action="store_true", help="one row per position (SI units)")
-    fmt.add_argument("--json", action="store_true", help="machine-readable output (SI units)")
-    p.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of stdout")
+    fmt.add_argument(
+        "--csv", action="store_true", help="one row per position (SI units)"
+    )
+    fmt.add_argument(
+        "--json", action="store_true", help="machine-readable output (SI units)"
+    )
+    p.add_argument(
+        "-o", "--output", metavar="FILE", help="write to FILE instead of stdout"
+    )
 
 
 @dataclass(frozen=True)
@@ -41,8 +52,12 @@ class Status:
     """Conditioning and diagnostics of one position."""
 
     ok: bool  # solved: every group closes and no figure is singular
-    min_sine: float  # the smallest |sin| between intersected lines (NaN if it does not close)
-    figures: dict[str, float]  # per group: "group 2–3 (RPR)" → |sin|; "… pivot" → |QP| ratio
+    min_sine: (
+        float  # the smallest |sin| between intersected lines (NaN if it does not close)
+    )
+    figures: dict[
+        str, float
+    ]  # per group: "group 2–3 (RPR)" → |sin|; "… pivot" → |QP| ratio
     warnings: tuple[str, ...]
     errors: tuple[str, ...]
 
@@ -65,13 +80,18 @@ def run(args) -> int:
 
     n = args.positions
     if not 1 <= n <= MAX_POSITIONS:
-        raise InputError("command line", f"--positions: {n} is not within 1…{MAX_POSITIONS}")
+        raise InputError(
+            "command line", f"--positions: {n} is not within 1…{MAX_POSITIONS}"
+        )
     mech = mechanism_from(args)
     table = compute(mech, n)
     if args.json:
         import json
 
-        text = json.dumps(to_json(table), ensure_ascii=False, indent=1, allow_nan=False) + "\n"
+        text = (
+            json.dumps(to_json(table), ensure_ascii=False, indent=1, allow_nan=False)
+            + "\n"
+        )
     elif args.csv:
         text = to_csv(table)
     else:
@@ -110,7 +130,9 @@ def compute(mech, n_positions: int, solver=None) -> CycleTable:
     with np.errstate(all="ignore"):
         motion = solver.solve(phi)
         status = conditioning(mech, motion)
-        out_values = cycle.output.value(motion, mech) if cycle.output is not None else None
+        out_values = (
+            cycle.output.value(motion, mech) if cycle.output is not None else None
+        )
     points = tuple(motion.position)
     links = tuple(sorted(lid for lid in motion.links if lid != 0))
     return CycleTable(mech, cycle, motion, status, points, links, out_values)
@@ -124,16 +146,18 @@ def conditioning(mech, motion) -> tuple[Status, ...]:
     from .structure import DyadKind
 
     n = len(motion.phi)
-    O = mech.frame[mech.driver.pivot]
+    crank_pivot = mech.frame[mech.driver.pivot]
     per_group = []
     for g in motion.groups:
         sine = np.abs(np.asarray(g.velocity.sine, dtype=float))
         pivot = None
         if g.group.kind == DyadKind.RPR:
             P, Q = motion.position[g.group.P], motion.position[g.group.Q]
-            loop = np.abs(Q - O) + np.abs(P - O)
+            loop = np.abs(Q - crank_pivot) + np.abs(P - crank_pivot)
             with np.errstate(all="ignore"):
-                pivot = np.where(loop > 0, np.abs(P - Q) / np.where(loop > 0, loop, 1.0), 0.0)
+                pivot = np.where(
+                    loop > 0, np.abs(P - Q) / np.where(loop > 0, loop, 1.0), 0.0
+                )
         per_group.append((g, sine, pivot))
     out = []
     for k in range(n):
@@ -189,7 +213,9 @@ def conditioning(mech, motion) -> tuple[Status, ...]:
             min_sine = min(sines)
         else:
             min_sine = math.nan
-        out.append(Status(not errors, min_sine, figures, tuple(warnings), tuple(errors)))
+        out.append(
+            Status(not errors, min_sine, figures, tuple(warnings), tuple(errors))
+        )
     return tuple(out)
 
 
@@ -224,8 +250,9 @@ def _cycle_summary(t: CycleTable) -> dict:
     c = t.cycle
     out = {
         "full_turn": c.full_turn,
-        "output": None if c.output is None else {
-            "point": c.output.point, "kind": c.output.kind, "link": c.output.link},
+        "output": None
+        if c.output is None
+        else {"point": c.output.point, "kind": c.output.kind, "link": c.output.link},
         "extremes_phi_deg": [_deg(t.mechanism, x) for x in c.extremes],
         "stroke": c.stroke,
         "theta_deg": None if c.theta is None else math.degrees(c.theta),
@@ -299,7 +326,11 @@ def to_json(t: CycleTable) -> dict:
 def _csv_header(t: CycleTable) -> list[str]:
     head = ["index", "phi_deg", "angle_deg", "solved", "min_sine"]
     for label in t.status[0].figures if t.status else ():
-        head.append(f"pivot {label[: -len(' pivot')]}" if label.endswith(" pivot") else f"sine {label}")
+        head.append(
+            f"pivot {label[: -len(' pivot')]}"
+            if label.endswith(" pivot")
+            else f"sine {label}"
+        )
     if t.output_values is not None:
         head.append(f"output {t.cycle.output.point}")
     for name in t.points:
@@ -326,7 +357,13 @@ def to_csv(t: CycleTable) -> str:
     for k, st in enumerate(t.status):
         phi = float(m.phi[k])
         good = st.ok
-        row = [k, f(_deg(mech, phi)), f(file_angle(mech, phi)), int(good), f(st.min_sine)]
+        row = [
+            k,
+            f(_deg(mech, phi)),
+            f(file_angle(mech, phi)),
+            int(good),
+            f(st.min_sine),
+        ]
         row += [f(v) for v in st.figures.values()]
         if t.output_values is not None:
             row.append(f(t.output_values[k]) if good else "")
@@ -345,9 +382,13 @@ def to_csv(t: CycleTable) -> str:
 def _table(title: str, head: list[str], rows: list[list[str]]) -> list[str]:
     widths = [max(len(h), *(len(r[i]) for r in rows)) for i, h in enumerate(head)]
     out = ["", title]
-    out.append("  " + "  ".join(h.rjust(wd) for h, wd in zip(head, widths, strict=True)))
+    out.append(
+        "  " + "  ".join(h.rjust(wd) for h, wd in zip(head, widths, strict=True))
+    )
     for r in rows:
-        out.append("  " + "  ".join(c.rjust(wd) for c, wd in zip(r, widths, strict=True)))
+        out.append(
+            "  " + "  ".join(c.rjust(wd) for c, wd in zip(r, widths, strict=True))
+        )
     return out
 
 
@@ -371,7 +412,9 @@ def to_text(t: CycleTable) -> str:
         if c.output.kind == "linear":
             lines.append(f"stroke of {c.output.point}: H = {num(c.stroke)} m")
         else:
-            lines.append(f"swing of link {c.output.link}: ψ = {num(math.degrees(c.stroke))}°")
+            lines.append(
+                f"swing of link {c.output.link}: ψ = {num(math.degrees(c.stroke))}°"
+            )
         if c.theta is not None:
             lines.append(f"θ = {num(math.degrees(c.theta))}°, K = {num(c.K)}")
     moving = [p for p in t.points if p not in mech.frame]
@@ -379,7 +422,10 @@ def to_text(t: CycleTable) -> str:
     if fixed:
         lines.append(
             "fixed points: "
-            + ", ".join(f"{p} ({num(mech.frame[p].real)}, {num(mech.frame[p].imag)}) m" for p in fixed)
+            + ", ".join(
+                f"{p} ({num(mech.frame[p].real)}, {num(mech.frame[p].imag)}) m"
+                for p in fixed
+            )
         )
 
     def lead(k: int) -> list[str]:
@@ -391,13 +437,27 @@ def to_text(t: CycleTable) -> str:
     base = ["№", "φ1 °"]
     for title, key in (("x of points (m)", "x"), ("y of points (m)", "y")):
         rows = [
-            lead(k) + [cell(k, getattr(complex(m.position[p][k]), "real" if key == "x" else "imag"))
-                       for p in moving]
+            lead(k)
+            + [
+                cell(
+                    k,
+                    getattr(
+                        complex(m.position[p][k]), "real" if key == "x" else "imag"
+                    ),
+                )
+                for p in moving
+            ]
             for k in range(n)
         ]
         lines += _table(title, base + moving, rows)
-    for title, store in (("|V| of points (m/s)", m.velocity), ("|a| of points (m/s²)", m.acceleration)):
-        rows = [lead(k) + [cell(k, abs(complex(store[p][k]))) for p in moving] for k in range(n)]
+    for title, store in (
+        ("|V| of points (m/s)", m.velocity),
+        ("|a| of points (m/s²)", m.acceleration),
+    ):
+        rows = [
+            lead(k) + [cell(k, abs(complex(store[p][k]))) for p in moving]
+            for k in range(n)
+        ]
         lines += _table(title, base + moving, rows)
     head = base + [f"ω{i}" for i in t.links] + [f"ε{i}" for i in t.links]
     rows = [
@@ -406,11 +466,15 @@ def to_text(t: CycleTable) -> str:
         + [cell(k, m.links[i].epsilon[k]) for i in t.links]
         for k in range(n)
     ]
-    lines += _table("ω (rad/s) and ε (rad/s²) of links, counter-clockwise positive", head, rows)
+    lines += _table(
+        "ω (rad/s) and ε (rad/s²) of links, counter-clockwise positive", head, rows
+    )
     out_head = []
     if t.output_values is not None:
         unit = "m" if c.output.kind == "linear" else "°"
-        out_head = [f"{'s' if c.output.kind == 'linear' else 'ψ'}_{c.output.point} {unit}"]
+        out_head = [
+            f"{'s' if c.output.kind == 'linear' else 'ψ'}_{c.output.point} {unit}"
+        ]
     labels = list(t.status[0].figures) if t.status else []
     head = base + out_head + ["min sin"] + [_short(x) for x in labels] + ["status"]
     rows = []
@@ -425,7 +489,9 @@ def to_text(t: CycleTable) -> str:
         r += [_fig(st.figures.get(x, math.nan)) for x in labels]
         r.append("error" if st.errors else "warning" if st.warnings else "ok")
         rows.append(r)
-    lines += _table("Conditioning (sine of the angle between the intersected lines)", head, rows)
+    lines += _table(
+        "Conditioning (sine of the angle between the intersected lines)", head, rows
+    )
     notes = [(k, "error", e) for k, st in enumerate(t.status) for e in st.errors]
     notes += [(k, "warning", w) for k, st in enumerate(t.status) for w in st.warnings]
     if notes:

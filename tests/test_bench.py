@@ -7,12 +7,11 @@ import xml.etree.ElementTree as ET
 
 import numpy as np
 import pytest
+from scenes import SCENES
 
 from plans import bench, reference
 from plans.cli import main
 from plans.kinematics import Solver
-
-from scenes import SCENES
 
 ROW_KEYS = {"scene", "method", "positions", "seconds_per_position", "max_rel_error"}
 
@@ -28,8 +27,21 @@ def quick_rows(tmp_path_factory):
 
         out, err = io.StringIO(), io.StringIO()
         with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-            code = main(["bench", "--json", "--quick", "--max-positions", "100",
-                         "--scene", "press", "--scene", "crank_rocker", "--chart", str(chart)])
+            code = main(
+                [
+                    "bench",
+                    "--json",
+                    "--quick",
+                    "--max-positions",
+                    "100",
+                    "--scene",
+                    "press",
+                    "--scene",
+                    "crank_rocker",
+                    "--chart",
+                    str(chart),
+                ]
+            )
         capture.update(code=code, out=out.getvalue(), err=err.getvalue())
 
     run()
@@ -70,8 +82,20 @@ def test_bench_chart_is_svg_with_a_marker_per_row(quick_rows):
 
 
 def test_bench_table_names_the_targets(capsys, tmp_path):
-    code = main(["bench", "--quick", "--max-positions", "12", "--scene", "scotch_yoke",
-                 "--methods", "vectorized,peers", "--chart", ""])
+    code = main(
+        [
+            "bench",
+            "--quick",
+            "--max-positions",
+            "12",
+            "--scene",
+            "scotch_yoke",
+            "--methods",
+            "vectorized,peers",
+            "--chart",
+            "",
+        ]
+    )
     out, err = capsys.readouterr()
     assert code == 0, err
     assert "scotch_yoke" in out and "vectorized" in out
@@ -106,7 +130,9 @@ def test_shared_reference_angles():
 
 
 def test_svg_chart_handles_zero_and_missing_errors():
-    rows = [bench.Row("a", "vectorized", 12, 1e-6, 0.0),
-            bench.Row("a", "fd h=1e-04", 12, 1e-5, None),
-            bench.Row("b", "plan", 12, 1e-3, math.inf)]
+    rows = [
+        bench.Row("a", "vectorized", 12, 1e-6, 0.0),
+        bench.Row("a", "fd h=1e-04", 12, 1e-5, None),
+        bench.Row("b", "plan", 12, 1e-3, math.inf),
+    ]
     ET.fromstring(bench.svg_chart(rows, "test"))

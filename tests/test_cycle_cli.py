@@ -28,8 +28,14 @@ def test_press_table_has_every_section_and_row(capsys):
     code, out, err = run(capsys, "cycle", PRESS)
     assert code == 0, err
     assert "numbered from the extreme position that starts the working stroke" in out
-    sections = ["x of points (m)", "y of points (m)", "|V| of points (m/s)",
-                "|a| of points (m/s²)", "ω (rad/s) and ε (rad/s²)", "Conditioning"]
+    sections = [
+        "x of points (m)",
+        "y of points (m)",
+        "|V| of points (m/s)",
+        "|a| of points (m/s²)",
+        "ω (rad/s) and ε (rad/s²)",
+        "Conditioning",
+    ]
     for s in sections:
         assert s in out
     cond = out.split("Conditioning")[1].splitlines()[2:]
@@ -60,20 +66,28 @@ def test_press_json_agrees_with_the_plan_of_each_position(capsys):
         scale_v = max(abs(complex(*p["velocity"])) for p in row["points"].values())
         scale_a = max(abs(complex(*p["acceleration"])) for p in row["points"].values())
         for name, p in row["points"].items():
-            assert complex(*p["position"]) == pytest.approx(sol.positions[name], abs=1e-14)
+            assert complex(*p["position"]) == pytest.approx(
+                sol.positions[name], abs=1e-14
+            )
             v = complex(sol.motion.velocity[name][0])
             a = complex(sol.motion.acceleration[name][0])
             assert abs(complex(*p["velocity"]) - v) <= 1e-13 * scale_v
             assert abs(complex(*p["acceleration"]) - a) <= 1e-13 * scale_a
         for lid, w in row["links"].items():
-            assert w["omega"] == pytest.approx(sol.omega[int(lid)], rel=1e-12, abs=1e-12)
-            assert w["epsilon"] == pytest.approx(sol.epsilon[int(lid)], rel=1e-12, abs=1e-9)
+            assert w["omega"] == pytest.approx(
+                sol.omega[int(lid)], rel=1e-12, abs=1e-12
+            )
+            assert w["epsilon"] == pytest.approx(
+                sol.epsilon[int(lid)], rel=1e-12, abs=1e-9
+            )
         sines = [abs(float(g.velocity.sine[0])) for g in sol.motion.groups]
         assert row["conditioning"]["min_sine"] == pytest.approx(min(sines), rel=1e-12)
     # numbered from an extreme position: the slider D stands still at position 0
     v0 = complex(*data["rows"][0]["points"]["D"]["velocity"])
     assert abs(v0) < 1e-9
-    assert data["rows"][0]["output"] == pytest.approx(max(r["output"] for r in data["rows"]))
+    assert data["rows"][0]["output"] == pytest.approx(
+        max(r["output"] for r in data["rows"])
+    )
 
 
 def test_csv_carries_the_same_numbers_as_json(capsys):
@@ -84,9 +98,21 @@ def test_csv_carries_the_same_numbers_as_json(capsys):
     data = json.loads(out_json)
     assert len(rows) == 5
     head = rows[0].keys()
-    for col in ("index", "phi_deg", "angle_deg", "min_sine", "sine group 2–3 (RPR)",
-                "pivot group 2–3 (RPR)", "sine group 4–5 (RRP)", "D.vx", "A3.ay", "omega3",
-                "epsilon5", "warnings", "errors"):
+    for col in (
+        "index",
+        "phi_deg",
+        "angle_deg",
+        "min_sine",
+        "sine group 2–3 (RPR)",
+        "pivot group 2–3 (RPR)",
+        "sine group 4–5 (RRP)",
+        "D.vx",
+        "A3.ay",
+        "omega3",
+        "epsilon5",
+        "warnings",
+        "errors",
+    ):
         assert col in head
     for r, j in zip(rows, data["rows"], strict=True):
         assert int(r["index"]) == j["index"]
@@ -99,8 +125,17 @@ def test_csv_carries_the_same_numbers_as_json(capsys):
 
 def test_variant_to_a_file(capsys, tmp_path):
     target = tmp_path / "cycle.csv"
-    code, out, err = run(capsys, "cycle", "--variant", "1", "--csv", "--positions", "24",
-                         "-o", str(target))
+    code, out, err = run(
+        capsys,
+        "cycle",
+        "--variant",
+        "1",
+        "--csv",
+        "--positions",
+        "24",
+        "-o",
+        str(target),
+    )
     assert code == 0, err
     assert out == ""
     rows = list(csv.DictReader(io.StringIO(target.read_text("utf-8"))))
@@ -148,7 +183,7 @@ def test_singular_positions_are_errors_with_no_values(capsys, monkeypatch):
 
 
 def test_table_marks_warnings(capsys):
-    code, out, err = run(capsys, "cycle", FOURBAR, "--positions", "5")
+    code, out, _ = run(capsys, "cycle", FOURBAR, "--positions", "5")
     assert code == 0
     assert "position 0: warning: group 2–3 (RRR)" in out
     assert "position 4: warning: group 2–3 (RRR)" in out
@@ -164,7 +199,9 @@ def test_positions_out_of_range(capsys, n):
 def test_one_position_and_json_is_strict(capsys):
     code, out, err = run(capsys, "cycle", PRESS, "--json", "--positions", "1")
     assert code == 0, err
-    data = json.loads(out, parse_constant=lambda c: pytest.fail(f"non-JSON constant {c}"))
+    data = json.loads(
+        out, parse_constant=lambda c: pytest.fail(f"non-JSON constant {c}")
+    )
     assert len(data["rows"]) == 1
     assert np.isfinite(data["rows"][0]["conditioning"]["min_sine"])
 
@@ -184,6 +221,12 @@ def test_cycle_pays_for_no_heavy_import(tmp_path):
         "heavy = ('matplotlib', 'shapely', 'svgwrite', 'sympy', 'mpmath', 'cairosvg', 'pylinkage')\n"
         "print(sorted({m.split('.')[0] for m in sys.modules} & set(heavy)))\n"
     )
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         cwd=tmp_path, env={"PYTHONPATH": str(root), "PATH": ""}, check=True)
+    out = subprocess.run(
+        [sys.executable, "-c", code],
+        capture_output=True,
+        text=True,
+        cwd=tmp_path,
+        env={"PYTHONPATH": str(root), "PATH": ""},
+        check=True,
+    )
     assert out.stdout.strip() == "[]"

@@ -19,14 +19,13 @@ import tomllib
 
 import numpy as np
 import pytest
+from scenes import SAMPLES, SCENES
 
 from plans import reference
 from plans.cli_cycle import compute, conditioning
 from plans.cycle import analyse_cycle
 from plans.kinematics import WARN_SINE, Solver
 from plans.mechanism import from_dict, load
-
-from scenes import SAMPLES, SCENES
 
 EPS = np.finfo(float).eps
 C = 32.0  # the "small multiple"
@@ -129,7 +128,9 @@ def mech_of(text: str):
 def press(omega: float):
     text = (SAMPLES / "press.toml").read_text("utf-8")
     assert "omega = 20 " in text
-    return from_dict(tomllib.loads(text.replace("omega = 20 ", f"omega = {omega!r} ")), "<press>")
+    return from_dict(
+        tomllib.loads(text.replace("omega = 20 ", f"omega = {omega!r} ")), "<press>"
+    )
 
 
 # ---------------------------------------------------------------------------------------
@@ -151,7 +152,9 @@ def worst_angles(mech, solver, extra=(), n=24, fine=7200):
     figs = figure(mech, m)
     k = int(np.nanargmin(figs))
     near = grid[[max(k - 1, 0), k, min(k + 1, fine - 1)]]
-    return np.concatenate([np.array(cyc.positions), near, np.asarray(extra, dtype=float)])
+    return np.concatenate(
+        [np.array(cyc.positions), near, np.asarray(extra, dtype=float)]
+    )
 
 
 def figure(mech, motion) -> np.ndarray:
@@ -169,7 +172,9 @@ def check(mech, phi, *, c=C):
     err = reference.errors(motion, ref)
     kappa = 1.0 / figure(mech, motion)
     bound = c * kappa * EPS
-    assert (err["position"] <= bound).all(), float(np.max(err["position"] / (kappa * EPS)))
+    assert (err["position"] <= bound).all(), float(
+        np.max(err["position"] / (kappa * EPS))
+    )
     for q in ("velocity", "omega", "acceleration", "epsilon"):
         bound = c * kappa**2 * EPS
         assert (err[q] <= bound).all(), (q, float(np.max(err[q] / (kappa**2 * EPS))))
@@ -198,8 +203,10 @@ def test_transmission_angle_within_half_a_degree_of_0_and_180():
     cosg = ((A_ - C_) * np.conj(D_ - C_)).real / (np.abs(A_ - C_) * np.abs(D_ - C_))
     gamma = np.degrees(np.arccos(np.clip(cosg, -1, 1)))
     assert gamma.min() < 0.5 and gamma.max() > 179.5
-    phi = np.concatenate([worst_angles(mech, solver), fine[[np.argmin(gamma), np.argmax(gamma)]]])
-    motion, err, kappa = check(mech, phi)
+    phi = np.concatenate(
+        [worst_angles(mech, solver), fine[[np.argmin(gamma), np.argmax(gamma)]]]
+    )
+    _, _, kappa = check(mech, phi)
     assert kappa.max() > 1 / math.sin(math.radians(0.5))
     ws = warnings_at(mech, phi)
     assert any("near-singular" in w and "⊥ BA" in w for w in ws)
@@ -211,7 +218,7 @@ def test_crank_slider_lambda_099_is_well_conditioned():
     mech = mech_of(crank_slider(0.099, 0.1, 0.0))
     solver = Solver(mech)
     phi = worst_angles(mech, solver)
-    motion, err, kappa = check(mech, phi)
+    _, err, kappa = check(mech, phi)
     # the rod's steepest angle is arcsin λ: |sin| of the plan lines = √(1 − λ²) ≈ 0.141
     assert 1 / kappa.max() == pytest.approx(math.sqrt(1 - 0.99**2), rel=1e-3)
     assert max(err["velocity"]) < 4 * 8 * EPS
@@ -227,7 +234,7 @@ def test_crank_slider_with_offset_near_the_dead_point(R, L, e):
     mech = mech_of(crank_slider(R, L, e))
     solver = Solver(mech)
     phi = worst_angles(mech, solver)
-    motion, err, kappa = check(mech, phi)
+    _, _, kappa = check(mech, phi)
     # the rod's steepest angle: sin β = (R + e)/L
     assert 1 / kappa.max() == pytest.approx(math.sqrt(1 - ((R + e) / L) ** 2), rel=1e-2)
     ws = warnings_at(mech, phi)
@@ -243,7 +250,7 @@ def test_slotted_link_with_its_pivot_almost_on_the_crank_circle():
     # the block passes 1e-5 m from the pivot B when the crank points down (φ = −90°)
     down = -np.pi / 2 + np.array([-1e-3, -1e-4, -1e-5, 0.0, 1e-5, 1e-4, 1e-3])
     phi = worst_angles(mech, solver, extra=down)
-    motion, err, kappa = check(mech, phi)
+    motion, _, kappa = check(mech, phi)
     assert kappa.max() > 1e4
     ws = warnings_at(mech, phi)
     assert any("close to the rocker's pivot B" in w for w in ws)
@@ -253,7 +260,11 @@ def test_slotted_link_with_its_pivot_almost_on_the_crank_circle():
 
 @pytest.mark.parametrize(
     "text",
-    [fourbar(1e-4, 1.0, 1.0, 1.0), crank_slider(1e-4, 1.0, 0.0), fourbar(1.0, 1e4, 1e4 - 0.5, 1e4)],
+    [
+        fourbar(1e-4, 1.0, 1.0, 1.0),
+        crank_slider(1e-4, 1.0, 0.0),
+        fourbar(1.0, 1e4, 1e4 - 0.5, 1e4),
+    ],
     ids=["fourbar_crank_1e-4", "slider_lambda_1e-4", "fourbar_links_1e4"],
 )
 def test_link_length_ratios_of_ten_thousand(text):
@@ -261,7 +272,7 @@ def test_link_length_ratios_of_ten_thousand(text):
     solver = Solver(mech)
     assert analyse_cycle(mech, solver=solver).full_turn
     phi = worst_angles(mech, solver, fine=720)
-    motion, err, kappa = check(mech, phi)
+    _, err, _ = check(mech, phi)
     assert max(max(v) for v in err.values()) < 1e-13
 
 
@@ -272,9 +283,12 @@ def test_crank_speed_of_ten_thousand():
     ms, mf = Solver(slow).solve(phi), Solver(fast).solve(phi)
     k = 1e4 / 20.0
     for name in ms.velocity:
-        np.testing.assert_allclose(mf.velocity[name], k * ms.velocity[name], rtol=1e-14, atol=1e-9)
-        np.testing.assert_allclose(mf.acceleration[name], k * k * ms.acceleration[name],
-                                   rtol=1e-14, atol=1e-6)
+        np.testing.assert_allclose(
+            mf.velocity[name], k * ms.velocity[name], rtol=1e-14, atol=1e-9
+        )
+        np.testing.assert_allclose(
+            mf.acceleration[name], k * k * ms.acceleration[name], rtol=1e-14, atol=1e-6
+        )
     err = reference.max_rel_error(mf, reference.reference(fast, phi, motion=mf))
     assert err["max"] < 1e-14
 
@@ -285,7 +299,7 @@ def test_linkage_that_cannot_make_a_full_turn():
     cyc = analyse_cycle(mech, n_positions=12, solver=solver)
     assert not cyc.full_turn and "cannot make a full turn" in cyc.notes[0]
     phi = worst_angles(mech, solver)
-    motion, err, kappa = check(mech, phi)
+    _, _, kappa = check(mech, phi)
     assert kappa.max() > 1 / WARN_SINE
     ws = warnings_at(mech, np.array(cyc.positions))
     assert len(ws) == 2 and all("group 2–3 (RRR)" in w for w in ws)
@@ -318,7 +332,7 @@ def jumps(motion, omega1: float) -> float:
 
 
 CONTINUITY = {
-    **{name: None for name in SCENES},
+    **dict.fromkeys(SCENES),
     "transmission": transmission(0.3, 179.7),
     "slider_large_offset": crank_slider(0.1, 0.2, 0.0999),
 }
@@ -337,7 +351,9 @@ def test_positions_are_continuous_over_a_fine_grid(name):
         mech = mech_of(CONTINUITY[name])
         lo, hi, full = 0.0, 2 * np.pi, True
     n = 20_000
-    phi = np.linspace(lo, hi, n + 1)  # closes the turn: the last angle is the first again
+    phi = np.linspace(
+        lo, hi, n + 1
+    )  # closes the turn: the last angle is the first again
     motion = Solver(mech).solve(phi)
     assert motion.valid.all()
     assert jumps(motion, mech.driver.omega) < 1.05
@@ -356,8 +372,12 @@ def test_the_continuity_check_catches_a_flipped_branch():
     half = phi < np.pi
     mixed = replace(
         keep,
-        position={k: np.where(half, keep.position[k], flip.position[k]) for k in keep.position},
-        velocity={k: np.where(half, keep.velocity[k], flip.velocity[k]) for k in keep.velocity},
+        position={
+            k: np.where(half, keep.position[k], flip.position[k]) for k in keep.position
+        },
+        velocity={
+            k: np.where(half, keep.velocity[k], flip.velocity[k]) for k in keep.velocity
+        },
     )
     assert jumps(keep, mech.driver.omega) < 1.05
     assert jumps(mixed, mech.driver.omega) > 100
