@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import cmath
 import math
+import re
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -25,6 +26,7 @@ from drawing.labels import LabelRequest, obstacles_of, place_labels, text_box, t
 from drawing.scene import (
     Arrow,
     Circle,
+    Group,
     Hatch,
     Item,
     Polyline,
@@ -126,8 +128,39 @@ def _markup(name: str) -> str:
     return name
 
 
+def notation(s: str) -> str:
+    """Engine notation as Text markup: ``V_A3A`` → ``V_{A3A}``, ``a^n_A3B`` → ``a^n_{A3B}``."""
+    return re.sub(r"_([A-Za-z0-9]{2,})", r"_{\1}", s).replace("∥", "||")
+
+
+def centred(pos, text: str, size: float, baseline: str = "alphabetic", stretch: float = 1.0) -> Text:
+    """A text centred on ``pos``, written start-anchored (indices keep their place)."""
+    t = Text(pos, text, size=size, anchor="middle", baseline=baseline, markup=True, stretch=stretch)
+    x0 = text_box(t).bounds[0]
+    return Text((x0, pos[1]), text, size=size, anchor="start", baseline=baseline, markup=True,
+                stretch=stretch)
+
+
+def _start_anchored(t: Text) -> Text:
+    """The same text written from its start: SVG renderers misplace indices
+    (``tspan`` with ``dy``) of middle- or end-anchored text."""
+    if t.anchor == "start" or not t.markup or all(r.level == 0 for r in t.runs()):
+        return t
+    from dataclasses import replace
+
+    x0 = text_box(t).bounds[0]
+    return replace(t, pos=(x0, t.pos[1]), anchor="start")
+
+
 def _shift(items: list[Item], dx: float, dy: float) -> list[Item]:
-    return [translate(it, dx, dy) for it in flatten(items)]
+    """Moved by (dx, dy); a group keeps its class, its contents are moved."""
+    from dataclasses import replace
+
+    return [
+        replace(it, items=tuple(_shift(list(it.items), dx, dy))) if isinstance(it, Group)
+        else translate(it, dx, dy)
+        for it in items
+    ]
 
 
 def _bbox(items: list[Item]) -> tuple[float, float, float, float]:
@@ -162,16 +195,21 @@ def _finish(
     ``under`` (equations) below; shift everything to the box (0, 0)–(w, h)."""
     x0, y0, x1, y1 = _bbox(drawing)
     region = shp_box(x0 - pad, y0 - pad, x1 + pad, y1 + pad)
-    placed = place_labels(labels, obstacles_of(drawing), region=region)
-    items = list(drawing) + [p.text for p in placed]
+    placed = place_labels(labels, obstacles_of(drawing), region=region,
+                          distances=(1.0, 2.0, 3.0, 4.5, 6.0, 8.0))
+    items = list(drawing) + [
+        _start_anchored(p.text) for p, r in zip(placed, labels, strict=True)
+        if p.clear or r.markup  # numbers of positions are dropped rather than crowded
+    ]
     x0, y0, x1, y1 = _bbox(items)
     top = y0 - 2.0
-    cap = Text(((x0 + x1) / 2, top), caption, size=CAPTION, anchor="middle", markup=True)
+    cap = centred(((x0 + x1) / 2, top), caption, CAPTION)
+    cap = translate(cap, 0.0, y0 - 1.5 - text_box(cap).bounds[3])
     items.append(cap)
     y = y1 + 2.0
     for line in under:
         y += 3.5 + 2.0
-        items.append(Text((x0, y), line, size=2.5, markup=True, baseline="alphabetic"))
+        items.append(Text((x0, y), notation(line), size=2.5, markup=True, baseline="alphabetic"))
     bx0, by0, bx1, by1 = _bbox(items)
     items = _shift(items, -bx0 + 1, -by0 + 1)
     return View(name, items, bx1 - bx0 + 2, by1 - by0 + 2)
@@ -212,8 +250,6 @@ def plan_view(sol, kind: str, tag: str, lang: str = "ru", label: str | None = No
                 Segment((tx + a * dx, ty + a * dy), (tx + b * dx, ty + b * dy), LineType.THIN)
             )
     # the vectors
-    from drawing.scene import Group
-
     for v in plan.vectors:
         p1, p2 = pts[v.start], pts[v.end]
         if math.dist(p1, p2) < 1e-6:
@@ -430,8 +466,10 @@ def diagrams_view(mech, cycle, lang: str = "ru", width: float = 180.0, height: f
     if np.iscomplexobj(s):
         s = np.abs(s)
     s = s - s[0]
-    v = np.asarray(out.rate(m, mech, "velocity"), dtype=float)
-    a = np.asarray(out.rate(m, mech, "acceleration"), dtype=float)
+    flip = -1.0 if abs(s.min()) > abs(s.max()) else 1.0  # s from the starting extreme, ≥ 0
+    s = flip * s
+    v = flip * np.asarray(out.rate(m, mech, "velocity"), dtype=float)
+    a = flip * np.asarray(out.rate(m, mech, "acceleration"), dtype=float)
     linear = out.kind == "linear"
     w = WORDS[lang]
     units = (w["m"], w["ms"], w["ms2"]) if linear else (w["rad"], w["rads"], w["rads2"])
@@ -457,8 +495,8 @@ def diagrams_view(mech, cycle, lang: str = "ru", width: float = 180.0, height: f
                                   size=2.5, anchor="middle", baseline="hanging", italic=True))
         items.append(Text((2, y - 6), f"{name}, {unit}", size=3.5, baseline="hanging"))
         items.append(Text((width + 6, y_zero - 1.5), "φ", size=3.5, anchor="end"))
-        items.append(Text((width - 2, y - 6), f"μ_{{{name}}} = {num(mu, 3, lang)} {unit}/{w['mm']}",
-                          size=2.5, anchor="end", baseline="hanging", markup=True))
+        items.append(_start_anchored(Text((width - 2, y - 6), f"μ_{{{name}}} = {num(mu, 3, lang)} {unit}/{w['mm']}",
+                          size=2.5, anchor="end", baseline="hanging", markup=True)))
         y += h + 16.0
     mu_phi = 2 * math.pi / width
     caption = f"{w['diagrams']}, μ_φ = {num(mu_phi, 3, lang)} {w['rad']}/{w['mm']}"
@@ -494,15 +532,15 @@ def _table(name: str, caption: str, header: list[str], rows: list[list[str]],
         x = 0.0
         for c, (cell, wd) in enumerate(zip(row, widths, strict=True)):
             size = 2.5 if r else 3.5
-            t = Text((x + wd / 2, r * row_h + row_h / 2), cell, size=size, anchor="middle",
-                     baseline="middle", markup=True)
+            pos = (x + wd / 2, r * row_h + row_h / 2)
+            t = centred(pos, cell, size, "middle")
             bw = text_box(t).bounds
             if bw[2] - bw[0] > wd - 1.5:
-                t = Text(t.pos, cell, size=size, anchor="middle", baseline="middle", markup=True,
-                         stretch=max(0.5, (wd - 1.5) / (bw[2] - bw[0])))
+                t = centred(pos, cell, size, "middle", max(0.5, (wd - 1.5) / (bw[2] - bw[0])))
             items.append(t)
             x += wd
-    items.append(Text((total_w / 2, -2.0), caption, size=CAPTION, anchor="middle", markup=True))
+    cap = centred((total_w / 2, -2.0), caption, CAPTION)
+    items.append(translate(cap, 0.0, -1.5 - text_box(cap).bounds[3]))
     bx0, by0, bx1, by1 = _bbox(items)
     items = _shift(items, -bx0 + 1, -by0 + 1)
     return View(name, items, bx1 - bx0 + 2, by1 - by0 + 2)
@@ -525,7 +563,7 @@ def segments_table_view(sols: list[tuple[str, object]], lang: str = "ru") -> Vie
                     keys.append((kind, v.start, v.end, v.label))
     rows = []
     for kind, a, b, label in keys:
-        row = [f"{a}{b}: {label}"]
+        row = [f"{_markup(a)}{_markup(b)}: {notation(label)}"]
         for _, sol in sols:
             plan = sol.velocity if kind == "v" else sol.acceleration
             if a in plan.points or a == plan.pole:

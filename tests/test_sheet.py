@@ -1,0 +1,134 @@
+"""Sheet 1 (``plans sheet``): sizes, letters, no overlapping texts, vector lengths."""
+
+from __future__ import annotations
+
+import math
+import re
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+from functools import cache
+from pathlib import Path
+
+import pytest
+
+from drawing.cli_sheet import build_sheet
+from drawing.labels import overlaps
+from drawing.scene import Text
+from drawing.svg import to_svg
+from plans.mechanism import load
+from plans.variants import variant, variant_numbers
+
+ROOT = Path(__file__).resolve().parent.parent
+NS = "{http://www.w3.org/2000/svg}"
+SAMPLES = ["press", "fourbar"]
+
+
+def _mech(key):
+    return load(ROOT / "samples" / f"{key}.toml") if isinstance(key, str) else variant(key)
+
+
+@cache
+def _sheet(key, fmt="A1", lang="ru", plans=None):
+    mech = _mech(key)
+    scene, sheet, info = build_sheet(mech, fmt, lang, 12, list(plans) if plans else None)
+    return mech, scene, sheet, info, to_svg(scene, sheet, embed_font=False)
+
+
+def _texts(svg):
+    root = ET.fromstring(svg)
+    return root, ["".join(el.itertext()) for el in root.iter(NS + "text")]
+
+
+def _vectors(root):
+    """class → (start, tip) of every plan vector group on the sheet."""
+    out = {}
+
+    def walk(el, dx, dy):
+        tr = el.get("transform", "")
+        if m := re.match(r"translate\(([-\d.]+) ([-\d.]+)\)", tr):
+            dx, dy = dx + float(m[1]), dy + float(m[2])
+        cls = el.get("class", "")
+        if cls.startswith("vec "):
+            line = el.find(NS + "line")
+            poly = el.find(NS + "polygon")
+            tip = [float(v) for v in poly.get("points").split()[0].split(",")]
+            start = (float(line.get("x1")), float(line.get("y1"))) if line is not None else None
+            out[cls.split()[1]] = (start, (tip[0], tip[1]))
+            return
+        for ch in el:
+            walk(ch, dx, dy)
+
+    walk(root, 0.0, 0.0)
+    return out
+
+
+KEYS = SAMPLES + list(variant_numbers())
+
+
+@pytest.mark.parametrize("key", KEYS)
+def test_sheet_size_letters_and_texts(key):
+    mech, scene, sheet, info, svg = _sheet(key)
+    root, texts = _texts(svg)
+    assert root.get("width") == "841mm" and root.get("height") == "594mm"
+    letters = set()
+    for t in texts:
+        letters.update(x.strip() for x in t.split(","))
+    for _, _, sol in info["solutions"]:
+        for plan in (sol.velocity, sol.acceleration):
+            missing = {n for n in plan.points if n not in letters} - {plan.pole}
+            assert not missing, f"unlettered plan points {missing}"
+            assert plan.pole in letters or any(plan.pole in t for t in texts)
+    items = [it for it in scene.items() if isinstance(it, Text)]
+    assert overlaps(items) == []
+
+
+@pytest.mark.parametrize("key", KEYS)
+def test_vectors_drawn_at_their_segment_lengths(key):
+    mech, scene, sheet, info, svg = _sheet(key)
+    root, _ = _texts(svg)
+    vecs = _vectors(root)
+    checked = 0
+    for tag, _, sol in info["solutions"]:
+        for letter, plan in (("v", sol.velocity), ("a", sol.acceleration)):
+            for v in plan.vectors:
+                mm = plan.mm(v.start, v.end)
+                key_ = f"{letter}-{v.start}{v.end}-{tag}"
+                if mm < 4.0:  # drawn as a head only, no shaft line to measure from
+                    continue
+                start, tip = vecs[key_]
+                assert math.dist(start, tip) == pytest.approx(mm, abs=0.03)
+                checked += 1
+    assert checked >= 4
+
+
+def test_diagrams_only_with_a_stroke():
+    *_, svg = _sheet("fourbar")
+    _, texts = _texts(svg)
+    assert any("Диаграммы не строятся" in t for t in texts)
+    assert not any("Кинематические диаграммы" in t for t in texts)
+    *_, svg = _sheet("press")
+    _, texts = _texts(svg)
+    assert any("Кинематические диаграммы" in t for t in texts)
+
+
+def test_two_positions_english_a1():
+    mech, scene, sheet, info, svg = _sheet("press", "A1", "en", (1, 4))
+    _, texts = _texts(svg)
+    assert any(t.startswith("Velocity plan (1)") for t in texts)
+    assert any(t.startswith("Acceleration plan (4)") for t in texts)
+    assert overlaps([it for it in scene.items() if isinstance(it, Text)]) == []
+
+
+def test_cli_stdout_and_batch(tmp_path):
+    env = {"PYTHONPATH": str(ROOT)}
+    r = subprocess.run([sys.executable, "-m", "plans", "sheet", "samples/press.toml", "-o", "-",
+                        "--title-block", "student=Иванов", "group=ТМ-21"],
+                       cwd=ROOT, capture_output=True, env=env, timeout=60)
+    assert r.returncode == 0, r.stderr.decode()
+    _, texts = _texts(r.stdout.decode())
+    assert "Иванов" in texts and "1:10" in texts
+    r = subprocess.run([sys.executable, "-m", "plans", "sheet", "--variant", "all", "-o", str(tmp_path)],
+                       cwd=ROOT, capture_output=True, env=env, timeout=120)
+    assert r.returncode == 0, r.stderr.decode()
+    assert len(list(tmp_path.glob("*.svg"))) == len(variant_numbers())
