@@ -202,10 +202,14 @@ def parse_toml(text: str, source: str) -> dict:
     except tomllib.TOMLDecodeError as exc:
         raise InputError(source, _toml_problem(str(exc), text)) from None
     except RecursionError:
-        raise InputError(source, "TOML nested too deeply: a mechanism file has at most three levels") from None
+        deep = re.search(r"[\[{](?:\s*[\[{]){50}", text)
+        at = f"line {text.count(chr(10), 0, deep.start()) + 1}: " if deep else ""
+        raise InputError(source, f"{at}TOML nested too deeply: these files need three levels at most") from None
     except (ValueError, OverflowError, MemoryError) as exc:  # e.g. an integer of 5000 digits
-        what = "a number with too many digits" if "digits" in str(exc) else type(exc).__name__
-        raise InputError(source, f"TOML value out of range: {what}") from None
+        long = re.search(r"\d{4000,}", text)
+        at = f"line {text.count(chr(10), 0, long.start()) + 1}: " if long else ""
+        what = "a number of thousands of digits" if "digits" in str(exc) else type(exc).__name__
+        raise InputError(source, f"{at}TOML value out of range: {what}") from None
 
 
 _TOML_AT = re.compile(r"^(?P<msg>.*?)\s*\((?:at line (?P<line>\d+), column (?P<col>\d+)|at end of document)\)$", re.S)
@@ -256,8 +260,9 @@ def _toml_problem(message: str, text: str) -> str:
 
 def _oneline(text: str, limit: int = 200) -> str:
     """``text`` on one line, at most ``limit`` characters."""
-    text = "".join(c if c.isprintable() else repr(c)[1:-1] for c in text)
-    return text if len(text) <= limit else text[: limit - 1] + "…"
+    cut = len(text) > limit
+    text = "".join(c if c.isprintable() else repr(c)[1:-1] for c in text[:limit])
+    return text[: limit - 1] + "…" if cut or len(text) > limit else text
 
 
 def _show(value: Any, limit: int = 40) -> str:
@@ -322,8 +327,10 @@ class _Problems:
                 text = f"line {line}: {text}"
             located.append((line or 0, n, _oneline(text, 400)))
         out: list[str] = []
+        seen: set[str] = set()
         for _, _, text in sorted(located):
-            if text not in out:
+            if text not in seen:
+                seen.add(text)
                 out.append(text)
         if len(out) > MAX_PROBLEMS:
             more = len(out) - MAX_PROBLEMS
@@ -350,9 +357,10 @@ def _number(value: Any, where: str, problems: _Problems, *, positive=False, defa
     if isinstance(value, bool) or not isinstance(value, int | float):
         hint = ""
         if isinstance(value, str):
+            bare = re.sub(r"\s*(°|deg|rad/s|rpm|mm|m)$", "", value.strip()[:40])
             try:
-                float(value.strip()[:40])
-                hint = f": write {value.strip()[:40]} without quotes"
+                float(bare)
+                hint = f": write {bare} without quotes" + (" and units" if bare != value.strip() else "")
             except ValueError:
                 pass
         problems.add(where, f"must be a number, got {_show(value)}{hint}")
@@ -416,10 +424,11 @@ def _text(value: Any, where: str, problems: _Problems, default: str) -> str:
 
 
 def _check_keys(table: dict, allowed: set[str], where: str, problems: _Problems):
-    for key in table:
-        if key not in allowed:
-            path = f"{where}.{_k(key)}" if where else _k(key)
-            problems.add(path, f"unknown key — {_guess(key, allowed)}known: {', '.join(sorted(allowed))}")
+    unknown = [key for key in table if key not in allowed]
+    for n, key in enumerate(unknown):
+        path = f"{where}.{_k(key)}" if where else _k(key)
+        guess = _guess(key, allowed) if n < MAX_PROBLEMS else ""
+        problems.add(path, f"unknown key — {guess}known: {', '.join(sorted(allowed))}")
 
 
 def _guess(key: Any, allowed, cutoff: float = 0.6) -> str:
@@ -977,11 +986,11 @@ def _driver(body, pr: _Problems, links, frame, bad_links, frame_names) -> Driver
         ref = "+x"
     measured = body.get("measured", "ccw")
     if measured not in SENSES:
-        pr.add(where + ".measured", f'{_show(measured, 20)}: must be "ccw" or "cw"')
+        pr.add(where + ".measured", f'{_show(measured, 20)}: must be "ccw" (counter-clockwise) or "cw" (clockwise)')
         measured = "ccw"
     sense = body.get("sense", "ccw")
     if sense not in SENSES:
-        pr.add(where + ".sense", f'{_show(sense, 20)}: must be "ccw" or "cw" (the sign of ω goes here)')
+        pr.add(where + ".sense", f'{_show(sense, 20)}: must be "ccw" (counter-clockwise) or "cw" (clockwise)')
         sense = "ccw"
     rpm = None
     if "omega" in body and "rpm" in body:
