@@ -1,0 +1,518 @@
+"""Validation of input files: located, one line per problem, all problems at once.
+
+The corpus (``tests/corpus``) holds the malformed files with their expected messages; the
+tests here also cover hostile sizes, line location, and the engine's own messages for
+scenes that cannot be solved.
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+import time
+import tomllib
+from pathlib import Path
+
+import pytest
+
+from plans import mechanism
+from plans.errors import AssemblyError, InputError, PlansError
+from plans.kinematics import Solver
+from plans.mechanism import from_dict, load
+from plans.plan import solve_position
+from plans.variants import load_table, variant, variant_numbers
+
+ROOT = Path(__file__).resolve().parent.parent
+CORPUS = ROOT / "tests" / "corpus"
+MECHANISMS = sorted(CORPUS.glob("*.toml"))
+TABLES = sorted((CORPUS / "tables").glob("*.toml"))
+SAMPLES = [ROOT / "samples" / "press.toml", ROOT / "samples" / "fourbar.toml"]
+
+
+def expectations(path: Path) -> list[str]:
+    out = []
+    for line in path.read_bytes().split(b"\n"):
+        if not line.startswith(b"# expect: "):
+            break
+        out.append(line[len(b"# expect: ") :].decode("utf-8"))
+    assert out, f"{path.name}: no '# expect:' header"
+    return out
+
+
+def problems_of(call, path: Path) -> list[str]:
+    with pytest.raises(InputError) as info:
+        call(path)
+    err = info.value
+    assert err.source == str(path)
+    assert str(err).splitlines() == [f"{path}: {p}" for p in err.problems]
+    return err.problems
+
+
+def assert_matches(problems: list[str], expected: list[str]) -> None:
+    assert len(problems) == len(expected), "\n".join(problems)
+    for got, want in zip(problems, expected, strict=True):
+        assert want in got, f"expected {want!r}\n     got {got!r}"
+        assert "\n" not in got and len(got) <= 400
+
+
+# ---------------------------------------------------------------------------------------
+# the corpus
+# ---------------------------------------------------------------------------------------
+
+
+def test_corpus_is_large_enough():
+    assert len(MECHANISMS) + len(TABLES) >= 50
+
+
+@pytest.mark.parametrize("path", MECHANISMS, ids=lambda p: p.stem)
+def test_corpus_mechanism(path):
+    assert_matches(problems_of(load, path), expectations(path))
+
+
+@pytest.mark.parametrize("path", TABLES, ids=lambda p: p.stem)
+def test_corpus_table(path):
+    assert_matches(problems_of(load_table, path), expectations(path))
+
+
+@pytest.mark.parametrize("path", SAMPLES, ids=lambda p: p.stem)
+def test_samples_stay_valid(path):
+    load(path)
+
+
+def test_scenes_and_builtin_variants_stay_valid():
+    from scenes import SCENES
+
+    for scene in SCENES.values():
+        scene.mechanism()
+    for n in variant_numbers():
+        variant(n)
+
+
+# ---------------------------------------------------------------------------------------
+# located messages
+# ---------------------------------------------------------------------------------------
+
+FOURBAR = (ROOT / "samples" / "fourbar.toml").read_text("utf-8")
+
+
+def _problems_of_text(tmp_path, text: str, name: str = "m.toml") -> list[str]:
+    path = tmp_path / name
+    path.write_text(text, "utf-8")
+    return problems_of(load, path)
+
+
+def test_several_problems_are_reported_at_once_in_line_order(tmp_path):
+    text = (
+        FOURBAR.replace("A = [0.0, 0.0]", 'A = [0.0, "0"]')
+        .replace("angle_deg = 40", "angle_deg = 40\nfrom = 'north'")
+        .replace("points = { C = 0.1025, S3 = 0.05125 }", "points = { C = -0.1025 }")
+    )
+    lines = text.split("\n")
+    where = [lines.index(s) + 1 for s in ('A = [0.0, "0"]', "from = 'north'", "points = { C = -0.1025 }")]
+    got = _problems_of_text(tmp_path, text)
+    assert [p.split(":")[0] for p in got] == [f"line {n}" for n in where]
+    assert "frame.A[1]" in got[0] and "driver.from" in got[1] and "negative length" in got[2]
+
+
+def test_dotted_quoted_and_inline_keys_are_located(tmp_path):
+    text = """
+[frame]
+"O" = [0.0, 0.0]
+[driver]
+angle_deg = 10
+omega = 5
+[links.1]
+axis = ["O", "A"]
+points.A = 0.1
+[links."2"]
+axis = ["A", "B"]
+points = { B = 0.3,
+   C = "far" }
+"""
+    text = text.replace("points = { B = 0.3,\n   C = \"far\" }", "points = { B = 0.3, C = \"far\" }")
+    got = _problems_of_text(tmp_path, text)
+    assert got[0].startswith('line 12: links.2.points.C: must be a number, got "far"')
+
+
+def test_problems_in_arrays_of_tables_point_at_their_element(tmp_path):
+    text = (ROOT / "samples" / "press.toml").read_text("utf-8")
+    text = text.replace("guide = { link = 0, through = [0.0, 0.35], angle_deg = 0 }",
+                        "guide = { link = 0, through = [0.0, 0.35], angle_deg = [0] }")
+    (got,) = _problems_of_text(tmp_path, text)
+    line = text.split("\n").index("guide = { link = 0, through = [0.0, 0.35], angle_deg = [0] }") + 1
+    assert got.startswith(f"line {line}: sliders[1].guide.angle_deg: must be a number")
+
+
+def test_multiline_strings_and_arrays_do_not_confuse_the_locator(tmp_path):
+    text = FOURBAR.replace(
+        'name = "Four-bar linkage"',
+        'name = """Four-bar\n[links.9]\nlinkage"""',
+    ).replace('trace = ["E"]', 'trace = [\n  "E",  # the coupler point\n  "Z",\n]')
+    (got,) = _problems_of_text(tmp_path, text)
+    line = text.split("\n").index('  "Z",') + 1
+    assert got.startswith(f"line {line}: trace[1]: unknown point \"Z\"")
+
+
+def test_from_dict_without_text_gives_key_paths():
+    data = tomllib.loads(FOURBAR)
+    data["links"]["3"]["points"]["C"] = 0
+    with pytest.raises(InputError) as info:
+        from_dict(data, "dict")
+    assert info.value.problems == [
+        'links.3.points.C: zero-length link: the axis end "C" is at the origin "D"; '
+        "give the length DC in metres"
+    ]
+
+
+def test_validation_does_not_change_its_input():
+    data = tomllib.loads((ROOT / "samples" / "press.toml").read_text("utf-8"))
+    data["links"]["3"]["points"]["Q"] = "x"
+    before = copy.deepcopy(data)
+    with pytest.raises(InputError):
+        from_dict(data)
+    assert data == before
+
+
+def test_toml_errors_carry_their_line(tmp_path):
+    text = FOURBAR.replace("rpm = 149.2", "rpm = 149,2")
+    (got,) = _problems_of_text(tmp_path, text)
+    line = text.split("\n").index("rpm = 149,2") + 1
+    assert got.startswith(f"line {line}, column 10: TOML syntax error:")
+
+
+def test_duplicate_key_names_both_lines(tmp_path):
+    text = FOURBAR.replace("D = [-0.135, 0.0]", "D = [-0.135, 0.0]\nD = [-0.2, 0.0]")
+    (got,) = _problems_of_text(tmp_path, text)
+    first = text.split("\n").index("D = [-0.135, 0.0]") + 1
+    assert got == (
+        f"line {first + 1}: TOML syntax error: frame.D is given twice (first at line {first}): "
+        "each name once"
+    )
+
+
+def test_a_byte_order_mark_is_accepted(tmp_path):
+    path = tmp_path / "bom.toml"
+    path.write_bytes(b"\xef\xbb\xbf" + FOURBAR.encode())
+    assert load(path).name == "Four-bar linkage"
+
+
+# ---------------------------------------------------------------------------------------
+# hostile sizes: refused with a message, quickly, without exhausting memory
+# ---------------------------------------------------------------------------------------
+
+
+def _quick(fn, limit=2.0):
+    t0 = time.perf_counter()
+    with pytest.raises(InputError) as info:
+        fn()
+    assert time.perf_counter() - t0 < limit
+    lines = str(info.value).splitlines()
+    assert all(len(line) < 600 for line in lines), max(map(len, lines))
+    return info.value
+
+
+def test_a_file_larger_than_a_megabyte_is_not_read(tmp_path):
+    path = tmp_path / "big.toml"
+    path.write_bytes(b"# " + b"x" * 10_000_000 + b"\n")
+    err = _quick(lambda: load(path))
+    assert err.problems == ["the file is larger than 1 MB; a mechanism file is a few KB"]
+
+
+@pytest.mark.skipif(not Path("/dev/zero").exists(), reason="no /dev/zero")
+def test_an_endless_input_is_not_read_to_its_end():
+    err = _quick(lambda: load("/dev/zero"))
+    assert "larger than 1 MB" in err.problems[0]
+
+
+def test_a_folder_or_a_missing_file(tmp_path):
+    assert _quick(lambda: load(tmp_path)).problems == ["is a folder, not a file"]
+    err = _quick(lambda: load(tmp_path / "nope.toml"))
+    assert err.problems == ["cannot read the file: No such file or directory"]
+
+
+def test_a_ten_megabyte_string_is_not_echoed():
+    data = tomllib.loads(FOURBAR)
+    big = "x" * 10_000_000
+    data["name"] = big
+    data["assembly"]["C"] = big
+    data["links"]["2"]["name"] = big
+    data[big] = 1
+    data["frame"]["O" + big] = [0, 0]
+    err = _quick(lambda: from_dict(data, "big"))
+    assert len(err.problems) == 5
+
+
+@pytest.mark.parametrize("where", ["frame", "link", "links", "trace"])
+def test_a_million_of_anything_is_refused(where):
+    data = tomllib.loads(FOURBAR)
+    n = 1_000_000
+    if where == "frame":
+        data["frame"] = {f"F{i}": [0.0, float(i)] for i in range(n)}
+    elif where == "link":
+        data["links"]["2"]["points"] = {f"S{i}": 0.1 for i in range(n)}
+    elif where == "links":
+        link = {"axis": ["A", "B"], "points": {"B": 0.1}}
+        data["links"] = {str(i): link for i in range(1, n // 10)}
+    else:
+        data["trace"] = ["E"] * n
+    err = _quick(lambda: from_dict(data, "million"), limit=5.0)
+    assert any("at most" in p for p in err.problems), err.problems
+
+
+@pytest.mark.parametrize(
+    ("value", "message"),
+    [
+        (10**300, "an integer of 301 digits is out of range: at most 1e+06 m"),
+        (10**5000, "an integer of thousands of digits is out of range"),
+        (1e300, "1e+300 is out of range: at most 1e+06 m"),
+        (-math.inf, "-inf is out of range"),
+        (math.nan, "nan is not a number"),
+        (True, "must be a number, got True"),
+    ],
+    ids=["int-301-digits", "int-5001-digits", "1e300", "-inf", "nan", "bool"],
+)
+def test_absurd_numbers(value, message):
+    data = tomllib.loads(FOURBAR)
+    data["frame"]["D"] = [value, 0.0]
+    err = _quick(lambda: from_dict(data, "n"))
+    assert message in err.problems[0]
+
+
+def test_tiny_coordinates_are_zero_but_tiny_links_are_refused():
+    data = tomllib.loads(FOURBAR)
+    data["frame"]["A"] = [1e-300, -5e-324]  # harmless: a computed 0
+    from_dict(data)
+    data["links"]["1"]["points"]["B"] = 1e-300
+    err = _quick(lambda: from_dict(data, "n"))
+    assert "link length 1e-300 m: zero or too short" in err.problems[0]
+
+
+def test_the_number_of_reported_problems_is_capped():
+    data = tomllib.loads(FOURBAR)
+    for i in range(10_000):
+        data[f"junk{i}"] = i
+    err = _quick(lambda: from_dict(data, "junk"))
+    assert len(err.problems) == mechanism.MAX_PROBLEMS + 1
+    assert err.problems[-1] == "… and 9950 more problems"
+
+
+def test_control_characters_never_break_a_message_into_lines():
+    data = tomllib.loads(FOURBAR)
+    data["frame"]["O\nX"] = [0, 0]
+    data["trace"] = ["E\r\nplans solve: fake"]
+    data["driver"]["from"] = "\x1b[31mred"
+    err = _quick(lambda: from_dict(data, "ctl"))
+    assert len(str(err).splitlines()) == len(err.problems) == 3
+    assert all("\x1b" not in p for p in err.problems)
+
+
+def test_deep_nesting_in_a_dict_is_reported_not_a_crash():
+    deep: list = []
+    for _ in range(100_000):
+        deep = [deep]
+    data = tomllib.loads(FOURBAR)
+    data["trace"] = deep
+    err = _quick(lambda: from_dict(data, "deep"))
+    assert err.problems == ['trace[0]: must be a point name, e.g. "C", got a list of 1']
+
+
+def test_variant_table_limits(tmp_path):
+    row = '[[variant]]\nn = {}\nkind = "crank-slider"\nAB = 0.05\nBC = 0.15\nphi_deg = 15\nrpm = 100\n'
+    rows = "".join(row.format(i) for i in range(10_001))
+    path = tmp_path / "t.toml"
+    path.write_text(rows)
+    err = _quick(lambda: load_table(path))
+    assert err.problems == ["line 1: variant: 10001 rows: at most 10000"]
+    path.write_text(rows.split(row.format(100))[0])
+    with pytest.raises(InputError) as info:
+        variant(5000, path)
+    assert info.value.problems == ["variant 5000 is not in the table (it has 0…99, 100 rows)"]
+
+
+def test_public_api_is_unchanged():
+    for name in ("load", "from_dict", "Mechanism", "Link", "Guide", "Slider", "Driver"):
+        assert hasattr(mechanism, name)
+    assert mechanism.REFERENCES == {"+x": 0.0, "+y": 90.0, "-x": 180.0, "-y": 270.0}
+    assert mechanism.SENSES == {"ccw": 1.0, "cw": -1.0}
+    m = from_dict(tomllib.loads(FOURBAR), "f")
+    assert m.assembly == {"C": "above BD"} and m.output == "C" and m.trace == ("E",)
+
+
+def test_guide_direction_as_a_vector_equals_its_angle():
+    text = (ROOT / "samples" / "press.toml").read_text("utf-8")
+    a = from_dict(tomllib.loads(text))
+    b = from_dict(tomllib.loads(text.replace("angle_deg = 0 }", "direction = [2.0, 0.0] }")))
+    assert a.sliders == b.sliders
+
+
+# ---------------------------------------------------------------------------------------
+# the engine's messages for scenes that cannot be solved
+# ---------------------------------------------------------------------------------------
+
+PRESS = (ROOT / "samples" / "press.toml").read_text("utf-8")
+
+
+def engine_error(text: str) -> PlansError:
+    mech = from_dict(tomllib.loads(text), "scene")
+    with pytest.raises(PlansError) as info:
+        solve_position(mech, solver=Solver(mech))
+    msg = str(info.value)
+    assert "\n" not in msg and "nan" not in msg.lower()
+    return info.value
+
+
+def test_unreachable_angle_names_group_range_and_gap():
+    err = engine_error(FOURBAR.replace("angle_deg = 40", "angle_deg = 180"))
+    assert isinstance(err, AssemblyError)
+    assert str(err).startswith(
+        "group 2–3 (RRR) cannot be assembled at φ1 = 180°: needs BD within [0.1075, 0.3125] m, misses by "
+    )
+
+
+def test_hints_that_fit_neither_branch_are_input_errors():
+    err = engine_error(PRESS.replace('D = "right of C"', 'D = "below C"'))
+    assert isinstance(err, InputError)
+    assert "fit neither assembly of group 4–5 (RRP)" in str(err)
+
+
+def test_near_dead_point_is_a_warning():
+    # crank-slider with the rod as long as the crank: at φ1 = 90° the rod stands on the
+    # guide, the plan's two lines (⊥ BA, ∥ x-x) are parallel; at 89° they meet at 1°
+    text = """
+[frame]
+O = [0.0, 0.0]
+[driver]
+angle_deg = 89
+omega = 12
+[links.1]
+axis = ["O", "A"]
+points = { A = 0.1 }
+[links.2]
+axis = ["A", "B"]
+points = { B = 0.1 }
+[links.3]
+points = { B = 0 }
+[[sliders]]
+link = 3
+guide = { link = 0, through = [0.0, 0.0], angle_deg = 0 }
+[assembly]
+B = "right of A"
+"""
+    sol = solve_position(from_dict(tomllib.loads(text), "dead"))
+    (warning,) = sol.warnings
+    assert warning.startswith("group 2–3 (RRP) at φ1 = 89°: near-singular, the lines ⊥ BA and ∥ x-x meet at 1°")
+
+
+PARALLEL_PRP = """
+[frame]
+O = [0.0, 0.0]
+[driver]
+angle_deg = 0
+omega = 6
+[links.1]
+axis = ["O", "A"]
+points = { A = 0.1 }
+[links.2]
+points = { C = 0 }
+[links.3]
+points = { C = 0 }
+[[sliders]]
+link = 2
+guide = { link = 1 }
+[[sliders]]
+link = 3
+guide = { link = 0, through = [0.0, 0.2], angle_deg = 0 }
+"""
+
+PARALLEL_RPP = """
+[frame]
+O = [0.0, 0.0]
+[driver]
+angle_deg = 35
+omega = 10
+[links.1]
+axis = ["O", "A"]
+points = { A = 0.1 }
+[links.2]
+points = { A = 0 }
+[links.3]
+axis = ["D", "E"]
+points = { E = 0.3 }
+[[sliders]]
+link = 2
+guide = { link = 3, angle_deg = 0 }
+[[sliders]]
+link = 3
+point = "D"
+guide = { link = 0, through = [0.0, 0.0], angle_deg = 0 }
+"""
+
+TANGENT_RRR = """
+[frame]
+O = [0.0, 0.0]
+D = [0.3, 0.0]
+[driver]
+angle_deg = 0
+omega = 10
+[links.1]
+axis = ["O", "A"]
+points = { A = 0.05 }
+[links.2]
+axis = ["A", "B"]
+points = { B = 0.1 }
+[links.3]
+axis = ["D", "B"]
+points = { B = 0.15 }
+[assembly]
+B = "above OD"
+"""
+
+RPR_PIVOT_ON_PIN = """
+[frame]
+O = [0.0, 0.0]
+B = [0.1, 0.0]
+[driver]
+angle_deg = 0
+omega = 8
+[links.1]
+axis = ["O", "A"]
+points = { A = 0.1 }
+[links.2]
+points = { A = 0 }
+[links.3]
+axis = ["B", "C"]
+points = { C = 0.5 }
+[[sliders]]
+link = 2
+guide = { link = 3 }
+"""
+
+
+@pytest.mark.xfail(strict=True, reason="engine: parallel guides (PRP, RPP) say 'misses by 1 m', "
+                   "a placeholder gap; should say the guides are parallel, at which angle")
+@pytest.mark.parametrize("text", [PARALLEL_PRP, PARALLEL_RPP], ids=["PRP", "RPP"])
+def test_parallel_guides_are_named_without_a_made_up_gap(text):
+    msg = str(engine_error(text))
+    assert "parallel" in msg and "misses by 1 m" not in msg
+
+
+@pytest.mark.xfail(strict=True, reason="engine: exact tangency (a dead point at the reach limit) "
+                   "is 'cannot be assembled … misses by 0 m'; it is a singular position")
+def test_exact_reach_limit_is_a_dead_point_not_a_zero_miss():
+    msg = str(engine_error(TANGENT_RRR))
+    assert "misses by 0 m" not in msg and ("singular" in msg or "dead point" in msg)
+
+
+@pytest.mark.xfail(strict=True, reason="engine: RPR with the guide's pivot on the block's pin "
+                   "says 'needs B ≠ A, misses by 0 m'")
+def test_rpr_pivot_on_the_pin_is_explained():
+    msg = str(engine_error(RPR_PIVOT_ON_PIN))
+    assert "misses by 0 m" not in msg
+
+
+@pytest.mark.xfail(strict=True, reason="engine: a hint that picks a branch of an earlier group "
+                   "(S3 = 'right of C' flips the rocker) makes a later group fail with a message "
+                   "that does not mention the hint")
+def test_a_hint_that_makes_a_later_group_fail_is_named():
+    msg = str(engine_error(PRESS.replace('D = "right of C"', 'D = "right of C"\nS3 = "right of C"')))
+    assert "S3" in msg
