@@ -148,7 +148,13 @@ def render(mech, args) -> str:
             t.strip().lstrip("-").isdigit() for t in args.plans.split(",") if t.strip()) else None
         if plans is None:
             raise InputError("--plans", f"{args.plans!r} is not a list of position numbers like 1,4")
-    scene, sheet, _ = build_sheet(mech, args.format, args.lang, args.positions, plans, args.title_block)
+    from drawing.layout import LayoutError
+
+    try:
+        scene, sheet, _ = build_sheet(mech, args.format, args.lang, args.positions, plans,
+                                      args.title_block)
+    except LayoutError as exc:
+        raise InputError("--format", str(exc)) from None
     return to_svg(scene, sheet, title=mech.name)
 
 
