@@ -71,7 +71,7 @@ def mechanism_from(args):
     if args.variant is not None:
         text = str(args.variant).strip()
         if not re.fullmatch(r"[+-]?\d{1,9}", text):
-            raise InputError("command line", f"--variant: {_arg(args.variant)} is not a variant number (0, 1, 2…)")
+            raise InputError("command line", f"--variant: {_arg(args.variant, 30)} is not a variant number (0, 1, 2…)")
         mech = variants.variant(int(text), args.table)
     else:
         mech = mechanism.load(args.file)
@@ -86,10 +86,10 @@ def mechanism_from(args):
 _INPUTS: list[str] = []
 
 
-def _arg(value) -> str:
+def _arg(value, limit: int = 200) -> str:
     """A command-line value for a message: one line, cut short."""
-    text = "".join(c if c.isprintable() else "?" for c in str(value))
-    return repr(text if len(text) <= 60 else text[:59] + "…")
+    text = "".join(c if c.isprintable() else "?" for c in str(value)[: limit + 1])
+    return repr(text if len(text) <= limit else text[: limit - 1] + "…")
 
 
 def _same_file(a, b) -> bool:
