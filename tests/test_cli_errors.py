@@ -1,0 +1,387 @@
+"""The command line on bad input and failures: exit status, one line per problem, no
+traceback, and no file lost (never an input written, never a half-written output)."""
+
+from __future__ import annotations
+
+import os
+import stat
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from plans import cli
+from plans.cli import main
+
+ROOT = Path(__file__).resolve().parent.parent
+CORPUS = ROOT / "tests" / "corpus"
+PRESS = ROOT / "samples" / "press.toml"
+
+
+def expectations(path: Path) -> list[str]:
+    out = []
+    for line in path.read_bytes().split(b"\n"):
+        if not line.startswith(b"# expect: "):
+            break
+        out.append(line[len(b"# expect: ") :].decode("utf-8"))
+    return out
+
+
+def run(capsys, *argv):
+    code = main([str(a) for a in argv])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def assert_clean_failure(err: str, command: str = "solve") -> list[str]:
+    lines = err.splitlines()
+    assert lines, "no message"
+    assert "Traceback" not in err and "internal error" not in err
+    assert all(line.startswith(f"plans {command}: ") for line in lines), err
+    return lines
+
+
+# ---------------------------------------------------------------------------------------
+# every malformed input: exit 2, its messages, nothing written
+# ---------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("path", sorted(CORPUS.glob("*.toml")), ids=lambda p: p.stem)
+def test_corpus_through_the_cli(capsys, tmp_path, path):
+    out = tmp_path / "out.txt"
+    code, stdout, err = run(capsys, "solve", path, "-o", out)
+    assert code == 2 and stdout == ""
+    lines = assert_clean_failure(err)
+    want = expectations(path)
+    assert len(lines) == len(want), err
+    for line, expected in zip(lines, want, strict=True):
+        assert line.startswith(f"plans solve: {path}: ") and expected in line
+    assert not out.exists() and list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("path", sorted((CORPUS / "tables").glob("*.toml")), ids=lambda p: p.stem)
+def test_table_corpus_through_the_cli(capsys, path):
+    code, stdout, err = run(capsys, "solve", "--variant", "0", "--table", path)
+    assert code == 2 and stdout == ""
+    lines = assert_clean_failure(err)
+    want = expectations(path)
+    assert len(lines) == len(want), err
+    for line, expected in zip(lines, want, strict=True):
+        assert line.startswith(f"plans solve: {path}: ") and expected in line
+
+
+@pytest.mark.parametrize("command", ["report", "cycle", "sheet"])
+@pytest.mark.parametrize("name", ["many_problems", "toml_truncated", "garbage_bytes", "unknown_point_in_axis"])
+def test_other_commands_report_bad_files_the_same_way(capsys, tmp_path, command, name):
+    if command not in cli.build_parser()._subparsers._group_actions[0].choices:
+        pytest.skip(f"plans {command} is not built yet")
+    path = CORPUS / f"{name}.toml"
+    code, _, err = run(capsys, command, path, "-o", tmp_path / "out")
+    assert code == 2
+    lines = assert_clean_failure(err, command)
+    assert len(lines) == len(expectations(path))
+    assert list(tmp_path.iterdir()) == []
+
+
+# ---------------------------------------------------------------------------------------
+# never into an input; an existing output replaced only by a complete one
+# ---------------------------------------------------------------------------------------
+
+
+@pytest.fixture
+def press(tmp_path):
+    path = tmp_path / "press.toml"
+    path.write_bytes(PRESS.read_bytes())
+    return path
+
+
+def _forbid_computing(monkeypatch):
+    import plans.kinematics
+
+    def boom(*a, **k):
+        raise AssertionError("computed before refusing the output")
+
+    monkeypatch.setattr(plans.kinematics, "Solver", boom)
+
+
+@pytest.mark.parametrize("how", ["same", "relative", "symlink", "hardlink"])
+def test_output_onto_the_input_is_refused_before_computing(capsys, monkeypatch, tmp_path, press, how):
+    _forbid_computing(monkeypatch)
+    target = press
+    if how == "relative":
+        monkeypatch.chdir(tmp_path)
+        target = Path("..") / tmp_path.name / "press.toml"
+    elif how == "symlink":
+        target = tmp_path / "link.toml"
+        target.symlink_to(press)
+    elif how == "hardlink":
+        target = tmp_path / "hard.toml"
+        os.link(press, target)
+    before = press.read_bytes()
+    code, out, err = run(capsys, "solve", press, "-o", target)
+    assert code == 2 and out == ""
+    (line,) = assert_clean_failure(err)
+    assert "is the input file" in line and "never writes into its inputs" in line
+    assert press.read_bytes() == before
+
+
+def test_output_onto_the_variant_table_is_refused(capsys, monkeypatch, tmp_path):
+    _forbid_computing(monkeypatch)
+    table = tmp_path / "t.toml"
+    table.write_text((ROOT / "plans" / "data" / "table2.toml").read_text("utf-8"), "utf-8")
+    before = table.read_bytes()
+    code, _, err = run(capsys, "solve", "--variant", "3", "--table", table, "-o", table)
+    assert code == 2 and "is the input file" in err
+    assert table.read_bytes() == before
+
+
+def test_write_output_itself_refuses_the_inputs(tmp_path, press):
+    cli._INPUTS[:] = [str(press)]
+    try:
+        with pytest.raises(cli.InputError, match="is the input file"):
+            cli.write_output(str(press), "x")
+    finally:
+        cli._INPUTS.clear()
+
+
+def test_a_failing_run_leaves_the_existing_output_alone(capsys, tmp_path):
+    out = tmp_path / "out.txt"
+    out.write_text("previous result\n")
+    code, _, _ = run(capsys, "solve", CORPUS / "many_problems.toml", "-o", out)
+    assert code == 2
+    assert out.read_text() == "previous result\n"
+    code, _, _ = run(capsys, "solve", ROOT / "samples" / "fourbar.toml", "--angle", "180", "-o", out)
+    assert code == 2  # an unsolvable scene, after the file was read
+    assert out.read_text() == "previous result\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out.txt"]
+
+
+def test_success_replaces_the_output_whole_and_keeps_its_mode(capsys, tmp_path, press):
+    out = tmp_path / "out.txt"
+    out.write_text("x" * 100_000)
+    out.chmod(0o640)
+    code, stdout, _ = run(capsys, "solve", press, "-o", out)
+    assert code == 0 and stdout == ""
+    text = out.read_text("utf-8")
+    assert text.startswith("Slotted-link press") and "x" * 10 not in text
+    assert stat.S_IMODE(out.stat().st_mode) == 0o640
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out.txt", "press.toml"]
+
+
+def test_a_new_output_gets_the_usual_mode_not_the_temporary_files(capsys, tmp_path, press):
+    umask = os.umask(0o022)
+    try:
+        code, _, _ = run(capsys, "solve", press, "-o", tmp_path / "new.txt")
+    finally:
+        os.umask(umask)
+    assert code == 0
+    assert stat.S_IMODE((tmp_path / "new.txt").stat().st_mode) == 0o644
+
+
+@pytest.mark.parametrize("fail_in", ["replace", "fsync"])
+def test_a_write_that_fails_midway_loses_nothing(capsys, monkeypatch, tmp_path, press, fail_in):
+    out = tmp_path / "out.txt"
+    out.write_text("previous result\n")
+
+    def disk_full(*a, **k):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(os, fail_in, disk_full)
+    code, _, err = run(capsys, "solve", press, "-o", out)
+    assert code == 2
+    (line,) = assert_clean_failure(err)
+    assert line == f"plans solve: {out}: cannot write: No space left on device"
+    assert out.read_text() == "previous result\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out.txt", "press.toml"]
+
+
+def test_an_interrupted_write_loses_nothing(capsys, monkeypatch, tmp_path, press):
+    out = tmp_path / "out.txt"
+    out.write_text("previous result\n")
+
+    def interrupt(*a, **k):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(os, "fsync", interrupt)
+    code, _, err = run(capsys, "solve", press, "-o", out)
+    assert code == 130 and err == "plans solve: interrupted\n"
+    assert out.read_text() == "previous result\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out.txt", "press.toml"]
+
+
+@pytest.mark.parametrize(
+    ("target", "message"),
+    [
+        ("{tmp}", "{tmp}: is a folder: give a file name"),
+        ("{tmp}/missing/out.txt", "{tmp}/missing/out.txt: the folder '{tmp}/missing' does not exist"),
+    ],
+    ids=["folder", "missing-folder"],
+)
+def test_outputs_that_cannot_be_files(capsys, tmp_path, press, target, message):
+    target = target.format(tmp=tmp_path)
+    code, _, err = run(capsys, "solve", press, "-o", target)
+    assert code == 2
+    assert assert_clean_failure(err) == [f"plans solve: {message.format(tmp=tmp_path)}"]
+
+
+@pytest.mark.skipif(os.name != "posix" or os.geteuid() == 0, reason="needs a non-root POSIX user")
+def test_an_unwritable_folder_is_bad_input(capsys, tmp_path, press):
+    folder = tmp_path / "ro"
+    folder.mkdir()
+    folder.chmod(0o500)
+    try:
+        code, _, err = run(capsys, "solve", press, "-o", folder / "out.txt")
+    finally:
+        folder.chmod(0o700)
+    assert code == 2 and "cannot write in the folder" in err
+
+
+@pytest.mark.skipif(not Path("/dev/null").exists(), reason="no /dev/null")
+def test_output_to_a_device_is_written_not_replaced(capsys, press):
+    code, _, _ = run(capsys, "solve", press, "-o", "/dev/null")
+    assert code == 0
+    assert stat.S_ISCHR(os.stat("/dev/null").st_mode)
+
+
+# ---------------------------------------------------------------------------------------
+# hostile command-line values
+# ---------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("angle", ["inf", "-inf", "nan", "1e300"])
+def test_absurd_angles(capsys, press, angle):
+    code, _, err = run(capsys, "solve", press, f"--angle={angle}")
+    assert code == 2
+    (line,) = assert_clean_failure(err)
+    assert "--angle" in line and "out of range" in line
+
+
+@pytest.mark.parametrize("value", ["x", "1.5", "9" * 5000, "1\n2", ""])
+def test_bad_variant_numbers(capsys, value):
+    code, _, err = run(capsys, "solve", "--variant", value)
+    assert code == 2
+    (line,) = assert_clean_failure(err)
+    assert "is not a variant number" in line and len(line) < 200
+
+
+def test_an_unknown_variant_lists_the_table(capsys):
+    code, _, err = run(capsys, "solve", "--variant", "99")
+    assert code == 2
+    assert err == (
+        "plans solve: Table 2 (built in): variant 99 is not in the table "
+        "(it has 0, 1, 2, 3, 4, 5, 6, 7, 8, 9)\n"
+    )
+
+
+def test_neither_or_both_sources(capsys, press):
+    for argv in (["solve"], ["solve", press, "--variant", "1"]):
+        code, _, err = run(capsys, *argv)
+        assert code == 2
+        assert err == "plans solve: command line: give a mechanism FILE or --variant N (one of them)\n"
+
+
+# ---------------------------------------------------------------------------------------
+# internal errors and the documented exit status
+# ---------------------------------------------------------------------------------------
+
+
+def _break_solve(monkeypatch):
+    import plans.cli_solve
+
+    def broken(args):
+        raise ZeroDivisionError("float division by zero")
+
+    monkeypatch.setattr(plans.cli_solve, "run", broken)
+
+
+def test_an_internal_error_is_one_line_and_exit_3(capsys, monkeypatch, press):
+    _break_solve(monkeypatch)
+    code, out, err = run(capsys, "solve", press)
+    assert code == 3 and out == ""
+    assert err == (
+        "plans solve: internal error: ZeroDivisionError: float division by zero "
+        "(rerun with --debug for the traceback)\n"
+    )
+
+
+def test_debug_shows_the_traceback(monkeypatch, press):
+    _break_solve(monkeypatch)
+    with pytest.raises(ZeroDivisionError):
+        main(["--debug", "solve", str(press)])
+
+
+@pytest.mark.parametrize("argv", [["--help"], ["solve", "--help"]])
+def test_help_documents_the_exit_status(capsys, argv):
+    with pytest.raises(SystemExit) as info:
+        main(argv)
+    assert info.value.code == 0
+    text = " ".join(capsys.readouterr().out.split())
+    assert "exit status: 0 success, 1 a check found deviations, 2 bad input or an unsolvable scene, 3 internal error (rerun with --debug for the traceback)" in text
+
+
+def test_the_readme_documents_the_exit_status():
+    readme = (ROOT / "README.md").read_text("utf-8")
+    for code in ("| 0 |", "| 1 |", "| 2 |", "| 3 |"):
+        assert code in readme
+    assert "--debug" in readme
+
+
+# ---------------------------------------------------------------------------------------
+# as a user runs it: a separate process, nothing but the message on stderr
+# ---------------------------------------------------------------------------------------
+
+
+def plans(*argv, cwd=None):
+    env = dict(os.environ, PYTHONPATH=str(ROOT), PYTHONWARNINGS="default")
+    return subprocess.run(
+        [sys.executable, "-m", "plans", *map(str, argv)],
+        capture_output=True, text=True, env=env, cwd=cwd, timeout=120,
+    )
+
+
+def test_subprocess_many_problems_exit_2_without_traceback():
+    path = CORPUS / "many_problems.toml"
+    proc = plans("solve", path)
+    assert proc.returncode == 2 and proc.stdout == ""
+    lines = proc.stderr.splitlines()
+    assert len(lines) == len(expectations(path)) and "Traceback" not in proc.stderr
+    assert all(line.startswith(f"plans solve: {path}: line ") for line in lines)
+
+
+def test_subprocess_garbage_and_hostile_files(tmp_path):
+    for name, data in (
+        ("zeros.toml", b"\x00" * 5000),
+        ("random.toml", bytes(range(256)) * 40),
+        ("deep.toml", b"x = " + b"[" * 200_000 + b"]" * 200_000),
+        ("digits.toml", b"x = " + b"7" * 100_000),
+    ):
+        path = tmp_path / name
+        path.write_bytes(data)
+        proc = plans("solve", path, "-o", tmp_path / "out.txt")
+        assert proc.returncode == 2, proc.stderr
+        assert "Traceback" not in proc.stderr and len(proc.stderr.splitlines()) == 1
+    assert not (tmp_path / "out.txt").exists()
+
+
+def test_subprocess_output_onto_input_and_success(tmp_path, press):
+    before = press.read_bytes()
+    proc = plans("solve", "press.toml", "-o", "./press.toml", cwd=tmp_path)
+    assert proc.returncode == 2 and "never writes into its inputs" in proc.stderr
+    assert press.read_bytes() == before
+    proc = plans("solve", "press.toml", "-o", "plans.txt", cwd=tmp_path)
+    assert proc.returncode == 0 and proc.stderr == ""
+    assert (tmp_path / "plans.txt").read_text("utf-8").startswith("Slotted-link press")
+
+
+def test_subprocess_internal_error_exit_3_without_traceback(press):
+    script = (
+        "import sys, plans.cli_solve as s, plans.cli as c\n"
+        "def run(args): raise KeyError('boom')\n"
+        "s.run = run\n"
+        f"sys.exit(c.main(['solve', {str(press)!r}]))\n"
+    )
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    proc = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=env, timeout=120)
+    assert proc.returncode == 3
+    assert proc.stderr == "plans solve: internal error: KeyError: 'boom' (rerun with --debug for the traceback)\n"
