@@ -981,15 +981,15 @@ def _driver(body, pr: _Problems, links, frame, bad_links, frame_names) -> Driver
             )
     angle = _number(body.get("angle_deg"), where + ".angle_deg", pr, unit="°")
     ref = body.get("from", "+x")
-    if ref not in REFERENCES:
+    if not isinstance(ref, str) or ref not in REFERENCES:
         pr.add(where + ".from", f'{_show(ref, 20)} is not a reference: one of "+x", "+y", "-x", "-y"')
         ref = "+x"
     measured = body.get("measured", "ccw")
-    if measured not in SENSES:
+    if not isinstance(measured, str) or measured not in SENSES:
         pr.add(where + ".measured", f'{_show(measured, 20)}: must be "ccw" (counter-clockwise) or "cw" (clockwise)')
         measured = "ccw"
     sense = body.get("sense", "ccw")
-    if sense not in SENSES:
+    if not isinstance(sense, str) or sense not in SENSES:
         pr.add(where + ".sense", f'{_show(sense, 20)}: must be "ccw" (counter-clockwise) or "cw" (clockwise)')
         sense = "ccw"
     rpm = None
