@@ -347,14 +347,19 @@ def test_mutated_files_exit_0_or_2_without_traceback(tmp_path, capsys):
     assert 2 in codes
 
 
-PATHS_TO_BREAK = st.sampled_from([
-    ("frame",), ("frame", "O"), ("frame", "B"), ("links",), ("links", "1"), ("links", "3"),
-    ("links", "3", "axis"), ("links", "3", "points"), ("links", "2", "points", "A"),
-    ("links", "1", "points", "A"), ("driver",), ("driver", "link"), ("driver", "omega"),
-    ("driver", "angle_deg"), ("sliders",), ("sliders", 0), ("sliders", 1, "guide"),
-    ("sliders", 1, "guide", "through"), ("sliders", 0, "link"), ("assembly",),
-    ("assembly", "D"), ("scales", "mu_l"), ("trace",), ("output",), ("title",),
-])
+def _paths(node, prefix=()):
+    """Every key path of a parsed file: ("driver", "sense"), ("sliders", 1, "guide"), …"""
+    out = [prefix] if prefix else []
+    items = node.items() if isinstance(node, dict) else enumerate(node) if isinstance(node, list) else ()
+    for key, value in items:
+        out += _paths(value, (*prefix, key))
+    return out
+
+
+PATHS_TO_BREAK = st.sampled_from(
+    sorted({p for text in SEEDS.values() for p in _paths(tomllib.loads(text))}, key=repr)
+)
+
 
 ANY_VALUE = st.recursive(
     st.none() | st.booleans() | st.integers() | st.floats() | st.text(max_size=20)
@@ -366,7 +371,7 @@ ANY_VALUE = st.recursive(
 
 @st.composite
 def broken_dicts(draw):
-    data = tomllib.loads(SEEDS["press"])
+    data = tomllib.loads(draw(st.sampled_from(sorted(SEEDS.values()))))
     for _ in range(draw(st.integers(1, 4))):
         path = draw(PATHS_TO_BREAK)
         node = data
