@@ -277,11 +277,14 @@ GARBAGE_VALUES = [
 ]
 
 
+TABLE = (ROOT / "plans" / "data" / "table2.toml").read_text("utf-8")
+
+
 @st.composite
-def mutated(draw):
+def mutated(draw, seeds=tuple(sorted(SEEDS.values()))):
     """A valid file with one to three random mutations, as bytes."""
-    text = draw(st.sampled_from(sorted(SEEDS.values())))
-    names = sorted(set(tomllib.loads(text)["frame"]) | {"A", "C", "D", "S3", "Q"})
+    text = draw(st.sampled_from(seeds))
+    names = ["A", "AB", "AD", "B", "C", "D", "O", "Q", "S3", "n", "rpm"]
     for _ in range(draw(st.integers(1, 3))):
         lines = text.split("\n")
         op = draw(st.sampled_from(["delete", "value", "swap", "garbage", "truncate", "duplicate", "retype"]))
@@ -314,12 +317,13 @@ def mutated(draw):
     return data
 
 
-def _check_cli(tmp: Path, data: bytes, capsys) -> int:
+def _check_cli(tmp: Path, data: bytes, capsys, *, table: bool = False) -> int:
     src = tmp / "in.toml"
     out = tmp / "out.txt"
     out.unlink(missing_ok=True)
     src.write_bytes(data)
-    code = main(["solve", str(src), "-o", str(out)])
+    source = ["--variant", "3", "--table", str(src)] if table else [str(src)]
+    code = main(["solve", *source, "-o", str(out)])
     _stdout, stderr = capsys.readouterr()
     assert code in (0, 2), stderr
     assert "Traceback" not in stderr and "internal error" not in stderr
@@ -356,17 +360,29 @@ def _paths(node, prefix=()):
     return out
 
 
+def test_mutated_variant_tables_exit_0_or_2_without_traceback(tmp_path, capsys):
+    codes = []
+
+    @fuzz(100)
+    @given(mutated(seeds=(TABLE,)))
+    def run(data):
+        codes.append(_check_cli(tmp_path, data, capsys, table=True))
+
+    run()
+    assert 2 in codes
+
+
 PATHS_TO_BREAK = st.sampled_from(
     sorted({p for text in SEEDS.values() for p in _paths(tomllib.loads(text))}, key=repr)
 )
 
 
-ANY_VALUE = st.recursive(
+SCALAR = (
     st.none() | st.booleans() | st.integers() | st.floats() | st.text(max_size=20)
-    | st.sampled_from(["O", "A", "B", "C", "D", "+y", "cw", "above BD", "1"]),
-    lambda inner: st.lists(inner, max_size=3) | st.dictionaries(st.text(max_size=5), inner, max_size=3),
-    max_leaves=6,
+    | st.sampled_from(["O", "A", "B", "C", "D", "+y", "cw", "above BD", "1"])
 )
+NESTED = st.lists(SCALAR, max_size=3) | st.dictionaries(st.text(max_size=5), SCALAR, max_size=3)
+ANY_VALUE = SCALAR | NESTED | st.lists(NESTED, max_size=2)
 
 
 @st.composite
