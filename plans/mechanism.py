@@ -480,8 +480,8 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
     frame_names: set[str] = set()
     raw_frame = data.get("frame")
     if not isinstance(raw_frame, dict) or not raw_frame:
-        got = "" if raw_frame is None else f" (got {_show(raw_frame)})"
-        pr.add("frame", f"missing: the fixed pivots, a table such as [frame] O = [0.0, 0.0]{got}")
+        what = "missing" if raw_frame is None else f"must be a table of fixed points, got {_show(raw_frame)}"
+        pr.add("frame", f"{what}: the fixed pivots, e.g. [frame] O = [0.0, 0.0]")
         raw_frame = {}
     if len(raw_frame) > MAX_FRAME:
         pr.add("frame", f"{len(raw_frame)} fixed points: at most {MAX_FRAME}")
@@ -502,8 +502,8 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
     bad_links: set[int] = set()  # links with a problem of their own: no follow-up messages
     raw_links = data.get("links")
     if not isinstance(raw_links, dict) or not raw_links:
-        got = "" if raw_links is None else f" (got {_show(raw_links)})"
-        pr.add("links", f'missing: the moving links, e.g. [links.1] axis = ["O", "A"]{got}')
+        what = "missing" if raw_links is None else f"must be a table of numbered links, got {_show(raw_links)}"
+        pr.add("links", f'{what}: the moving links, e.g. [links.1] axis = ["O", "A"]')
         raw_links = {}
     if len(raw_links) > MAX_LINKS:
         pr.add("links", f"{len(raw_links)} links: at most {MAX_LINKS} are supported")
@@ -511,8 +511,8 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
     total_points = 0
     for key, body in raw_links.items():
         where = f"links.{_k(key)}"
-        if not (isinstance(key, str) and key.isascii() and key.isdigit() and key == str(int(key))
-                and 0 < int(key) < 1000):
+        if not (isinstance(key, str) and 0 < len(key) <= 3 and key.isascii() and key.isdigit()
+                and key == str(int(key)) and int(key) > 0):
             if key == "0":
                 pr.add(where, "link 0 is the frame: give fixed points in [frame]")
             else:

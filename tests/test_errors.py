@@ -306,6 +306,26 @@ def test_control_characters_never_break_a_message_into_lines():
     assert all("\x1b" not in p for p in err.problems)
 
 
+def test_a_link_numbered_with_thousands_of_digits():
+    data = tomllib.loads(FOURBAR)
+    data["links"]["9" * 5000] = data["links"].pop("3")
+    err = _quick(lambda: from_dict(data, "x"))
+    assert err.problems == [
+        "links.\"99999999999999999999999999999…\": links are numbered 1, 2, 3… up to 999, "
+        "without leading zeros (0 is the frame)"
+    ]
+
+
+def test_sections_of_the_wrong_type_are_not_called_missing():
+    data = tomllib.loads(FOURBAR)
+    data["frame"], data["links"] = [1, 2], "x"
+    err = _quick(lambda: from_dict(data, "x"))
+    assert err.problems[:2] == [
+        "frame: must be a table of fixed points, got a list of 2: the fixed pivots, e.g. [frame] O = [0.0, 0.0]",
+        'links: must be a table of numbered links, got "x": the moving links, e.g. [links.1] axis = ["O", "A"]',
+    ]
+
+
 def test_unhashable_values_where_a_word_is_expected():
     data = tomllib.loads(FOURBAR)
     data["driver"].update({"sense": [], "from": {}, "measured": [1]})
