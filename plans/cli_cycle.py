@@ -169,10 +169,7 @@ def conditioning(mech, motion) -> tuple[Status, ...]:
             label = g.group.label
             r0, r1 = g.velocity.routes
             if not bool(g.valid[k]):
-                errors.append(
-                    f"{label} cannot be assembled at φ1 = {deg:.6g}°: needs {g.admissible}, "
-                    f"misses by {float(g.gap[k]):.6g} m"
-                )
+                errors.append(str(g.failure(k, deg)))
                 figures[label] = math.nan
                 continue
             s = float(sine[k])

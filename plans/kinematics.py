@@ -18,11 +18,11 @@ relative velocity turned by 90° in the sense of the guide's ω).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from .errors import AssemblyError, InputError, SingularPlanError
+from .errors import AssemblyError, InputError, PlansError, SingularPlanError
 from .geometry import circle_circle, circle_line, cross, intersect
 from .mechanism import Guide, Mechanism
 from .structure import DyadKind, Group, Structure, analyse
@@ -113,6 +113,27 @@ class GroupSolution:
     valid: np.ndarray  # bool: the group closes at this angle
     gap: np.ndarray  # how far it is from closing (m); > 0 where it does not close
     admissible: str  # the condition, for messages
+    singular: np.ndarray  # bool: where it does not close, is it a dead point (no miss)?
+    why_singular: str  # what makes it singular, for messages
+
+    def failure(self, k: int, phi_deg: float, note: str = "") -> PlansError:
+        """The error for angle index ``k`` where the group does not close.
+
+        A group that misses (its links do not reach) is an :class:`AssemblyError` with the
+        distance it misses by; one exactly at the limit (links in line, parallel guides,
+        a pivot on the pin) is a dead point: a :class:`SingularPlanError`.
+        """
+        label = self.group.label
+        if bool(self.singular[k]):
+            return SingularPlanError(
+                f"{label} at φ1 = {phi_deg:.6g}°: {self.why_singular}: a singular position "
+                f"(dead point), the plan has no unique solution{note}"
+            )
+        return AssemblyError(
+            f"{label} cannot be assembled at φ1 = {phi_deg:.6g}°: needs {self.admissible}, "
+            f"misses by {float(self.gap[k]):.6g} m{note}",
+            group=label, phi_deg=phi_deg,
+        )
 
 
 @dataclass(frozen=True)
@@ -140,10 +161,6 @@ class Motion:
 
 def coincident_name(point: str, link: int) -> str:
     return f"{point}{link}"
-
-
-def _rel(a: str, b: str) -> str:
-    return f"{a}{b}"
 
 
 class Solver:
@@ -206,6 +223,12 @@ class Solver:
                 coincident[name] = base
         return Motion(phi, states, pos, vel, acc, owner, tuple(solutions), valid, coincident)
 
+    def _solve_upto(self, count: int) -> Motion:
+        """Solve only the first ``count`` groups at the given crank angle (branch choice)."""
+        part = Solver(self.mech, replace(self.structure, groups=self.structure.groups[:count]),
+                      self.sigmas[:count])
+        return part.solve(np.array([self.mech.driver.phi]))
+
     def _fill(self, lid, states, pos, vel, acc, owner):
         st = states[lid]
         for name, local in self.mech.links[lid].points.items():
@@ -231,15 +254,16 @@ class Solver:
 # ---------------------------------------------------------------------------------------
 
 
+def _at_limit(valid, gap, scale):
+    """Where the group does not close only by rounding: it is exactly at its limit."""
+    return ~valid & (gap <= 1e-9 * scale)
+
+
 def _pose_from_two(P, pl, C, cl):
     """Origin and rotor of a link from two world points and their own coordinates."""
     r = (C - P) / (cl - pl)
     r = r / np.abs(r)
     return P - r * pl, r
-
-
-def _check_sine(sine, group: Group, where: str):
-    return sine
 
 
 def _rrr(sv: Solver, g: Group, sigma, states, pos, vel, acc):
@@ -285,6 +309,8 @@ def _rrr(sv: Solver, g: Group, sigma, states, pos, vel, acc):
                      f"a_{C} = a_{P} + a^n_{C}{P} + a^t_{C}{P} = a_{Q} + a^n_{C}{Q} + a^t_{C}{Q}"),
         valid, gap,
         f"{P}{Q} within [{abs(l2 - l3):.6g}, {l2 + l3:.6g}] m",
+        _at_limit(valid, gap, l2 + l3),
+        f"{P}, {C} and {Q} are in line (links {g.a} and {g.b} stretched out or folded)",
     )
     return sol, {}
 
@@ -359,6 +385,7 @@ def _rrp(sv: Solver, g: Group, sigma, states, pos, vel, acc):
             + (f"a_{base} + a^k_{C}{base} + a^r_{C}{base}" if base else f"a_{C}(∥ {gl})"),
         ),
         valid, gap, f"distance from {P} to the guide {gl} ≤ {l2:.6g} m",
+        _at_limit(valid, gap, l2), f"{P}{C} is perpendicular to the guide {gl}",
     )
     extra = {base: (k, C)} if base else {}
     return sol, extra
@@ -416,6 +443,9 @@ def _rpr(sv: Solver, g: Group, sigma, states, pos, vel, acc):
                      f"a_{Q} + a^n_{name}{Q} + a^t_{name}{Q}"),
         valid, gap,
         f"distance {Q}{P} > {abs(e):.6g} m (the guide's offset)" if e else f"{Q} ≠ {P}",
+        _at_limit(valid, gap, max(abs(e), 1.0) if e else 1.0),
+        (f"the guide of link {G} is tangent to the pin {P} at its offset {abs(e):.6g} m from {Q}"
+         if e else f"the pivot {Q} is on the block's pin {P}: the guide's direction is undetermined"),
     )
     return sol, {name: (G, P)}
 
@@ -456,7 +486,8 @@ def _prp(sv: Solver, g: Group, sigma, states, pos, vel, acc):
         g,
         Construction(C, vC, vroute, sine, f"V_{C} = V_{b1 or '0'} + V_{C}{b1 or ''} = V_{b2 or '0'} + V_{C}{b2 or ''}"),
         Construction(C, aC, aroute, sine, f"a_{C} = a_{b1 or '0'} + a^k + a^r = a_{b2 or '0'} + a^k + a^r"),
-        valid, np.where(valid, 0.0, 1.0), "the two guides not parallel",
+        valid, np.zeros(Cw.shape), "the two guides not parallel", ~valid,
+        f"the guides {sa.guide.label} and {sb.guide.label} are parallel: the hinge {C} is not fixed",
     )
     extra = {b: (s.guide.link, C) for b, s in ((b1, sa), (b2, sb)) if b}
     return sol, extra
@@ -506,7 +537,9 @@ def _rpp(sv: Solver, g: Group, sigma, states, pos, vel, acc):
         g,
         Construction(name, vP3, vroute, sine, f"V_{name} = V_{P} + V_{name}{P} = V_{bk or '0'} + V_{name}{bk or ''}"),
         Construction(name, aP3, aroute, sine, f"a_{name} = a_{P} + a^k + a^r = a_{bk or '0'} + a^k + a^r"),
-        valid, np.where(valid, 0.0, 1.0), "the two guides not parallel",
+        valid, np.zeros(Pw.shape), "the two guides not parallel", ~valid,
+        f"the guide {s_in.guide.label} of link {B} is parallel to the guide "
+        f"{s_out.guide.label}: the yoke's position is not fixed",
     )
     extra = {name: (B, P)}
     if bk:
@@ -610,12 +643,12 @@ def choose_branches(mech: Mechanism, structure: Structure) -> tuple[int, ...]:
             continue
         phi = np.degrees(mech.driver.phi)
         if not positions[1].valid[0]:
-            sol = positions[1].groups[i]
-            raise AssemblyError(
-                f"{g.label} cannot be assembled at φ1 = {phi:.6g}°: needs {sol.admissible}, "
-                f"misses by {sol.gap[0]:.6g} m",
-                group=g.label, phi_deg=phi,
-            )
+            earlier = sorted(used - set(mine))
+            note = ""
+            if earlier:
+                asked = ", ".join(f"{k} = {mech.assembly[k]!r}" for k in earlier)
+                note = f" (the groups before it are assembled as the hints {asked} ask: is one of them wrong?)"
+            raise positions[1].groups[i].failure(0, phi, note)
         new = g.C or coincident_name(g.P, g.b)
         key = g.C or next(iter(mech.links[g.b].points))
         if not mine:
@@ -641,18 +674,3 @@ def choose_branches(mech: Mechanism, structure: Structure) -> tuple[int, ...]:
         raise InputError(mech.source, f"assembly.{k}: {k} is not a point of a group with two assemblies")
     return tuple(sigmas)
 
-
-def _solve_upto(self: Solver, count: int) -> Motion:
-    """Solve only the first ``count`` groups at the given crank angle (branch choice)."""
-    full = self.structure
-    from dataclasses import replace
-
-    part = Solver.__new__(Solver)
-    part.mech = self.mech
-    part.structure = replace(full, groups=full.groups[:count])
-    part.sigmas = self.sigmas[:count]
-    with np.errstate(all="ignore"):
-        return part.solve(np.array([self.mech.driver.phi]))
-
-
-Solver._solve_upto = _solve_upto

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .errors import AssemblyError, SingularPlanError
+from .errors import SingularPlanError
 from .kinematics import SINGULAR_SINE, WARN_SINE, Motion, Solver
 from .mechanism import Mechanism
 from .scales import choose_mu, choose_mu_l
@@ -121,11 +121,7 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     deg = np.degrees(phi) % 360
     for g in motion.groups:
         if not g.valid[0]:
-            raise AssemblyError(
-                f"{g.group.label} cannot be assembled at φ1 = {deg:.6g}°: needs "
-                f"{g.admissible}, misses by {g.gap[0]:.6g} m",
-                group=g.group.label, phi_deg=deg,
-            )
+            raise g.failure(0, deg)
     warnings = []
     for g in motion.groups:
         s = float(g.velocity.sine[0])
@@ -283,7 +279,7 @@ class _Builder:
                     val = (points[start].value if start != pole else 0j) + complex(t.value[0])
                     points[tname] = PlanPoint(
                         tname, val,
-                        Source("component", equation=_term_formula(t, self.m), base=start, label=t.label),
+                        Source("component", equation=_term_formula(t), base=start, label=t.label),
                     )
                     vectors.append(PlanVector(start, tname, t.kind, t.label))
                     start = tname
@@ -330,7 +326,7 @@ class _Builder:
             base.append(name)
 
 
-def _term_formula(t, motion: Motion) -> str:
+def _term_formula(t) -> str:
     x, y = t.about
     if t.kind == "normal":
         return f"{t.label} = V_{x}{y}²/l_{x}{y}, directed from {x} to {y}"

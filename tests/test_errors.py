@@ -515,31 +515,22 @@ guide = { link = 3 }
 """
 
 
-@pytest.mark.xfail(strict=True, reason="engine: parallel guides (PRP, RPP) say 'misses by 1 m', "
-                   "a placeholder gap; should say the guides are parallel, at which angle")
 @pytest.mark.parametrize("text", [PARALLEL_PRP, PARALLEL_RPP], ids=["PRP", "RPP"])
 def test_parallel_guides_are_named_without_a_made_up_gap(text):
     msg = str(engine_error(text))
     assert "parallel" in msg and "misses by 1 m" not in msg
 
 
-@pytest.mark.xfail(strict=True, reason="engine: exact tangency (a dead point at the reach limit) "
-                   "is 'cannot be assembled … misses by 0 m'; it is a singular position")
 def test_exact_reach_limit_is_a_dead_point_not_a_zero_miss():
     msg = str(engine_error(TANGENT_RRR))
     assert "misses by 0 m" not in msg and ("singular" in msg or "dead point" in msg)
 
 
-@pytest.mark.xfail(strict=True, reason="engine: RPR with the guide's pivot on the block's pin "
-                   "says 'needs B ≠ A, misses by 0 m'")
 def test_rpr_pivot_on_the_pin_is_explained():
     msg = str(engine_error(RPR_PIVOT_ON_PIN))
     assert "misses by 0 m" not in msg
 
 
-@pytest.mark.xfail(strict=True, reason="engine: a hint that picks a branch of an earlier group "
-                   "(S3 = 'right of C' flips the rocker) makes a later group fail with a message "
-                   "that does not mention the hint")
 def test_a_hint_that_makes_a_later_group_fail_is_named():
     msg = str(engine_error(PRESS.replace('D = "right of C"', 'D = "right of C"\nS3 = "right of C"')))
     assert "S3" in msg
