@@ -24,7 +24,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
 
-from scenes import SCENES  # noqa: E402
+from plans.scenes import SCENES  # noqa: E402
 
 from plans.kinematics import Solver  # noqa: E402
 

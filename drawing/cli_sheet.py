@@ -12,7 +12,6 @@ the engine's segment length.
 
 from __future__ import annotations
 
-import argparse
 import copy
 import math
 import sys

@@ -419,7 +419,7 @@ def positions_view(sol, cycle, motion_all, phis_all, lang: str = "ru") -> View:
     for name in mech.frame:
         items += _support(_sheet(pos[name], mu_l))
     joints = set()
-    for lid, link in mech.links.items():
+    for link in mech.links.values():
         for n in link.points:
             if n in pos and len(mech.links_of(n)) > 1:
                 joints.add(n)
@@ -530,7 +530,7 @@ def _table(name: str, caption: str, header: list[str], rows: list[list[str]],
         items.append(Segment((x, 0), (x, n * row_h), LineType.MAIN))
     for r, row in enumerate([header, *rows]):
         x = 0.0
-        for c, (cell, wd) in enumerate(zip(row, widths, strict=True)):
+        for cell, wd in zip(row, widths, strict=True):
             size = 2.5 if r else 3.5
             pos = (x + wd / 2, r * row_h + row_h / 2)
             t = centred(pos, cell, size, "middle")

@@ -1,7 +1,7 @@
 """``plans bench``: run time per crank position and error against a high-precision reference.
 
 For each bench scene (the two samples and one scene of each dyad kind, from the source
-checkout's ``tests/scenes.py``) and each number N of crank positions (12 … 10⁶), it measures
+built-in scenes, ``plans/scenes.py``) and each number N of crank positions (12 … 10⁶), it measures
 
 * ``vectorized`` — ``Solver.solve`` over the N angles at once (positions, velocities,
   accelerations, ω and ε of everything, with the recorded constructions);
@@ -28,7 +28,8 @@ is a multiple of it, so it is computed once per scene).
 The table goes to stdout (``--json``: a list of rows ``{"scene", "method", "positions",
 "seconds_per_position", "max_rel_error"}``), the error-versus-time chart (log-log SVG,
 written by hand: no plotting library) to ``--chart`` (default ``bench.svg``).
-The bench needs a source checkout (``tests/scenes.py``, ``samples/``) and sympy.
+The bench needs sympy (the ``bench`` extra); the two samples are benched in a source
+checkout, where ``samples/`` is.
 """
 
 from __future__ import annotations
@@ -158,7 +159,8 @@ def run(args) -> int:
     if args.max_positions < 1 or args.ref_angles < 1:
         raise InputError("command line", "--max-positions and --ref-angles must be ≥ 1")
     scenes = load_scenes()
-    names = args.scene or list(BENCH_SCENES)
+    names = args.scene or [n for n in BENCH_SCENES if n in scenes]
+    skipped = [n for n in BENCH_SCENES if n not in scenes]
     missing = [n for n in names if n not in scenes]
     if missing:
         raise InputError(
@@ -186,6 +188,8 @@ def run(args) -> int:
         notes=notes,
         log=log,
     )
+    if skipped and not args.scene:
+        notes.append(f"{', '.join(skipped)}: the samples are benched in a source checkout")
     rows: list[Row] = []
     for name in names:
         rows += bench.scene(name, scenes[name], sizes)
@@ -209,22 +213,11 @@ def run(args) -> int:
 
 
 def load_scenes() -> dict:
-    """``SCENES`` of the checkout's tests/scenes.py (the bench is a development tool)."""
-    import importlib.util
+    """The built-in scenes (plans/scenes.py) that this installation has: the two samples
+    only in a source checkout."""
+    from .scenes import SCENES
 
-    from .errors import InputError
-
-    path = ROOT / "tests" / "scenes.py"
-    if not path.is_file():
-        raise InputError(
-            str(path), "plans bench runs in a source checkout: it needs tests/scenes.py"
-        )
-    spec = importlib.util.spec_from_file_location("_plans_bench_scenes", path)
-    mod = importlib.util.module_from_spec(spec)
-    assert spec.loader is not None
-    sys.modules[spec.name] = mod  # dataclasses look their module up there
-    spec.loader.exec_module(mod)
-    return mod.SCENES
+    return {name: sc for name, sc in SCENES.items() if sc.available}
 
 
 def grid(scene, n: int):

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+import sys
 
 from .cli import add_source, mechanism_from, write_output
 from .fmt import num
@@ -29,8 +30,6 @@ def run(args) -> int:
         text = to_text(sol, analyse_cycle(mech, solver=solver))
     write_output(args.output, text)
     for w in sol.warnings:
-        import sys
-
         print(f"plans solve: warning: {w}", file=sys.stderr)
     return 0
 
@@ -134,7 +133,7 @@ def to_text(sol, cycle=None) -> str:
             else:
                 out.append(f"  swing of link {cycle.output.link}: ψ = {num(math.degrees(cycle.stroke))}°")
             out.append(
-                f"  extreme positions at φ1 = "
+                "  extreme positions at φ1 = "
                 + ", ".join(f"{num(math.degrees(x) % 360)}°" for x in cycle.extremes)
                 + f"; θ = {num(math.degrees(cycle.theta))}°, K = {num(cycle.K)}"
             )

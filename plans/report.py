@@ -274,8 +274,7 @@ def _plan_section(sol: Solution, plan, lang: str, number: int) -> list[str]:
         for r in cons.routes:
             if r.unknown_kind not in ("relative", "tangential"):
                 continue
-            a_, b_ = _pair_of(r.unknown)
-            A, B = _split(sol, a_ + b_)
+            A, B = _split(sol, r.unknown.split("_", 1)[1])  # "V_A3B" → A3, B
             if not A:
                 continue
             link = m.point_link.get(A) if A in m.coincident else _common_link(mech, A, B)
@@ -313,11 +312,6 @@ def _mech_name(sol: Solution, plan_point: str) -> str:
         if plan_name(name) == plan_point:
             return name
     return plan_point.upper()
-
-
-def _pair_of(label: str) -> tuple[str, str]:
-    body = label.split("_", 1)[1]
-    return body, ""
 
 
 def _split(sol: Solution, text: str) -> tuple[str | None, str | None]:

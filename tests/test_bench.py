@@ -7,7 +7,7 @@ import xml.etree.ElementTree as ET
 
 import numpy as np
 import pytest
-from scenes import SCENES
+from plans.scenes import SCENES
 
 from plans import bench, reference
 from plans.cli import main

@@ -25,7 +25,7 @@ from plans import mechanism
 from plans.cli import main
 from plans.kinematics import Solver
 from plans.plan import solve_position
-from scenes import SCENES
+from plans.scenes import SCENES
 
 SAMPLES = Path(__file__).resolve().parents[1] / "samples"
 PRESS = SAMPLES / "press.toml"

@@ -80,7 +80,7 @@ def test_samples_stay_valid(path):
 
 
 def test_scenes_and_builtin_variants_stay_valid():
-    from scenes import SCENES
+    from plans.scenes import SCENES
 
     for scene in SCENES.values():
         scene.mechanism()

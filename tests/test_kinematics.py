@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
-from scenes import SCENES, Scene
+from plans.scenes import SCENES, Scene
 
 from plans.kinematics import Motion, Solver
 from plans.mechanism import Mechanism, from_dict

@@ -19,7 +19,7 @@ import tomllib
 
 import numpy as np
 import pytest
-from scenes import SAMPLES, SCENES
+from plans.scenes import SAMPLES, SCENES
 
 from plans import reference
 from plans.cli_cycle import compute, conditioning

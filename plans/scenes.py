@@ -1,4 +1,5 @@
-"""Test mechanisms covering all five dyad kinds, as TOML texts (the file format users write).
+"""Built-in mechanisms covering all five dyad kinds, as TOML texts (the file format users
+write): the scenes of the tests and of ``plans bench``.
 
 Each scene is a real mechanism that assembles over the crank range given with it; the
 comments give the textbook numbers the tests check (θ: crank angle of the extreme
@@ -15,10 +16,10 @@ from pathlib import Path
 
 import numpy as np
 
-from plans.mechanism import Mechanism, from_dict, load
+from .mechanism import Mechanism, from_dict, load
 
-ROOT = Path(__file__).resolve().parent.parent
-SAMPLES = ROOT / "samples"
+#: the samples of a source checkout; an installed package has the other scenes only
+SAMPLES = Path(__file__).resolve().parent.parent / "samples"
 
 
 @dataclass(frozen=True)
@@ -31,6 +32,10 @@ class Scene:
         None  # the mechanism file; None: ``sample`` is a file in samples/
     )
     sample: str | None = None
+
+    @property
+    def available(self) -> bool:
+        return self.sample is None or (SAMPLES / self.sample).is_file()
 
     @property
     def full_turn(self) -> bool:
