@@ -170,6 +170,10 @@ def run(args) -> int:
     if str(args.variant).strip().lower() == "all" and args.file is None:
         return _batch(args)
     mech = mechanism_from(args)
+    if args.png or args.pdf:
+        from drawing import export
+
+        export.require()  # before anything is written
     svg = render(mech, args)
     write_output(args.output, svg)
     _extras(svg, args)

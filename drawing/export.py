@@ -17,6 +17,8 @@ import tempfile
 from pathlib import Path
 from types import ModuleType
 
+from plans.errors import PlansError
+
 __all__ = [
     "ExportUnavailableError",
     "write_bytes_atomic",
@@ -28,8 +30,14 @@ __all__ = [
 _HINT = "PNG and PDF export needs cairosvg: pip install 'vector-plans[export]'"
 
 
-class ExportUnavailableError(ImportError):
-    """cairosvg (or the cairo library under it) is missing."""
+class ExportUnavailableError(PlansError, ImportError):
+    """cairosvg (or the cairo library under it) is missing: a setup problem the user can
+    fix (exit 2 with the pip command), not an internal error."""
+
+
+def require() -> None:
+    """Fail before anything is written when PNG/PDF export cannot work here."""
+    _cairosvg()
 
 
 def _cairosvg() -> ModuleType:

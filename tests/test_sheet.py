@@ -132,3 +132,17 @@ def test_cli_stdout_and_batch(tmp_path):
                        cwd=ROOT, capture_output=True, env=env, timeout=120)
     assert r.returncode == 0, r.stderr.decode()
     assert len(list(tmp_path.glob("*.svg"))) == len(variant_numbers())
+
+
+def test_png_without_cairosvg_is_a_setup_error_and_writes_nothing(tmp_path, monkeypatch, capsys):
+    import sys
+
+    from plans.cli import main
+
+    monkeypatch.setitem(sys.modules, "cairosvg", None)  # as if it were not installed
+    svg, png = tmp_path / "s.svg", tmp_path / "s.png"
+    code = main(["sheet", "samples/press.toml", "-o", str(svg), "--png", str(png)])
+    err = capsys.readouterr().err
+    assert code == 2
+    assert "pip install 'vector-plans[export]'" in err and "internal error" not in err
+    assert list(tmp_path.iterdir()) == []
