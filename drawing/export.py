@@ -13,7 +13,6 @@ Debian package ``fonts-osifont`` gives the same family).
 from __future__ import annotations
 
 import os
-import tempfile
 from pathlib import Path
 from types import ModuleType
 
@@ -49,19 +48,13 @@ def _cairosvg() -> ModuleType:
 
 
 def write_bytes_atomic(data: bytes, path: str | os.PathLike[str]) -> Path:
-    """Write ``data`` to ``path`` through a temporary file in the same directory."""
-    target = Path(path)
-    fd, tmp = tempfile.mkstemp(
-        prefix=f".{target.name}.", suffix=".tmp", dir=target.parent
-    )
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(data)
-        os.replace(tmp, target)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-    return target
+    """Write ``data`` to ``path`` with the command line's one atomic writer (a temporary
+    file in the same folder, renamed when complete; the usual file mode; never over an
+    input file)."""
+    from plans.cli import write_output
+
+    write_output(str(path), data)
+    return Path(path)
 
 
 def write_svg(svg: str, path: str | os.PathLike[str]) -> Path:
