@@ -80,32 +80,69 @@ def _parse_plans(text: str | None, n: int) -> list[int] | None:
 def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
                 plans: list[int] | None = None, title: list[str] = ()):
     """(scene, sheet, info) for ``mech``; info holds the solutions drawn."""
+    from drawing.layout import LayoutError
+    from drawing.sheet import Sheet
+    from plans.cycle import analyse_cycle
+    from plans.kinematics import Solver
+    from plans.plan import cycle_extent, solve_position
+
+    sheet = Sheet(fmt)
+    solver = Solver(mech)
+    cycle = analyse_cycle(mech, n_positions, solver=solver)
+    first = solve_position(mech, solver=solver)
+    extent = cycle_extent(solver)
+    chosen = _parse_plans(None if plans is None else ",".join(map(str, plans)), len(cycle.positions))
+    # the largest views that fit: scales the file leaves free are chosen for the sheet
+    error = None
+    for size in SIZES:
+        mu = sheet_scales(mech, first, extent, size)
+        try:
+            return _compose(mech, sheet, solver, cycle, chosen, mu, lang, title)
+        except LayoutError as exc:
+            error = exc
+    raise error
+
+
+#: view sizes tried, as multiples of the engine's default drawing sizes (largest first)
+SIZES = (3.0, 2.5, 2.0, 1.6, 1.25, 1.0, 0.8, 0.6, 0.5)
+
+
+def sheet_scales(mech, sol, extent: float, size: float) -> dict[str, float]:
+    """μl, μv, μa from the standard series for views ``size`` times the default size;
+    the factors the mechanism file fixes are kept."""
+    from plans.plan import plan_name
+    from plans.scales import choose_mu, choose_mu_l
+
+    mu = {}
+    if "mu_l" not in mech.scales:
+        mu["mu_l"] = choose_mu_l(extent, max_mm=150 * size)
+    for key, plan in (("mu_v", sol.velocity), ("mu_a", sol.acceleration)):
+        if key not in mech.scales:
+            tip = abs(plan.value(plan_name(mech.driver.tip)))
+            largest = max(abs(p.value) for p in plan.points.values())
+            mu[key] = choose_mu(tip, largest, crank_mm=80 * size, max_mm=150 * size)
+    return mu
+
+
+def _compose(mech, sheet, solver, cycle, chosen, mu, lang, title):
     import numpy as np
 
     from drawing import views as V
     from drawing.layout import place_views
     from drawing.scene import Layer, Scene
-    from drawing.sheet import Sheet, TitleBlock, frame_scene
-    from plans.cycle import analyse_cycle
+    from drawing.sheet import TitleBlock, frame_scene
     from plans.fmt import num
-    from plans.kinematics import Solver
     from plans.plan import solve_position
     from plans.scales import gost_scale
 
-    if not 3 <= n_positions <= 72:
-        raise InputError("--positions", f"give 3 to 72 positions, got {n_positions}")
-    sheet = Sheet(fmt)
-    solver = Solver(mech)
-    cycle = analyse_cycle(mech, n_positions, solver=solver)
-    given = solve_position(mech, solver=solver)
-    chosen = _parse_plans(None if plans is None else ",".join(map(str, plans)), len(cycle.positions))
+    given = solve_position(mech, solver=solver, mu=mu)
     sols: list[tuple[str, str, object]] = []
     if chosen is None:
         deg = mech.driver.angle_deg
-        sols.append(("0" if False else "g", f"φ_1 = {num(deg, 4, lang)}°", given))
+        sols.append(("g", f"φ_1 = {num(deg, 4, lang)}°", given))
     else:
         for k in chosen:
-            sols.append((str(k), f"{k}", solve_position(mech, cycle.positions[k], solver=solver)))
+            sols.append((str(k), f"{k}", solve_position(mech, cycle.positions[k], solver=solver, mu=mu)))
     # the whole turn (or the reachable range) for trajectories
     if cycle.full_turn:
         phis = np.linspace(0.0, 2 * math.pi, 361)
@@ -123,8 +160,11 @@ def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
     if diag is not None:
         views.append(diag)
     else:
-        why = "; ".join(cycle.notes) or ("no stroke of the output" if lang == "en" else "нет хода выходного звена")
-        notes.append(V.WORDS[lang]["no_diagrams"] + why)
+        from plans.report import no_full_turn
+
+        why = (no_full_turn(cycle, lang) if not cycle.full_turn else
+               "no stroke of the output" if lang == "en" else "нет хода выходного звена")
+        notes.append(V.WORDS[lang]["no_diagrams"] + why[0].lower() + why[1:])
     tabsols = [(label if tag != "g" else "φ", sol) for tag, label, sol in sols]
     tabsols = [(t.replace("φ_1 = ", ""), s) for t, s in tabsols]
     views.append(V.segments_table_view(tabsols, lang))

@@ -551,7 +551,8 @@ def segments_table_view(sols: list[tuple[str, object]], lang: str = "ru") -> Vie
     w = WORDS[lang]
     header = [w["segment"]]
     for tag, _ in sols:
-        header += [f"{tag}: {w['mm']}", f"{tag}: SI"]
+        pre = f"{tag}: " if len(sols) > 1 else ""  # name the position only when there are several
+        header += [f"{pre}{w['mm']}", f"{pre}SI"]
     keys: list[tuple[str, str, str, str]] = []  # kind, start, end, label
     seen = set()
     for _, sol in sols:
@@ -580,7 +581,8 @@ def omega_table_view(sols: list[tuple[str, object]], lang: str = "ru") -> View:
     w = WORDS[lang]
     header = [w["link"]]
     for tag, _ in sols:
-        header += [f"{tag}: ω, {w['rads']}", f"{tag}: ε, {w['rads2']}"]
+        pre = f"{tag}: " if len(sols) > 1 else ""
+        header += [f"{pre}ω, {w['rads']}", f"{pre}ε, {w['rads2']}"]
     first = sols[0][1]
     rows = []
     for lid in sorted(first.omega):

@@ -77,6 +77,7 @@ class Cycle:
     positions: tuple[float, ...]  # the N crank angles, numbered from an extreme
     grashof: str | None
     notes: tuple[str, ...]
+    crank_range: tuple[float, float] | None = None  # rad: where it assembles, if not a full turn
 
 
 def analyse_cycle(mech: Mechanism, n_positions: int = 12, solver: Solver | None = None,
@@ -102,7 +103,8 @@ def analyse_cycle(mech: Mechanism, n_positions: int = 12, solver: Solver | None 
             f"({math.degrees(abs(hi - lo)):.2f}° of crank travel)"
         )
         span = np.linspace(lo, hi, n_positions) if n_positions > 1 else np.array([lo])
-        return Cycle(out, False, reachable, (), None, None, None, tuple(span), grashof, tuple(notes))
+        return Cycle(out, False, reachable, (), None, None, None, tuple(span), grashof, tuple(notes),
+                     (lo, hi))
     extremes: list[float] = []
     stroke = theta = K = None
     start = phi0

@@ -143,7 +143,7 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     if mu:
         scales.update(mu)
     if "mu_l" not in scales:
-        scales["mu_l"] = choose_mu_l(_extent(solver))
+        scales["mu_l"] = choose_mu_l(cycle_extent(solver))
     builder = _Builder(mech, solver.structure, motion)
     vplan = builder.velocity(scales.get("mu_v"))
     aplan = builder.acceleration(scales.get("mu_a"))
@@ -163,7 +163,8 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     )
 
 
-def _extent(solver: Solver, n: int = 72) -> float:
+def cycle_extent(solver: Solver, n: int = 72) -> float:
+    """The larger side (m) of the box that holds every point over the crank's travel."""
     phi = solver.mech.driver.phi + np.linspace(0, 2 * np.pi, n, endpoint=False)
     with np.errstate(all="ignore"):
         m = solver.solve(phi)

@@ -29,7 +29,7 @@ T = {
         "stroke": "Stroke of the output point {p}:",
         "swing": "Swing of the output link {l}:",
         "kth": "Crank angle between the extreme positions θ and time ratio K:",
-        "noturn": "{note}.",
+        "noturn": "The crank cannot make a full turn: it assembles only for φ1 from {lo}° to {hi}° ({span}° of crank travel).",
         "velocities": "Velocity plan",
         "va": "Velocity of point {t} of the crank, ⊥ {p}{t} in the sense of ω1:",
         "muv": "Scale factor of the velocity plan, with p{t} = {mm} mm:",
@@ -65,7 +65,7 @@ T = {
         "stroke": "Ход выходной точки {p}:",
         "swing": "Угол размаха выходного звена {l}:",
         "kth": "Угол между крайними положениями кривошипа θ и коэффициент изменения средней скорости K:",
-        "noturn": "Кривошип не может сделать полный оборот ({note}).",
+        "noturn": "Кривошип не может сделать полный оборот: механизм собирается только при φ1 от {lo}° до {hi}° (ход кривошипа {span}°).",
         "velocities": "План скоростей механизма",
         "va": "Скорость точки {t} кривошипа, ⊥ {p}{t} в сторону вращения ω1:",
         "muv": "Масштабный коэффициент плана скоростей при p{t} = {mm} мм:",
@@ -144,7 +144,7 @@ def note(sol: Solution, lang: str = "en", cycle=None) -> str:
     if cycle is not None:
         out.append("")
         if not cycle.full_turn:
-            out.append(t["noturn"].format(note="; ".join(cycle.notes)))
+            out.append(no_full_turn(cycle, lang))
         elif cycle.stroke is not None:
             if cycle.output.kind == "linear":
                 out.append(t["stroke"].format(p=cycle.output.point))
@@ -164,6 +164,15 @@ def note(sol: Solution, lang: str = "en", cycle=None) -> str:
     for w in sol.warnings:
         out += [f"> {t['warn']}: {w}", ""]
     return "\n".join(out).rstrip() + "\n"
+
+
+def no_full_turn(cycle, lang: str = "en") -> str:
+    """The sentence for a crank that cannot make a full turn, with its range."""
+    lo, hi = cycle.crank_range
+    return T[lang]["noturn"].format(
+        lo=num(math.degrees(lo) % 360, 4, lang), hi=num(math.degrees(hi) % 360, 4, lang),
+        span=num(math.degrees(abs(hi - lo)), 4, lang),
+    )
 
 
 def _plan_section(sol: Solution, plan, lang: str, number: int) -> list[str]:

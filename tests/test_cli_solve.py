@@ -99,3 +99,11 @@ def test_report_english(capsys):
     assert "`a^n_A3B = V_A3B² / l_A3B = 2.772² / 0.5748 = 13.36 m/s²`" in out
     assert "`ε3 = a^t_A3B / l_A3B = 11.89 / 0.5748 = 20.69 rad/s², counter-clockwise`" in out
     assert "Through k draw a line ∥ BC, through n1 a line ⊥ BA3; they meet at a3." in out
+
+
+def test_russian_note_says_the_crank_range_in_russian(capsys):
+    code, out, _ = run(capsys, "report", "samples/fourbar.toml", "--lang", "ru")
+    assert code == 0
+    assert ("Кривошип не может сделать полный оборот: механизм собирается только при "
+            "φ1 от 231,2° до 128,8° (ход кривошипа 257,6°).") in out
+    assert "cannot" not in out

@@ -146,3 +146,37 @@ def test_png_without_cairosvg_is_a_setup_error_and_writes_nothing(tmp_path, monk
     assert code == 2
     assert "pip install 'vector-plans[export]'" in err and "internal error" not in err
     assert list(tmp_path.iterdir()) == []
+
+
+def test_exported_files_get_the_usual_mode(tmp_path):
+    import os
+
+    from drawing.export import write_svg
+
+    umask = os.umask(0o022)
+    os.umask(umask)
+    out = write_svg("<svg/>", tmp_path / "s.svg")
+    assert out.read_text() == "<svg/>"
+    assert out.stat().st_mode & 0o777 == 0o666 & ~umask
+    assert [p.name for p in tmp_path.iterdir()] == ["s.svg"]  # no temporary file left
+
+
+def test_sheet_scales_fill_the_sheet_where_the_file_leaves_them_free():
+    from drawing.cli_sheet import build_sheet
+    from plans.variants import variant
+
+    _, _, info = build_sheet(variant(3))
+    sol = info["solutions"][0][2]
+    # the engine alone would pick 1:2.5 and μv = 0.02 for this variant; A1 has room for more
+    assert sol.mu_l == 0.001 and sol.mu_v == 0.01
+    press = build_sheet(load("samples/press.toml"))[2]["solutions"][0][2]
+    assert (press.mu_l, press.mu_v, press.mu_a) == (0.01, 0.05, 1.0)  # fixed in the file
+
+
+def test_russian_fourbar_sheet_explains_the_missing_diagrams_in_russian():
+    from drawing.cli_sheet import build_sheet
+
+    scene, _, _ = build_sheet(load("samples/fourbar.toml"), lang="ru")
+    texts = " ".join(t.text for t in scene.items() if hasattr(t, "text"))
+    assert "кривошип не может сделать полный оборот" in texts
+    assert "cannot" not in texts
