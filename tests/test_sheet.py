@@ -180,3 +180,24 @@ def test_russian_fourbar_sheet_explains_the_missing_diagrams_in_russian():
     texts = " ".join(t.text for t in scene.items() if hasattr(t, "text"))
     assert "кривошип не может сделать полный оборот" in texts
     assert "cannot" not in texts
+
+
+@pytest.mark.parametrize("key", KEYS)
+def test_no_text_sits_on_a_vector_arrow(key):
+    from shapely.geometry import LineString
+
+    from drawing.labels import text_box
+    from drawing.scene import Arrow, Group, flatten
+
+    mech, scene, sheet, info, svg = _sheet(key)
+    views = [g for g in scene.layer("views").items if isinstance(g, Group)
+             and ("velocity" in g.name or "acceleration" in g.name)]
+    assert len(views) >= 2
+    hits = []
+    for view in views:
+        items = flatten([view])
+        arrows = [LineString([a.p1, a.p2]) for a in items if isinstance(a, Arrow)]
+        for t in (t for t in items if isinstance(t, Text)):
+            box = text_box(t)
+            hits += [(view.name, t.text) for a in arrows if box.intersects(a)]
+    assert hits == []
