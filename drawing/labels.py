@@ -327,6 +327,9 @@ def place_labels(
     taken: Sequence[BaseGeometry] = (),
     region: BaseGeometry | None = None,
     distances: Sequence[float] = (1.0, 2.0, 3.0),
+    soft: Sequence[BaseGeometry] = (),
+    near: float = 3.0,
+    max_soft: int = 2,
 ) -> list[Placement]:
     """Put each label near its anchor where it hits nothing.
 
@@ -334,7 +337,10 @@ def place_labels(
     and the box); at each distance the preferred direction first, then its
     neighbours by turn.  The first candidate whose box stays inside ``region``
     (if given) and meets no obstacle, no box in ``taken`` and no label placed
-    before it wins.  If none is free, the candidate with the least overlap area
+    before it wins.  ``soft`` obstacles (thin lines: other positions, trajectories)
+    are avoided too, but a letter within ``near`` mm of its point that crosses only
+    soft lines (at most ``max_soft`` of them, the fewest) beats a clear one further
+    away: a letter far from its point is read as another point's.  If none is free, the candidate with the least overlap area
     is taken and reported with ``clear=False``.
 
     Args:
@@ -342,41 +348,56 @@ def place_labels(
             :func:`obstacles_of`.
         taken: boxes of labels placed earlier (e.g. by another view).
     """
-    static = [g for g in (*obstacles, *taken) if not g.is_empty]
-    tree = shapely.STRtree(static) if static else None
+    hard = [g for g in (*obstacles, *taken) if not g.is_empty]
+    soft = [g for g in soft if not g.is_empty]
+    hard_tree = shapely.STRtree(hard) if hard else None
+    soft_tree = shapely.STRtree(soft) if soft else None
+    close = [d for d in distances if d <= near] or list(distances[:1])
+    rings = [close, [d for d in distances if d not in close]] if soft else [list(distances)]
     placed: list[Polygon] = []
     out: list[Placement] = []
     for req in requests:
-        best: tuple[float, Text, Polygon] | None = None
-        for gap in distances:
-            for direction in _directions(req.prefer):
-                text = _candidate(req, direction, gap)
-                box = text_box(text)
-                hits = (
-                    []
-                    if tree is None
-                    else [static[i] for i in tree.query(box, predicate="intersects")]
-                )
-                if placed:
-                    mask = shapely.intersects(box, np.asarray(placed, dtype=object))
-                    hits += [p for p, m in zip(placed, mask, strict=True) if m]
-                outside = 0.0 if region is None else box.difference(region).area
-                if not hits and outside <= 1e-9:
-                    best = (0.0, text, box)
+        chosen: tuple[Text, Polygon] | None = None
+        fallback: tuple[float, Text, Polygon] | None = None
+        for ring in rings:
+            # clear of everything wins; else the spot crossing the fewest thin lines
+            relaxed: tuple[int, Text, Polygon] | None = None
+            for gap in ring:
+                for direction in _directions(req.prefer):
+                    text = _candidate(req, direction, gap)
+                    box = text_box(text)
+                    hits = [] if hard_tree is None else [
+                        hard[i] for i in hard_tree.query(box, predicate="intersects")]
+                    if placed:
+                        mask = shapely.intersects(box, np.asarray(placed, dtype=object))
+                        hits += [p for p, m in zip(placed, mask, strict=True) if m]
+                    outside = 0.0 if region is None else box.difference(region).area
+                    if hits or outside > 1e-9:
+                        cost = sum(box.intersection(g).area for g in hits) + outside + 1e-6 * len(hits)
+                        if fallback is None or cost < fallback[0]:
+                            fallback = (cost, text, box)
+                        continue
+                    n_soft = 0 if soft_tree is None else len(soft_tree.query(box, predicate="intersects"))
+                    if n_soft == 0:
+                        chosen = (text, box)
+                        break
+                    if n_soft <= max_soft and (relaxed is None or n_soft < relaxed[0]):
+                        relaxed = (n_soft, text, box)
+                if chosen:
                     break
-                cost = (
-                    sum(box.intersection(g).area for g in hits)
-                    + outside
-                    + 1e-6 * len(hits)
-                )
-                if best is None or cost < best[0]:
-                    best = (cost, text, box)
-            if best is not None and best[0] == 0.0:
+            if chosen is None and relaxed is not None:
+                chosen = relaxed[1:]
+            if chosen:
                 break
-        assert best is not None  # distances and directions are never empty
-        cost, text, box = best
+        if chosen is not None:
+            text, box = chosen
+            clear = True
+        else:
+            assert fallback is not None  # distances and directions are never empty
+            _, text, box = fallback
+            clear = False
         placed.append(box)
-        out.append(Placement(text, box, clear=cost == 0.0))
+        out.append(Placement(text, box, clear=clear))
     return out
 
 

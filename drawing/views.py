@@ -195,8 +195,12 @@ def _finish(
     ``under`` (equations) below; shift everything to the box (0, 0)–(w, h)."""
     x0, y0, x1, y1 = _bbox(drawing)
     region = shp_box(x0 - pad, y0 - pad, x1 + pad, y1 + pad)
-    placed = place_labels(labels, obstacles_of(drawing), region=region,
-                          distances=(1.0, 2.0, 3.0, 4.5, 6.0, 8.0))
+    thin = (LineType.THIN, LineType.DASHED, LineType.DASH_DOUBLE_DOT_THIN)
+    is_soft = [isinstance(it, Segment | Polyline) and it.line in thin for it in drawing]
+    placed = place_labels(labels,
+                          obstacles_of([it for it, s in zip(drawing, is_soft, strict=True) if not s]),
+                          region=region, distances=(1.0, 2.0, 3.0, 4.5, 6.0, 8.0),
+                          soft=obstacles_of([it for it, s in zip(drawing, is_soft, strict=True) if s]))
     items = list(drawing) + [
         _start_anchored(p.text) for p, r in zip(placed, labels, strict=True)
         if p.clear or r.markup  # numbers of positions are dropped rather than crowded

@@ -214,3 +214,23 @@ def test_placed_label_with_index_keeps_its_gap():
     assert p.text.markup and p.box.bounds[3] == pytest.approx(49.0)  # 1 mm above
     (q,) = place_labels([LabelRequest((50, 50), "a^n", 5, prefer="s")])
     assert q.box.bounds[1] == pytest.approx(51.0)  # 1 mm below, superscript included
+
+
+def test_near_label_may_cross_a_thin_line_rather_than_drift_away():
+    from shapely.geometry import Point
+
+    from drawing.labels import LabelRequest, place_labels
+
+    anchor = (50.0, 50.0)
+    ring = Point(anchor).buffer(4.0).exterior.buffer(0.2)  # one thin line round the point
+    req = [LabelRequest(anchor, "A", 3.5, "ne")]
+    distances = (1.0, 2.0, 3.0, 4.5, 6.0, 8.0)
+    as_hard = place_labels(req, [ring], distances=distances)[0]
+    as_soft = place_labels(req, [], distances=distances, soft=[ring])[0]
+    assert as_soft.clear and as_soft.box.distance(Point(anchor)) <= 1.0 + 1e-9
+    assert as_hard.box.distance(Point(anchor)) > 4.0  # had to go round the line
+    # a bundle of thin lines (more than two) is not crossed: the letter goes further out
+    radii = [1.5 + 0.5 * k for k in range(12)]  # 1.5 … 7 mm: every near spot crosses ≥ 3
+    bundle = [Point(anchor).buffer(r).exterior.buffer(0.1) for r in radii]
+    far = place_labels(req, [], distances=distances, soft=bundle)[0]
+    assert far.clear and far.box.distance(Point(anchor)) > 7.0
