@@ -250,15 +250,7 @@ def take(motion, idx):
     from dataclasses import replace
 
     links = {
-        i: replace(
-            st,
-            origin=st.origin[idx],
-            rotor=st.rotor[idx],
-            v=st.v[idx],
-            omega=st.omega[idx],
-            a=st.a[idx],
-            epsilon=st.epsilon[idx],
-        )
+        i: st._replace(**{f: getattr(st, f)[idx] for f in st._fields})
         for i, st in motion.links.items()
     }
     return replace(

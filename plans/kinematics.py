@@ -18,12 +18,15 @@ relative velocity turned by 90° in the sense of the guide's ω).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field, replace
+from typing import NamedTuple
 
 import numpy as np
 
+from . import kernels
 from .errors import AssemblyError, InputError, PlansError, SingularPlanError
-from .geometry import circle_circle, circle_line, cross, intersect
+from .geometry import cross
 from .mechanism import Guide, Mechanism
 from .structure import DyadKind, Group, Structure, analyse
 
@@ -33,8 +36,7 @@ SINGULAR_SINE = 1e-10
 WARN_SINE = 0.035
 
 
-@dataclass(frozen=True, slots=True)
-class LinkState:
+class LinkState(NamedTuple):
     """Pose and motion of a link: its origin point and orientation (unit complex),
     the velocity and acceleration of the origin, ω and ε (counter-clockwise positive)."""
 
@@ -63,8 +65,7 @@ def _state(origin, rotor, X, vX, aX, omega, eps) -> LinkState:
     )
 
 
-@dataclass(frozen=True, slots=True)
-class Term:
+class Term(NamedTuple):
     """A known vector of an equation, drawn head to tail before the unknown line."""
 
     kind: str  # "normal" or "coriolis"
@@ -73,8 +74,7 @@ class Term:
     about: tuple[str, str]  # normal: (point, centre); Coriolis: (point, the point it slides on)
 
 
-@dataclass(frozen=True, slots=True)
-class Route:
+class Route(NamedTuple):
     """One of the two vector equations of a group: known base, known terms, one line."""
 
     base: str | None  # mechanism point whose plan point starts the route; None = the pole
@@ -94,8 +94,7 @@ class Route:
         return out
 
 
-@dataclass(frozen=True, slots=True)
-class Construction:
+class Construction(NamedTuple):
     """How the new point of a group was found: the intersection of two routes."""
 
     point: str  # mechanism name of the point found (C, A3…)
@@ -105,8 +104,7 @@ class Construction:
     equation: str
 
 
-@dataclass(frozen=True, slots=True)
-class GroupSolution:
+class GroupSolution(NamedTuple):
     group: Group
     velocity: Construction
     acceleration: Construction
@@ -180,38 +178,64 @@ class Solver:
         meaningless (never shown): numpy's warnings for them are silenced here.
         """
         with np.errstate(all="ignore"):
-            return self._solve(phi)
+            phi = np.atleast_1d(np.asarray(phi, dtype=float))
+            zero = np.zeros_like(phi)
+            return self._solve(kernels.ARRAY, phi, zero, np.exp(1j * phi))
 
-    def _solve(self, phi) -> Motion:
+    def solve_one(self, phi: float) -> Motion:
+        """The same recorded solution at one crank angle, on Python numbers.
+
+        Every value in the result is a Python ``complex`` or ``float`` instead of an array
+        of one; it is about twenty times faster than :meth:`solve` on one angle. Where
+        the mechanism does not close or a plan is singular it raises the error that
+        :meth:`solve` would report for that angle.
+        """
+        phi = float(phi)
+        try:
+            return self._solve(kernels.SCALAR, phi, 0.0, complex(math.cos(phi), math.sin(phi)))
+        except (_Fallback, ArithmeticError, ValueError):
+            pass
+        m = self.solve(np.array([phi]))
+        deg = math.degrees(phi) % 360
+        for g in m.groups:
+            if not g.valid[0]:
+                raise g.failure(0, deg)
+        for g in m.groups:
+            if abs(float(g.velocity.sine[0])) < SINGULAR_SINE:
+                raise SingularPlanError(
+                    f"{g.group.label} at φ1 = {deg:.6g}°: the lines of its plan are parallel: "
+                    "a singular position (dead point), the plan has no unique solution",
+                    sine=float(g.velocity.sine[0]))
+        raise SingularPlanError(  # pragma: no cover - every fallback above is a failure
+            f"at φ1 = {deg:.6g}°: the plan has no unique solution")
+
+    def _solve(self, xp, phi, zero, rotor) -> Motion:
         mech = self.mech
-        phi = np.atleast_1d(np.asarray(phi, dtype=float))
-        zero = np.zeros_like(phi)
-        zc = zero.astype(complex)
+        zc = zero * 0j if not xp.scalar else 0j
         drv = mech.driver
         states: dict[int, LinkState] = {
             0: LinkState(zc, zc + 1, zc, zero, zc, zero),
         }
-        pos: dict[str, np.ndarray] = {}
-        vel: dict[str, np.ndarray] = {}
-        acc: dict[str, np.ndarray] = {}
+        pos: dict = {}
+        vel: dict = {}
+        acc: dict = {}
         owner: dict[str, int] = {}
         for name, xy in mech.frame.items():
             pos[name] = zc + xy
             vel[name] = zc
             acc[name] = zc
             owner[name] = 0
-        rotor = np.exp(1j * phi)
         pivot = mech.frame[drv.pivot]
-        w1 = zero + drv.omega
-        states[drv.link] = LinkState(zc + pivot, rotor, zc, w1, zc, zero)
+        states[drv.link] = LinkState(zc + pivot, rotor, zc, zero + drv.omega, zc, zero)
         self._fill(drv.link, states, pos, vel, acc, owner)
         solutions = []
-        valid = np.ones(phi.shape, dtype=bool)
+        valid = True if xp.scalar else np.ones(phi.shape, dtype=bool)
         coincident: dict[str, str] = {}
         for g, sigma in zip(self.structure.groups, self.sigmas, strict=True):
-            sol, extra = SOLVERS[g.kind](self, g, sigma, states, pos, vel, acc)
+            sol, extra = SOLVERS[g.kind](self, xp, g, sigma, states, pos, vel, acc)
             solutions.append(sol)
-            valid &= sol.valid
+            if not xp.scalar:
+                valid &= sol.valid
             for a in (g.a, g.b):
                 self._fill(a, states, pos, vel, acc, owner)
             for name, (link, base) in extra.items():
@@ -250,47 +274,60 @@ class Solver:
 
 
 # ---------------------------------------------------------------------------------------
-# the five kinds
+# the five kinds: the kernels' numbers, recorded as the two routes of each construction
 # ---------------------------------------------------------------------------------------
 
 
-def _at_limit(valid, gap, scale):
-    """Where the group does not close only by rounding: it is exactly at its limit."""
-    return ~valid & (gap <= 1e-9 * scale)
+class _Fallback(Exception):
+    """The one-angle scalar path met a group that does not close or a division by zero:
+    the array path then finds and words the failure."""
+
+
+def _closure(xp, valid, gap, scale):
+    """(valid, gap, singular) of a group; the scalar path leaves as soon as it misses."""
+    if xp.scalar:
+        if not valid:
+            raise _Fallback
+        return True, 0.0, False
+    gap = gap()
+    return valid, gap, ~valid & (gap <= 1e-9 * scale)
 
 
 def _pose_from_two(P, pl, C, cl):
     """Origin and rotor of a link from two world points and their own coordinates."""
     r = (C - P) / (cl - pl)
-    r = r / np.abs(r)
+    r = r / abs(r)
     return P - r * pl, r
 
 
-def _rrr(sv: Solver, g: Group, sigma, states, pos, vel, acc):
+def _guide(guide: Guide, states):
+    """A world point of the guide, its direction, and the motion of its link there."""
+    st = states[guide.link]
+    G = st.pos(guide.point)
+    u = st.rotor * guide.direction
+    if guide.link == 0:
+        return G, u, 0j, 0j, None, None
+    return G, u, st.vel(G), st.acc(G), st.omega, st.epsilon
+
+
+def _base_name(point: str, guide: Guide) -> str | None:
+    return None if guide.link == 0 else coincident_name(point, guide.link)
+
+
+def _rrr(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     P, C, Q = g.P, g.C, g.Q
     pl, cl = sv.local(g.a, P), sv.local(g.a, C)
     ql, cl3 = sv.local(g.b, Q), sv.local(g.b, C)
     l2, l3 = abs(cl - pl), abs(cl3 - ql)
     Pw, Qw = pos[P], pos[Q]
-    Cw, disc = circle_circle(Pw, l2, Qw, l3, sigma)
-    d = np.abs(Qw - Pw)
-    valid = disc > 0
-    gap = np.maximum(np.maximum(d - (l2 + l3), abs(l2 - l3) - d), 0.0)
-    # velocities: V_C = V_P + V_CP (⊥ CP) = V_Q + V_CQ (⊥ CQ)
-    rP, rQ = Cw - Pw, Cw - Qw
-    d1, d2 = 1j * rP / l2, 1j * rQ / l3
-    t1, t2, sine = intersect(vel[P], d1, vel[Q], d2)
-    vC = vel[P] + t1 * d1
-    w2, w3 = t1 / l2, t2 / l3
+    Cw, vC, aC, w2, e2, w3, e3, (d1, d2, t1, t2, s1, s2, nP, nQ, sine, disc, d) = kernels.rrr(
+        xp, sigma, l2, l3, Pw, vel[P], acc[P], Qw, vel[Q], acc[Q])
+    valid, gap, singular = _closure(
+        xp, disc > 0, lambda: np.maximum(np.maximum(d - (l2 + l3), abs(l2 - l3) - d), 0.0), l2 + l3)
     vroute = (
         Route(P, vel[P], (), d1, f"⊥ {C}{P}", f"V_{C}{P}", "relative", t1),
         Route(Q, vel[Q], (), d2, f"⊥ {C}{Q}", f"V_{C}{Q}", "relative", t2),
     )
-    # accelerations: a_C = a_P + a^n_CP + a^t_CP = a_Q + a^n_CQ + a^t_CQ
-    nP, nQ = -(w2**2) * rP, -(w3**2) * rQ
-    s1, s2, _ = intersect(acc[P] + nP, d1, acc[Q] + nQ, d2)
-    aC = acc[P] + nP + s1 * d1
-    e2, e3 = s1 / l2, s2 / l3
     aroute = (
         Route(P, acc[P], (Term("normal", nP, f"a^n_{C}{P}", (C, P)),), d1,
               f"⊥ {C}{P}", f"a^t_{C}{P}", "tangential", s1),
@@ -309,65 +346,35 @@ def _rrr(sv: Solver, g: Group, sigma, states, pos, vel, acc):
                      f"a_{C} = a_{P} + a^n_{C}{P} + a^t_{C}{P} = a_{Q} + a^n_{C}{Q} + a^t_{C}{Q}"),
         valid, gap,
         f"{P}{Q} within [{abs(l2 - l3):.6g}, {l2 + l3:.6g}] m",
-        _at_limit(valid, gap, l2 + l3),
+        singular,
         f"{P}, {C} and {Q} are in line (links {g.a} and {g.b} stretched out or folded)",
     )
     return sol, {}
 
 
-def _slide_base(sv: Solver, guide: Guide, X, states, vel_or_acc: str):
-    """Velocity or acceleration of the point of the guide's link that is under X."""
-    st = states[guide.link]
-    return st.vel(X) if vel_or_acc == "v" else st.acc(X)
-
-
-def _coriolis(states, guide: Guide, vrel):
-    """a^k = 2 ω_guide × V_rel: V_rel turned by 90° in the sense of the guide's ω."""
-    return 2j * states[guide.link].omega * vrel
-
-
-def _base_name(point: str, guide: Guide) -> str | None:
-    return None if guide.link == 0 else coincident_name(point, guide.link)
-
-
-def _rrp(sv: Solver, g: Group, sigma, states, pos, vel, acc):
+def _rrp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     P, C, s = g.P, g.C, g.s1
     pl, cl = sv.local(g.a, P), sv.local(g.a, C)
     l2 = abs(cl - pl)
     Pw = pos[P]
-    G0, u = sv.guide_world(s.guide, states)
-    Cw, disc = circle_line(Pw, l2, G0, u, sigma)
-    valid = disc > 0
-    h = np.abs(cross(u, Pw - G0))
-    gap = np.maximum(h - l2, 0.0)
+    G0, u, vG, aG, wk, ek = _guide(s.guide, states)
+    Cw, vC, aC, w2, e2, (d1, t1, t2, s1, s2, nP, vCk, aCk, cor, sine, disc, h) = kernels.rrp(
+        xp, sigma, l2, Pw, vel[P], acc[P], G0, u, vG, aG, wk, ek)
+    valid, gap, singular = _closure(xp, disc > 0, lambda: np.maximum(h - l2, 0.0), l2)
     k = s.guide.link
     gl = s.guide.label
     base = _base_name(C, s.guide)
-    rP = Cw - Pw
-    d1 = 1j * rP / l2
-    vCk = _slide_base(sv, s.guide, Cw, states, "v")
-    t1, t2, sine = intersect(vel[P], d1, vCk, u)
-    vC = vel[P] + t1 * d1
-    w2 = t1 / l2
     rel = f"V_{C}{base}" if base else f"V_{C}"
     vroute = (
         Route(P, vel[P], (), d1, f"⊥ {C}{P}", f"V_{C}{P}", "relative", t1),
         Route(base, vCk, (), u, f"∥ {gl}", rel, "sliding", t2),
     )
-    nP = -(w2**2) * rP
-    aCk = _slide_base(sv, s.guide, Cw, states, "a")
-    terms2 = ()
-    if k != 0:
-        terms2 = (Term("coriolis", _coriolis(states, s.guide, t2 * u), f"a^k_{C}{base}", (C, base)),)
-    cor = terms2[0].value if terms2 else 0.0
-    s1_, s2_, _ = intersect(acc[P] + nP, d1, aCk + cor, u)
-    aC = acc[P] + nP + s1_ * d1
-    e2 = s1_ / l2
+    terms2 = (Term("coriolis", cor, f"a^k_{C}{base}", (C, base)),) if base else ()
     arel = f"a^r_{C}{base}" if base else f"a_{C}"
     aroute = (
         Route(P, acc[P], (Term("normal", nP, f"a^n_{C}{P}", (C, P)),), d1,
-              f"⊥ {C}{P}", f"a^t_{C}{P}", "tangential", s1_),
-        Route(base, aCk, terms2, u, f"∥ {gl}", arel, "sliding", s2_),
+              f"⊥ {C}{P}", f"a^t_{C}{P}", "tangential", s1),
+        Route(base, aCk, terms2, u, f"∥ {gl}", arel, "sliding", s2),
     )
     oa, ra = _pose_from_two(Pw, pl, Cw, cl)
     states[g.a] = _state(oa, ra, Cw, vC, aC, w2, e2)
@@ -385,55 +392,39 @@ def _rrp(sv: Solver, g: Group, sigma, states, pos, vel, acc):
             + (f"a_{base} + a^k_{C}{base} + a^r_{C}{base}" if base else f"a_{C}(∥ {gl})"),
         ),
         valid, gap, f"distance from {P} to the guide {gl} ≤ {l2:.6g} m",
-        _at_limit(valid, gap, l2), f"{P}{C} is perpendicular to the guide {gl}",
+        singular, f"{P}{C} is perpendicular to the guide {gl}",
     )
     extra = {base: (k, C)} if base else {}
     return sol, extra
 
 
-def _rpr(sv: Solver, g: Group, sigma, states, pos, vel, acc):
+def _rpr(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     P, Q, s = g.P, g.Q, g.s1  # block g.a hinged at P slides on the guide of link g.b
     G = g.b
     gl = s.guide.label
     q = sv.local(G, Q)
-    u_local = s.guide.point - q
     gd = s.guide.direction
-    e = (np.conj(gd) * u_local).imag  # offset of the guide from the pivot Q
+    e = (gd.conjugate() * (s.guide.point - q)).imag  # offset of the guide from the pivot Q
     Pw, Qw = pos[P], pos[Q]
-    w = Pw - Qw
-    dist = np.abs(w)
-    disc = (dist - abs(e)) * (dist + abs(e))
-    valid = (disc > 0) & (dist > 0)
-    tau = sigma * np.sqrt(np.maximum(disc, 0.0))
-    rG = w / ((tau + 1j * e) * gd)
-    rG = rG / np.abs(rG)
-    oG = Qw - rG * q
-    u = rG * gd  # the guide's direction on the plan of positions
+    rG, u, vP3, aP3, w3, e3, (d2, t1, t2, s1, s2, cor, nQ, sine, disc, dist) = kernels.rpr(
+        xp, sigma, e, gd, Pw, vel[P], acc[P], Qw, vel[Q], acc[Q])
+    valid, gap, singular = _closure(
+        xp, disc > 0 and dist > 0 if xp.scalar else (disc > 0) & (dist > 0),
+        lambda: np.maximum(abs(e) - dist, 0.0), max(abs(e), 1.0) if e else 1.0)
     name = coincident_name(P, G)
-    # V_P3 = V_P + V_P3P (∥ guide) = V_Q + V_P3Q (⊥ QP3)
-    d2 = 1j * w / np.where(dist > 0, dist, 1.0)
-    t1, t2, sine = intersect(vel[P], u, vel[Q], d2)
-    vP3 = vel[P] + t1 * u
-    w3 = t2 / dist
     vroute = (
         Route(P, vel[P], (), u, f"∥ {gl}", f"V_{name}{P}", "sliding", t1),
         Route(Q, vel[Q], (), d2, f"⊥ {Q}{name}", f"V_{name}{Q}", "relative", t2),
     )
-    cor = 2j * w3 * (t1 * u)
-    nQ = -(w3**2) * w
-    s1_, s2_, _ = intersect(acc[P] + cor, u, acc[Q] + nQ, d2)
-    aP3 = acc[P] + cor + s1_ * u
-    e3 = s2_ / dist
     aroute = (
         Route(P, acc[P], (Term("coriolis", cor, f"a^k_{name}{P}", (name, P)),), u,
-              f"∥ {gl}", f"a^r_{name}{P}", "sliding", s1_),
+              f"∥ {gl}", f"a^r_{name}{P}", "sliding", s1),
         Route(Q, acc[Q], (Term("normal", nQ, f"a^n_{name}{Q}", (name, Q)),), d2,
-              f"⊥ {Q}{name}", f"a^t_{name}{Q}", "tangential", s2_),
+              f"⊥ {Q}{name}", f"a^t_{name}{Q}", "tangential", s2),
     )
-    states[G] = _state(oG, rG, Pw, vP3, aP3, w3, e3)
+    states[G] = _state(Qw - rG * q, rG, Pw, vP3, aP3, w3, e3)
     oK = Pw - u * sv.local(g.a, P)
     states[g.a] = _state(oK, u, Pw, vel[P], acc[P], w3, e3)
-    gap = np.maximum(abs(e) - dist, 0.0)
     sol = GroupSolution(
         g,
         Construction(name, vP3, vroute, sine,
@@ -443,40 +434,32 @@ def _rpr(sv: Solver, g: Group, sigma, states, pos, vel, acc):
                      f"a_{Q} + a^n_{name}{Q} + a^t_{name}{Q}"),
         valid, gap,
         f"distance {Q}{P} > {abs(e):.6g} m (the guide's offset)" if e else f"{Q} ≠ {P}",
-        _at_limit(valid, gap, max(abs(e), 1.0) if e else 1.0),
+        singular,
         (f"the guide of link {G} is tangent to the pin {P} at its offset {abs(e):.6g} m from {Q}"
          if e else f"the pivot {Q} is on the block's pin {P}: the guide's direction is undetermined"),
     )
     return sol, {name: (G, P)}
 
 
-def _prp(sv: Solver, g: Group, sigma, states, pos, vel, acc):
+def _prp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     C, sa, sb = g.C, g.s1, g.s2
-    G1, u1 = sv.guide_world(sa.guide, states)
-    G2, u2 = sv.guide_world(sb.guide, states)
-    t, _, psine = intersect(G1, u1, G2, u2)
-    Cw = G1 + t * u1
-    valid = np.abs(psine) > SINGULAR_SINE
+    G1, u1, vG1, aG1, w1, e1 = _guide(sa.guide, states)
+    G2, u2, vG2, aG2, w2, e2 = _guide(sb.guide, states)
+    Cw, vC, aC, (v1, v2, a1, a2, c1, c2, t1, t2, s1, s2, sine) = kernels.prp(
+        xp, G1, u1, vG1, aG1, w1, e1, G2, u2, vG2, aG2, w2, e2)
+    good = abs(sine) > SINGULAR_SINE
+    if xp.scalar:
+        _closure(xp, good, None, 1.0)
     b1, b2 = _base_name(C, sa.guide), _base_name(C, sb.guide)
-    v1 = _slide_base(sv, sa.guide, Cw, states, "v")
-    v2 = _slide_base(sv, sb.guide, Cw, states, "v")
-    t1, t2, sine = intersect(v1, u1, v2, u2)
-    vC = v1 + t1 * u1
     vroute = (
         Route(b1, v1, (), u1, f"∥ {sa.guide.label}", f"V_{C}{b1 or ''}", "sliding", t1),
         Route(b2, v2, (), u2, f"∥ {sb.guide.label}", f"V_{C}{b2 or ''}", "sliding", t2),
     )
-    a1 = _slide_base(sv, sa.guide, Cw, states, "a")
-    a2 = _slide_base(sv, sb.guide, Cw, states, "a")
-    terms1 = (Term("coriolis", _coriolis(states, sa.guide, t1 * u1), f"a^k_{C}{b1}", (C, b1)),) if b1 else ()
-    terms2 = (Term("coriolis", _coriolis(states, sb.guide, t2 * u2), f"a^k_{C}{b2}", (C, b2)),) if b2 else ()
-    c1 = terms1[0].value if terms1 else 0.0
-    c2 = terms2[0].value if terms2 else 0.0
-    s1_, s2_, _ = intersect(a1 + c1, u1, a2 + c2, u2)
-    aC = a1 + c1 + s1_ * u1
+    terms1 = (Term("coriolis", c1, f"a^k_{C}{b1}", (C, b1)),) if b1 else ()
+    terms2 = (Term("coriolis", c2, f"a^k_{C}{b2}", (C, b2)),) if b2 else ()
     aroute = (
-        Route(b1, a1, terms1, u1, f"∥ {sa.guide.label}", f"a^r_{C}{b1 or ''}", "sliding", s1_),
-        Route(b2, a2, terms2, u2, f"∥ {sb.guide.label}", f"a^r_{C}{b2 or ''}", "sliding", s2_),
+        Route(b1, a1, terms1, u1, f"∥ {sa.guide.label}", f"a^r_{C}{b1 or ''}", "sliding", s1),
+        Route(b2, a2, terms2, u2, f"∥ {sb.guide.label}", f"a^r_{C}{b2 or ''}", "sliding", s2),
     )
     for lid, u, s in ((g.a, u1, sa), (g.b, u2, sb)):
         k = states[s.guide.link]
@@ -486,58 +469,50 @@ def _prp(sv: Solver, g: Group, sigma, states, pos, vel, acc):
         g,
         Construction(C, vC, vroute, sine, f"V_{C} = V_{b1 or '0'} + V_{C}{b1 or ''} = V_{b2 or '0'} + V_{C}{b2 or ''}"),
         Construction(C, aC, aroute, sine, f"a_{C} = a_{b1 or '0'} + a^k + a^r = a_{b2 or '0'} + a^k + a^r"),
-        valid, np.zeros(Cw.shape), "the two guides not parallel", ~valid,
+        *((True, 0.0) if xp.scalar else (good, np.zeros(np.shape(Cw)))),
+        "the two guides not parallel", False if xp.scalar else ~good,
         f"the guides {sa.guide.label} and {sb.guide.label} are parallel: the hinge {C} is not fixed",
     )
     extra = {b: (s.guide.link, C) for b, s in ((b1, sa), (b2, sb)) if b}
     return sol, extra
 
 
-def _rpp(sv: Solver, g: Group, sigma, states, pos, vel, acc):
+def _rpp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     P, s_in, s_out = g.P, g.s1, g.s2  # block g.a at P slides along s_in carried by g.b
     B = g.b
-    Gk, uk = sv.guide_world(s_out.guide, states)
+    Gk, uk, vG, aG, wk, ek = _guide(s_out.guide, states)
     locD = sv.local(B, s_out.point)
-    g0, gd = s_in.guide.point, s_in.guide.direction
+    gd = s_in.guide.direction
+    if abs(gd.imag) <= SINGULAR_SINE:
+        if xp.scalar:
+            raise _Fallback
+        gd = 1j  # placeholder direction: every angle is reported as not closing
     Pw = pos[P]
-    z = (Pw - Gk) / uk + locD - g0
-    im = gd.imag
-    valid = np.broadcast_to(abs(im) > SINGULAR_SINE, Pw.shape).copy()
-    t = z.imag / (im if abs(im) > 0 else 1.0)
-    sl = z.real - t * gd.real
-    oB = Gk - uk * locD + sl * uk
-    rB = uk
-    us = uk * gd  # the inner guide on the plan of positions
+    oB, us, vP3, aP3, (vk, ak, c1, c2, t1, t2, s1, s2, sine) = kernels.rpp(
+        xp, Pw, vel[P], acc[P], Gk, uk, vG, aG, wk, ek, locD, s_in.guide.point, gd)
+    good = abs(s_in.guide.direction.imag) > SINGULAR_SINE
     name = coincident_name(P, B)
     bk = _base_name(P, s_out.guide)
-    vk = _slide_base(sv, s_out.guide, Pw, states, "v")
-    t1, t2, sine = intersect(vel[P], us, vk, uk)
-    vP3 = vel[P] + t1 * us
     vroute = (
         Route(P, vel[P], (), us, f"∥ {s_in.guide.label}", f"V_{name}{P}", "sliding", t1),
         Route(bk, vk, (), uk, f"∥ {s_out.guide.label}", f"V_{name}{bk or ''}", "sliding", t2),
     )
-    omega = states[s_out.guide.link].omega
-    eps = states[s_out.guide.link].epsilon
-    ak = _slide_base(sv, s_out.guide, Pw, states, "a")
-    c1 = 2j * omega * (t1 * us)
-    terms1 = (Term("coriolis", c1, f"a^k_{name}{P}", (name, P)),) if s_out.guide.link != 0 else ()
-    terms2 = (Term("coriolis", _coriolis(states, s_out.guide, t2 * uk), f"a^k_{name}{bk}", (name, bk)),) if bk else ()
-    c1v = c1 if terms1 else 0.0
-    c2v = terms2[0].value if terms2 else 0.0
-    s1_, s2_, _ = intersect(acc[P] + c1v, us, ak + c2v, uk)
-    aP3 = acc[P] + c1v + s1_ * us
+    terms1 = (Term("coriolis", c1, f"a^k_{name}{P}", (name, P)),) if c1 is not None else ()
+    terms2 = (Term("coriolis", c2, f"a^k_{name}{bk}", (name, bk)),) if bk else ()
     aroute = (
-        Route(P, acc[P], terms1, us, f"∥ {s_in.guide.label}", f"a^r_{name}{P}", "sliding", s1_),
-        Route(bk, ak, terms2, uk, f"∥ {s_out.guide.label}", f"a^r_{name}{bk or ''}", "sliding", s2_),
+        Route(P, acc[P], terms1, us, f"∥ {s_in.guide.label}", f"a^r_{name}{P}", "sliding", s1),
+        Route(bk, ak, terms2, uk, f"∥ {s_out.guide.label}", f"a^r_{name}{bk or ''}", "sliding", s2),
     )
-    states[B] = _state(oB, rB, Pw, vP3, aP3, omega, eps)
-    states[g.a] = _state(Pw - us * sv.local(g.a, P), us, Pw, vel[P], acc[P], omega, eps)
+    kst = states[s_out.guide.link]
+    states[B] = _state(oB, uk, Pw, vP3, aP3, kst.omega, kst.epsilon)
+    states[g.a] = _state(Pw - us * sv.local(g.a, P), us, Pw, vel[P], acc[P], kst.omega, kst.epsilon)
+    shape = np.shape(Pw)
     sol = GroupSolution(
         g,
         Construction(name, vP3, vroute, sine, f"V_{name} = V_{P} + V_{name}{P} = V_{bk or '0'} + V_{name}{bk or ''}"),
         Construction(name, aP3, aroute, sine, f"a_{name} = a_{P} + a^k + a^r = a_{bk or '0'} + a^k + a^r"),
-        valid, np.zeros(Pw.shape), "the two guides not parallel", ~valid,
+        *((True, 0.0) if xp.scalar else (np.full(shape, good), np.zeros(shape))),
+        "the two guides not parallel", False if xp.scalar else np.full(shape, not good),
         f"the guide {s_in.guide.label} of link {B} is parallel to the guide "
         f"{s_out.guide.label}: the yoke's position is not fixed",
     )
@@ -545,7 +520,6 @@ def _rpp(sv: Solver, g: Group, sigma, states, pos, vel, acc):
     if bk:
         extra[bk] = (s_out.guide.link, P)
     return sol, extra
-
 
 SOLVERS = {
     DyadKind.RRR: _rrr,

@@ -9,7 +9,10 @@ and the check of a student's plan all read this one object.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
+from functools import cached_property
+from typing import NamedTuple
 
 import numpy as np
 
@@ -22,11 +25,16 @@ from .structure import Structure
 
 def plan_name(point: str) -> str:
     """Mechanism point → plan point: A3 → a3, S3 → s3."""
-    return point.lower()
+    try:
+        return _PLAN_NAMES[point]
+    except KeyError:
+        return _PLAN_NAMES.setdefault(point, point.lower())
 
 
-@dataclass(frozen=True, slots=True)
-class PlanLine:
+_PLAN_NAMES: dict[str, str] = {}
+
+
+class PlanLine(NamedTuple):
     """A line of known direction through a plan point: "through n1, ⊥ A3B"."""
 
     through: str
@@ -35,8 +43,7 @@ class PlanLine:
     unknown: str  # the term the line carries, e.g. "a^t_A3B"
 
 
-@dataclass(frozen=True, slots=True)
-class Source:
+class Source(NamedTuple):
     """How a plan point was obtained.
 
     kind: "pole" (a fixed point), "driver", "intersection" (of ``lines``), "component"
@@ -54,15 +61,13 @@ class Source:
     label: str = ""  # the physical term, e.g. "a^k_A3A"
 
 
-@dataclass(frozen=True, slots=True)
-class PlanPoint:
+class PlanPoint(NamedTuple):
     name: str
     value: complex  # the vector from the pole: m/s or m/s²
     source: Source
 
 
-@dataclass(frozen=True, slots=True)
-class PlanVector:
+class PlanVector(NamedTuple):
     start: str
     end: str
     component: str  # absolute, relative, normal, tangential, coriolis, sliding
@@ -91,7 +96,7 @@ class Solution:
     mechanism: Mechanism
     structure: Structure
     phi: float
-    motion: Motion  # arrays of one angle, for everything the plans do not name
+    solver: Solver
     positions: dict[str, complex]
     velocity: Plan
     acceleration: Plan
@@ -101,6 +106,8 @@ class Solution:
     segments: dict[str, float]  # mm
     lengths: dict[str, float]  # m, position plan segments
     warnings: tuple[str, ...] = field(default_factory=tuple)
+    #: the recorded solution on Python numbers, that the plans were built from
+    scalar: Motion | None = field(default=None, repr=False, compare=False)
 
     @property
     def mu_v(self) -> float:
@@ -110,22 +117,28 @@ class Solution:
     def mu_a(self) -> float:
         return self.acceleration.mu
 
+    @cached_property
+    def motion(self) -> Motion:
+        """The same solution as arrays of one angle, for everything the plans do not name.
+
+        Solved again on first use, by the array path: the plans come from the scalar
+        path, and the two share every group formula.
+        """
+        with np.errstate(all="ignore"):
+            return self.solver.solve(np.array([self.phi]))
+
 
 def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | None = None,
                    mu: dict[str, float] | None = None) -> Solution:
     """Positions and both plans at crank angle ``phi`` (rad from +x; default: the file's)."""
     solver = solver or Solver(mech)
     phi = mech.driver.phi if phi is None else float(phi)
-    with np.errstate(all="ignore"):
-        motion = solver.solve(np.array([phi]))
-    deg = np.degrees(phi) % 360
-    for g in motion.groups:
-        if not g.valid[0]:
-            raise g.failure(0, deg)
+    motion = solver.solve_one(phi)
+    deg = math.degrees(phi) % 360
     warnings = []
     for g in motion.groups:
-        s = float(g.velocity.sine[0])
-        ang = np.degrees(np.arcsin(min(abs(s), 1.0)))
+        s = g.velocity.sine
+        ang = math.degrees(math.asin(min(abs(s), 1.0)))
         r0, r1 = g.velocity.routes
         if abs(s) < SINGULAR_SINE:
             raise SingularPlanError(
@@ -147,19 +160,20 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     builder = _Builder(mech, solver.structure, motion)
     vplan = builder.velocity(scales.get("mu_v"))
     aplan = builder.acceleration(scales.get("mu_a"))
-    positions = {k: complex(v[0]) for k, v in motion.position.items()}
+    positions = dict(motion.position)
     lengths = _position_segments(mech, motion, positions)
-    segments = {k: v / scales["mu_l"] for k, v in lengths.items()}
+    mu_l = scales["mu_l"]
+    segments = {k: v / mu_l for k, v in lengths.items()}
     for plan in (vplan, aplan):
         segments.update(_plan_segments(plan))
     links = sorted(mech.links)
     return Solution(
-        mechanism=mech, structure=solver.structure, phi=phi, motion=motion,
+        mechanism=mech, structure=solver.structure, phi=phi, solver=solver,
         positions=positions, velocity=vplan, acceleration=aplan,
-        omega={i: float(motion.links[i].omega[0]) for i in links},
-        epsilon={i: float(motion.links[i].epsilon[0]) for i in links},
-        mu_l=scales["mu_l"], segments=segments, lengths=lengths,
-        warnings=tuple(warnings),
+        omega={i: float(motion.links[i].omega) for i in links},
+        epsilon={i: float(motion.links[i].epsilon) for i in links},
+        mu_l=mu_l, segments=segments, lengths=lengths,
+        warnings=tuple(warnings), scalar=motion,
     )
 
 
@@ -208,23 +222,24 @@ def _plan_segments(plan: Plan) -> dict[str, float]:
 
 
 class _Builder:
-    """Turns the recorded constructions of a one-angle Motion into the two plans."""
+    """Turns the recorded constructions of a one-angle scalar Motion into the two plans."""
 
     def __init__(self, mech: Mechanism, structure: Structure, motion: Motion):
         self.mech = mech
         self.structure = structure
         self.m = motion
-        self.pos = {k: complex(v[0]) for k, v in motion.position.items()}
+        self.pos = motion.position
         n_cor = sum(
             1 for g in motion.groups for r in g.acceleration.routes for t in r.terms
             if t.kind == "coriolis"
         )
         self.single_k = n_cor == 1
+        self.link_points = {lid: list(link.points) for lid, link in mech.links.items()}
+        for n in motion.coincident:
+            self.link_points[motion.point_link[n]].append(n)
 
     def _link_points(self, lid: int) -> list[str]:
-        pts = list(self.mech.links[lid].points)
-        pts += [n for n, owner in self.m.point_link.items() if owner == lid and n in self.m.coincident]
-        return pts
+        return self.link_points[lid]
 
     def velocity(self, mu):
         return self._plan("velocity", mu)
@@ -252,7 +267,7 @@ class _Builder:
         for name in self.mech.frame:
             add(name, 0j, Source("pole"), absolute=False)
         drv = self.mech.driver
-        tip_val = complex(store[drv.tip][0])
+        tip_val = store[drv.tip]
         if acc:
             eq = f"a_{drv.tip} = a^n_{drv.tip}{drv.pivot} = ω1²·l_{drv.pivot}{drv.tip}"
             rel = f"∥ {drv.tip}{drv.pivot}, from {drv.tip} to {drv.pivot}"
@@ -277,18 +292,18 @@ class _Builder:
                     tname = f"{tag}{counters[tag]}"
                     if tag == "k" and self.single_k:
                         tname = "k"
-                    val = (points[start].value if start != pole else 0j) + complex(t.value[0])
+                    val = (points[start].value if start != pole else 0j) + t.value
                     points[tname] = PlanPoint(
                         tname, val,
                         Source("component", equation=_term_formula(t), base=start, label=t.label),
                     )
                     vectors.append(PlanVector(start, tname, t.kind, t.label))
                     start = tname
-                lines.append(PlanLine(start, complex(r.direction[0]), r.relation, r.unknown))
+                lines.append(PlanLine(start, r.direction, r.relation, r.unknown))
             new = cons.point
-            val = complex(store[new][0])
+            val = store[new]
             add(new, val, Source("intersection", equation=cons.equation, lines=tuple(lines),
-                                 sine=float(cons.sine[0])))
+                                 sine=float(cons.sine)))
             for ln, r in zip(lines, cons.routes, strict=True):
                 if ln.through != pole or r.unknown_kind != "sliding":
                     vectors.append(PlanVector(ln.through, plan_name(new), r.unknown_kind, r.unknown))
@@ -322,7 +337,7 @@ class _Builder:
                     eq = f"△{n0}{n1}{nx} ∼ △{b0}{b1}{name}"
                 add(name, value, Source("similarity", equation=eq, base=n0, other=n1, ratio=ratio))
             else:
-                value = complex(store[name][0])
+                value = store[name]
                 add(name, value, Source("rigid", equation=f"{sym}_{name}: link {lid} moves with {base[0] if base else 'its guide'}"))
             base.append(name)
 

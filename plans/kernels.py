@@ -1,0 +1,202 @@
+"""The formulas of the five dyad kinds: one function per kind, shared by every path.
+
+Each kernel takes the known points of its group (world position, velocity and
+acceleration as complex numbers) and the motion of any guide it slides on, and returns
+the new point's position, velocity and acceleration, the ω and ε of its links, and the
+pieces of the construction (line directions, line parameters, normal and Coriolis terms,
+the sine between the two lines). Three callers share them, so they cannot drift apart:
+
+* :class:`plans.kinematics.Solver` records every construction over an array of angles;
+* its one-angle path runs the same kernels on Python complex numbers (``SCALAR``),
+  about twenty times faster than numpy on one-element arrays;
+* :func:`plans.sweep.sweep` runs them in cache-sized blocks for bulk work, keeping
+  only the results.
+
+``xp`` supplies the few non-arithmetic functions (square root, maximum, where) for
+numpy arrays (``ARRAY``) or Python scalars (``SCALAR``); everything else is operator
+arithmetic and ``.conjugate()``, ``.real``, ``.imag``, which both kinds of value share.
+
+A guide's link ``k`` enters as ``G, vG, aG, wk, ek``: a world point of the guide line,
+that point's velocity and acceleration, and ω, ε of link k (zeros for the frame).
+Unit direction vectors stay unit to rounding, so the cross product of two of them is
+already the sine of the angle between them.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+
+class _Array:
+    scalar = False
+    sqrt = staticmethod(np.sqrt)
+    maximum = staticmethod(np.maximum)
+    where = staticmethod(np.where)
+
+
+class _Scalar:
+    scalar = True
+    sqrt = staticmethod(math.sqrt)
+    maximum = staticmethod(max)
+
+    @staticmethod
+    def where(cond, a, b):
+        return a if cond else b
+
+
+ARRAY = _Array()
+SCALAR = _Scalar()
+
+
+def cross(a, b):
+    """z-component of a × b for plane vectors written as complex numbers."""
+    return (a.conjugate() * b).imag
+
+
+def meet(w, d1, d2, den):
+    """Parameters (t1, t2) where p1 + t1·d1 = p2 + t2·d2, given w = p2 − p1 and
+    den = cross(d1, d2)."""
+    cw = w.conjugate()
+    return (cw * d2).imag / den, (cw * d1).imag / den
+
+
+def heron(l1, l2, d):
+    """(2d·h)² for the triangle of sides l1, l2, d, as a product of four factors that
+    stays accurate at tangency. Negative: the triangle does not close."""
+    return (d + (l1 + l2)) * (d + (l2 - l1)) * (d - (l2 - l1)) * ((l1 + l2) - d)
+
+
+def rrr(xp, sigma, l2, l3, P, vP, aP, Q, vQ, aQ):
+    """C on link 2 (|PC| = l2) and link 3 (|QC| = l3), on the side ``sigma`` of P→Q.
+
+    V_C = V_P + V_CP (⊥ CP) = V_Q + V_CQ (⊥ CQ);
+    a_C = a_P + a^n_CP + a^t_CP = a_Q + a^n_CQ + a^t_CQ.
+    """
+    w = Q - P
+    d = abs(w)
+    disc = heron(l2, l3, d)
+    inv = 1.0 / d
+    along = (l2 * l2 - l3 * l3 + d * d) * (0.5 * inv)
+    h = xp.sqrt(xp.maximum(disc, 0.0)) * (0.5 * sigma * inv)
+    C = P + (along + 1j * h) * (w * inv)
+    rP, rQ = C - P, C - Q
+    d1, d2 = rP * (1j / l2), rQ * (1j / l3)
+    sine = cross(d1, d2)
+    t1, t2 = meet(vQ - vP, d1, d2, sine)
+    vC = vP + t1 * d1
+    w2, w3 = t1 / l2, t2 / l3
+    nP, nQ = rP * -(w2 * w2), rQ * -(w3 * w3)
+    s1, s2 = meet((aQ + nQ) - (aP + nP), d1, d2, sine)
+    aC = aP + nP + s1 * d1
+    return C, vC, aC, w2, s1 / l2, w3, s2 / l3, (d1, d2, t1, t2, s1, s2, nP, nQ, sine, disc, d)
+
+
+def _guide_motion(C, G, vG, aG, wk, ek):
+    """Velocity and acceleration of the point of the guide's link under C."""
+    if wk is None:  # the frame
+        return vG, aG
+    r = C - G
+    return vG + r * (1j * wk), aG + r * (1j * ek - wk * wk)
+
+
+def rrp(xp, sigma, l2, P, vP, aP, G, u, vG, aG, wk, ek):
+    """C on link 2 (|PC| = l2) and on the guide G + t·u, ``sigma`` along u from the
+    foot of P. ``wk`` is None for a guide on the frame.
+
+    V_C = V_P + V_CP (⊥ CP) = V_Ck + V_CCk (∥ guide);
+    a_C = a_P + a^n_CP + a^t_CP = a_Ck + a^k_CCk + a^r_CCk.
+    """
+    w = P - G
+    cw = w.conjugate() * u  # conj(w)·u: real part along u, imaginary part −(u × w)
+    h = abs(cw.imag)
+    disc = (l2 - h) * (l2 + h)
+    C = G + (cw.real + sigma * xp.sqrt(xp.maximum(disc, 0.0))) * u
+    rP = C - P
+    d1 = rP * (1j / l2)
+    sine = cross(d1, u)
+    vCk, aCk = _guide_motion(C, G, vG, aG, wk, ek)
+    t1, t2 = meet(vCk - vP, d1, u, sine)
+    vC = vP + t1 * d1
+    w2 = t1 / l2
+    nP = rP * -(w2 * w2)
+    cor = None if wk is None else u * (2j * wk * t2)
+    known2 = aCk if cor is None else aCk + cor
+    s1, s2 = meet(known2 - (aP + nP), d1, u, sine)
+    aC = aP + nP + s1 * d1
+    return C, vC, aC, w2, s1 / l2, (d1, t1, t2, s1, s2, nP, vCk, aCk, cor, sine, disc, h)
+
+
+def rpr(xp, sigma, e, gd, P, vP, aP, Q, vQ, aQ):
+    """The block at P slides on the guide of a link turning about Q; the guide runs at
+    offset ``e`` from Q with local direction ``gd``. Returns the rocker's rotor too.
+
+    V_P3 = V_P + V_P3P (∥ guide) = V_Q + V_P3Q (⊥ QP3);
+    a_P3 = a_P + a^k_P3P + a^r_P3P = a_Q + a^n_P3Q + a^t_P3Q.
+    """
+    w = P - Q
+    dist = abs(w)
+    ae = abs(e)
+    disc = (dist - ae) * (dist + ae)
+    tau = sigma * xp.sqrt(xp.maximum(disc, 0.0))
+    safe = xp.where(dist > 0, dist, 1.0)
+    rot = w / ((tau + 1j * e) * gd)
+    rot = rot / abs(rot)
+    u = rot * gd
+    d2 = w * (1j / safe)
+    sine = cross(u, d2)
+    t1, t2 = meet(vQ - vP, u, d2, sine)
+    vP3 = vP + t1 * u
+    w3 = t2 / safe
+    cor = u * (2j * w3 * t1)
+    nQ = w * -(w3 * w3)
+    s1, s2 = meet((aQ + nQ) - (aP + cor), u, d2, sine)
+    aP3 = aP + cor + s1 * u
+    return rot, u, vP3, aP3, w3, s2 / safe, (d2, t1, t2, s1, s2, cor, nQ, sine, disc, dist)
+
+
+def prp(xp, G1, u1, vG1, aG1, w1, e1, G2, u2, vG2, aG2, w2, e2):
+    """C slides on two guides, each carried by a link (``w`` None for the frame).
+
+    V_C = V_C1 + V_CC1 (∥ guide 1) = V_C2 + V_CC2 (∥ guide 2).
+    """
+    sine = cross(u1, u2)
+    t, _ = meet(G2 - G1, u1, u2, sine)
+    C = G1 + t * u1
+    v1, a1 = _guide_motion(C, G1, vG1, aG1, w1, e1)
+    v2, a2 = _guide_motion(C, G2, vG2, aG2, w2, e2)
+    t1, t2 = meet(v2 - v1, u1, u2, sine)
+    vC = v1 + t1 * u1
+    c1 = None if w1 is None else u1 * (2j * w1 * t1)
+    c2 = None if w2 is None else u2 * (2j * w2 * t2)
+    k1 = a1 if c1 is None else a1 + c1
+    k2 = a2 if c2 is None else a2 + c2
+    s1, s2 = meet(k2 - k1, u1, u2, sine)
+    aC = k1 + s1 * u1
+    return C, vC, aC, (v1, v2, a1, a2, c1, c2, t1, t2, s1, s2, sine)
+
+
+def rpp(xp, P, vP, aP, G, u, vG, aG, wk, ek, locD, g0, gd):
+    """The block at P slides along the inner guide (point g0, direction gd, local to the
+    yoke B); the yoke slides along the outer guide G + t·u of link k through its own
+    point ``locD``. Returns the yoke's origin too.
+
+    V_P3 = V_P + V_P3P (∥ inner guide) = V_Pk + V_P3Pk (∥ outer guide).
+    """
+    z = (P - G) * u.conjugate() + (locD - g0)
+    t = z.imag / gd.imag
+    sl = z.real - t * gd.real
+    oB = G + (sl - locD) * u
+    us = u * gd
+    sine = cross(us, u)
+    vk, ak = _guide_motion(P, G, vG, aG, wk, ek)
+    t1, t2 = meet(vk - vP, us, u, sine)
+    vP3 = vP + t1 * us
+    c1 = None if wk is None else us * (2j * wk * t1)
+    c2 = None if wk is None else u * (2j * wk * t2)
+    k1 = aP if c1 is None else aP + c1
+    k2 = ak if c2 is None else ak + c2
+    s1, s2 = meet(k2 - k1, us, u, sine)
+    aP3 = k1 + s1 * us
+    return oB, us, vP3, aP3, (vk, ak, c1, c2, t1, t2, s1, s2, sine)

@@ -1,0 +1,78 @@
+"""The engine's paths agree: the recorded array solve, its one-angle scalar path and the
+blocked bulk sweep run the same group kernels (``plans/kernels.py``), so at every angle
+they must give the same numbers to rounding, and fail in the same words where a group
+does not close or a plan is singular."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from plans.scenes import SCENES
+
+from plans.errors import AssemblyError, SingularPlanError
+from plans.kinematics import Solver
+
+ALL = sorted(SCENES)
+TOL = 1e-14  # relative to the largest value of the quantity at that angle
+
+
+def _rel(a, b) -> float:
+    scale = max(max(abs(complex(v)) for v in b.values()), 1e-300)
+    return max(abs(complex(a[k]) - complex(b[k])) / scale for k in b)
+
+
+def _angles(scene, n=25):
+    return scene.mechanism().driver.phi + np.linspace(0, 2 * np.pi, n, endpoint=False)
+
+
+@pytest.mark.parametrize("name", ALL)
+def test_scalar_path_equals_array_path(name):
+    """Every point, link and recorded construction of ``solve_one`` equals ``solve``."""
+    mech = SCENES[name].mechanism()
+    sv = Solver(mech)
+    phi = _angles(SCENES[name])
+    arr = sv.solve(phi)
+    compared = 0
+    for k, x in enumerate(phi):
+        if not arr.valid[k]:
+            with pytest.raises((AssemblyError, SingularPlanError)):
+                sv.solve_one(float(x))
+            continue
+        one = sv.solve_one(float(x))
+        assert type(one.position[mech.driver.tip]) is complex
+        for field in ("position", "velocity", "acceleration"):
+            got, want = getattr(one, field), getattr(arr, field)
+            assert set(got) == set(want)
+            assert _rel(got, {n: v[k] for n, v in want.items()}) < TOL, (field, k)
+        for lid, st in arr.links.items():
+            w = max(abs(mech.driver.omega), 1.0)
+            assert abs(one.links[lid].omega - st.omega[k]) <= TOL * w
+            assert abs(one.links[lid].epsilon - st.epsilon[k]) <= TOL * w * w * 1e2
+        for g1, ga in zip(one.groups, arr.groups, strict=True):
+            for c1, ca in ((g1.velocity, ga.velocity), (g1.acceleration, ga.acceleration)):
+                assert abs(c1.sine - ca.sine[k]) < 1e-14
+                for r1, ra in zip(c1.routes, ca.routes, strict=True):
+                    assert (r1.relation, r1.unknown, r1.base) == (ra.relation, ra.unknown, ra.base)
+                    assert abs(r1.direction - ra.direction[k]) < 1e-14
+                    assert [t.label for t in r1.terms] == [t.label for t in ra.terms]
+                    for t1, ta in zip(r1.terms, ra.terms, strict=True):
+                        assert abs(t1.value - ta.value[k]) <= TOL * max(abs(ta.value[k]), 1.0)
+        compared += 1
+    assert compared >= 10
+
+
+def test_scalar_path_fails_in_the_array_paths_words():
+    """A group that misses, and a dead point, raise the same message on both paths."""
+    mech = SCENES["fourbar"].mechanism()  # seed 001's four-bar: not a full turn
+    sv = Solver(mech)
+    phi = np.radians(np.arange(0, 360, 1.0))
+    arr = sv.solve(phi)
+    bad = np.nonzero(~arr.valid)[0]
+    assert bad.size > 0
+    k = int(bad[0])
+    with pytest.raises(AssemblyError) as one:
+        sv.solve_one(float(phi[k]))
+    assert str(one.value) == str(arr.groups[0].failure(k, math.degrees(phi[k]) % 360))
+    assert "misses by" in str(one.value)
