@@ -55,11 +55,11 @@ def cross(a, b):
     return (a.conjugate() * b).imag
 
 
-def meet(w, d1, d2, den):
+def meet(w, d1, d2, inv):
     """Parameters (t1, t2) where p1 + t1·d1 = p2 + t2·d2, given w = p2 − p1 and
-    den = cross(d1, d2)."""
+    inv = 1 / cross(d1, d2) (shared by a group's velocity and acceleration plans)."""
     cw = w.conjugate()
-    return (cw * d2).imag / den, (cw * d1).imag / den
+    return (cw * d2).imag * inv, (cw * d1).imag * inv
 
 
 def heron(l1, l2, d):
@@ -84,13 +84,16 @@ def rrr(xp, sigma, l2, l3, P, vP, aP, Q, vQ, aQ):
     rP, rQ = C - P, C - Q
     d1, d2 = rP * (1j / l2), rQ * (1j / l3)
     sine = cross(d1, d2)
-    t1, t2 = meet(vQ - vP, d1, d2, sine)
+    inv = 1.0 / sine
+    t1, t2 = meet(vQ - vP, d1, d2, inv)
     vC = vP + t1 * d1
-    w2, w3 = t1 / l2, t2 / l3
+    w2, w3 = t1 * (1 / l2), t2 * (1 / l3)
     nP, nQ = rP * -(w2 * w2), rQ * -(w3 * w3)
-    s1, s2 = meet((aQ + nQ) - (aP + nP), d1, d2, sine)
-    aC = aP + nP + s1 * d1
-    return C, vC, aC, w2, s1 / l2, w3, s2 / l3, (d1, d2, t1, t2, s1, s2, nP, nQ, sine, disc, d)
+    k1 = aP + nP
+    s1, s2 = meet((aQ + nQ) - k1, d1, d2, inv)
+    aC = k1 + s1 * d1
+    return (C, vC, aC, w2, s1 * (1 / l2), w3, s2 * (1 / l3),
+            (d1, d2, t1, t2, s1, s2, nP, nQ, sine, disc, d))
 
 
 def _guide_motion(C, G, vG, aG, wk, ek):
@@ -116,16 +119,18 @@ def rrp(xp, sigma, l2, P, vP, aP, G, u, vG, aG, wk, ek):
     rP = C - P
     d1 = rP * (1j / l2)
     sine = cross(d1, u)
+    inv = 1.0 / sine
     vCk, aCk = _guide_motion(C, G, vG, aG, wk, ek)
-    t1, t2 = meet(vCk - vP, d1, u, sine)
+    t1, t2 = meet(vCk - vP, d1, u, inv)
     vC = vP + t1 * d1
-    w2 = t1 / l2
+    w2 = t1 * (1 / l2)
     nP = rP * -(w2 * w2)
     cor = None if wk is None else u * (2j * wk * t2)
     known2 = aCk if cor is None else aCk + cor
-    s1, s2 = meet(known2 - (aP + nP), d1, u, sine)
-    aC = aP + nP + s1 * d1
-    return C, vC, aC, w2, s1 / l2, (d1, t1, t2, s1, s2, nP, vCk, aCk, cor, sine, disc, h)
+    k1 = aP + nP
+    s1, s2 = meet(known2 - k1, d1, u, inv)
+    aC = k1 + s1 * d1
+    return C, vC, aC, w2, s1 * (1 / l2), (d1, t1, t2, s1, s2, nP, vCk, aCk, cor, sine, disc, h)
 
 
 def rpr(xp, sigma, e, gd, P, vP, aP, Q, vQ, aQ):
@@ -146,13 +151,15 @@ def rpr(xp, sigma, e, gd, P, vP, aP, Q, vQ, aQ):
     u = rot * gd
     d2 = w * (1j / safe)
     sine = cross(u, d2)
-    t1, t2 = meet(vQ - vP, u, d2, sine)
+    inv = 1.0 / sine
+    t1, t2 = meet(vQ - vP, u, d2, inv)
     vP3 = vP + t1 * u
     w3 = t2 / safe
     cor = u * (2j * w3 * t1)
     nQ = w * -(w3 * w3)
-    s1, s2 = meet((aQ + nQ) - (aP + cor), u, d2, sine)
-    aP3 = aP + cor + s1 * u
+    k1 = aP + cor
+    s1, s2 = meet((aQ + nQ) - k1, u, d2, inv)
+    aP3 = k1 + s1 * u
     return rot, u, vP3, aP3, w3, s2 / safe, (d2, t1, t2, s1, s2, cor, nQ, sine, disc, dist)
 
 
@@ -162,17 +169,18 @@ def prp(xp, G1, u1, vG1, aG1, w1, e1, G2, u2, vG2, aG2, w2, e2):
     V_C = V_C1 + V_CC1 (∥ guide 1) = V_C2 + V_CC2 (∥ guide 2).
     """
     sine = cross(u1, u2)
-    t, _ = meet(G2 - G1, u1, u2, sine)
+    inv = 1.0 / sine
+    t, _ = meet(G2 - G1, u1, u2, inv)
     C = G1 + t * u1
     v1, a1 = _guide_motion(C, G1, vG1, aG1, w1, e1)
     v2, a2 = _guide_motion(C, G2, vG2, aG2, w2, e2)
-    t1, t2 = meet(v2 - v1, u1, u2, sine)
+    t1, t2 = meet(v2 - v1, u1, u2, inv)
     vC = v1 + t1 * u1
     c1 = None if w1 is None else u1 * (2j * w1 * t1)
     c2 = None if w2 is None else u2 * (2j * w2 * t2)
     k1 = a1 if c1 is None else a1 + c1
     k2 = a2 if c2 is None else a2 + c2
-    s1, s2 = meet(k2 - k1, u1, u2, sine)
+    s1, s2 = meet(k2 - k1, u1, u2, inv)
     aC = k1 + s1 * u1
     return C, vC, aC, (v1, v2, a1, a2, c1, c2, t1, t2, s1, s2, sine)
 
@@ -190,13 +198,14 @@ def rpp(xp, P, vP, aP, G, u, vG, aG, wk, ek, locD, g0, gd):
     oB = G + (sl - locD) * u
     us = u * gd
     sine = cross(us, u)
+    inv = 1.0 / sine
     vk, ak = _guide_motion(P, G, vG, aG, wk, ek)
-    t1, t2 = meet(vk - vP, us, u, sine)
+    t1, t2 = meet(vk - vP, us, u, inv)
     vP3 = vP + t1 * us
     c1 = None if wk is None else us * (2j * wk * t1)
     c2 = None if wk is None else u * (2j * wk * t2)
     k1 = aP if c1 is None else aP + c1
     k2 = ak if c2 is None else ak + c2
-    s1, s2 = meet(k2 - k1, us, u, sine)
+    s1, s2 = meet(k2 - k1, us, u, inv)
     aP3 = k1 + s1 * us
     return oB, us, vP3, aP3, (vk, ak, c1, c2, t1, t2, s1, s2, sine)

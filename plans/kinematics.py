@@ -182,6 +182,13 @@ class Solver:
             zero = np.zeros_like(phi)
             return self._solve(kernels.ARRAY, phi, zero, np.exp(1j * phi))
 
+    def sweep(self, phi, **options):
+        """Every point and link at many angles, without the recorded constructions:
+        the same kernels block by block (:func:`plans.sweep.sweep`), for bulk work."""
+        from . import sweep
+
+        return sweep.sweep(self, phi, **options)
+
     def solve_one(self, phi: float) -> Motion:
         """The same recorded solution at one crank angle, on Python numbers.
 

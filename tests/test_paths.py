@@ -76,3 +76,64 @@ def test_scalar_path_fails_in_the_array_paths_words():
         sv.solve_one(float(phi[k]))
     assert str(one.value) == str(arr.groups[0].failure(k, math.degrees(phi[k]) % 360))
     assert "misses by" in str(one.value)
+
+
+@pytest.mark.parametrize("name", ALL)
+@pytest.mark.parametrize("block", [7, 8192])
+def test_sweep_equals_array_path(name, block):
+    """The blocked sweep gives every point, ω, ε, conditioning and validity of ``solve``;
+    a block of 7 over 101 angles puts block edges everywhere, the last one ragged."""
+    mech = SCENES[name].mechanism()
+    sv = Solver(mech)
+    phi = mech.driver.phi + np.linspace(0, 2 * np.pi, 101)
+    arr = sv.solve(phi)
+    sw = sv.sweep(phi, block=block)
+    np.testing.assert_array_equal(sw.valid, arr.valid)
+    ok = arr.valid
+    assert ok.sum() > 50
+    for field in ("position", "velocity", "acceleration"):
+        got, want = getattr(sw, field), getattr(arr, field)
+        assert list(got) == list(want)
+        scale = np.max([np.abs(v[ok]) for v in want.values()], axis=0)
+        for k in want:
+            assert got[k].shape == phi.shape
+            assert np.all(np.abs(got[k][ok] - want[k][ok]) <= TOL * scale), (field, k)
+    for lid, st in arr.links.items():
+        w = abs(mech.driver.omega)
+        np.testing.assert_allclose(sw.omega[lid][ok], st.omega[ok], rtol=0, atol=TOL * w)
+        np.testing.assert_allclose(sw.epsilon[lid][ok], st.epsilon[ok], rtol=0, atol=1e2 * TOL * w * w)
+    assert list(sw.sine) == [g.group.label for g in arr.groups]
+    for g in arr.groups:
+        np.testing.assert_allclose(sw.sine[g.group.label][ok], np.abs(g.velocity.sine[ok]),
+                                   rtol=0, atol=1e-14)
+    np.testing.assert_allclose(sw.min_sine[ok], arr.min_sine[ok], rtol=0, atol=1e-14)
+
+
+def test_sweep_fixed_points_cost_no_memory_and_cannot_be_written():
+    mech = SCENES["press"].mechanism()
+    sw = Solver(mech).sweep(np.linspace(0, 1, 1000))
+    for name in mech.frame:
+        x = sw.position[name]
+        assert x.strides == (0,) and not x.flags.writeable
+        assert np.all(x == mech.frame[name]) and np.all(sw.velocity[name] == 0)
+    assert sw.omega[mech.driver.link].strides == (0,)
+    assert np.all(sw.omega[mech.driver.link] == mech.driver.omega)
+
+
+def test_sweep_into_reuses_the_arrays_and_keeps_the_callers_angles():
+    mech = SCENES["crank_rocker"].mechanism()
+    sv = Solver(mech)
+    a = np.linspace(0, 2 * np.pi, 300)
+    b = a + 0.5
+    first = sv.sweep(a, block=64)
+    keep = {k: v for k, v in first.position.items()}
+    again = sv.sweep(b, block=64, into=first)
+    fresh = sv.sweep(b, block=64)
+    for k in fresh.position:
+        assert again.position[k] is keep[k]  # the same arrays, overwritten
+        np.testing.assert_array_equal(again.position[k], fresh.position[k])
+        np.testing.assert_array_equal(again.acceleration[k], fresh.acceleration[k])
+    np.testing.assert_array_equal(again.phi, b)
+    np.testing.assert_array_equal(a, np.linspace(0, 2 * np.pi, 300))  # the caller's input
+    with pytest.raises(ValueError, match="300 angles, not 299"):
+        sv.sweep(b[:-1], into=first)

@@ -1,0 +1,308 @@
+"""Bulk solution over many crank angles: the group kernels run block by block, results only.
+
+:meth:`plans.kinematics.Solver.solve` records every construction of every group (the
+routes, their terms and line directions) as arrays, which the plans, the note and the
+check need at a few angles. Over 10⁵–10⁶ angles that record is most of the memory
+traffic, so :func:`sweep` runs the same kernels (``plans/kernels.py``) and keeps only
+what a table or a chart uses: the position, velocity and acceleration of every point,
+ω and ε of every link, the conditioning of every group and where the mechanism closes.
+
+It works in blocks of :data:`BLOCK` angles, so that the twenty-odd arrays a group
+needs stay in the processor's cache, and writes each block into arrays allocated once.
+Fixed points cost nothing: their entries are read-only broadcast views of one number.
+Each link is carried through a block by one of its points (an anchor: position,
+velocity, acceleration), its rotor, ω and ε; any other point Y of it follows by the
+rigid-body formulas Y = X + r, V_Y = V_X + iω·r, a_Y = a_X + (iε − ω²)·r with
+r = rotor·(y − x) in the link's own coordinates.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import kernels
+from .kinematics import SINGULAR_SINE, Solver, coincident_name
+from .structure import DyadKind
+
+#: angles per block: 8192 complex numbers are 128 KiB an array, so the few arrays a step
+#: works on at a time stay in a core's 2 MiB second-level cache, while numpy's cost per
+#: call (about 0.6 µs here, some 200 calls a block) is spread over enough angles.
+#: Measured on the press: 1024 → 381, 2048 → 284, 4096 → 242, 8192 → 229,
+#: 16384 → 243 ns per angle for the blocks alone.
+BLOCK = 8192
+
+
+@dataclass(frozen=True)
+class Sweep:
+    """Every point and link over the crank angles ``phi`` (1-D), without the record.
+
+    ``sine`` holds, per group (by its label), the |sin| between the two lines its plans
+    intersect: the conditioning figure. Where ``valid`` is False a group does not close
+    and the values there are meaningless.
+    """
+
+    phi: np.ndarray
+    position: dict[str, np.ndarray]
+    velocity: dict[str, np.ndarray]
+    acceleration: dict[str, np.ndarray]
+    omega: dict[int, np.ndarray]
+    epsilon: dict[int, np.ndarray]
+    sine: dict[str, np.ndarray]
+    valid: np.ndarray
+
+    @property
+    def min_sine(self) -> np.ndarray:
+        out = np.ones_like(self.phi)
+        for s in self.sine.values():
+            out = np.minimum(out, s)
+        return out
+
+
+def sweep(sv: Solver, phi, block: int = BLOCK, into: Sweep | None = None) -> Sweep:
+    """Solve ``sv``'s mechanism at every angle of ``phi`` (rad from +x), block by block.
+
+    ``into``: a sweep of the same solver over as many angles, whose arrays are
+    overwritten instead of allocating new ones. Fresh memory is what a sweep of 10⁶
+    angles mostly waits for (the system zeroes every page on first touch), so a loop
+    that sweeps again and again, an animation or an optimisation, should pass the
+    previous result.
+    """
+    phi = np.ascontiguousarray(np.asarray(phi, dtype=float).ravel())
+    n = phi.size
+    block = max(int(block), 1)
+    _raise_malloc_thresholds()
+    with np.errstate(all="ignore"):
+        if into is not None:
+            if into.phi.shape != phi.shape:
+                raise ValueError(f"into: a sweep of {into.phi.size} angles, not {n}")
+            out = {"pos": into.position, "vel": into.velocity, "acc": into.acceleration}
+            omega, epsilon, sine, valid = into.omega, into.epsilon, into.sine, into.valid
+            into.phi[...] = phi
+            phi = into.phi
+        else:
+            probe = _Block(sv, phi[:1] if n else np.zeros(1))  # names, which are constant
+            out = {kind: {name: _out(v, n, complex) for name, v in getattr(probe, kind).items()}
+                   for kind in ("pos", "vel", "acc")}
+            omega = {lid: _out(ln[4], n, float) for lid, ln in probe.links.items()}
+            epsilon = {lid: _out(ln[5], n, float) for lid, ln in probe.links.items()}
+            sine = {label: np.empty(n) for label in probe.sine}
+            valid = np.empty(n, dtype=bool)
+            phi = phi.copy()  # the sweep owns its angles: a later into= overwrites them
+        for i in range(0, n, block):
+            j = min(i + block, n)
+            dest = {kind: {name: o[i:j] for name, o in outs.items() if o.flags.writeable}
+                    for kind, outs in out.items()}
+            part = _Block(sv, phi[i:j], dest)
+            for kind, outs in dest.items():
+                got = getattr(part, kind)
+                for name, o in outs.items():
+                    if got[name] is not o:
+                        o[...] = got[name]
+            for lid, ln in part.links.items():
+                for store, k in ((omega, 4), (epsilon, 5)):
+                    if store[lid].flags.writeable:
+                        store[lid][i:j] = ln[k]
+            for label, v in part.sine.items():
+                sine[label][i:j] = v
+            valid[i:j] = part.valid
+    return Sweep(phi, out["pos"], out["vel"], out["acc"], omega, epsilon, sine, valid)
+
+
+def _raise_malloc_thresholds() -> None:
+    """Free one 16 MiB block so that glibc's malloc keeps the blocks' temporaries.
+
+    Until it has seen a block that large freed, glibc serves each temporary of more
+    than 128 KiB with a fresh mmap and gives memory back to the system as soon as
+    128 KiB lie free at the top of the heap, so every block of every sweep faulted its
+    pages in anew (a third of the run time at 10⁶ angles here). Freeing one block
+    raises both thresholds for the rest of the process (mallopt(3), "dynamic mmap
+    threshold"); elsewhere it costs one untouched allocation.
+    """
+    np.empty(1 << 21).__array_interface__  # 2²¹ float64 = 16 MiB, never written
+
+
+def _out(first, n, dtype):
+    """An output array: allocated for a moving value, a read-only broadcast for a constant."""
+    if np.ndim(first) == 0:
+        return np.broadcast_to(np.asarray(first, dtype=dtype), (n,))
+    return np.empty(n, dtype=dtype)
+
+
+def _plus(a, b):
+    """a + b, skipping the zero of a fixed point (a Python 0j) instead of adding it."""
+    return b if isinstance(a, complex) and a == 0 else a + b
+
+
+class _Block:
+    """One block of angles, solved group by group with the shared kernels."""
+
+    def __init__(self, sv: Solver, phi: np.ndarray, dest: dict | None = None):
+        self.sv = sv
+        self.dest = dest or {"pos": {}, "vel": {}, "acc": {}}
+        mech = sv.mech
+        self.pos: dict = {}
+        self.vel: dict = {}
+        self.acc: dict = {}
+        # link id -> (anchor X, V_X, a_X, rotor, ω, ε, anchor's own coordinate)
+        self.links: dict[int, tuple] = {0: (0j, 0j, 0j, 1 + 0j, 0.0, 0.0, 0j)}
+        self.sine: dict[str, np.ndarray] = {}
+        self.valid = np.ones(phi.shape, dtype=bool)
+        for name, xy in mech.frame.items():
+            self.pos[name], self.vel[name], self.acc[name] = xy, 0j, 0j
+        drv = mech.driver
+        rotor = np.empty(phi.shape, dtype=complex)
+        np.cos(phi, out=rotor.real)
+        np.sin(phi, out=rotor.imag)
+        self.links[drv.link] = (mech.frame[drv.pivot], 0j, 0j, rotor, drv.omega, 0.0, 0j)
+        self._fill(drv.link)
+        xp = kernels.ARRAY
+        for g, sigma in zip(sv.structure.groups, sv.sigmas, strict=True):
+            self._pending: list = []
+            getattr(self, "_" + g.kind.name.lower())(xp, g, sigma)
+            for lid in (g.a, g.b):
+                self._fill(lid)
+            for args in self._pending:  # after the links' own points, as solve() orders them
+                self._put_coincident(*args)
+
+    # rigid-body helpers ----------------------------------------------------------------
+    def _fill(self, lid: int) -> None:
+        """Every point of link ``lid`` not known yet, from the link's anchor; written
+        straight into the sweep's output where it has one."""
+        X, vX, aX, rot, w, e, xl = self.links[lid]
+        jw = kk = None
+        for name, yl in self.sv.mech.links[lid].points.items():
+            if name in self.pos:
+                continue
+            if jw is None:
+                jw, kk = 1j * w, 1j * e - w * w
+            r = rot * (yl - xl)
+            self.pos[name] = self._sum("pos", name, X, r)
+            self.vel[name] = self._sum("vel", name, vX, r, jw)
+            self.acc[name] = self._sum("acc", name, aX, r, kk)
+
+    def _sum(self, kind, name, a, r, k=None):
+        """a + r·k (k omitted: a + r), into the output ``dest[kind][name]`` if there is one."""
+        o = self.dest[kind].get(name)
+        if o is None:
+            rk = r if k is None else r * k
+            return _plus(a, rk)
+        if k is None:
+            np.add(a, r, out=o)
+            return o
+        np.multiply(r, k, out=o)
+        if not (isinstance(a, complex) and a == 0):
+            o += a
+        return o
+
+    def _at(self, lid: int, local):
+        """World position, velocity and acceleration of the point ``local`` of link lid."""
+        X, vX, aX, rot, w, e, xl = self.links[lid]
+        r = rot * (local - xl)
+        return X + r, _plus(vX, r * (1j * w)), _plus(aX, r * (1j * e - w * w))
+
+    def _motion_at(self, lid: int, Y):
+        """Velocity and acceleration of the point of link lid that is at Y."""
+        X, vX, aX, rot, w, e, xl = self.links[lid]
+        r = Y - X
+        return _plus(vX, r * (1j * w)), _plus(aX, r * (1j * e - w * w))
+
+    def _guide(self, guide):
+        if guide.link == 0:
+            return guide.point, guide.direction, 0j, 0j, None, None
+        X, vX, aX, rot, w, e, xl = self.links[guide.link]
+        G, vG, aG = self._at(guide.link, guide.point)
+        return G, rot * guide.direction, vG, aG, w, e
+
+    def _coincident(self, name, lid, at, v=None, a=None):
+        self._pending.append((name, lid, at, v, a))
+
+    def _put_coincident(self, name, lid, at, v, a):
+        X = self.pos[at]
+        if v is None:
+            v, a = self._motion_at(lid, X)
+        self.pos[name], self.vel[name], self.acc[name] = X, v, a
+
+    def _close(self, label, sine, valid):
+        self.sine[label] = abs(sine)
+        self.valid &= valid
+
+    # the five kinds ----------------------------------------------------------------------
+    def _rrr(self, xp, g, sigma):
+        sv, P, C, Q = self.sv, g.P, g.C, g.Q
+        pl, cl = sv.local(g.a, P), sv.local(g.a, C)
+        ql, cl3 = sv.local(g.b, Q), sv.local(g.b, C)
+        l2, l3 = abs(cl - pl), abs(cl3 - ql)
+        Pw, Qw = self.pos[P], self.pos[Q]
+        Cw, vC, aC, w2, e2, w3, e3, rec = kernels.rrr(
+            xp, sigma, l2, l3, Pw, self.vel[P], self.acc[P], Qw, self.vel[Q], self.acc[Q])
+        self.pos[C], self.vel[C], self.acc[C] = Cw, vC, aC
+        self.links[g.a] = (Cw, vC, aC, (Cw - Pw) * (1 / (cl - pl)), w2, e2, cl)
+        self.links[g.b] = (Cw, vC, aC, (Cw - Qw) * (1 / (cl3 - ql)), w3, e3, cl3)
+        self._close(g.label, rec[8], rec[9] > 0)
+
+    def _rrp(self, xp, g, sigma):
+        sv, P, C, s = self.sv, g.P, g.C, g.s1
+        pl, cl = sv.local(g.a, P), sv.local(g.a, C)
+        l2 = abs(cl - pl)
+        Pw = self.pos[P]
+        G, u, vG, aG, wk, ek = self._guide(s.guide)
+        Cw, vC, aC, w2, e2, rec = kernels.rrp(
+            xp, sigma, l2, Pw, self.vel[P], self.acc[P], G, u, vG, aG, wk, ek)
+        self.pos[C], self.vel[C], self.acc[C] = Cw, vC, aC
+        k = self.links[s.guide.link]
+        self.links[g.a] = (Cw, vC, aC, (Cw - Pw) * (1 / (cl - pl)), w2, e2, cl)
+        self.links[g.b] = (Cw, vC, aC, u, k[4], k[5], sv.local(g.b, C))
+        if s.guide.link:
+            self._coincident(coincident_name(C, s.guide.link), s.guide.link, C, rec[6], rec[7])
+        self._close(g.label, rec[9], rec[10] > 0)
+
+    def _rpr(self, xp, g, sigma):
+        sv, P, Q, s = self.sv, g.P, g.Q, g.s1
+        q = sv.local(g.b, Q)
+        gd = s.guide.direction
+        e = (gd.conjugate() * (s.guide.point - q)).imag
+        Pw, Qw = self.pos[P], self.pos[Q]
+        vP, aP = self.vel[P], self.acc[P]
+        rot, u, vP3, aP3, w3, e3, rec = kernels.rpr(
+            xp, sigma, e, gd, Pw, vP, aP, Qw, self.vel[Q], self.acc[Q])
+        self.links[g.b] = (Qw, self.vel[Q], self.acc[Q], rot, w3, e3, q)
+        self.links[g.a] = (Pw, vP, aP, u, w3, e3, sv.local(g.a, P))
+        self._coincident(coincident_name(P, g.b), g.b, P, vP3, aP3)
+        self._close(g.label, rec[7], (rec[8] > 0) & (rec[9] > 0))
+
+    def _prp(self, xp, g, sigma):
+        sv, C, sa, sb = self.sv, g.C, g.s1, g.s2
+        G1, u1, vG1, aG1, w1, e1 = self._guide(sa.guide)
+        G2, u2, vG2, aG2, w2, e2 = self._guide(sb.guide)
+        Cw, vC, aC, rec = kernels.prp(xp, G1, u1, vG1, aG1, w1, e1, G2, u2, vG2, aG2, w2, e2)
+        self.pos[C], self.vel[C], self.acc[C] = Cw, vC, aC
+        for lid, u, s in ((g.a, u1, sa), (g.b, u2, sb)):
+            k = self.links[s.guide.link]
+            self.links[lid] = (Cw, vC, aC, u, k[4], k[5], sv.local(lid, C))
+        for s, v, a in ((sa, rec[0], rec[2]), (sb, rec[1], rec[3])):
+            if s.guide.link:
+                self._coincident(coincident_name(C, s.guide.link), s.guide.link, C, v, a)
+        sine = rec[10]
+        self._close(g.label, sine, abs(sine) > SINGULAR_SINE)
+
+    def _rpp(self, xp, g, sigma):
+        sv, P, s_in, s_out = self.sv, g.P, g.s1, g.s2
+        Gk, uk, vG, aG, wk, ek = self._guide(s_out.guide)
+        gd = s_in.guide.direction
+        good = abs(gd.imag) > SINGULAR_SINE
+        Pw, vP, aP = self.pos[P], self.vel[P], self.acc[P]
+        oB, us, vP3, aP3, rec = kernels.rpp(
+            xp, Pw, vP, aP, Gk, uk, vG, aG, wk, ek, sv.local(g.b, s_out.point),
+            s_in.guide.point, gd if good else 1j)
+        k = self.links[s_out.guide.link]
+        w, e = k[4], k[5]
+        r = oB - Pw
+        self.links[g.b] = (oB, vP3 + r * (1j * w), aP3 + r * (1j * e - w * w), uk, w, e, 0j)
+        self.links[g.a] = (Pw, vP, aP, us, w, e, sv.local(g.a, P))
+        self._coincident(coincident_name(P, g.b), g.b, P, vP3, aP3)
+        if s_out.guide.link:
+            self._coincident(coincident_name(P, s_out.guide.link), s_out.guide.link, P,
+                             rec[0], rec[1])
+        self._close(g.label, rec[8], good)
