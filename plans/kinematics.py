@@ -169,6 +169,11 @@ class Solver:
         self.mech = mech
         self.structure = structure or analyse(mech)
         self.sigmas = sigmas if sigmas is not None else choose_branches(mech, self.structure)
+        #: what follows from the mechanism alone, worked out once: the groups' words,
+        #: the plans' recipes, the extent of the cycle (``plans.plan``)
+        self.cache: dict = {}
+        self.steps = tuple((SOLVERS[g.kind], g, sigma)
+                           for g, sigma in zip(self.structure.groups, self.sigmas, strict=True))
 
     # -------------------------------------------------------------------------------
     def solve(self, phi) -> Motion:
@@ -238,8 +243,8 @@ class Solver:
         solutions = []
         valid = True if xp.scalar else np.ones(phi.shape, dtype=bool)
         coincident: dict[str, str] = {}
-        for g, sigma in zip(self.structure.groups, self.sigmas, strict=True):
-            sol, extra = SOLVERS[g.kind](self, xp, g, sigma, states, pos, vel, acc)
+        for solve_group, g, sigma in self.steps:
+            sol, extra = solve_group(self, xp, g, sigma, states, pos, vel, acc)
             solutions.append(sol)
             if not xp.scalar:
                 valid &= sol.valid
@@ -247,9 +252,11 @@ class Solver:
                 self._fill(a, states, pos, vel, acc, owner)
             for name, (link, base) in extra.items():
                 X = pos[base]
+                st = states[link]
+                r = X - st.origin
                 pos[name] = X
-                vel[name] = states[link].vel(X)
-                acc[name] = states[link].acc(X)
+                vel[name] = st.v + 1j * st.omega * r
+                acc[name] = st.a + (1j * st.epsilon - st.omega * st.omega) * r
                 owner[name] = link
                 coincident[name] = base
         return Motion(phi, states, pos, vel, acc, owner, tuple(solutions), valid, coincident)
@@ -261,14 +268,19 @@ class Solver:
         return part.solve(np.array([self.mech.driver.phi]))
 
     def _fill(self, lid, states, pos, vel, acc, owner):
-        st = states[lid]
+        """The points of link ``lid`` that no link solved before it has placed (a group's
+        new hinge is placed again here, from the first of its two links)."""
+        origin, rotor, v, w, a, e = states[lid]
+        jw = kk = None
         for name, local in self.mech.links[lid].points.items():
-            if name in pos and owner.get(name) is not None:
+            if name in owner:
                 continue  # a hinge already known from the link solved before
-            X = st.pos(local)
-            pos[name] = X
-            vel[name] = st.vel(X)
-            acc[name] = st.acc(X)
+            if jw is None:
+                jw, kk = 1j * w, 1j * e - w * w
+            r = rotor * local
+            pos[name] = origin + r
+            vel[name] = v + jw * r
+            acc[name] = a + kk * r
             owner[name] = lid
 
     # helpers used by the group solvers ------------------------------------------------
@@ -317,6 +329,16 @@ def _guide(guide: Guide, states):
     return G, u, st.vel(G), st.acc(G), st.omega, st.epsilon
 
 
+def _words(sv: Solver, g: Group, compose, *args) -> dict[str, str]:
+    """The names, equations and conditions of a group's constructions, composed once per
+    solver: they depend on the mechanism only (``compose(g, *args)``)."""
+    key = ("words", id(g))  # the groups live as long as the solver's structure
+    got = sv.cache.get(key)
+    if got is None:
+        got = sv.cache[key] = compose(g, *args)
+    return got
+
+
 def _base_name(point: str, guide: Guide) -> str | None:
     return None if guide.link == 0 else coincident_name(point, guide.link)
 
@@ -331,15 +353,16 @@ def _rrr(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
         xp, sigma, l2, l3, Pw, vel[P], acc[P], Qw, vel[Q], acc[Q])
     valid, gap, singular = _closure(
         xp, disc > 0, lambda: np.maximum(np.maximum(d - (l2 + l3), abs(l2 - l3) - d), 0.0), l2 + l3)
+    w = _words(sv, g, _rrr_words, l2, l3)
     vroute = (
-        Route(P, vel[P], (), d1, f"⊥ {C}{P}", f"V_{C}{P}", "relative", t1),
-        Route(Q, vel[Q], (), d2, f"⊥ {C}{Q}", f"V_{C}{Q}", "relative", t2),
+        Route(P, vel[P], (), d1, w["⊥P"], w["VP"], "relative", t1),
+        Route(Q, vel[Q], (), d2, w["⊥Q"], w["VQ"], "relative", t2),
     )
     aroute = (
-        Route(P, acc[P], (Term("normal", nP, f"a^n_{C}{P}", (C, P)),), d1,
-              f"⊥ {C}{P}", f"a^t_{C}{P}", "tangential", s1),
-        Route(Q, acc[Q], (Term("normal", nQ, f"a^n_{C}{Q}", (C, Q)),), d2,
-              f"⊥ {C}{Q}", f"a^t_{C}{Q}", "tangential", s2),
+        Route(P, acc[P], (Term("normal", nP, w["nP"], (C, P)),), d1,
+              w["⊥P"], w["tP"], "tangential", s1),
+        Route(Q, acc[Q], (Term("normal", nQ, w["nQ"], (C, Q)),), d2,
+              w["⊥Q"], w["tQ"], "tangential", s2),
     )
     oa, ra = _pose_from_two(Pw, pl, Cw, cl)
     ob, rb = _pose_from_two(Qw, ql, Cw, cl3)
@@ -347,16 +370,24 @@ def _rrr(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     states[g.b] = _state(ob, rb, Cw, vC, aC, w3, e3)
     pos[C] = Cw
     sol = GroupSolution(
-        g,
-        Construction(C, vC, vroute, sine, f"V_{C} = V_{P} + V_{C}{P} = V_{Q} + V_{C}{Q}"),
-        Construction(C, aC, aroute, sine,
-                     f"a_{C} = a_{P} + a^n_{C}{P} + a^t_{C}{P} = a_{Q} + a^n_{C}{Q} + a^t_{C}{Q}"),
-        valid, gap,
-        f"{P}{Q} within [{abs(l2 - l3):.6g}, {l2 + l3:.6g}] m",
-        singular,
-        f"{P}, {C} and {Q} are in line (links {g.a} and {g.b} stretched out or folded)",
+        g, Construction(C, vC, vroute, sine, w["veq"]), Construction(C, aC, aroute, sine, w["aeq"]),
+        valid, gap, w["admissible"], singular, w["singular"],
     )
     return sol, {}
+
+
+def _rrr_words(g: Group, l2: float, l3: float) -> dict[str, str]:
+    """The names, equations and conditions of an RRR group's constructions (its text
+    depends on the mechanism only, so it is composed once)."""
+    P, C, Q = g.P, g.C, g.Q
+    return {
+        "⊥P": f"⊥ {C}{P}", "⊥Q": f"⊥ {C}{Q}", "VP": f"V_{C}{P}", "VQ": f"V_{C}{Q}",
+        "nP": f"a^n_{C}{P}", "nQ": f"a^n_{C}{Q}", "tP": f"a^t_{C}{P}", "tQ": f"a^t_{C}{Q}",
+        "veq": f"V_{C} = V_{P} + V_{C}{P} = V_{Q} + V_{C}{Q}",
+        "aeq": f"a_{C} = a_{P} + a^n_{C}{P} + a^t_{C}{P} = a_{Q} + a^n_{C}{Q} + a^t_{C}{Q}",
+        "admissible": f"{P}{Q} within [{abs(l2 - l3):.6g}, {l2 + l3:.6g}] m",
+        "singular": f"{P}, {C} and {Q} are in line (links {g.a} and {g.b} stretched out or folded)",
+    }
 
 
 def _rrp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
@@ -369,19 +400,17 @@ def _rrp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
         xp, sigma, l2, Pw, vel[P], acc[P], G0, u, vG, aG, wk, ek)
     valid, gap, singular = _closure(xp, disc > 0, lambda: np.maximum(h - l2, 0.0), l2)
     k = s.guide.link
-    gl = s.guide.label
     base = _base_name(C, s.guide)
-    rel = f"V_{C}{base}" if base else f"V_{C}"
+    w = _words(sv, g, _rrp_words, l2)
     vroute = (
-        Route(P, vel[P], (), d1, f"⊥ {C}{P}", f"V_{C}{P}", "relative", t1),
-        Route(base, vCk, (), u, f"∥ {gl}", rel, "sliding", t2),
+        Route(P, vel[P], (), d1, w["⊥P"], w["VP"], "relative", t1),
+        Route(base, vCk, (), u, w["∥"], w["Vs"], "sliding", t2),
     )
-    terms2 = (Term("coriolis", cor, f"a^k_{C}{base}", (C, base)),) if base else ()
-    arel = f"a^r_{C}{base}" if base else f"a_{C}"
+    terms2 = (Term("coriolis", cor, w["k"], (C, base)),) if base else ()
     aroute = (
-        Route(P, acc[P], (Term("normal", nP, f"a^n_{C}{P}", (C, P)),), d1,
-              f"⊥ {C}{P}", f"a^t_{C}{P}", "tangential", s1),
-        Route(base, aCk, terms2, u, f"∥ {gl}", arel, "sliding", s2),
+        Route(P, acc[P], (Term("normal", nP, w["nP"], (C, P)),), d1,
+              w["⊥P"], w["tP"], "tangential", s1),
+        Route(base, aCk, terms2, u, w["∥"], w["as"], "sliding", s2),
     )
     oa, ra = _pose_from_two(Pw, pl, Cw, cl)
     states[g.a] = _state(oa, ra, Cw, vC, aC, w2, e2)
@@ -389,26 +418,34 @@ def _rrp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     ob = Cw - u * sv.local(g.b, C)
     states[g.b] = _state(ob, u, Cw, vC, aC, kb.omega, kb.epsilon)
     pos[C] = Cw
-    second = f"V_{base} + V_{C}{base}" if base else f"V_{C}(∥ {gl})"
     sol = GroupSolution(
-        g,
-        Construction(C, vC, vroute, sine, f"V_{C} = V_{P} + V_{C}{P} = {second}"),
-        Construction(
-            C, aC, aroute, sine,
-            f"a_{C} = a_{P} + a^n_{C}{P} + a^t_{C}{P} = "
-            + (f"a_{base} + a^k_{C}{base} + a^r_{C}{base}" if base else f"a_{C}(∥ {gl})"),
-        ),
-        valid, gap, f"distance from {P} to the guide {gl} ≤ {l2:.6g} m",
-        singular, f"{P}{C} is perpendicular to the guide {gl}",
+        g, Construction(C, vC, vroute, sine, w["veq"]), Construction(C, aC, aroute, sine, w["aeq"]),
+        valid, gap, w["admissible"], singular, w["singular"],
     )
     extra = {base: (k, C)} if base else {}
     return sol, extra
 
 
+def _rrp_words(g: Group, l2: float) -> dict[str, str]:
+    P, C, gl = g.P, g.C, g.s1.guide.label
+    base = _base_name(C, g.s1.guide)
+    second = f"V_{base} + V_{C}{base}" if base else f"V_{C}(∥ {gl})"
+    asecond = f"a_{base} + a^k_{C}{base} + a^r_{C}{base}" if base else f"a_{C}(∥ {gl})"
+    return {
+        "⊥P": f"⊥ {C}{P}", "VP": f"V_{C}{P}", "∥": f"∥ {gl}",
+        "Vs": f"V_{C}{base}" if base else f"V_{C}", "k": f"a^k_{C}{base}",
+        "nP": f"a^n_{C}{P}", "tP": f"a^t_{C}{P}",
+        "as": f"a^r_{C}{base}" if base else f"a_{C}",
+        "veq": f"V_{C} = V_{P} + V_{C}{P} = {second}",
+        "aeq": f"a_{C} = a_{P} + a^n_{C}{P} + a^t_{C}{P} = {asecond}",
+        "admissible": f"distance from {P} to the guide {gl} ≤ {l2:.6g} m",
+        "singular": f"{P}{C} is perpendicular to the guide {gl}",
+    }
+
+
 def _rpr(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     P, Q, s = g.P, g.Q, g.s1  # block g.a hinged at P slides on the guide of link g.b
     G = g.b
-    gl = s.guide.label
     q = sv.local(G, Q)
     gd = s.guide.direction
     e = (gd.conjugate() * (s.guide.point - q)).imag  # offset of the guide from the pivot Q
@@ -419,33 +456,43 @@ def _rpr(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
         xp, disc > 0 and dist > 0 if xp.scalar else (disc > 0) & (dist > 0),
         lambda: np.maximum(abs(e) - dist, 0.0), max(abs(e), 1.0) if e else 1.0)
     name = coincident_name(P, G)
+    w = _words(sv, g, _rpr_words, e)
     vroute = (
-        Route(P, vel[P], (), u, f"∥ {gl}", f"V_{name}{P}", "sliding", t1),
-        Route(Q, vel[Q], (), d2, f"⊥ {Q}{name}", f"V_{name}{Q}", "relative", t2),
+        Route(P, vel[P], (), u, w["∥"], w["VP"], "sliding", t1),
+        Route(Q, vel[Q], (), d2, w["⊥Q"], w["VQ"], "relative", t2),
     )
     aroute = (
-        Route(P, acc[P], (Term("coriolis", cor, f"a^k_{name}{P}", (name, P)),), u,
-              f"∥ {gl}", f"a^r_{name}{P}", "sliding", s1),
-        Route(Q, acc[Q], (Term("normal", nQ, f"a^n_{name}{Q}", (name, Q)),), d2,
-              f"⊥ {Q}{name}", f"a^t_{name}{Q}", "tangential", s2),
+        Route(P, acc[P], (Term("coriolis", cor, w["k"], (name, P)),), u,
+              w["∥"], w["rP"], "sliding", s1),
+        Route(Q, acc[Q], (Term("normal", nQ, w["nQ"], (name, Q)),), d2,
+              w["⊥Q"], w["tQ"], "tangential", s2),
     )
     states[G] = _state(Qw - rG * q, rG, Pw, vP3, aP3, w3, e3)
     oK = Pw - u * sv.local(g.a, P)
     states[g.a] = _state(oK, u, Pw, vel[P], acc[P], w3, e3)
     sol = GroupSolution(
-        g,
-        Construction(name, vP3, vroute, sine,
-                     f"V_{name} = V_{P} + V_{name}{P} = V_{Q} + V_{name}{Q}"),
-        Construction(name, aP3, aroute, sine,
-                     f"a_{name} = a_{P} + a^k_{name}{P} + a^r_{name}{P} = "
-                     f"a_{Q} + a^n_{name}{Q} + a^t_{name}{Q}"),
-        valid, gap,
-        f"distance {Q}{P} > {abs(e):.6g} m (the guide's offset)" if e else f"{Q} ≠ {P}",
-        singular,
-        (f"the guide of link {G} is tangent to the pin {P} at its offset {abs(e):.6g} m from {Q}"
-         if e else f"the pivot {Q} is on the block's pin {P}: the guide's direction is undetermined"),
+        g, Construction(name, vP3, vroute, sine, w["veq"]),
+        Construction(name, aP3, aroute, sine, w["aeq"]),
+        valid, gap, w["admissible"], singular, w["singular"],
     )
     return sol, {name: (G, P)}
+
+
+def _rpr_words(g: Group, e: float) -> dict[str, str]:
+    P, Q, G, gl = g.P, g.Q, g.b, g.s1.guide.label
+    name = coincident_name(P, G)
+    return {
+        "∥": f"∥ {gl}", "VP": f"V_{name}{P}", "⊥Q": f"⊥ {Q}{name}", "VQ": f"V_{name}{Q}",
+        "k": f"a^k_{name}{P}", "rP": f"a^r_{name}{P}", "nQ": f"a^n_{name}{Q}",
+        "tQ": f"a^t_{name}{Q}",
+        "veq": f"V_{name} = V_{P} + V_{name}{P} = V_{Q} + V_{name}{Q}",
+        "aeq": f"a_{name} = a_{P} + a^k_{name}{P} + a^r_{name}{P} = "
+               f"a_{Q} + a^n_{name}{Q} + a^t_{name}{Q}",
+        "admissible": f"distance {Q}{P} > {abs(e):.6g} m (the guide's offset)" if e else f"{Q} ≠ {P}",
+        "singular": (
+            f"the guide of link {G} is tangent to the pin {P} at its offset {abs(e):.6g} m from {Q}"
+            if e else f"the pivot {Q} is on the block's pin {P}: the guide's direction is undetermined"),
+    }
 
 
 def _prp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):

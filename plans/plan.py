@@ -157,11 +157,9 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
         scales.update(mu)
     if "mu_l" not in scales:
         scales["mu_l"] = choose_mu_l(cycle_extent(solver))
-    builder = _Builder(mech, solver.structure, motion)
-    vplan = builder.velocity(scales.get("mu_v"))
-    aplan = builder.acceleration(scales.get("mu_a"))
+    vplan, aplan = _build_plans(solver, motion, scales.get("mu_v"), scales.get("mu_a"))
     positions = dict(motion.position)
-    lengths = _position_segments(mech, motion, positions)
+    lengths = _position_segments(solver, motion, positions)
     mu_l = scales["mu_l"]
     segments = {k: v / mu_l for k, v in lengths.items()}
     for plan in (vplan, aplan):
@@ -179,6 +177,13 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
 
 def cycle_extent(solver: Solver, n: int = 72) -> float:
     """The larger side (m) of the box that holds every point over the crank's travel."""
+    key = ("cycle extent", n)
+    if key not in solver.cache:
+        solver.cache[key] = _cycle_extent(solver, n)
+    return solver.cache[key]
+
+
+def _cycle_extent(solver: Solver, n: int) -> float:
     phi = solver.mech.driver.phi + np.linspace(0, 2 * np.pi, n, endpoint=False)
     with np.errstate(all="ignore"):
         m = solver.solve(phi)
@@ -188,158 +193,241 @@ def cycle_extent(solver: Solver, n: int = 72) -> float:
     return float(max(np.ptp(pts.real), np.ptp(pts.imag), 1e-9))
 
 
-def _position_segments(mech: Mechanism, motion: Motion, pos: dict[str, complex]) -> dict[str, float]:
-    out: dict[str, float] = {}
+def _position_segments(solver: Solver, motion: Motion, pos: dict[str, complex]) -> dict[str, float]:
+    """Lengths (m) on the plan of positions: between fixed points, from each link's first
+    point to its others (constant, worked out once), and to the coincident points."""
+    fixed, moving = solver.cache.get("position segments") or solver.cache.setdefault(
+        "position segments", _segment_pairs(solver.mech, motion))
+    out = dict(fixed)
+    for key, a, b in moving:
+        out[key] = abs(pos[b] - pos[a])
+    return out
+
+
+def _segment_pairs(mech: Mechanism, motion: Motion):
+    fixed: dict[str, float] = {}
     names = list(mech.frame)
     for i, a in enumerate(names):
         for b in names[i + 1 :]:
-            out[a + b] = abs(pos[b] - pos[a])
+            fixed[a + b] = abs(mech.frame[b] - mech.frame[a])
     for link in mech.links.values():
         pts = list(link.points)
         origin = link.axis[0] if link.axis else pts[0]
         for p in pts:
             if p != origin:
-                out[origin + p] = abs(link.points[p] - link.points[origin])
+                fixed[origin + p] = abs(link.points[p] - link.points[origin])
+    moving = []
     for name, base in motion.coincident.items():
-        lid = motion.point_link[name]
-        link = mech.links[lid]
+        link = mech.links[motion.point_link[name]]
         origin = link.axis[0] if link.axis else next(iter(link.points))
         if origin != base:
-            out[origin + name] = abs(pos[name] - pos[origin])
-    return out
+            moving.append((origin + name, origin, name))
+    return fixed, tuple(moving)
 
 
 def _plan_segments(plan: Plan) -> dict[str, float]:
-    out = {}
-    for name, pt in plan.points.items():
-        if pt.source.kind not in ("pole", "component"):
-            out[plan.pole + name] = plan.mm(plan.pole, name)
+    """Every drawn segment of the plan in mm: pole to point, and each component vector
+    (what :meth:`Plan.mm` gives, in one pass)."""
+    pole, mu, pts = plan.pole, plan.mu, plan.points
+    out = {pole + name: abs(pt.value) / mu for name, pt in pts.items()
+           if pt.source.kind not in ("pole", "component")}
     for v in plan.vectors:
-        if v.component == "absolute":
-            continue
-        out[v.start + v.end] = plan.mm(v.start, v.end)
+        if v.component != "absolute":
+            start = 0j if v.start == pole else pts[v.start].value
+            out[v.start + v.end] = abs(pts[v.end].value - start) / mu
     return out
 
 
-class _Builder:
-    """Turns the recorded constructions of a one-angle scalar Motion into the two plans."""
+# ---------------------------------------------------------------------------------------
+# building the plans: a recipe worked out once per solver, then filled in per angle
+# ---------------------------------------------------------------------------------------
 
-    def __init__(self, mech: Mechanism, structure: Structure, motion: Motion):
-        self.mech = mech
-        self.structure = structure
-        self.m = motion
-        self.pos = motion.position
-        n_cor = sum(
-            1 for g in motion.groups for r in g.acceleration.routes for t in r.terms
-            if t.kind == "coriolis"
-        )
-        self.single_k = n_cor == 1
-        self.link_points = {lid: list(link.points) for lid, link in mech.links.items()}
-        for n in motion.coincident:
-            self.link_points[motion.point_link[n]].append(n)
+_POLE, _VALUE, _TERM, _CROSS, _SIMILAR = range(5)
+_POLE_SOURCE = Source("pole")
 
-    def _link_points(self, lid: int) -> list[str]:
-        return self.link_points[lid]
 
-    def velocity(self, mu):
-        return self._plan("velocity", mu)
+class _Recipe(NamedTuple):
+    """The steps that build one plan, with every name, equation, label and vector of
+    the construction, which depend on the mechanism only; the values are read from the
+    solved motion when the recipe is followed.
 
-    def acceleration(self, mu):
-        return self._plan("acceleration", mu)
+    ``same``: pairs of points that coincided when the recipe was made, so that a point
+    of their link was taken as it is rather than by similarity; where they no longer
+    coincide, the recipe is worked out again.
+    """
 
-    def _plan(self, kind: str, mu) -> Plan:
-        acc = kind == "acceleration"
-        pole = "π" if acc else "p"
-        store = self.m.acceleration if acc else self.m.velocity
-        sym = "a" if acc else "V"
-        points: dict[str, PlanPoint] = {}
-        vectors: list[PlanVector] = []
-        known: set[str] = set()
-        counters = {"n": 0, "k": 0}
+    kind: str
+    pole: str
+    tip: str  # the crank's pin, whose vector sets the plan's scale
+    steps: tuple
+    same: tuple[tuple[str, str], ...]
 
-        def add(name: str, value: complex, source: Source, absolute=True):
-            pn = plan_name(name)
-            points[pn] = PlanPoint(pn, value, source)
-            known.add(name)
-            if absolute and abs(value) > 0:
-                vectors.append(PlanVector(pole, pn, "absolute", f"{sym}_{name}"))
 
-        for name in self.mech.frame:
-            add(name, 0j, Source("pole"), absolute=False)
-        drv = self.mech.driver
-        tip_val = store[drv.tip]
-        if acc:
-            eq = f"a_{drv.tip} = a^n_{drv.tip}{drv.pivot} = ω1²·l_{drv.pivot}{drv.tip}"
-            rel = f"∥ {drv.tip}{drv.pivot}, from {drv.tip} to {drv.pivot}"
-        else:
-            eq = f"V_{drv.tip} = ω1·l_{drv.pivot}{drv.tip}"
-            rel = f"⊥ {drv.pivot}{drv.tip}, in the sense of ω1"
-        add(drv.tip, tip_val, Source("driver", equation=eq, label=rel))
-        self._similar(drv.link, points, store, add, known, sym)
-        for g in self.m.groups:
-            cons = g.acceleration if acc else g.velocity
-            for r in cons.routes:
-                if r.base is not None and r.base not in known:
-                    # a coincident point of a moving guide, e.g. C4 under the slider C
-                    link = self.m.point_link[r.base]
-                    self._similar(link, points, store, add, known, sym, only=r.base)
-            lines = []
-            for r in cons.routes:
-                start = plan_name(r.base) if r.base is not None else pole
-                for t in r.terms:
-                    tag = "n" if t.kind == "normal" else "k"
-                    counters[tag] += 1
-                    tname = f"{tag}{counters[tag]}"
-                    if tag == "k" and self.single_k:
-                        tname = "k"
-                    val = (points[start].value if start != pole else 0j) + t.value
-                    points[tname] = PlanPoint(
-                        tname, val,
-                        Source("component", equation=_term_formula(t), base=start, label=t.label),
-                    )
-                    vectors.append(PlanVector(start, tname, t.kind, t.label))
-                    start = tname
-                lines.append(PlanLine(start, r.direction, r.relation, r.unknown))
-            new = cons.point
-            val = store[new]
-            add(new, val, Source("intersection", equation=cons.equation, lines=tuple(lines),
-                                 sine=float(cons.sine)))
-            for ln, r in zip(lines, cons.routes, strict=True):
-                if ln.through != pole or r.unknown_kind != "sliding":
-                    vectors.append(PlanVector(ln.through, plan_name(new), r.unknown_kind, r.unknown))
-            for lid in (g.group.a, g.group.b):
-                self._similar(lid, points, store, add, known, sym)
-        return Plan(kind, pole, points, tuple(vectors), mu or self._mu(points, tip_val),
-                    "m/s²" if acc else "m/s")
+def _build_plans(solver: Solver, motion: Motion, mu_v, mu_a) -> tuple[Plan, Plan]:
+    return _plan(solver, motion, "velocity", mu_v), _plan(solver, motion, "acceleration", mu_a)
 
-    @staticmethod
-    def _mu(points, tip_val) -> float:
-        largest = max(abs(p.value) for p in points.values())
-        return choose_mu(abs(tip_val), largest)
 
-    def _similar(self, lid, points, store, add, known, sym, only=None):
-        """Points of link ``lid`` not yet on the plan, by the similarity theorem."""
-        pts = self._link_points(lid)
+def _plan(solver: Solver, motion: Motion, kind: str, mu) -> Plan:
+    """The plan by the solver's recipe, worked out again where it does not hold here: a
+    similarity base whose two points have met (caught by its division by zero), or two
+    points that coincided when the recipe was made and no longer do."""
+    key = ("plan recipe", kind)
+    recipe = solver.cache.get(key)
+    if recipe is not None and not any(abs(motion.position[b] - motion.position[a]) > 0
+                                      for a, b in recipe.same):
+        try:
+            return _follow(recipe, motion, mu)
+        except ZeroDivisionError:
+            pass
+    recipe = solver.cache[key] = _work_out(solver.mech, motion, kind)
+    return _follow(recipe, motion, mu)
+
+
+def _work_out(mech: Mechanism, m: Motion, kind: str) -> _Recipe:
+    """Walk the construction as a student draws it: the poles, the crank's pin, then each
+    group's two routes and their intersection, and every other point of a link by
+    similarity as soon as two of its points are on the plan."""
+    acc = kind == "acceleration"
+    pole = "π" if acc else "p"
+    sym = "a" if acc else "V"
+    steps: list[tuple] = []
+    same: list[tuple[str, str]] = []
+    known: set[str] = set()
+    counters = {"n": 0, "k": 0}
+    single_k = sum(1 for g in m.groups for r in g.acceleration.routes for t in r.terms
+                   if t.kind == "coriolis") == 1
+    link_points = {lid: list(link.points) for lid, link in mech.links.items()}
+    for n in m.coincident:
+        link_points[m.point_link[n]].append(n)
+    pos = m.position
+
+    def absolute(name):
+        return PlanVector(pole, plan_name(name), "absolute", f"{sym}_{name}")
+
+    def similar(lid, only=None):
+        pts = link_points[lid]
         base = [p for p in pts if p in known]
         for name in pts:
             if name in known or (only and name != only):
                 continue
-            if len(base) >= 2 and abs(self.pos[base[1]] - self.pos[base[0]]) > 0:
+            nx = plan_name(name)
+            if len(base) >= 2 and abs(pos[base[1]] - pos[base[0]]) > 0:
                 b0, b1 = base[0], base[1]
-                ratio = (self.pos[name] - self.pos[b0]) / (self.pos[b1] - self.pos[b0])
-                v0 = points[plan_name(b0)].value
-                v1 = points[plan_name(b1)].value
-                value = v0 + ratio * (v1 - v0)
-                n0, n1, nx = plan_name(b0), plan_name(b1), plan_name(name)
-                if abs(ratio.imag) < 1e-12:
-                    eq = f"{n0}{nx} = {n0}{n1}·{b0}{name}/{b0}{b1}"
-                else:
-                    eq = f"△{n0}{n1}{nx} ∼ △{b0}{b1}{name}"
-                add(name, value, Source("similarity", equation=eq, base=n0, other=n1, ratio=ratio))
+                n0, n1 = plan_name(b0), plan_name(b1)
+                eqs = (f"{n0}{nx} = {n0}{n1}·{b0}{name}/{b0}{b1}",
+                       f"△{n0}{n1}{nx} ∼ △{b0}{b1}{name}")
+                steps.append((_SIMILAR, nx, name, b0, b1, n0, n1, eqs, absolute(name)))
             else:
-                value = store[name]
-                add(name, value, Source("rigid", equation=f"{sym}_{name}: link {lid} moves with {base[0] if base else 'its guide'}"))
+                if len(base) >= 2:
+                    same.append((base[0], base[1]))
+                moves = base[0] if base else "its guide"
+                src = Source("rigid", equation=f"{sym}_{name}: link {lid} moves with {moves}")
+                steps.append((_VALUE, nx, name, src, absolute(name)))
+            known.add(name)
             base.append(name)
+
+    for name in mech.frame:
+        steps.append((_POLE, plan_name(name)))
+        known.add(name)
+    drv = mech.driver
+    if acc:
+        eq = f"a_{drv.tip} = a^n_{drv.tip}{drv.pivot} = ω1²·l_{drv.pivot}{drv.tip}"
+        rel = f"∥ {drv.tip}{drv.pivot}, from {drv.tip} to {drv.pivot}"
+    else:
+        eq = f"V_{drv.tip} = ω1·l_{drv.pivot}{drv.tip}"
+        rel = f"⊥ {drv.pivot}{drv.tip}, in the sense of ω1"
+    steps.append((_VALUE, plan_name(drv.tip), drv.tip, Source("driver", equation=eq, label=rel),
+                  absolute(drv.tip)))
+    known.add(drv.tip)
+    similar(drv.link)
+    for gi, g in enumerate(m.groups):
+        cons = g.acceleration if acc else g.velocity
+        for r in cons.routes:
+            if r.base is not None and r.base not in known:
+                # a coincident point of a moving guide, e.g. C4 under the slider C
+                similar(m.point_link[r.base], only=r.base)
+        lines = []
+        for ri, r in enumerate(cons.routes):
+            start = plan_name(r.base) if r.base is not None else pole
+            for ti, t in enumerate(r.terms):
+                tag = "n" if t.kind == "normal" else "k"
+                counters[tag] += 1
+                tname = "k" if tag == "k" and single_k else f"{tag}{counters[tag]}"
+                src = Source("component", equation=_term_formula(t), base=start, label=t.label)
+                steps.append((_TERM, tname, start, gi, ri, ti, src,
+                              PlanVector(start, tname, t.kind, t.label)))
+                start = tname
+            lines.append((start, ri, r.relation, r.unknown))
+        new = cons.point
+        pn = plan_name(new)
+        line_vectors = tuple(
+            PlanVector(through, pn, r.unknown_kind, r.unknown)
+            for (through, _, _, _), r in zip(lines, cons.routes, strict=True)
+            if through != pole or r.unknown_kind != "sliding"
+        )
+        steps.append((_CROSS, pn, new, gi, tuple(lines), cons.equation, absolute(new),
+                      line_vectors))
+        known.add(new)
+        for lid in (g.group.a, g.group.b):
+            similar(lid)
+    return _Recipe(kind, pole, drv.tip, tuple(steps), tuple(same))
+
+
+def _follow(recipe: _Recipe, m: Motion, mu) -> Plan:
+    """The plan at the motion's angle, by the recipe's steps."""
+    acc = recipe.kind == "acceleration"
+    store = m.acceleration if acc else m.velocity
+    pos = m.position
+    points: dict[str, PlanPoint] = {}
+    vectors: list[PlanVector] = []
+    for step in recipe.steps:
+        op = step[0]
+        if op == _POLE:
+            points[step[1]] = PlanPoint(step[1], 0j, _POLE_SOURCE)
+            continue
+        if op == _VALUE:
+            _, pn, name, src, vec = step
+            value = store[name]
+        elif op == _SIMILAR:
+            _, pn, name, b0, b1, n0, n1, eqs, vec = step
+            ratio = (pos[name] - pos[b0]) / (pos[b1] - pos[b0])
+            v0 = points[n0].value
+            value = v0 + ratio * (points[n1].value - v0)
+            src = Source("similarity", equation=eqs[abs(ratio.imag) >= 1e-12], base=n0,
+                         other=n1, ratio=ratio)
+        elif op == _TERM:
+            _, tname, start, gi, ri, ti, src, vec = step
+            cons = m.groups[gi].acceleration if acc else m.groups[gi].velocity
+            value = cons.routes[ri].terms[ti].value
+            if start != recipe.pole:
+                value = points[start].value + value
+            points[tname] = PlanPoint(tname, value, src)
+            vectors.append(vec)
+            continue
+        else:
+            _, pn, name, gi, lines, equation, vec, line_vectors = step
+            cons = m.groups[gi].acceleration if acc else m.groups[gi].velocity
+            routes = cons.routes
+            value = store[name]
+            src = Source("intersection", equation=equation, sine=float(cons.sine), lines=tuple([
+                PlanLine(through, routes[ri].direction, rel, unknown)
+                for through, ri, rel, unknown in lines]))
+            points[pn] = PlanPoint(pn, value, src)
+            if abs(value) > 0:
+                vectors.append(vec)
+            vectors += line_vectors
+            continue
+        points[pn] = PlanPoint(pn, value, src)
+        if abs(value) > 0:
+            vectors.append(vec)
+    return Plan(recipe.kind, recipe.pole, points, tuple(vectors),
+                mu or _mu(points, store[recipe.tip]),
+                "m/s²" if acc else "m/s")
+
+
+def _mu(points, tip_val) -> float:
+    largest = max(abs(p.value) for p in points.values())
+    return choose_mu(abs(tip_val), largest)
 
 
 def _term_formula(t) -> str:

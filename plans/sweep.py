@@ -24,7 +24,6 @@ import numpy as np
 
 from . import kernels
 from .kinematics import SINGULAR_SINE, Solver, coincident_name
-from .structure import DyadKind
 
 #: angles per block: 8192 complex numbers are 128 KiB an array, so the few arrays a step
 #: works on at a time stay in a core's 2 MiB second-level cache, while numpy's cost per
@@ -120,7 +119,8 @@ def _raise_malloc_thresholds() -> None:
     raises both thresholds for the rest of the process (mallopt(3), "dynamic mmap
     threshold"); elsewhere it costs one untouched allocation.
     """
-    np.empty(1 << 21).__array_interface__  # 2²¹ float64 = 16 MiB, never written
+    scratch = np.empty(1 << 21)  # 2²¹ float64 = 16 MiB, never written
+    del scratch
 
 
 def _out(first, n, dtype):

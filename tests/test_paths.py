@@ -9,10 +9,10 @@ import math
 
 import numpy as np
 import pytest
-from plans.scenes import SCENES
 
 from plans.errors import AssemblyError, SingularPlanError
 from plans.kinematics import Solver
+from plans.scenes import SCENES
 
 ALL = sorted(SCENES)
 TOL = 1e-14  # relative to the largest value of the quantity at that angle
@@ -137,3 +137,46 @@ def test_sweep_into_reuses_the_arrays_and_keeps_the_callers_angles():
     np.testing.assert_array_equal(a, np.linspace(0, 2 * np.pi, 300))  # the caller's input
     with pytest.raises(ValueError, match="300 angles, not 299"):
         sv.sweep(b[:-1], into=first)
+
+
+@pytest.mark.parametrize("name", ALL)
+def test_plan_recipe_made_once_gives_the_plans_made_afresh(name):
+    """solve_position follows a recipe worked out at the first angle a solver sees; at
+    every other angle its plans equal those of a solver that works the recipe out there."""
+    from plans.plan import solve_position
+
+    mech = SCENES[name].mechanism()
+    shared = Solver(mech)
+    done = 0
+    for x in _angles(SCENES[name], 13):
+        try:
+            a = solve_position(mech, float(x), solver=shared)
+        except (AssemblyError, SingularPlanError):
+            continue
+        b = solve_position(mech, float(x), solver=Solver(mech))
+        for pa, pb in ((a.velocity, b.velocity), (a.acceleration, b.acceleration)):
+            assert pa.points == pb.points
+            assert pa.vectors == pb.vectors
+            assert pa.mu == pb.mu
+        assert a.segments == b.segments
+        done += 1
+    assert done >= 6
+
+
+def test_plan_recipe_is_worked_out_again_where_a_similarity_base_degenerates():
+    """A recipe whose similarity step divides by two points that have met is not
+    followed blindly: the plan is worked out again there (and the result is finite)."""
+    from plans.plan import _SIMILAR, _Recipe, solve_position
+
+    mech = SCENES["press"].mechanism()
+    sv = Solver(mech)
+    good = solve_position(mech, 0.3, solver=sv)
+    recipe = sv.cache[("plan recipe", "velocity")]
+    steps = list(recipe.steps)
+    k = next(i for i, st in enumerate(steps) if st[0] == _SIMILAR)
+    st = steps[k]
+    steps[k] = (st[0], st[1], st[2], st[3], st[3]) + st[5:]  # base b1 := b0: divides by 0
+    sv.cache[("plan recipe", "velocity")] = _Recipe(*recipe[:3], tuple(steps), recipe.same)
+    again = solve_position(mech, 0.3, solver=sv)
+    assert again.velocity.points == good.velocity.points
+    assert sv.cache[("plan recipe", "velocity")].steps == recipe.steps
