@@ -81,12 +81,12 @@ def sweep(sv: Solver, phi, block: int = BLOCK, into: Sweep | None = None) -> Swe
             into.phi[...] = phi
             phi = into.phi
         else:
-            probe = _Block(sv, phi[:1] if n else np.zeros(1))  # names, which are constant
-            out = {kind: {name: _out(v, n, complex) for name, v in getattr(probe, kind).items()}
-                   for kind in ("pos", "vel", "acc")}
-            omega = {lid: _out(ln[4], n, float) for lid, ln in probe.links.items()}
-            epsilon = {lid: _out(ln[5], n, float) for lid, ln in probe.links.items()}
-            sine = {label: np.empty(n) for label in probe.sine}
+            kinds, links, labels = _layout(sv)
+            out = {kind: {name: _out(v, n, complex) for name, v in names}
+                   for kind, names in kinds.items()}
+            omega = {lid: _out(w, n, float) for lid, (w, _) in links.items()}
+            epsilon = {lid: _out(e, n, float) for lid, (_, e) in links.items()}
+            sine = {label: np.empty(n) for label in labels}
             valid = np.empty(n, dtype=bool)
             phi = phi.copy()  # the sweep owns its angles: a later into= overwrites them
         for i in range(0, n, block):
@@ -109,6 +109,23 @@ def sweep(sv: Solver, phi, block: int = BLOCK, into: Sweep | None = None) -> Swe
     return Sweep(phi, out["pos"], out["vel"], out["acc"], omega, epsilon, sine, valid)
 
 
+def _layout(sv: Solver):
+    """The names a sweep fills, with the value of those that are constant (None for the
+    others): solved once per solver at one angle."""
+    got = sv.cache.get("sweep layout")
+    if got is None:
+        probe = _Block(sv, np.zeros(1))
+        const = lambda v: v if np.ndim(v) == 0 else None  # noqa: E731
+        kinds = {kind: [(name, const(v)) for name, v in getattr(probe, kind).items()]
+                 for kind in ("pos", "vel", "acc")}
+        links = {lid: (const(ln[4]), const(ln[5])) for lid, ln in probe.links.items()}
+        got = sv.cache["sweep layout"] = (kinds, links, list(probe.sine))
+    return got
+
+
+_malloc_ready = False
+
+
 def _raise_malloc_thresholds() -> None:
     """Free one 16 MiB block so that glibc's malloc keeps the blocks' temporaries.
 
@@ -119,14 +136,17 @@ def _raise_malloc_thresholds() -> None:
     raises both thresholds for the rest of the process (mallopt(3), "dynamic mmap
     threshold"); elsewhere it costs one untouched allocation.
     """
-    scratch = np.empty(1 << 21)  # 2²¹ float64 = 16 MiB, never written
-    del scratch
+    global _malloc_ready
+    if not _malloc_ready:
+        scratch = np.empty(1 << 21)  # 2²¹ float64 = 16 MiB, never written
+        del scratch
+        _malloc_ready = True
 
 
-def _out(first, n, dtype):
-    """An output array: allocated for a moving value, a read-only broadcast for a constant."""
-    if np.ndim(first) == 0:
-        return np.broadcast_to(np.asarray(first, dtype=dtype), (n,))
+def _out(const, n, dtype):
+    """An output array: a read-only broadcast of a constant, else allocated."""
+    if const is not None:
+        return np.broadcast_to(np.asarray(const, dtype=dtype), (n,))
     return np.empty(n, dtype=dtype)
 
 
