@@ -4,19 +4,34 @@
 >>> sol = solve_position(load("samples/press.toml"))
 >>> round(sol.segments["pa3"], 2), round(sol.omega[3], 3)
 (55.43, 4.822)
+
+Over many crank angles at once, without the recorded constructions (``Solver.sweep``):
+
+>>> import numpy as np
+>>> sw = Solver(load("samples/press.toml")).sweep(np.radians(np.arange(0, 360, 0.5)))
+>>> H = np.ptp(sw.position["D"].real)  # the slider's stroke
+>>> round(float(H), 4), round(float(np.max(np.abs(sw.velocity["D"]))), 3)  # m, m/s
+(0.5114, 7.764)
 """
 
 from .cycle import Cycle, analyse_cycle, grashof_class
-from .errors import AssemblyError, InputError, PlansError, SingularPlanError, StructureError
+from .errors import (
+    AssemblyError,
+    InputError,
+    PlansError,
+    SingularPlanError,
+    StructureError,
+)
 from .kinematics import Motion, Solver
 from .mechanism import Mechanism, from_dict, load
 from .plan import Plan, PlanPoint, PlanVector, Solution, Source, solve_position
 from .structure import DyadKind, Structure, analyse
+from .sweep import Sweep
 from .variants import variant
 
 __all__ = [
     "AssemblyError", "Cycle", "DyadKind", "InputError", "Mechanism", "Motion", "Plan",
     "PlanPoint", "PlanVector", "PlansError", "SingularPlanError", "Solution", "Solver",
-    "Source", "Structure", "StructureError", "analyse", "analyse_cycle", "from_dict",
+    "Source", "Structure", "StructureError", "Sweep", "analyse", "analyse_cycle", "from_dict",
     "grashof_class", "load", "solve_position", "variant",
 ]

@@ -422,7 +422,7 @@ class Bench:
                                   at_least=at_least)
                 err = sweep_error(sw, idx, arr) if arr is not None else None
                 rows.append(Row(name, "reused", len(phi), best / len(phi), err))
-            del sw
+            sw = None  # frees the arrays before the recorded solve
             if "recorded" in self.methods:
                 t0 = time.perf_counter()
                 motion = solver.solve(phi)

@@ -138,6 +138,8 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     warnings = []
     for g in motion.groups:
         s = g.velocity.sine
+        if abs(s) >= WARN_SINE:
+            continue
         ang = math.degrees(math.asin(min(abs(s), 1.0)))
         r0, r1 = g.velocity.routes
         if abs(s) < SINGULAR_SINE:
@@ -147,11 +149,10 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
                 "(dead point), the plan has no unique solution",
                 sine=s,
             )
-        if abs(s) < WARN_SINE:
-            warnings.append(
-                f"{g.group.label} at φ1 = {deg:.6g}°: near-singular, the lines "
-                f"{r0.relation} and {r1.relation} meet at {ang:.3g}° (sin = {abs(s):.3g})"
-            )
+        warnings.append(
+            f"{g.group.label} at φ1 = {deg:.6g}°: near-singular, the lines "
+            f"{r0.relation} and {r1.relation} meet at {ang:.3g}° (sin = {abs(s):.3g})"
+        )
     scales = dict(mech.scales)
     if mu:
         scales.update(mu)
@@ -393,8 +394,8 @@ def _follow(recipe: _Recipe, m: Motion, mu) -> Plan:
             ratio = (pos[name] - pos[b0]) / (pos[b1] - pos[b0])
             v0 = points[n0].value
             value = v0 + ratio * (points[n1].value - v0)
-            src = Source("similarity", equation=eqs[abs(ratio.imag) >= 1e-12], base=n0,
-                         other=n1, ratio=ratio)
+            # positional: a NamedTuple built from keywords takes half as long again
+            src = Source("similarity", eqs[abs(ratio.imag) >= 1e-12], (), n0, n1, ratio)
         elif op == _TERM:
             _, tname, start, gi, ri, ti, src, vec = step
             cons = m.groups[gi].acceleration if acc else m.groups[gi].velocity
@@ -409,9 +410,9 @@ def _follow(recipe: _Recipe, m: Motion, mu) -> Plan:
             cons = m.groups[gi].acceleration if acc else m.groups[gi].velocity
             routes = cons.routes
             value = store[name]
-            src = Source("intersection", equation=equation, sine=float(cons.sine), lines=tuple([
+            src = Source("intersection", equation, tuple([
                 PlanLine(through, routes[ri].direction, rel, unknown)
-                for through, ri, rel, unknown in lines]))
+                for through, ri, rel, unknown in lines]), "", "", 0j, float(cons.sine))
             points[pn] = PlanPoint(pn, value, src)
             if abs(value) > 0:
                 vectors.append(vec)
