@@ -180,3 +180,21 @@ def test_plan_recipe_is_worked_out_again_where_a_similarity_base_degenerates():
     again = solve_position(mech, 0.3, solver=sv)
     assert again.velocity.points == good.velocity.points
     assert sv.cache[("plan recipe", "velocity")].steps == recipe.steps
+
+
+def test_the_readmes_python_example_runs_and_its_comments_are_true(monkeypatch):
+    """The README's sweep example, run as written; the figures in its comments hold."""
+    import re
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parent.parent
+    readme = (root / "README.md").read_text("utf-8")
+    blocks = re.findall(r"```python\n(.*?)```", readme, re.S)
+    assert blocks, "the README lost its Python example"
+    monkeypatch.chdir(root)
+    for code in blocks:
+        scope: dict = {}
+        exec(compile(code, "README.md", "exec"), scope)
+        for name, value, unit in re.findall(r"^(\w+) = .*# ([\d.]+) (m/s|m)\b", code, re.M):
+            digits = len(value.partition(".")[2])
+            assert round(float(scope[name]), digits) == float(value), (name, unit)
