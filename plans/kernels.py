@@ -174,14 +174,7 @@ def prp(xp, G1, u1, vG1, aG1, w1, e1, G2, u2, vG2, aG2, w2, e2):
     C = G1 + t * u1
     v1, a1 = _guide_motion(C, G1, vG1, aG1, w1, e1)
     v2, a2 = _guide_motion(C, G2, vG2, aG2, w2, e2)
-    t1, t2 = meet(v2 - v1, u1, u2, inv)
-    vC = v1 + t1 * u1
-    c1 = None if w1 is None else u1 * (2j * w1 * t1)
-    c2 = None if w2 is None else u2 * (2j * w2 * t2)
-    k1 = a1 if c1 is None else a1 + c1
-    k2 = a2 if c2 is None else a2 + c2
-    s1, s2 = meet(k2 - k1, u1, u2, inv)
-    aC = k1 + s1 * u1
+    vC, aC, (c1, c2, t1, t2, s1, s2) = _two_slides(v1, a1, u1, w1, v2, a2, u2, w2, inv)
     return C, vC, aC, (v1, v2, a1, a2, c1, c2, t1, t2, s1, s2, sine)
 
 
@@ -200,12 +193,22 @@ def rpp(xp, P, vP, aP, G, u, vG, aG, wk, ek, locD, g0, gd):
     sine = cross(us, u)
     inv = 1.0 / sine
     vk, ak = _guide_motion(P, G, vG, aG, wk, ek)
-    t1, t2 = meet(vk - vP, us, u, inv)
-    vP3 = vP + t1 * us
-    c1 = None if wk is None else us * (2j * wk * t1)
-    c2 = None if wk is None else u * (2j * wk * t2)
-    k1 = aP if c1 is None else aP + c1
-    k2 = ak if c2 is None else ak + c2
-    s1, s2 = meet(k2 - k1, us, u, inv)
-    aP3 = k1 + s1 * us
+    # the block slides in the yoke, which turns with link k: both slides see ω_k
+    vP3, aP3, (c1, c2, t1, t2, s1, s2) = _two_slides(vP, aP, us, wk, vk, ak, u, wk, inv)
     return oB, us, vP3, aP3, (vk, ak, c1, c2, t1, t2, s1, s2, sine)
+
+
+def _two_slides(v1, a1, u1, w1, v2, a2, u2, w2, inv):
+    """Two sliding routes: from V1 along u1 and from V2 along u2, each carried by a
+    link turning at ω (None: not turning, so no Coriolis term).
+
+    V = V1 + t1·u1 = V2 + t2·u2;  a = a1 + a^k1 + s1·u1 = a2 + a^k2 + s2·u2,
+    with a^k = 2ω × V_rel: the sliding velocity t·u turned by 90° in the sense of ω.
+    """
+    t1, t2 = meet(v2 - v1, u1, u2, inv)
+    c1 = None if w1 is None else u1 * (2j * w1 * t1)
+    c2 = None if w2 is None else u2 * (2j * w2 * t2)
+    k1 = a1 if c1 is None else a1 + c1
+    k2 = a2 if c2 is None else a2 + c2
+    s1, s2 = meet(k2 - k1, u1, u2, inv)
+    return v1 + t1 * u1, k1 + s1 * u1, (c1, c2, t1, t2, s1, s2)
