@@ -39,12 +39,12 @@ def _xy(z: complex) -> list[float]:
 
 
 def to_json(sol) -> dict:
-    m = sol.motion
+    m = sol.scalar
     points = {
         name: {
             "position": _xy(sol.positions[name]),
-            "velocity": _xy(complex(m.velocity[name][0])),
-            "acceleration": _xy(complex(m.acceleration[name][0])),
+            "velocity": _xy(m.velocity[name]),
+            "acceleration": _xy(m.acceleration[name]),
         }
         for name in sol.positions
     }
@@ -54,6 +54,11 @@ def to_json(sol) -> dict:
         "links": {str(i): {"omega": sol.omega[i], "epsilon": sol.epsilon[i]} for i in sorted(sol.omega)},
         "scales": {"mu_l": sol.mu_l, "mu_v": sol.mu_v, "mu_a": sol.mu_a},
         "segments": {k: float(v) for k, v in sol.segments.items()},
+        "plans": {
+            plan.kind: {"pole": plan.pole, "mu": plan.mu, "unit": plan.unit,
+                        "segments": {k: float(v) for k, v in plan.segments.items()}}
+            for plan in (sol.velocity, sol.acceleration)
+        },
         "structure": {
             "W": st.W,
             "n": st.n,

@@ -82,6 +82,8 @@ class Plan:
     vectors: tuple[PlanVector, ...]
     mu: float
     unit: str  # "m/s" or "m/s²"
+    #: every drawn segment in mm: pole to each point found, and each component vector
+    segments: dict[str, float] = field(default_factory=dict)
 
     def value(self, name: str) -> complex:
         return 0j if name == self.pole else self.points[name].value
@@ -103,7 +105,10 @@ class Solution:
     omega: dict[int, float]
     epsilon: dict[int, float]
     mu_l: float
-    segments: dict[str, float]  # mm
+    #: mm: the plan of positions' lengths and both plans' segments by name. A name drawn on
+    #: both plans (aa3 of a block on a fixed guide) keeps the acceleration plan's length
+    #: here; ``velocity.segments`` and ``acceleration.segments`` hold each plan's own.
+    segments: dict[str, float]
     lengths: dict[str, float]  # m, position plan segments
     warnings: tuple[str, ...] = field(default_factory=tuple)
     #: the recorded solution on Python numbers, that the plans were built from
@@ -163,14 +168,15 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     lengths = _position_segments(solver, motion, positions)
     mu_l = scales["mu_l"]
     segments = {k: v / mu_l for k, v in lengths.items()}
-    for plan in (vplan, aplan):
-        segments.update(_plan_segments(plan))
+    segments.update(vplan.segments)
+    segments.update(aplan.segments)
     links = sorted(mech.links)
+    states = motion.links
     return Solution(
         mechanism=mech, structure=solver.structure, phi=phi, solver=solver,
         positions=positions, velocity=vplan, acceleration=aplan,
-        omega={i: float(motion.links[i].omega) for i in links},
-        epsilon={i: float(motion.links[i].epsilon) for i in links},
+        omega={i: states[i].omega for i in links},
+        epsilon={i: states[i].epsilon for i in links},
         mu_l=mu_l, segments=segments, lengths=lengths,
         warnings=tuple(warnings), scalar=motion,
     )
@@ -226,16 +232,14 @@ def _segment_pairs(mech: Mechanism, motion: Motion):
     return fixed, tuple(moving)
 
 
-def _plan_segments(plan: Plan) -> dict[str, float]:
-    """Every drawn segment of the plan in mm: pole to point, and each component vector
-    (what :meth:`Plan.mm` gives, in one pass)."""
-    pole, mu, pts = plan.pole, plan.mu, plan.points
-    out = {pole + name: abs(pt.value) / mu for name, pt in pts.items()
-           if pt.source.kind not in ("pole", "component")}
-    for v in plan.vectors:
-        if v.component != "absolute":
-            start = 0j if v.start == pole else pts[v.start].value
-            out[v.start + v.end] = abs(pts[v.end].value - start) / mu
+def _plan_segments(recipe: _Recipe, pts: dict[str, PlanPoint], mu: float) -> dict[str, float]:
+    """Every drawn segment of the plan in mm (what :meth:`Plan.mm` gives), by the
+    recipe's list of segments."""
+    pole = recipe.pole
+    out = {}
+    for key, start, end in recipe.segments:
+        a = 0j if start == pole else pts[start].value
+        out[key] = abs(pts[end].value - a) / mu
     return out
 
 
@@ -262,6 +266,7 @@ class _Recipe(NamedTuple):
     tip: str  # the crank's pin, whose vector sets the plan's scale
     steps: tuple
     same: tuple[tuple[str, str], ...]
+    segments: tuple[tuple[str, str, str], ...]  # (name, from, to) of every drawn segment
 
 
 def _build_plans(solver: Solver, motion: Motion, mu_v, mu_a) -> tuple[Plan, Plan]:
@@ -371,7 +376,21 @@ def _work_out(mech: Mechanism, m: Motion, kind: str) -> _Recipe:
         known.add(new)
         for lid in (g.group.a, g.group.b):
             similar(lid)
-    return _Recipe(kind, pole, drv.tip, tuple(steps), tuple(same))
+    return _Recipe(kind, pole, drv.tip, tuple(steps), tuple(same), _segments_of(steps, pole))
+
+
+def _segments_of(steps, pole: str) -> tuple[tuple[str, str, str], ...]:
+    """The plan's drawn segments: pole to every point found (not the poles, not the ends
+    of known components), then every component vector; the absolute vectors are the
+    pole-to-point segments already."""
+    points = [(pole + st[1], pole, st[1]) for st in steps if st[0] in (_VALUE, _SIMILAR, _CROSS)]
+    vectors = []
+    for st in steps:
+        if st[0] == _TERM:
+            vectors.append(st[7])
+        elif st[0] == _CROSS:
+            vectors += st[7]
+    return tuple(points + [(v.start + v.end, v.start, v.end) for v in vectors])
 
 
 def _follow(recipe: _Recipe, m: Motion, mu) -> Plan:
@@ -421,9 +440,9 @@ def _follow(recipe: _Recipe, m: Motion, mu) -> Plan:
         points[pn] = PlanPoint(pn, value, src)
         if abs(value) > 0:
             vectors.append(vec)
-    return Plan(recipe.kind, recipe.pole, points, tuple(vectors),
-                mu or _mu(points, store[recipe.tip]),
-                "m/s²" if acc else "m/s")
+    mu = mu or _mu(points, store[recipe.tip])
+    return Plan(recipe.kind, recipe.pole, points, tuple(vectors), mu, "m/s²" if acc else "m/s",
+                _plan_segments(recipe, points, mu))
 
 
 def _mu(points, tip_val) -> float:

@@ -51,6 +51,27 @@ def test_solve_press_json_includes_coincident_point(capsys):
     assert data["segments"]["pa"] == pytest.approx(60)
 
 
+def test_solve_json_keeps_each_plans_segments_apart(capsys, tmp_path):
+    """On a Scotch yoke the relative vector aa3 is drawn on both plans: V_A3A on the
+    velocity plan, a^r_A3A on the acceleration plan. Each plan's table keeps its own."""
+    from plans.plan import solve_position
+    from plans.scenes import SCENES
+
+    scene = SCENES["scotch_yoke"]
+    path = tmp_path / "yoke.toml"
+    path.write_text(scene.toml, encoding="utf-8")
+    code, out, err = run(capsys, "solve", str(path), "--json")
+    assert code == 0, err
+    plans = json.loads(out)["plans"]
+    sol = solve_position(scene.mechanism())
+    v, a = plans["velocity"]["segments"]["aa3"], plans["acceleration"]["segments"]["aa3"]
+    assert v == pytest.approx(sol.velocity.mm("a", "a3"), rel=1e-12)
+    assert a == pytest.approx(sol.acceleration.mm("a", "a3"), rel=1e-12)
+    assert v != pytest.approx(a, rel=1e-3)
+    assert (plans["velocity"]["pole"], plans["acceleration"]["pole"]) == ("p", "π")
+    assert plans["velocity"]["mu"] == sol.mu_v and plans["acceleration"]["unit"] == "m/s²"
+
+
 def math_hypot(v):
     import math
 

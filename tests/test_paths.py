@@ -159,6 +159,15 @@ def test_plan_recipe_made_once_gives_the_plans_made_afresh(name):
             assert pa.vectors == pb.vectors
             assert pa.mu == pb.mu
         assert a.segments == b.segments
+        for plan in (a.velocity, a.acceleration):  # every drawn segment, found afresh
+            assert a.segments.items() >= a.acceleration.segments.items()
+            for name, pt in plan.points.items():
+                if pt.source.kind not in ("pole", "component"):
+                    assert plan.segments[plan.pole + name] == pytest.approx(
+                        plan.mm(plan.pole, name), rel=1e-15, abs=1e-300)
+            for v in plan.vectors:
+                assert plan.segments[v.start + v.end] == pytest.approx(
+                    plan.mm(v.start, v.end), rel=1e-15, abs=1e-300)
         done += 1
     assert done >= 6
 
@@ -166,7 +175,7 @@ def test_plan_recipe_made_once_gives_the_plans_made_afresh(name):
 def test_plan_recipe_is_worked_out_again_where_a_similarity_base_degenerates():
     """A recipe whose similarity step divides by two points that have met is not
     followed blindly: the plan is worked out again there (and the result is finite)."""
-    from plans.plan import _SIMILAR, _Recipe, solve_position
+    from plans.plan import _SIMILAR, solve_position
 
     mech = SCENES["press"].mechanism()
     sv = Solver(mech)
@@ -176,7 +185,7 @@ def test_plan_recipe_is_worked_out_again_where_a_similarity_base_degenerates():
     k = next(i for i, st in enumerate(steps) if st[0] == _SIMILAR)
     st = steps[k]
     steps[k] = (st[0], st[1], st[2], st[3], st[3]) + st[5:]  # base b1 := b0: divides by 0
-    sv.cache[("plan recipe", "velocity")] = _Recipe(*recipe[:3], tuple(steps), recipe.same)
+    sv.cache[("plan recipe", "velocity")] = recipe._replace(steps=tuple(steps))
     again = solve_position(mech, 0.3, solver=sv)
     assert again.velocity.points == good.velocity.points
     assert sv.cache[("plan recipe", "velocity")].steps == recipe.steps
