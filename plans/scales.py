@@ -5,6 +5,8 @@ compute by hand; μl must also be a GOST 2.302 drawing scale (1:10 is μl = 0.01
 
 >>> choose_mu(3.0, 3.6)        # V_A = 3 m/s: pa = 75 mm
 0.04
+>>> choose_mu(0.8, 1.0) == next(series(0.01, 0.2))   # exactly 0.01 m/s per mm
+True
 >>> gost_scale(0.01)
 '1:10'
 """
@@ -38,7 +40,15 @@ def choose_mu(value: float, largest: float, crank_mm: float = 80.0, max_mm: floa
     """The smallest standard μ that keeps the driver's vector ≤ ``crank_mm`` and every
     vector of the plan ≤ ``max_mm``."""
     need = max(abs(value) / crank_mm, abs(largest) / max_mm, 1e-300)
-    return next(series(need, need * 20))
+    n = math.floor(math.log10(need)) - 1
+    while True:  # series(need, …)'s first value, formatting only the candidate that fits
+        for k in MANTISSAS:
+            raw = k * 10.0**n
+            if raw >= need * (1 - 1e-9):
+                v = float(f"{raw:.12g}")
+                if v >= need:
+                    return v
+        n += 1
 
 
 def choose_mu_l(extent: float, max_mm: float = 150.0) -> float:

@@ -9,6 +9,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as hs
 
 from plans.errors import AssemblyError, SingularPlanError
 from plans.kinematics import Solver
@@ -207,3 +209,17 @@ def test_the_readmes_python_example_runs_and_its_comments_are_true(monkeypatch):
         for name, value, unit in re.findall(r"^(\w+) = .*# ([\d.]+) (m/s|m)\b", code, re.M):
             digits = len(value.partition(".")[2])
             assert round(float(scope[name]), digits) == float(value), (name, unit)
+
+
+@settings(max_examples=300, deadline=None)
+@given(hs.floats(1e-9, 1e9), hs.floats(0.0, 10.0))
+def test_choose_mu_is_the_first_standard_value_that_fits(value, ratio):
+    """The plan's scale: the smallest k·10ⁿ (k in 1, 2, 2.5, 4, 5) at which the crank's
+    vector is ≤ 80 mm and every vector ≤ 150 mm, found by walking the series."""
+    from plans.scales import choose_mu, series
+
+    largest = value * ratio
+    need = max(value / 80.0, largest / 150.0)
+    got = choose_mu(value, largest)
+    assert got == next(series(need, need * 20))
+    assert value / got <= 80.0 * (1 + 1e-12) and largest / got <= 150.0 * (1 + 1e-12)
