@@ -223,22 +223,18 @@ class Solver:
 
     def _solve(self, xp, phi, zero, rotor) -> Motion:
         mech = self.mech
-        zc = zero * 0j if not xp.scalar else 0j
         drv = mech.driver
-        states: dict[int, LinkState] = {
-            0: LinkState(zc, zc + 1, zc, zero, zc, zero),
-        }
-        pos: dict = {}
-        vel: dict = {}
-        acc: dict = {}
-        owner: dict[str, int] = {}
-        for name, xy in mech.frame.items():
-            pos[name] = zc + xy
-            vel[name] = zc
-            acc[name] = zc
-            owner[name] = 0
-        pivot = mech.frame[drv.pivot]
-        states[drv.link] = LinkState(zc + pivot, rotor, zc, zero + drv.omega, zc, zero)
+        if xp.scalar:  # the frame's part is the same at every angle: copied, not rebuilt
+            frame = self.cache.get("scalar frame")
+            if frame is None:
+                frame = self.cache["scalar frame"] = self._frame(0j, 0.0)
+        else:
+            frame = self._frame(zero * 0j, zero)
+        frame_state, pos, vel, acc, owner = frame
+        states: dict[int, LinkState] = {0: frame_state}
+        pos, vel, acc, owner = dict(pos), dict(vel), dict(acc), dict(owner)
+        zc = frame_state.v
+        states[drv.link] = LinkState(zc + mech.frame[drv.pivot], rotor, zc, zero + drv.omega, zc, zero)
         self._fill(drv.link, states, pos, vel, acc, owner)
         solutions = []
         valid = True if xp.scalar else np.ones(phi.shape, dtype=bool)
@@ -260,6 +256,13 @@ class Solver:
                 owner[name] = link
                 coincident[name] = base
         return Motion(phi, states, pos, vel, acc, owner, tuple(solutions), valid, coincident)
+
+    def _frame(self, zc, zero):
+        """The frame's state and its points: fixed, at rest."""
+        pos = {name: zc + xy for name, xy in self.mech.frame.items()}
+        rest = dict.fromkeys(pos, zc)
+        return (LinkState(zc, zc + 1, zc, zero, zc, zero), pos, rest, rest,
+                dict.fromkeys(pos, 0))
 
     def _solve_upto(self, count: int) -> Motion:
         """Solve only the first ``count`` groups at the given crank angle (branch choice)."""
