@@ -247,7 +247,7 @@ def _plan_segments(recipe: _Recipe, pts: dict[str, PlanPoint], mu: float) -> dic
 # building the plans: a recipe worked out once per solver, then filled in per angle
 # ---------------------------------------------------------------------------------------
 
-_POLE, _VALUE, _TERM, _CROSS, _SIMILAR = range(5)
+_POLE, _VALUE, _TERM, _CROSS, _SIMILAR, _FIGURE = range(6)
 _POLE_SOURCE = Source("pole")
 
 
@@ -317,12 +317,19 @@ def _work_out(mech: Mechanism, m: Motion, kind: str) -> _Recipe:
             if name in known or (only and name != only):
                 continue
             nx = plan_name(name)
+            own = mech.links[lid].points
             if len(base) >= 2 and abs(pos[base[1]] - pos[base[0]]) > 0:
                 b0, b1 = base[0], base[1]
                 n0, n1 = plan_name(b0), plan_name(b1)
                 eqs = (f"{n0}{nx} = {n0}{n1}·{b0}{name}/{b0}{b1}",
                        f"△{n0}{n1}{nx} ∼ △{b0}{b1}{name}")
-                steps.append((_SIMILAR, nx, name, b0, b1, n0, n1, eqs, absolute(name)))
+                if name in own and b0 in own and b1 in own:
+                    # three points of the rigid figure: the ratio is the figure's own
+                    ratio = (own[name] - own[b0]) / (own[b1] - own[b0])
+                    src = Source("similarity", eqs[abs(ratio.imag) >= 1e-12], (), n0, n1, ratio)
+                    steps.append((_FIGURE, nx, n0, n1, ratio, src, absolute(name)))
+                else:  # a coincident point: where it is on the link changes with φ
+                    steps.append((_SIMILAR, nx, name, b0, b1, n0, n1, eqs, absolute(name)))
             else:
                 if len(base) >= 2:
                     same.append((base[0], base[1]))
@@ -383,7 +390,8 @@ def _segments_of(steps, pole: str) -> tuple[tuple[str, str, str], ...]:
     """The plan's drawn segments: pole to every point found (not the poles, not the ends
     of known components), then every component vector; the absolute vectors are the
     pole-to-point segments already."""
-    points = [(pole + st[1], pole, st[1]) for st in steps if st[0] in (_VALUE, _SIMILAR, _CROSS)]
+    points = [(pole + st[1], pole, st[1]) for st in steps
+              if st[0] in (_VALUE, _SIMILAR, _FIGURE, _CROSS)]
     vectors = []
     for st in steps:
         if st[0] == _TERM:
@@ -408,6 +416,10 @@ def _follow(recipe: _Recipe, m: Motion, mu) -> Plan:
         if op == _VALUE:
             _, pn, name, src, vec = step
             value = store[name]
+        elif op == _FIGURE:
+            _, pn, n0, n1, ratio, src, vec = step
+            v0 = points[n0].value
+            value = v0 + ratio * (points[n1].value - v0)
         elif op == _SIMILAR:
             _, pn, name, b0, b1, n0, n1, eqs, vec = step
             ratio = (pos[name] - pos[b0]) / (pos[b1] - pos[b0])
