@@ -853,7 +853,7 @@ def _connections(frame, links, pairs, drv, bad_links, pr: _Problems) -> None:
 
 def _hint_problem(key: str, hint: str, names: list[str]) -> str | None:
     """Why an [assembly] hint for ``key`` cannot be read or cannot decide anything, or None."""
-    from .kinematics import parse_hint
+    from .branches import parse_hint
 
     try:
         _, refs = parse_hint(hint, names)

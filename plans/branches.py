@@ -1,0 +1,132 @@
+"""Assembly branches from human-readable hints: "above BD", "right of C".
+
+Each group with two assemblies gets a sign, chosen at the file's crank angle by the hints
+and then kept over the whole cycle, so the branch stays continuous.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .errors import InputError
+from .geometry import cross
+from .mechanism import Mechanism
+from .records import coincident_name
+from .structure import DyadKind, Structure
+
+RELATIONS = ("above", "below", "left of", "right of")
+
+
+def parse_hint(hint: str, names: list[str]) -> tuple[str, list[str]]:
+    """``"above BD"`` → ("above", ["B", "D"]); ``"right of C"`` → ("right of", ["C"])."""
+    text = " ".join(hint.strip().split())
+    for rel in RELATIONS:
+        if text.startswith(rel + " "):
+            rest = text[len(rel) + 1 :].replace("line ", "").replace("-", "").replace(" ", "")
+            refs: list[str] = []
+            while rest:
+                match = max((n for n in names if rest.startswith(n)), key=len, default=None)
+                if match is None:
+                    raise ValueError(f'"{rest}" is not a point name')
+                refs.append(match)
+                rest = rest[len(match) :]
+            if len(refs) not in (1, 2):
+                raise ValueError("name one point or a line through two points")
+            return rel, refs
+    raise ValueError('a hint reads "above BD", "below BD", "left of C" or "right of C"')
+
+
+def hint_holds(rel: str, X: complex, refs: list[complex]) -> bool:
+    if len(refs) == 1:
+        Q = refs[0]
+        return {"above": X.imag > Q.imag, "below": X.imag < Q.imag,
+                "left of": X.real < Q.real, "right of": X.real > Q.real}[rel]
+    Q, R = refs
+    d = R - Q
+    if rel in ("above", "below"):
+        if d.real < 0:
+            d = -d
+        side = cross(d, X - Q) > 0
+        return side if rel == "above" else not side
+    if d.imag < 0:
+        d = -d
+    side = cross(d, X - Q) > 0
+    return side if rel == "left of" else not side
+
+
+def choose_branches(mech: Mechanism, structure: Structure) -> tuple[int, ...]:
+    """Turn the file's hints into a sign per group, evaluated at the given crank angle.
+
+    The sign (which side of the line of centres, which way along the guide) is then kept
+    over the whole cycle, so the branch stays continuous.
+    """
+    from .kinematics import Solver  # it calls back here: imported when first needed
+
+    names = mech.point_names()
+    hints = {}
+    for key, text in mech.assembly.items():
+        try:
+            hints[key] = parse_hint(text, names)
+        except ValueError as exc:
+            raise InputError(mech.source, f"assembly.{key}: {exc}") from None
+    used = set()
+    sigmas: list[int] = []
+    for i, g in enumerate(structure.groups):
+        if g.kind in (DyadKind.PRP, DyadKind.RPP):
+            sigmas.append(1)
+            continue
+        group_points = set(mech.links[g.a].points) | set(mech.links[g.b].points)
+        mine = {k: h for k, h in hints.items() if k in group_points}
+        ok = []
+        positions = {}
+        for sigma in (1, -1):
+            trial = Solver(mech, structure, tuple(sigmas) + (sigma,) + (1,) * (len(structure.groups) - i - 1))
+            motion = trial._solve_upto(i + 1)
+            positions[sigma] = motion
+            if not motion.valid[0]:
+                continue
+            if all(
+                hint_holds(rel, complex(motion.position[k][0]),
+                           [complex(motion.position[r][0]) for r in refs if r in motion.position])
+                for k, (rel, refs) in mine.items()
+            ):
+                ok.append(sigma)
+        used |= set(mine)
+        if len(ok) == 1:
+            sigmas.append(ok[0])
+            continue
+        if g.kind == DyadKind.RPR and not mine:
+            sigmas.append(1)  # the guide's axis points from its pivot towards the block
+            continue
+        phi = np.degrees(mech.driver.phi)
+        if not positions[1].valid[0]:
+            earlier = sorted(used - set(mine))
+            note = ""
+            if earlier:
+                asked = ", ".join(f"{k} = {mech.assembly[k]!r}" for k in earlier)
+                note = f" (the groups before it are assembled as the hints {asked} ask: is one of them wrong?)"
+            raise positions[1].groups[i].failure(0, phi, note)
+        new = g.C or coincident_name(g.P, g.b)
+        key = g.C or next(iter(mech.links[g.b].points))
+        if not mine:
+            cands = []
+            for sigma in (1, -1):
+                X = complex(positions[sigma].position[key][0])
+                cands.append(f"({X.real:.4g}, {X.imag:.4g})")
+            raise InputError(
+                mech.source,
+                f"assembly: {g.label} closes two ways at φ1 = {phi:.6g}°, with {key} at "
+                f"{cands[0]} or {cands[1]}: add a hint such as [assembly] {key} = "
+                f'"above {g.P or ""}{g.Q or ""}"',
+            )
+        raise InputError(
+            mech.source,
+            f"assembly: the hints {', '.join(f'{k} = {mech.assembly[k]!r}' for k in mine)} "
+            f"{'fit neither' if not ok else 'fit both'} assembly of {g.label} "
+            f"at φ1 = {phi:.6g}° (new point {new})",
+        )
+    unused = set(hints) - used
+    if unused:
+        k = sorted(unused)[0]
+        raise InputError(mech.source, f"assembly.{k}: {k} is not a point of a group with two assemblies")
+    return tuple(sigmas)

@@ -1,0 +1,146 @@
+"""The records of a solution: link states, the two routes of each construction with their
+known terms, each group's solution, and the motion of the whole mechanism.
+
+Values of one angle (Python numbers) or of many (numpy arrays) alike: the solver records
+whichever it solved. Everything here is immutable.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import NamedTuple
+
+import numpy as np
+
+from .errors import AssemblyError, PlansError, SingularPlanError
+from .structure import Group
+
+#: below this |sin| of the angle between the two lines a plan is singular
+SINGULAR_SINE = 1e-10
+#: below this |sin| (about 2°) a position is reported as near-singular
+WARN_SINE = 0.035
+
+
+class LinkState(NamedTuple):
+    """Pose and motion of a link: its origin point and orientation (unit complex),
+    the velocity and acceleration of the origin, ω and ε (counter-clockwise positive)."""
+
+    origin: np.ndarray
+    rotor: np.ndarray
+    v: np.ndarray
+    omega: np.ndarray
+    a: np.ndarray
+    epsilon: np.ndarray
+
+    def pos(self, local):
+        return self.origin + self.rotor * local
+
+    def vel(self, X):
+        return self.v + 1j * self.omega * (X - self.origin)
+
+    def acc(self, X):
+        return self.a + (1j * self.epsilon - self.omega**2) * (X - self.origin)
+
+
+def state_from(origin, rotor, X, vX, aX, omega, eps) -> LinkState:
+    """The state of a link from one of its points X with known velocity and acceleration."""
+    r = origin - X
+    return LinkState(
+        origin, rotor, vX + 1j * omega * r, omega, aX + (1j * eps - omega**2) * r, eps
+    )
+
+
+class Term(NamedTuple):
+    """A known vector of an equation, drawn head to tail before the unknown line."""
+
+    kind: str  # "normal" or "coriolis"
+    value: np.ndarray
+    label: str  # "a^n_A3B", "a^k_A3A"
+    about: tuple[str, str]  # normal: (point, centre); Coriolis: (point, the point it slides on)
+
+
+class Route(NamedTuple):
+    """One of the two vector equations of a group: known base, known terms, one line."""
+
+    base: str | None  # mechanism point whose plan point starts the route; None = the pole
+    base_value: np.ndarray
+    terms: tuple[Term, ...]
+    direction: np.ndarray  # unit vector of the unknown term
+    relation: str  # "⊥ CB", "∥ BC", "∥ x-x"
+    unknown: str  # "V_A3B", "a^t_A3B", "a^r_A3A"
+    unknown_kind: str  # "relative", "tangential", "sliding"
+    param: np.ndarray  # signed magnitude of the unknown term along ``direction``
+
+    @property
+    def line_point(self):
+        out = self.base_value
+        for t in self.terms:
+            out = out + t.value
+        return out
+
+
+class Construction(NamedTuple):
+    """How the new point of a group was found: the intersection of two routes."""
+
+    point: str  # mechanism name of the point found (C, A3…)
+    value: np.ndarray
+    routes: tuple[Route, Route]
+    sine: np.ndarray
+    equation: str
+
+
+class GroupSolution(NamedTuple):
+    group: Group
+    velocity: Construction
+    acceleration: Construction
+    valid: np.ndarray  # bool: the group closes at this angle
+    gap: np.ndarray  # how far it is from closing (m); > 0 where it does not close
+    admissible: str  # the condition, for messages
+    singular: np.ndarray  # bool: where it does not close, is it a dead point (no miss)?
+    why_singular: str  # what makes it singular, for messages
+
+    def failure(self, k: int, phi_deg: float, note: str = "") -> PlansError:
+        """The error for angle index ``k`` where the group does not close.
+
+        A group that misses (its links do not reach) is an :class:`AssemblyError` with the
+        distance it misses by; one exactly at the limit (links in line, parallel guides,
+        a pivot on the pin) is a dead point: a :class:`SingularPlanError`.
+        """
+        label = self.group.label
+        if bool(self.singular[k]):
+            return SingularPlanError(
+                f"{label} at φ1 = {phi_deg:.6g}°: {self.why_singular}: a singular position "
+                f"(dead point), the plan has no unique solution{note}"
+            )
+        return AssemblyError(
+            f"{label} cannot be assembled at φ1 = {phi_deg:.6g}°: needs {self.admissible}, "
+            f"misses by {float(self.gap[k]):.6g} m{note}",
+            group=label, phi_deg=phi_deg,
+        )
+
+
+@dataclass(frozen=True)
+class Motion:
+    """Positions, velocities and accelerations of every point and link over angles ``phi``."""
+
+    phi: np.ndarray
+    links: dict[int, LinkState]
+    position: dict[str, np.ndarray]
+    velocity: dict[str, np.ndarray]
+    acceleration: dict[str, np.ndarray]
+    point_link: dict[str, int]  # the link a (coincident) point belongs to
+    groups: tuple[GroupSolution, ...]
+    valid: np.ndarray
+    coincident: dict[str, str] = field(default_factory=dict)  # "A3" -> "A"
+
+    @property
+    def min_sine(self) -> np.ndarray:
+        """Conditioning: the smallest |sin| between intersected lines over the groups."""
+        out = np.ones_like(self.phi)
+        for g in self.groups:
+            out = np.minimum(out, np.abs(g.velocity.sine))
+        return out
+
+
+def coincident_name(point: str, link: int) -> str:
+    return f"{point}{link}"
