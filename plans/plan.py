@@ -340,7 +340,7 @@ def _work_out(mech: Mechanism, m: Motion, kind: str) -> _Recipe:
             base.append(name)
 
     for name in mech.frame:
-        steps.append((_POLE, plan_name(name)))
+        steps.append((_POLE, plan_name(name), PlanPoint(plan_name(name), 0j, _POLE_SOURCE)))
         known.add(name)
     drv = mech.driver
     if acc:
@@ -411,7 +411,7 @@ def _follow(recipe: _Recipe, m: Motion, mu) -> Plan:
     for step in recipe.steps:
         op = step[0]
         if op == _POLE:
-            points[step[1]] = PlanPoint(step[1], 0j, _POLE_SOURCE)
+            points[step[1]] = step[2]  # a fixed point: the same record at every angle
             continue
         if op == _VALUE:
             _, pn, name, src, vec = step
