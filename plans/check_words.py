@@ -1,0 +1,168 @@
+"""The words that name a mistake, in English and Russian, with numbers in the language's
+own convention (a decimal comma in Russian)."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from .replay import Mistake
+
+
+PLAN_WORDS = {
+    "en": {"velocity": "velocity plan", "acceleration": "acceleration plan",
+           "positions": "plan of positions", "both": "both plans"},
+    "ru": {"velocity": "план скоростей", "acceleration": "план ускорений",
+           "positions": "план положений", "both": "оба плана"},
+}
+
+
+def _fnum(x: float, lang: str) -> str:
+    from .fmt import num
+
+    return num(float(x), 3, lang)
+
+
+def _text(mk: Mistake, lang: str) -> tuple[str, str]:
+    """(what the mistake is, the correction in the method's words)."""
+    ru = lang == "ru"
+    g = mk.get
+    k = mk.kind
+    if k == "coriolis-reversed":
+        if ru:
+            return (f"вектор ускорения Кориолиса {mk.target} направлен в обратную сторону",
+                    f"поверните вектор относительной скорости {g('rel')} на 90° в сторону "
+                    f"переносной угловой скорости {g('omega')}")
+        return (f"the Coriolis vector {mk.target} points the wrong way",
+                f"turn the relative velocity {g('rel')} by 90° in the sense of {g('omega')}")
+    if k == "coriolis-omitted":
+        if ru:
+            return (f"ускорение Кориолиса {mk.target} не учтено",
+                    f"отложите {mk.target} = 2·{g('omega')}·{g('rel')} (вектор {g('rel')}, "
+                    f"повёрнутый на 90° в сторону {g('omega')}) перед линией относительного ускорения")
+        return (f"the Coriolis acceleration {mk.target} is missing",
+                f"lay off {mk.target} = 2·{g('omega')}·{g('rel')} ({g('rel')} turned by 90° in "
+                f"the sense of {g('omega')}) before drawing the line of the sliding acceleration")
+    if k == "coriolis-half":
+        if ru:
+            return (f"ускорение Кориолиса {mk.target} вдвое меньше",
+                    f"{mk.target} = 2·{g('omega')}·{g('rel')}: не забудьте множитель 2")
+        return (f"the Coriolis acceleration {mk.target} is half as long as it should be",
+                f"{mk.target} = 2·{g('omega')}·{g('rel')}: the factor 2 is missing")
+    if k == "normal-reversed":
+        X, Y = g("X"), g("Y")
+        if g("driver"):
+            if ru:
+                return (f"ускорение {mk.target} кривошипа направлено от {Y} к {X}",
+                        f"a_{X} = ω1²·l_{Y}{X} направлено от {X} к центру {Y}: "
+                        f"π{X.lower()} ∥ {Y}{X}, от {X} к {Y}")
+            return (f"the crank's acceleration {mk.target} points from {Y} to {X}",
+                    f"a_{X} = ω1²·l_{Y}{X} is directed from {X} towards the centre {Y}: "
+                    f"draw π{X.lower()} ∥ {Y}{X}, from {X} to {Y}")
+        if ru:
+            return (f"нормальное ускорение {mk.target} направлено в обратную сторону",
+                    f"{mk.target} = V²_{X}{Y}/l_{X}{Y} направлено от точки {X} к центру {Y} (∥ {X}{Y})")
+        return (f"the normal acceleration {mk.target} points the wrong way",
+                f"{mk.target} = V_{X}{Y}²/l_{X}{Y} is directed from {X} towards the centre {Y} (∥ {X}{Y})")
+    if k == "normal-omitted":
+        X, Y = g("X"), g("Y")
+        if ru:
+            return (f"нормальное ускорение {mk.target} не учтено",
+                    f"отложите {mk.target} = V²_{X}{Y}/l_{X}{Y} (∥ {X}{Y}, от {X} к {Y}) и проведите "
+                    f"линию касательного ускорения ⊥ {X}{Y} через его конец")
+        return (f"the normal acceleration {mk.target} is missing",
+                f"lay off {mk.target} = V_{X}{Y}²/l_{X}{Y} (∥ {X}{Y}, from {X} to {Y}) and draw the "
+                f"line of the tangential acceleration ⊥ {X}{Y} through its end")
+    if k == "omega-sense":
+        if ru:
+            extra = (f"; вектор Кориолиса {g('coriolis')} тогда поворачивается не в ту сторону"
+                     if g("coriolis") else "")
+            return (f"угловая скорость {mk.target} взята с обратным направлением",
+                    f"направление {mk.target} определяется направлением относительной скорости "
+                    f"на плане скоростей{extra}")
+        extra = (f"; with it the Coriolis vector {g('coriolis')} turns the wrong way"
+                 if g("coriolis") else "")
+        return (f"{mk.target} taken with the wrong sense",
+                f"the sense of {mk.target} is that of the relative velocity on the velocity plan"
+                f"{extra}")
+    if k == "line-swapped":
+        plan = PLAN_WORDS[lang][mk.plan]
+        if ru:
+            return (f"на плане ({plan}) линия {mk.target} проведена {g('wrong')} вместо {g('relation')}",
+                    f"через точку {g('through')} проведите линию {g('relation')} "
+                    f"(линия вектора {mk.target}), а не {g('wrong')}")
+        return (f"on the {plan} the line of {mk.target} is drawn {g('wrong')} instead of {g('relation')}",
+                f"through {g('through')} draw the line {g('relation')} (the line of {mk.target}), "
+                f"not {g('wrong')}")
+    if k == "branch":
+        if ru:
+            return (f"{mk.target.replace('group', 'группа')} собрана в другом положении (другая сборка)",
+                    f"постройте план положений с заданной сборкой группы: точка {g('point')} "
+                    "на другой стороне; затем перестройте планы")
+        return (f"{mk.target} is assembled the other way (the other branch)",
+                f"draw the plan of positions with the given assembly of the group ({g('point')} "
+                "on the other side), then redraw the plans")
+    if k in ("scale", "scale-swapped"):
+        facs = dict(mk.info)
+        parts = []
+        for plan, f in facs.items():
+            f = float(f)
+            mu = {"velocity": "μv", "acceleration": "μa", "positions": "μl"}[plan]
+            if ru:
+                parts.append(f"{PLAN_WORDS[lang][plan]} в {_fnum(f, lang)} раза крупнее "
+                             f"(при указанном {mu})" if f > 1 else
+                             f"{PLAN_WORDS[lang][plan]} в {_fnum(1 / f, lang)} раза мельче "
+                             f"(при указанном {mu})")
+            else:
+                parts.append(f"the {PLAN_WORDS[lang][plan]} is drawn {_fnum(f, lang)} times too large "
+                             f"for the stated {mu}" if f > 1 else
+                             f"the {PLAN_WORDS[lang][plan]} is drawn {_fnum(1 / f, lang)} times too "
+                             f"small for the stated {mu}")
+        what = "; ".join(parts)
+        if k == "scale-swapped":
+            what = ("μv и μa перепутаны: " if ru else "μv and μa swapped: ") + what
+        if ru:
+            return (what, "длина отрезка = величина / масштабный коэффициент: pa = V_A/μv, "
+                          "πa = a_A/μa, в мм; проверьте степень 10 и какой μ к какому плану")
+        return (what, "a segment is the value divided by its own scale factor: pa = V_A/μv, "
+                      "πa = a_A/μa, in mm; check the power of 10 and which μ belongs to which plan")
+    if k == "term-scale":
+        f = float(mk.factor.real)
+        if ru:
+            return (f"{mk.target} отложено в {_fnum(max(f, 1 / f), lang)} раза "
+                    + ("длиннее" if f > 1 else "короче"),
+                    f"вычислите {mk.target} в единицах СИ (длины в м: l = отрезок·μl) и разделите на μa")
+        return (f"{mk.target} is drawn {_fnum(max(f, 1 / f), lang)} times too "
+                + ("long" if f > 1 else "short"),
+                f"compute {mk.target} in SI units (lengths in m: l = segment·μl), then divide by μa")
+    if k.startswith("similarity"):
+        how = g("how")
+        eq = g("equation")
+        plan = PLAN_WORDS[lang][mk.plan]
+        if how.startswith("sibling:"):
+            other = how.split(":", 1)[1]
+            if ru:
+                return (f"точка {mk.target} ({plan}) найдена по отношению для точки {other}",
+                        f"по теореме подобия: {eq}")
+            return (f"{mk.target} on the {plan} found with the ratio meant for {other}",
+                    f"by similarity: {eq}")
+        if how == "inverse":
+            if ru:
+                return (f"точка {mk.target} ({plan}) найдена по обратному отношению отрезков",
+                        f"по теореме подобия: {eq} (отрезок плана / отрезок звена одинаковы для всех точек звена)")
+            return (f"{mk.target} on the {plan} found with the ratio of the wrong segments (inverted)",
+                    f"by similarity: {eq} (plan segment / link segment is the same for every point of the link)")
+        if how == "side":
+            if ru:
+                return (f"точка {mk.target} ({plan}) отложена по другую сторону от {g('base')}",
+                        f"по теореме подобия: {eq}, в ту же сторону, что и на звене")
+            return (f"{mk.target} on the {plan} laid off on the wrong side of {g('base')}",
+                    f"by similarity: {eq}, in the same direction as on the link")
+        if ru:
+            return (f"фигура для точки {mk.target} ({plan}) построена зеркально",
+                    f"по теореме подобия: {eq}; обход букв на плане тот же, что на звене, "
+                    "фигура не зеркальная")
+        return (f"the figure for {mk.target} on the {plan} is mirrored",
+                f"by similarity: {eq}, with the letters in the same order round the figure as "
+                "on the link, not mirrored")
+    return (k, "")

@@ -1,0 +1,448 @@
+"""What a student measured on their drawing: the measurement file, the tolerance, and the
+names of the segments (pa3, aa3, πa3, n1a3…) matched to the plans' recorded segments.
+
+:func:`load` and :func:`from_dict` read a measurement file into a :class:`Measurement` of
+:class:`Item` s, each saying which plan and which segment or value it is; every problem in
+the file is reported at once, with its location.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from .errors import InputError, PlansError
+from .mechanism import Mechanism
+from .plan import Plan, Solution, plan_name, solve_position
+
+PLANS = ("positions", "velocity", "acceleration")
+MU_KEY = {"positions": "mu_l", "velocity": "mu_v", "acceleration": "mu_a"}
+SENSE_WORDS = {"ccw": 1, "cw": -1, "против": 1, "по": -1}
+
+
+# ---------------------------------------------------------------------------------------
+# tolerance
+# ---------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class Tolerance:
+    """A deviation is within tolerance when it is at most the larger of ``mm`` (on the
+    drawing) and ``percent`` of the computed length."""
+
+    percent: float = 5.0
+    mm: float = 1.0
+
+    def limit(self, computed: float, per_mm: float = 1.0) -> float:
+        """The allowed deviation of an item whose 1 mm of drawing is ``per_mm`` units."""
+        return max(self.mm * per_mm, self.percent / 100.0 * abs(computed))
+
+    def describe(self, lang: str = "en") -> str:
+        from .fmt import num
+
+        if lang == "ru":
+            return f"большее из {num(self.mm, 3, lang)} мм и {num(self.percent, 3, lang)} %"
+        return f"the larger of {num(self.mm, 3)} mm and {num(self.percent, 3)} %"
+
+
+def parse_tolerance(text: str, base: Tolerance | None = None) -> Tolerance:
+    """``"5%"``, ``"1.5mm"``, ``"3%,0.5mm"`` → :class:`Tolerance` (unnamed parts stay).
+
+    >>> parse_tolerance("3%")
+    Tolerance(percent=3.0, mm=1.0)
+    >>> parse_tolerance("0.5 mm, 2 %")
+    Tolerance(percent=2.0, mm=0.5)
+    """
+    base = base or Tolerance()
+    pct, mm = base.percent, base.mm
+    token = r"(\d+(?:[.,]\d+)?)\s*(%|mm|мм)?"
+    text = str(text).strip()
+    if not re.fullmatch(rf"{token}(?:\s*[,;]?\s*{token})*", text):
+        raise ValueError(f'"{text[:40]}" is not a tolerance (e.g. "5%", "1mm" or "5%,1mm")')
+    for number, unit in re.findall(token, text):
+        x = float(number.replace(",", "."))
+        if not math.isfinite(x) or x > 1000:
+            raise ValueError(f'"{number}" is out of range')
+        if unit in ("mm", "мм"):
+            mm = x
+        else:
+            pct = x
+    return Tolerance(pct, mm)
+
+
+# ---------------------------------------------------------------------------------------
+# what the student measured
+# ---------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class Item:
+    """One measured segment or one value the student wrote down.
+
+    kind: "segment" (mm on a plan), "value" (m/s, m/s²), "omega", "epsilon" (rad/s,
+    rad/s²). ``start``/``end``: plan point names (mechanism names on the plan of
+    positions); ``per_mm``: how much of the item 1 mm of drawing is (for the tolerance).
+    """
+
+    key: str  # where in the file, e.g. "segments.pia3"
+    name: str  # as shown, e.g. "πa3", "ω3", "V_A3"
+    kind: str
+    plan: str  # positions, velocity, acceleration
+    measured: float
+    start: str = ""
+    end: str = ""
+    link: int = 0
+    sense: int = 0  # ω, ε: +1 ccw, −1 cw, 0 not given
+    per_mm: float = 1.0
+
+    @property
+    def unit(self) -> str:
+        return {"segment": "mm", "omega": "rad/s", "epsilon": "rad/s²"}.get(
+            self.kind, "m/s" if self.plan == "velocity" else "m/s²")
+
+
+@dataclass(frozen=True)
+class Measurement:
+    source: str
+    mechanism: Mechanism
+    solution: Solution  # the exact plans at the student's scale factors
+    mu: dict[str, float]
+    items: tuple[Item, ...]
+    tolerance: Tolerance | None = None  # from the file
+    title: str = ""
+    angle_deg: float | None = None
+
+
+TOP_KEYS = {"title", "mechanism", "variant", "table", "angle_deg", "tolerance", "scales",
+            "segments", "values"}
+
+
+def load(path: str | Path) -> Measurement:
+    """Read and validate a measurement file; every problem is reported, located."""
+    from .mechanism import read_toml
+
+    data, text = read_toml(path, "a measurement file is a few KB")
+    path = Path(path)
+    return from_dict(data, str(path), path.parent, text=text)
+
+
+def _raise(source: str, text: str | None, problems: list[str]):
+    """Every problem at once, each "key: what" located to its line when the text is known."""
+    from .mechanism import _Problems
+
+    pr = _Problems(source, text)
+    for p in problems:
+        where, _, what = p.partition(": ")
+        pr.add(where, what)
+    raise InputError(source, pr.lines())
+
+
+def _num(value: Any, where: str, problems: list[str], *, positive=False,
+         nonneg=False) -> float | None:
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        problems.append(f"{where}: must be a number, got {type(value).__name__} {value!r:.40}")
+        return None
+    x = float(value)
+    if not math.isfinite(x) or abs(x) > 1e9:
+        problems.append(f"{where}: {value!r:.40} is out of range")
+        return None
+    if positive and x <= 0:
+        problems.append(f"{where}: must be positive, got {value}")
+        return None
+    if nonneg and x < 0:
+        problems.append(f"{where}: a length on the drawing cannot be negative, got {value}")
+        return None
+    return x
+
+
+def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = None, *,
+              text: str | None = None) -> Measurement:
+    """Build a :class:`Measurement` from parsed TOML (the mechanism is loaded and solved)."""
+    from . import mechanism as mechmod
+    from . import variants
+
+    problems: list[str] = []
+    for key in data:
+        if key not in TOP_KEYS:
+            problems.append(f"{key}: unknown key (known: {', '.join(sorted(TOP_KEYS))})")
+    title = data.get("title", "")
+    if not isinstance(title, str) or len(title) > 300:
+        problems.append("title: must be a text of at most 300 characters")
+        title = ""
+    # the mechanism -------------------------------------------------------------------
+    mech = None
+    has_file, has_var = "mechanism" in data, "variant" in data
+    if has_file == has_var:
+        problems.append('mechanism: give the mechanism file (mechanism = "press.toml") '
+                        "or a variant (variant = 3), one of them")
+    elif has_file:
+        mpath = data["mechanism"]
+        if not isinstance(mpath, str) or not mpath:
+            problems.append(f"mechanism: must be a file name, got {mpath!r:.40}")
+        else:
+            p = Path(mpath)
+            if not p.is_absolute() and folder is not None:
+                p = folder / p
+            if not p.is_file():
+                problems.append(f"mechanism: {mpath}: no such file (paths are relative to "
+                                "the measurement file)")
+            else:
+                mech = p
+    else:
+        var = data["variant"]
+        if isinstance(var, bool) or not isinstance(var, int):
+            problems.append(f"variant: must be a whole number, got {var!r:.40}")
+        else:
+            mech = var
+    table = data.get("table")
+    if table is not None:
+        if not isinstance(table, str):
+            problems.append("table: must be a file name")
+            table = None
+        elif folder is not None and not Path(table).is_absolute():
+            table = str(folder / table)
+    angle = None
+    if "angle_deg" in data:
+        angle = _num(data["angle_deg"], "angle_deg", problems)
+    tol = None
+    if "tolerance" in data:
+        try:
+            tol = parse_tolerance(data["tolerance"])
+        except ValueError as exc:
+            problems.append(f"tolerance: {exc}")
+    mu: dict[str, float] = {}
+    scales = data.get("scales", {})
+    if not isinstance(scales, dict):
+        problems.append("scales: must be a table, e.g. [scales] mu_v = 0.05")
+        scales = {}
+    for key, value in scales.items():
+        if key not in MU_KEY.values():
+            problems.append(f"scales.{key}: unknown key (known: mu_l, mu_v, mu_a)")
+            continue
+        x = _num(value, f"scales.{key}", problems, positive=True)
+        if x is not None:
+            mu[key] = x
+    raw_segments = data.get("segments", {})
+    if not isinstance(raw_segments, dict):
+        problems.append("segments: must be a table of lengths in mm, e.g. [segments] pa3 = 55")
+        raw_segments = {}
+    raw_values = data.get("values", {})
+    if not isinstance(raw_values, dict):
+        problems.append('values: must be a table, e.g. [values] omega3 = "4.82 ccw"')
+        raw_values = {}
+    segs: list[tuple[str, str | None, str, float]] = []  # key, scope, name, mm
+    for key, value in raw_segments.items():
+        if isinstance(value, dict):
+            if key not in PLANS:
+                problems.append(f"segments.{key}: a sub-table must be one of "
+                                f"{', '.join(PLANS)}")
+                continue
+            for k2, v2 in value.items():
+                x = _num(v2, f"segments.{key}.{k2}", problems, nonneg=True)
+                if x is not None:
+                    segs.append((f"segments.{key}.{k2}", key, k2, x))
+            continue
+        x = _num(value, f"segments.{key}", problems, nonneg=True)
+        if x is not None:
+            segs.append((f"segments.{key}", None, key, x))
+    if not raw_segments and not raw_values:
+        problems.append("segments: nothing to check: give the measured segments, e.g. "
+                        "[segments] pa3 = 55")
+    if mech is None:
+        _raise(source, text, problems or ["mechanism: missing"])
+    # solve at the student's scales (the names are checked against the plans even when
+    # other keys have problems, so that every problem is reported at once) -------------
+    try:
+        if isinstance(mech, int):
+            m = variants.variant(mech, table)
+        else:
+            m = mechmod.load(mech)
+        if angle is not None:
+            d = m.driver
+            ref = mechmod.REFERENCES[d.reference] + mechmod.SENSES[d.measured] * angle
+            m = m.with_phi(math.radians(ref))
+        sol = solve_position(m, mu=dict(mu))
+    except PlansError:
+        if problems:  # these first; the mechanism's own problems once they are fixed
+            _raise(source, text, problems)
+        raise
+    names = _Names(sol)
+    items: list[Item] = []
+    for key, scope, name, x in segs:
+        item = names.segment(key, scope, name, x, problems)
+        if item is not None:
+            items.append(item)
+    for key, value in raw_values.items():
+        item = names.value(f"values.{key}", key, value, problems)
+        if item is not None:
+            items.append(item)
+    need = {it.plan for it in items if it.kind in ("segment", "value")}
+    need |= {"velocity" for it in items if it.kind == "omega"}
+    need |= {"acceleration" for it in items if it.kind == "epsilon"}
+    for plan in PLANS:
+        if plan in need and MU_KEY[plan] not in mu:
+            what = {"positions": "the plan of positions", "velocity": "the velocity plan",
+                    "acceleration": "the acceleration plan"}[plan]
+            problems.append(f"scales.{MU_KEY[plan]}: missing: the scale factor the student "
+                            f"used for {what}")
+    if problems:
+        _raise(source, text, problems)
+    return Measurement(source, m, sol, {k: sol_mu(sol, k) for k in MU_KEY.values()},
+                       tuple(items), tol, title, angle)
+
+
+def sol_mu(sol: Solution, key: str) -> float:
+    return {"mu_l": sol.mu_l, "mu_v": sol.mu_v, "mu_a": sol.mu_a}[key]
+
+
+def _splits(text: str, names) -> list[tuple[str, str]]:
+    return [(text[:i], text[i:]) for i in range(1, len(text))
+            if text[:i] in names and text[i:] in names and text[:i] != text[i:]]
+
+
+def recorded_segments(plan: Plan) -> dict[str, tuple[str, str]]:
+    """The segments a plan names (as ``plans solve`` prints them) → (start, end)."""
+    out = {}
+    for name, pt in plan.points.items():
+        if pt.source.kind not in ("pole", "component"):
+            out[plan.pole + name] = (plan.pole, name)
+    for v in plan.vectors:
+        if v.component != "absolute":
+            out[v.start + v.end] = (v.start, v.end)
+    return out
+
+
+class _Names:
+    """Resolves the names a student writes to plan segments and values."""
+
+    def __init__(self, sol: Solution):
+        from .replay import _Replayer  # it reads measurements' names in turn
+
+        self.sol = sol
+        self.plans = {"velocity": sol.velocity, "acceleration": sol.acceleration}
+        self.recorded = {k: recorded_segments(p) for k, p in self.plans.items()}
+        self.recorded["positions"] = {k: (k, "") for k in sol.lengths}
+        self.pos_names = set(sol.positions)
+        self.rep = _Replayer(sol)
+
+    def known(self) -> str:
+        names = list(self.sol.lengths) + [
+            k for p in ("velocity", "acceleration") for k in self.recorded[p]]
+        return ", ".join(names)
+
+    def segment(self, key, scope, name, mm, problems) -> Item | None:
+        spellings = [name]
+        if name.startswith("pi"):
+            spellings.append("π" + name[2:])
+        if name.endswith("pi"):
+            spellings.append(name[:-2] + "π")
+        cands: dict[tuple[str, str, str], str] = {}
+        for sp in spellings:
+            if scope in (None, "positions"):
+                for x, y in _splits(sp, self.pos_names):
+                    cands.setdefault(("positions", x, y), sp)
+            for kind, plan in self.plans.items():
+                if scope in (None, kind):
+                    for x, y in _splits(sp, set(plan.points) | {plan.pole}):
+                        cands.setdefault((kind, x, y), sp)
+        if len({c[0] for c in cands}) > 1:
+            rec = {c: sp for c, sp in cands.items() if sp in self.recorded[c[0]]}
+            if len({c[0] for c in rec}) == 1:
+                cands = rec
+        if not cands:
+            problems.append(f"{key}: unknown segment \"{name}\"; known: {self.known()} "
+                            "(or any two points of one plan; write π as pi)")
+            return None
+        if len(cands) > 1:
+            where = sorted({c[0] for c in cands})
+            if len(where) > 1:
+                problems.append(f"{key}: \"{name}\" names a segment on the {' and the '.join(where)} "
+                                f"plans: put it under [segments.{where[-1]}] or "
+                                f"[segments.{where[0]}]")
+            else:
+                problems.append(f"{key}: \"{name}\" can be read as "
+                                + " or ".join(f"{x}–{y}" for _, x, y in cands))
+            return None
+        (plan, x, y), sp = next(iter(cands.items()))
+        return Item(key, sp, "segment", plan, mm, x, y)
+
+    def value(self, key, name, value, problems) -> Item | None:
+        sol = self.sol
+        m = re.fullmatch(r"(omega|ω|w|epsilon|ε|eps)_?(\d+)", name)
+        if m:
+            link = int(m.group(2))
+            kind = "omega" if m.group(1) in ("omega", "ω", "w") else "epsilon"
+            if link not in sol.mechanism.links:
+                problems.append(f"{key}: there is no link {link} (links: "
+                                f"{', '.join(map(str, sorted(sol.mechanism.links)))})")
+                return None
+            mag, sense = _magnitude_sense(value, key, problems, allow_sense=True)
+            if mag is None:
+                return None
+            plan = "velocity" if kind == "omega" else "acceleration"
+            pair = self.rep.pairs.get(link)
+            per_mm = 0.0
+            if pair:
+                per_mm = sol_mu(sol, MU_KEY[plan]) / abs(sol.positions[pair[0]] - sol.positions[pair[1]])
+            sym = "ω" if kind == "omega" else "ε"
+            return Item(key, f"{sym}{link}", kind, plan, mag, link=link, sense=sense, per_mm=per_mm)
+        hit = self._physical(name)
+        if hit is None:
+            labels = ["ω<link>", "ε<link>", "V_<point>", "a_<point>", "V_<point><point>"]
+            labels += [v.label for v in sol.acceleration.vectors if v.component != "absolute"]
+            problems.append(f"{key}: unknown value \"{name}\"; known: {', '.join(dict.fromkeys(labels))}")
+            return None
+        plan, x, y, label = hit
+        mag, _ = _magnitude_sense(value, key, problems, allow_sense=False)
+        if mag is None:
+            return None
+        return Item(key, label, "value", plan, mag, x, y,
+                    per_mm=sol_mu(sol, MU_KEY[plan]))
+
+    def _physical(self, name: str):
+        m = re.fullmatch(r"(V|v|a)(?:\^?([nktr]))?_(\w+)", name)
+        if not m:
+            return None
+        sym, comp, rest = m.groups()
+        plan = self.sol.velocity if sym in "Vv" else self.sol.acceleration
+        if comp:
+            if sym != "a":
+                return None
+            label = f"a^{comp}_{rest}"
+            for v in plan.vectors:
+                if v.label == label:
+                    return plan.kind, v.start, v.end, label
+            return None
+        names = set(self.sol.positions)
+        head = "V" if sym in "Vv" else "a"
+        if rest in names:
+            return plan.kind, plan.pole, plan_name(rest), f"{head}_{rest}"
+        sp = _splits(rest, names)
+        if len(sp) == 1:
+            x, y = sp[0]
+            return plan.kind, plan_name(y), plan_name(x), f"{head}_{rest}"
+        return None
+
+
+def _magnitude_sense(value, key, problems, *, allow_sense):
+    sense = 0
+    if isinstance(value, str) and allow_sense:
+        parts = value.replace(",", ".").split()
+        try:
+            mag = float(parts[0]) if parts else None
+        except ValueError:
+            mag = None
+        word = parts[1].lower() if len(parts) > 1 else ""
+        if mag is None or len(parts) > 3 or (word and word not in SENSE_WORDS):
+            problems.append(f'{key}: write a magnitude and a sense, e.g. "4.82 ccw" or "4.82 cw", '
+                            f"got {value!r:.40}")
+            return None, 0
+        sense = SENSE_WORDS.get(word, 0)
+        value = mag
+    x = _num(value, key, problems, nonneg=True)
+    if x is None:
+        return None, 0
+    return x, sense

@@ -1,0 +1,362 @@
+"""The plans as a student draws them, and the mistakes a student makes.
+
+The plans are replayed point by point from their recorded constructions: poles and the
+crank as given, a known component (a^n, a^k) recomputed from the student's own velocity
+plan, the intersection of the two recorded lines, and the similarity ratio. A
+:class:`Mistake` changes one step and everything after it follows, as on paper.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .check_words import _text
+from .geometry import cross, intersect
+from .kinematics import Solver
+from .measured import MU_KEY, PLANS, Item
+from .plan import Plan, Solution, plan_name, solve_position
+from .structure import DyadKind
+
+
+@dataclass(frozen=True)
+class State:
+    """Plans as drawn: point values (m/s, m/s²) by plan name, positions by mechanism name,
+    ω and ε as read off the plans, and a length factor per plan (a scale mistake)."""
+
+    positions: dict[str, complex]
+    velocity: dict[str, complex]
+    acceleration: dict[str, complex]
+    omega: dict[int, float]
+    epsilon: dict[int, float]
+    factor: dict[str, float] = field(default_factory=lambda: dict.fromkeys(PLANS, 1.0))
+
+    def values(self, plan: str) -> dict[str, complex]:
+        return self.velocity if plan == "velocity" else self.acceleration
+
+
+def expected(item: Item, st: State, mu: dict[str, float]) -> float:
+    """What the student should have measured (or computed) if they drew ``st``.
+    ω and ε are signed (counter-clockwise positive); everything else is a length."""
+    f = st.factor[item.plan]
+    if item.kind == "omega":
+        return st.omega.get(item.link, 0.0) * f
+    if item.kind == "epsilon":
+        return st.epsilon.get(item.link, 0.0) * f
+    if item.plan == "positions":
+        return abs(st.positions[item.end] - st.positions[item.start]) / mu["mu_l"] * f
+    vals = st.values(item.plan)
+    d = abs(vals[item.end] - vals[item.start]) * f
+    return d if item.kind == "value" else d / mu[MU_KEY[item.plan]]
+
+
+class _Degenerate(Exception):
+    """A simulated mistake makes two lines parallel: no plan can be drawn that way."""
+
+
+@dataclass(frozen=True)
+class Mistake:
+    """One common mistake, located: which term, line, point, group or plan.
+
+    kind: coriolis-reversed, coriolis-omitted, coriolis-half, term-scale,
+    normal-reversed, normal-omitted, omega-sense, line-swapped, branch, scale,
+    scale-swapped, similarity-ratio, similarity-mirrored.
+    """
+
+    kind: str
+    plan: str = ""  # velocity, acceleration, both, positions
+    target: str = ""  # a term label, a plan point, a group label
+    factor: complex = 1.0
+    link: int = 0
+    group: int = -1
+    route: int = -1
+    info: tuple[tuple[str, str], ...] = ()
+
+    @property
+    def family(self) -> str:
+        return {"coriolis-reversed": "coriolis", "coriolis-omitted": "coriolis",
+                "coriolis-half": "coriolis", "normal-reversed": "normal",
+                "normal-omitted": "normal", "omega-sense": "omega",
+                "line-swapped": "line", "branch": "branch", "scale": "scale",
+                "scale-swapped": "scale", "term-scale": "scale",
+                "similarity-ratio": "similarity",
+                "similarity-mirrored": "similarity"}[self.kind]
+
+    def get(self, key: str) -> str:
+        return dict(self.info).get(key, "")
+
+    def describe(self, lang: str = "en") -> str:
+        return _text(self, lang)[0]
+
+    def correction(self, lang: str = "en") -> str:
+        return _text(self, lang)[1]
+
+
+class _Replayer:
+    """Replays the recorded constructions of one solution, with at most one mistake."""
+
+    def __init__(self, sol: Solution):
+        self.sol = sol
+        m = sol.motion
+        self.pos = sol.positions
+        self.mech_name = {plan_name(n): n for n in sol.positions}
+        self.terms = {t.label: t for g in m.groups for r in g.acceleration.routes for t in r.terms}
+        self.link_points: dict[int, list[str]] = {}
+        for lid, link in sol.mechanism.links.items():
+            pts = list(link.points)
+            pts += [n for n, owner in m.point_link.items() if owner == lid and n in m.coincident]
+            self.link_points[lid] = pts
+        # the pair of points the student reads ω and ε of a link from: the ends of its
+        # relative velocity vector if the plan has one, else its two farthest points
+        self.pairs: dict[int, tuple[str, str]] = {}
+        for v in sol.velocity.vectors:
+            if v.component != "relative":
+                continue
+            X, Y = self.mech_name.get(v.end), self.mech_name.get(v.start)
+            for lid, pts in self.link_points.items():
+                if X in pts and Y in pts and lid not in self.pairs and abs(self.pos[X] - self.pos[Y]) > 0:
+                    self.pairs[lid] = (X, Y)
+        for lid, pts in self.link_points.items():
+            if lid in self.pairs:
+                continue
+            best, far = None, 0.0
+            for i, a in enumerate(pts):
+                for b in pts[i + 1:]:
+                    d = abs(self.pos[a] - self.pos[b])
+                    if d > far * (1 + 1e-9):
+                        best, far = (b, a), d
+            if best and far > 1e-9 * max(1.0, max(abs(z) for z in self.pos.values())):
+                self.pairs[lid] = best
+
+    def guide_link(self, t) -> int:
+        m = self.sol.motion
+        for n in t.about:
+            if n in m.coincident:
+                return m.point_link[n]
+        return m.point_link.get(t.about[1], 0)
+
+    def exact(self) -> State:
+        s = self.sol
+        v = {n: p.value for n, p in s.velocity.points.items()} | {s.velocity.pole: 0j}
+        a = {n: p.value for n, p in s.acceleration.points.items()} | {s.acceleration.pole: 0j}
+        return State(dict(self.pos), v, a, dict(s.omega), dict(s.epsilon))
+
+    def _omega(self, vel, flip: set[int]) -> dict[int, float]:
+        out = {}
+        for lid in self.sol.mechanism.links:
+            pair = self.pairs.get(lid)
+            if pair is None:
+                w = self.sol.omega[lid]
+            else:
+                X, Y = pair
+                r = self.pos[X] - self.pos[Y]
+                dv = vel[plan_name(X)] - vel[plan_name(Y)]
+                c = cross(r, dv)
+                w = math.copysign(abs(dv) / abs(r), c) if abs(dv) > 0 else 0.0
+            out[lid] = -w if lid in flip else w
+        return out
+
+    def _epsilon(self, acc) -> dict[int, float]:
+        out = {}
+        for lid in self.sol.mechanism.links:
+            pair = self.pairs.get(lid)
+            if pair is None:
+                out[lid] = self.sol.epsilon[lid]
+                continue
+            X, Y = pair
+            r = self.pos[X] - self.pos[Y]
+            out[lid] = float(cross(r, acc[plan_name(X)] - acc[plan_name(Y)]) / abs(r) ** 2)
+        return out
+
+    def run(self, mk: Mistake | None = None) -> State:
+        s = self.sol
+        if mk is None:
+            return self.exact()
+        flip = {mk.link} if mk.kind == "omega-sense" else set()
+        vel = self._plan(s.velocity, mk, None, None)
+        omega = self._omega(vel, flip)
+        acc = self._plan(s.acceleration, mk, vel, omega)
+        eps = self._epsilon(acc)
+        return State(dict(self.pos), vel, acc, omega, eps)
+
+    def _applies(self, mk: Mistake, kind: str) -> bool:
+        return mk.plan in (kind, "both")
+
+    def _plan(self, plan: Plan, mk: Mistake, vel, omega) -> dict[str, complex]:
+        kind = plan.kind
+        vals: dict[str, complex] = {plan.pole: 0j}
+        groups = self.sol.motion.groups
+        for name, pt in plan.points.items():
+            s = pt.source
+            if s.kind == "pole":
+                v = 0j
+            elif s.kind == "driver":
+                v = pt.value
+                if mk.kind == "normal-reversed" and mk.get("driver") and kind == "acceleration":
+                    v = -v
+            elif s.kind == "similarity":
+                r = s.ratio
+                if mk.kind.startswith("similarity") and mk.target == name and self._applies(mk, kind):
+                    r = self._ratio(mk, s.ratio)
+                v = vals[s.base] + r * (vals[s.other] - vals[s.base])
+            elif s.kind == "component":
+                t = self.terms[s.label]
+                v = vals[s.base] + self._term(t, mk, vel, omega)
+            elif s.kind == "intersection":
+                (l0, l1) = s.lines
+                d0, d1 = l0.direction, l1.direction
+                if mk.kind == "line-swapped" and mk.plan == kind and \
+                        plan_name(groups[mk.group].velocity.point) == name:
+                    if mk.route == 0:
+                        d0 = d0 * 1j
+                    else:
+                        d1 = d1 * 1j
+                with np.errstate(all="ignore"):
+                    t0, _, sine = intersect(vals[l0.through], d0, vals[l1.through], d1)
+                if not abs(sine) >= 1e-6:
+                    raise _Degenerate(name)
+                v = vals[l0.through] + t0 * d0
+            else:  # "rigid": moves with the first known point of its link
+                X = self.mech_name.get(name, "")
+                lid = self.sol.motion.point_link.get(X)
+                v = pt.value
+                for other in self.link_points.get(lid, []):
+                    on = plan_name(other)
+                    if other != X and on in vals:
+                        v = vals[on] + (pt.value - plan.value(on))
+                        break
+            vals[name] = complex(v)
+        return vals
+
+    @staticmethod
+    def _ratio(mk: Mistake, r: complex) -> complex:
+        return complex(mk.factor)
+
+    def _term(self, t, mk: Mistake, vel, omega) -> complex:
+        X, Y = t.about
+        dv = vel[plan_name(X)] - vel[plan_name(Y)]
+        if t.kind == "normal":
+            r = self.pos[X] - self.pos[Y]
+            val = -(abs(dv) ** 2 / abs(r) ** 2) * r
+        else:
+            val = 2j * omega[self.guide_link(t)] * dv
+        if mk.target == t.label and mk.kind in ("coriolis-reversed", "coriolis-omitted",
+                                                  "coriolis-half", "normal-reversed",
+                                                  "normal-omitted", "term-scale"):
+            val = val * mk.factor
+        return complex(val)
+
+
+def simulate(sol: Solution, mk: Mistake | None, mu: dict[str, float] | None = None) -> State:
+    """The plans as a student who makes mistake ``mk`` draws them (None: the exact ones)."""
+    if mk is None:
+        return _Replayer(sol).exact()
+    if mk.kind == "branch":
+        sigmas = list(Solver(sol.mechanism, sol.structure).sigmas)
+        sigmas[mk.group] = -sigmas[mk.group]
+        mu = mu or {"mu_l": sol.mu_l, "mu_v": sol.mu_v, "mu_a": sol.mu_a}
+        other = solve_position(sol.mechanism, sol.phi,
+                               solver=Solver(sol.mechanism, sol.structure, tuple(sigmas)), mu=mu)
+        return _Replayer(other).exact()
+    if mk.kind in ("scale", "scale-swapped"):
+        st = _Replayer(sol).exact()
+        factor = dict.fromkeys(PLANS, 1.0)
+        for plan, f in mk.info:
+            factor[plan] = float(f)
+        return State(st.positions, st.velocity, st.acceleration, st.omega, st.epsilon, factor)
+    return _Replayer(sol).run(mk)
+
+
+def hypotheses(sol: Solution, plans: set[str] | None = None) -> list[Mistake]:
+    """Every common mistake that can be made on these plans, in order of preference."""
+    plans = set(PLANS) if plans is None else plans
+    rep = _Replayer(sol)
+    m = sol.motion
+    out: list[Mistake] = []
+    cor = [t for t in rep.terms.values() if t.kind == "coriolis"]
+    nor = [t for t in rep.terms.values() if t.kind == "normal"]
+    for t in cor:
+        X, Y = t.about
+        info = (("rel", f"V_{X}{Y}"), ("omega", f"ω{rep.guide_link(t)}"))
+        out.append(Mistake("coriolis-reversed", "acceleration", t.label, -1, rep.guide_link(t), info=info))
+        out.append(Mistake("coriolis-omitted", "acceleration", t.label, 0, rep.guide_link(t), info=info))
+    for t in nor:
+        X, Y = t.about
+        info = (("X", X), ("Y", Y))
+        out.append(Mistake("normal-reversed", "acceleration", t.label, -1, info=info))
+        out.append(Mistake("normal-omitted", "acceleration", t.label, 0, info=info))
+    drv = sol.mechanism.driver
+    out.append(Mistake("normal-reversed", "acceleration", f"a^n_{drv.tip}{drv.pivot}", -1,
+                       info=(("X", drv.tip), ("Y", drv.pivot), ("driver", "1"))))
+    for t in cor:
+        out.append(Mistake("omega-sense", "acceleration", f"ω{rep.guide_link(t)}",
+                           link=rep.guide_link(t), info=(("coriolis", t.label),)))
+    guides = {rep.guide_link(t) for t in cor}
+    for lid in sorted(sol.mechanism.links):
+        if lid != drv.link and lid not in guides and abs(sol.omega[lid]) > 0:
+            out.append(Mistake("omega-sense", "velocity", f"ω{lid}", link=lid))
+    for gi, g in enumerate(m.groups):
+        for kind, cons in (("velocity", g.velocity), ("acceleration", g.acceleration)):
+            pt = sol.velocity.points[plan_name(cons.point)] if kind == "velocity" else \
+                sol.acceleration.points[plan_name(cons.point)]
+            for ri, (r, ln) in enumerate(zip(cons.routes, pt.source.lines, strict=True)):
+                wrong = r.relation.replace("∥", "\0").replace("⊥", "∥").replace("\0", "⊥")
+                out.append(Mistake("line-swapped", kind, r.unknown, group=gi, route=ri,
+                                   info=(("relation", r.relation), ("wrong", wrong),
+                                         ("through", ln.through), ("point", plan_name(cons.point)))))
+    for gi, g in enumerate(m.groups):
+        if g.group.kind in (DyadKind.RRR, DyadKind.RRP, DyadKind.RPR):
+            out.append(Mistake("branch", "both", g.group.label, group=gi,
+                               info=(("point", cons_point(g)),)))
+    for plan in ("velocity", "acceleration", "positions"):
+        if plan in plans:
+            for f in (10.0, 0.1):
+                out.append(Mistake("scale", plan, plan, f, info=((plan, repr(f)),)))
+    mv, ma = sol.mu_v, sol.mu_a
+    if mv != ma and {"velocity", "acceleration"} & plans:
+        out.append(Mistake("scale-swapped", "both", "μv↔μa",
+                           info=(("velocity", repr(mv / ma)), ("acceleration", repr(ma / mv)))))
+        out.append(Mistake("scale-swapped", "velocity", "μa",
+                           info=(("velocity", repr(mv / ma)),)))
+        out.append(Mistake("scale-swapped", "acceleration", "μv",
+                           info=(("acceleration", repr(ma / mv)),)))
+    for t in cor:
+        out.append(Mistake("coriolis-half", "acceleration", t.label, 0.5, rep.guide_link(t),
+                           info=(("rel", f"V_{t.about[0]}{t.about[1]}"),
+                                 ("omega", f"ω{rep.guide_link(t)}"))))
+    for t in cor + nor:
+        for f in (10.0, 0.1):
+            out.append(Mistake("term-scale", "acceleration", t.label, f))
+    out += _similarity_mistakes(sol)
+    return out
+
+
+def cons_point(g) -> str:
+    return g.velocity.point
+
+
+def _similarity_mistakes(sol: Solution) -> list[Mistake]:
+    out = []
+    vp = sol.velocity
+    sims = {n: p.source for n, p in vp.points.items() if p.source.kind == "similarity"}
+    for name, s in sims.items():
+        r = s.ratio
+        cands: list[tuple[str, complex, str]] = []
+        if abs(r.imag) < 1e-12:
+            if abs(r) > 1e-12 and abs(abs(r) - 1) > 1e-6:
+                cands.append(("similarity-ratio", 1 / r, "inverse"))
+            cands.append(("similarity-mirrored", -r, "side"))
+        else:
+            cands.append(("similarity-mirrored", r.conjugate(), "mirror"))
+            cands.append(("similarity-ratio", r / abs(r) ** 2, "inverse"))
+        for other, s2 in sims.items():
+            if other != name and s2.base == s.base and s2.other == s.other and abs(s2.ratio - r) > 1e-9:
+                cands.append(("similarity-ratio", s2.ratio, "sibling:" + other))
+        for kind, ratio, how in cands:
+            for plan in ("both", "velocity", "acceleration"):
+                out.append(Mistake(kind, plan, name, ratio,
+                                   info=(("how", how), ("equation", s.equation),
+                                         ("base", s.base), ("other", s.other))))
+    return out
