@@ -122,7 +122,7 @@ TOP_KEYS = {"title", "mechanism", "variant", "table", "angle_deg", "tolerance", 
 
 def load(path: str | Path) -> Measurement:
     """Read and validate a measurement file; every problem is reported, located."""
-    from .mechanism import read_toml
+    from .fileformat import read_toml
 
     data, text = read_toml(path, "a measurement file is a few KB")
     path = Path(path)
@@ -131,9 +131,9 @@ def load(path: str | Path) -> Measurement:
 
 def _raise(source: str, text: str | None, problems: list[str]):
     """Every problem at once, each "key: what" located to its line when the text is known."""
-    from .mechanism import _Problems
+    from .fileformat import Problems
 
-    pr = _Problems(source, text)
+    pr = Problems(source, text)
     for p in problems:
         where, _, what = p.partition(": ")
         pr.add(where, what)

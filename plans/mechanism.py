@@ -15,22 +15,32 @@ Lengths are metres, angles degrees in the file and radians inside, time seconds.
 
 from __future__ import annotations
 
-import ast
 import difflib
-import json
 import math
 import re
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from .errors import InputError
+from .fileformat import (
+    MAX_ABS,
+    MAX_TEXT,
+    Problems,
+    check_keys,
+    close_match,
+    key_text,
+    name_list,
+    one_line,
+    quote,
+    read_number,
+    read_text,
+    read_toml,
+)
 
 #: names the plans reserve for their own construction points (n1, k, p, π)
 RESERVED = re.compile(r"^(P|N\d*|K\d*)$")
 POINT_NAME = re.compile(r"^[A-Z][A-Za-z0-9_']{0,11}$")
-MAX_ABS = 1e6  # metres, rad/s: anything larger is a typo, not a machine
 MIN_LEN = 1e-9
 
 
@@ -132,22 +142,16 @@ class Mechanism:
 # loading and validation
 # ---------------------------------------------------------------------------------------
 #
-# Every problem is collected (not raised at the first one) as a key path and a message;
-# when the file's text is known each path is located to its line. The messages say what is
-# wrong and what would be right, on one line each, and never echo more than a few dozen
-# characters of what the file holds, so that a hostile file cannot flood the terminal.
+# Every problem is collected and located (``plans/fileformat.py``).
 
 REFERENCES = {"+x": 0.0, "+y": 90.0, "-x": 180.0, "-y": 270.0}
 SENSES = {"ccw": 1.0, "cw": -1.0}
 
-MAX_FILE = 1_000_000  # bytes: a mechanism file is a few KB
 MAX_LINKS = 200
 MAX_FRAME = 200  # fixed points
 MAX_LINK_POINTS = 200  # points on one link
 MAX_POINTS = 1000  # points in all
 MAX_ITEMS = 200  # sliders, trace, assembly hints, title fields
-MAX_TEXT = 200  # names and hints, characters
-MAX_PROBLEMS = 50  # reported; the rest are counted
 MIN_LINK = 1e-6  # m: the shortest link (a micrometre)
 SPEED = (1e-6, MAX_ABS)  # rad/s, rpm
 SCALE = (1e-9, MAX_ABS)  # μl m/mm, μv (m/s)/mm, μa (m/s²)/mm
@@ -160,248 +164,26 @@ def load(path: str | Path) -> Mechanism:
     return from_dict(data, str(path), text=text)
 
 
-def read_toml(path: str | Path, typical: str = "") -> tuple[dict, str]:
-    """The parsed TOML and the text of a file, or an :class:`InputError` saying why not.
-
-    Reads at most :data:`MAX_FILE` bytes (a 10 GB file or ``/dev/zero`` is refused, not
-    read); refuses binary data, text that is not UTF-8, and TOML syntax errors, each with
-    its line.
-    """
-    source = str(path)
-    try:
-        with open(path, "rb") as fh:
-            raw = fh.read(MAX_FILE + 1)
-    except IsADirectoryError:
-        raise InputError(source, "is a folder, not a file") from None
-    except OSError as exc:
-        raise InputError(source, f"cannot read the file: {exc.strerror or exc}") from None
-    if len(raw) > MAX_FILE:
-        raise InputError(
-            source, f"the file is larger than {MAX_FILE // 1_000_000} MB" + (f"; {typical}" if typical else "")
-        )
-    nul = raw.find(b"\x00")
-    if nul >= 0:
-        line = raw.count(b"\n", 0, nul) + 1
-        raise InputError(source, f"line {line}: binary data (a NUL byte): not a TOML text file")
-    try:
-        text = raw.decode("utf-8")
-    except UnicodeDecodeError as exc:
-        line = raw.count(b"\n", 0, exc.start) + 1
-        raise InputError(
-            source,
-            f"line {line}: not UTF-8 text (byte 0x{raw[exc.start]:02x}); save the file as UTF-8",
-        ) from None
-    return parse_toml(text, source), text
-
-
-def parse_toml(text: str, source: str) -> dict:
-    """``tomllib.loads`` with its errors turned into one located line each."""
-    text = text.removeprefix("\ufeff")
-    try:
-        return tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(source, _toml_problem(str(exc), text)) from None
-    except RecursionError:
-        deep = re.search(r"[\[{](?:\s*[\[{]){50}", text)
-        at = f"line {text.count(chr(10), 0, deep.start()) + 1}: " if deep else ""
-        raise InputError(source, f"{at}TOML nested too deeply: these files need three levels at most") from None
-    except (ValueError, OverflowError, MemoryError) as exc:  # e.g. an integer of 5000 digits
-        long = re.search(r"\d{4000,}", text)
-        at = f"line {text.count(chr(10), 0, long.start()) + 1}: " if long else ""
-        what = "a number of thousands of digits" if "digits" in str(exc) else type(exc).__name__
-        raise InputError(source, f"{at}TOML value out of range: {what}") from None
-
-
-_TOML_AT = re.compile(r"^(?P<msg>.*?)\s*\((?:at line (?P<line>\d+), column (?P<col>\d+)|at end of document)\)$", re.S)
-_TOML_HINTS = (
-    ("Invalid value", "a value is a number, \"text\" in double quotes, [a, list] or { a = table }"),
-    ("Cannot overwrite a value", "a name given twice: each key once"),
-    ("Cannot declare", "a table given twice: merge the two sections"),
-    ("Duplicate inline table key", "a name given twice: each key once"),
-    ("Expected '=' after a key", "write key = value"),
-    ("Unclosed array", "a [ is not closed by ]"),
-    ("Unclosed inline table", "a { is not closed by } on the same line"),
-    ("Unterminated string", "a \" is not closed on the same line"),
-    ("Illegal character", "texts are on one line, in double quotes"),
-    ("Expected newline or end of document", "one key = value per line; numbers as 0.15, 1e-3"),
-    ("Invalid statement", "a line is key = value, [table], [[array]] or # comment"),
-    ("Expected ']'", "a table header is [name] on its own line"),
-)
-
-
-def _toml_problem(message: str, text: str) -> str:
-    m = _TOML_AT.match(message)
-    msg = m.group("msg") if m else message
-    if m and m.group("line"):
-        where = f"line {m.group('line')}, column {m.group('col')}"
-        line = int(m.group("line"))
-    else:
-        line = max(text.count("\n") + (0 if text.endswith("\n") else 1), 1)
-        where = f"line {line} (end of file)"
-    if msg.startswith("Cannot overwrite a value"):
-        dup = _first_duplicate("\n".join(text.split("\n")[:line]))
-        if dup:
-            key, first, again = dup
-            return (
-                f"line {again}: TOML syntax error: {key} is given twice (first at line {first}): "
-                "each name once"
-            )
-    twice = re.match(r"Cannot declare \((.*)\) twice", msg)
-    if twice:
-        try:
-            name = ".".join(_k(p) for p in ast.literal_eval(f"({twice.group(1)})"))
-            return f"{where}: TOML syntax error: the table [{name}] is given twice: merge the two sections"
-        except (ValueError, SyntaxError, TypeError, RecursionError, MemoryError):
-            pass
-    hint = next((h for prefix, h in _TOML_HINTS if msg.startswith(prefix)), "")
-    msg = _oneline(msg[:1].lower() + msg[1:], 120)
-    return f"{where}: TOML syntax error: {msg}" + (f" ({hint})" if hint else "")
-
-
-def _oneline(text: str, limit: int = 200) -> str:
-    """``text`` on one line, at most ``limit`` characters."""
-    cut = len(text) > limit
-    text = "".join(c if c.isprintable() else repr(c)[1:-1] for c in text[:limit])
-    return text[: limit - 1] + "…" if cut or len(text) > limit else text
-
-
-def _show(value: Any, limit: int = 40) -> str:
-    """A value of the file, quoted and cut short, for a message."""
-    if isinstance(value, str):
-        return '"' + _oneline(value, limit).replace('"', '\\"') + '"'
-    if isinstance(value, dict):
-        return "a table"
-    if isinstance(value, list):
-        return f"a list of {len(value)}"
-    if isinstance(value, int) and not isinstance(value, bool) and abs(value) > 10**15:
-        return f"{'-' if value < 0 else ''}an integer of {len(str(abs(value))) if abs(value) < 10**4000 else 'thousands of'} digits"
-    return _oneline(repr(value), limit)
-
-
-_SIMPLE_KEY = re.compile(r"^[A-Za-z0-9_'-]{1,40}$")
-
-
-def _k(key: Any) -> str:
-    """A key of the file as it appears in a key path."""
-    if isinstance(key, str) and _SIMPLE_KEY.match(key):
-        return key
-    return _show(key, 30)
-
-
-def _known(names, limit: int = 20) -> str:
-    names = sorted(names)
-    if not names:
-        return "none"
-    if len(names) > limit:
-        return ", ".join(names[:limit]) + f"… ({len(names)} in all)"
-    return ", ".join(names)
-
-
 def _unknown_point(name: str, known, why: str = "") -> str:
-    guess = _guess(name, known, cutoff=0.5)
+    guess = close_match(name, known, cutoff=0.5)
     why = f": {why}" if why else ""
-    return f"unknown point {_show(name)}{why} — {guess}known points: {_known(known)}"
+    return f"unknown point {quote(name)}{why} — {guess}known points: {name_list(known)}"
 
 
-class _Problems:
-    """Problems found in one file: (key path, message), located when it is raised."""
-
-    def __init__(self, source: str, text: str | None = None):
-        self.source = source
-        self.text = text
-        self.items: list[tuple[str, str]] = []
-
-    def add(self, where: str, what: str) -> None:
-        self.items.append((where, what))
-
-    def __bool__(self) -> bool:
-        return bool(self.items)
-
-    def lines(self) -> list[str]:
-        index = _locate(self.text) if self.text else {}
-        located = []
-        for n, (where, what) in enumerate(self.items):
-            line = _line_of(where, index)
-            text = f"{where}: {what}" if where else what
-            if line:
-                text = f"line {line}: {text}"
-            located.append((line or 0, n, _oneline(text, 400)))
-        out: list[str] = []
-        seen: set[str] = set()
-        for _, _, text in sorted(located):
-            if text not in seen:
-                seen.add(text)
-                out.append(text)
-        if len(out) > MAX_PROBLEMS:
-            more = len(out) - MAX_PROBLEMS
-            out = [*out[:MAX_PROBLEMS], f"… and {more} more problems"]
-        return out
-
-    def raise_if_any(self) -> None:
-        if self.items:
-            raise InputError(self.source, self.lines())
-
-
-def _number(value: Any, where: str, problems: _Problems, *, positive=False, default=None,
-            unit: str = "m", low: float | None = None, high: float = MAX_ABS):
-    """A finite number within range, else ``None`` and a problem.
-
-    ``low``: the smallest admissible magnitude (lengths are checked where they are known,
-    between two points: a coordinate of 1e-300 is just 0).
-    """
-    if value is None:
-        if default is not None:
-            return default
-        problems.add(where, "missing (a number is needed)")
-        return None
-    if isinstance(value, bool) or not isinstance(value, int | float):
-        hint = ""
-        if isinstance(value, str):
-            bare = re.sub(r"\s*(°|deg|rad/s|rpm|mm|m)$", "", value.strip()[:40])
-            try:
-                float(bare)
-                hint = f": write {bare} without quotes" + (" and units" if bare != value.strip() else "")
-            except ValueError:
-                pass
-        problems.add(where, f"must be a number, got {_show(value)}{hint}")
-        return None
-    if isinstance(value, int) and abs(value) > high:  # also 10**400, which float() refuses
-        problems.add(where, f"{_show(value)} is out of range: at most {high:g} {unit}")
-        return None
-    x = float(value)
-    if math.isnan(x):
-        problems.add(where, f"nan is not a number: give a value in {unit}")
-        return None
-    if not math.isfinite(x):
-        problems.add(where, f"{_show(value)} is out of range: at most {high:g} {unit}")
-        return None
-    if abs(x) > high:
-        problems.add(where, f"{x:g} is out of range: at most {high:g} {unit} (a typo?)")
-        return None
-    if positive and x <= 0:
-        hint = ' (the sense of rotation is sense = "cw" or "ccw")' if where.startswith("driver") else ""
-        problems.add(where, f"must be positive, got {x:g}{hint}")
-        return None
-    if low is not None and abs(x) < low:
-        problems.add(where, f"{x:g} is too small: at least {low:g} {unit}")
-        return None
-    return x
-
-
-def _pair(value: Any, where: str, problems: _Problems) -> complex | None:
+def _pair(value: Any, where: str, problems: Problems) -> complex | None:
     if not (isinstance(value, list) and len(value) == 2):
-        problems.add(where, f"must be [x, y] in metres, got {_show(value)}")
+        problems.add(where, f"must be [x, y] in metres, got {quote(value)}")
         return None
-    x = _number(value[0], where + "[0]", problems)
-    y = _number(value[1], where + "[1]", problems)
+    x = read_number(value[0], where + "[0]", problems)
+    y = read_number(value[1], where + "[1]", problems)
     return None if x is None or y is None else complex(x, y)
 
 
-def _name(value: Any, where: str, problems: _Problems) -> str | None:
+def _name(value: Any, where: str, problems: Problems) -> str | None:
     if not isinstance(value, str) or not POINT_NAME.match(value):
         problems.add(
             where,
-            f"{_show(value)} is not a point name: a capital letter, then up to 11 "
+            f"{quote(value)} is not a point name: a capital letter, then up to 11 "
             "letters, digits, _ or ' (e.g. C, S3, A')",
         )
         return None
@@ -411,32 +193,6 @@ def _name(value: Any, where: str, problems: _Problems) -> str | None:
         )
         return None
     return value
-
-
-def _text(value: Any, where: str, problems: _Problems, default: str) -> str:
-    if value is None:
-        return default
-    if not isinstance(value, str) or len(value) > MAX_TEXT:
-        got = f"{len(value)} characters" if isinstance(value, str) else _show(value)
-        problems.add(where, f"must be a text of at most {MAX_TEXT} characters, got {got}")
-        return default
-    return value
-
-
-def _check_keys(table: dict, allowed: set[str], where: str, problems: _Problems):
-    unknown = [key for key in table if key not in allowed]
-    for n, key in enumerate(unknown):
-        path = f"{where}.{_k(key)}" if where else _k(key)
-        guess = _guess(key, allowed) if n < MAX_PROBLEMS else ""
-        problems.add(path, f"unknown key — {guess}known: {', '.join(sorted(allowed))}")
-
-
-def _guess(key: Any, allowed, cutoff: float = 0.6) -> str:
-    """'did you mean "AD"? ' for a key close to one of ``allowed``, else ''."""
-    key = str(key)[:40]
-    same = sorted(a for a in allowed if a.lower() == key.lower())
-    close = same or difflib.get_close_matches(key, sorted(allowed), n=1, cutoff=cutoff)
-    return f'did you mean "{close[0]}"? ' if close else ""
 
 
 def _ids(links) -> str:
@@ -454,8 +210,8 @@ def _link_id(value: Any) -> int | None:
 def _not_a_link(value: Any, what: str, known: str) -> str:
     """The message for a link number that is not one (and for "3", which is not 3)."""
     if isinstance(value, str) and value.strip().isdigit() and len(value) < 10:
-        return f"{_show(value, 20)} is text: write the number without quotes, {value.strip()} ({known})"
-    return f"{_show(value, 20)} is not {what} ({known})"
+        return f"{quote(value, 20)} is text: write the number without quotes, {value.strip()} ({known})"
+    return f"{quote(value, 20)} is not {what} ({known})"
 
 
 def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = None) -> Mechanism:
@@ -463,16 +219,16 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
 
     ``text``: the file's text, to locate each problem to its line.
     """
-    pr = _Problems(source, text)
+    pr = Problems(source, text)
     if not isinstance(data, dict):
         raise InputError(source, "the file must be a TOML table")
-    _check_keys(
+    check_keys(
         data,
         {"name", "frame", "links", "sliders", "driver", "assembly", "scales", "trace",
          "output", "title"},
         "", pr,
     )
-    name = _text(data.get("name"), "name", pr, Path(source).stem[:MAX_TEXT] or "mechanism")
+    name = read_text(data.get("name"), "name", pr, Path(source).stem[:MAX_TEXT] or "mechanism")
 
     # frame -------------------------------------------------------------------------
     frame: dict[str, complex] = {}
@@ -480,14 +236,14 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
     frame_names: set[str] = set()
     raw_frame = data.get("frame")
     if not isinstance(raw_frame, dict) or not raw_frame:
-        what = "missing" if raw_frame is None else f"must be a table of fixed points, got {_show(raw_frame)}"
+        what = "missing" if raw_frame is None else f"must be a table of fixed points, got {quote(raw_frame)}"
         pr.add("frame", f"{what}: the fixed pivots, e.g. [frame] O = [0.0, 0.0]")
         raw_frame = {}
     if len(raw_frame) > MAX_FRAME:
         pr.add("frame", f"{len(raw_frame)} fixed points: at most {MAX_FRAME}")
         raw_frame = {}
     for key, value in raw_frame.items():
-        where = f"frame.{_k(key)}"
+        where = f"frame.{key_text(key)}"
         nm = _name(key, where, pr)
         if nm:
             named.add(nm)
@@ -502,7 +258,7 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
     bad_links: set[int] = set()  # links with a problem of their own: no follow-up messages
     raw_links = data.get("links")
     if not isinstance(raw_links, dict) or not raw_links:
-        what = "missing" if raw_links is None else f"must be a table of numbered links, got {_show(raw_links)}"
+        what = "missing" if raw_links is None else f"must be a table of numbered links, got {quote(raw_links)}"
         pr.add("links", f'{what}: the moving links, e.g. [links.1] axis = ["O", "A"]')
         raw_links = {}
     if len(raw_links) > MAX_LINKS:
@@ -510,7 +266,7 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
         raw_links = {}
     total_points = 0
     for key, body in raw_links.items():
-        where = f"links.{_k(key)}"
+        where = f"links.{key_text(key)}"
         if not (isinstance(key, str) and 0 < len(key) <= 3 and key.isascii() and key.isdigit()
                 and key == str(int(key)) and int(key) > 0):
             if key == "0":
@@ -520,11 +276,11 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
             continue
         lid = int(key)
         if not isinstance(body, dict):
-            pr.add(where, f'must be a table with axis and points, e.g. [links.{lid}] axis = ["B", "C"], got {_show(body)}')
+            pr.add(where, f'must be a table with axis and points, e.g. [links.{lid}] axis = ["B", "C"], got {quote(body)}')
             bad_links.add(lid)
             continue
-        _check_keys(body, {"name", "axis", "points"}, where, pr)
-        lname = _text(body.get("name"), where + ".name", pr, f"link {lid}")
+        check_keys(body, {"name", "axis", "points"}, where, pr)
+        lname = read_text(body.get("name"), where + ".name", pr, f"link {lid}")
         link, ok = _link(lid, lname, body, where, pr, named)
         total_points += len(link.points)
         if not ok:
@@ -537,7 +293,7 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
     sliders: list[Slider] = []
     raw_sliders = data.get("sliders", [])
     if not isinstance(raw_sliders, list):
-        pr.add("sliders", f"must be an array of tables, [[sliders]] link = … guide = {{…}}, got {_show(raw_sliders)}")
+        pr.add("sliders", f"must be an array of tables, [[sliders]] link = … guide = {{…}}, got {quote(raw_sliders)}")
         raw_sliders = []
     if len(raw_sliders) > MAX_ITEMS:
         pr.add("sliders", f"{len(raw_sliders)} sliders: at most {MAX_ITEMS}")
@@ -547,9 +303,9 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
     for i, body in enumerate(raw_sliders):
         where = f"sliders[{i}]"
         if not isinstance(body, dict):
-            pr.add(where, f"must be a table with link and guide, got {_show(body)}")
+            pr.add(where, f"must be a table with link and guide, got {quote(body)}")
             continue
-        _check_keys(body, {"link", "point", "guide"}, where, pr)
+        check_keys(body, {"link", "point", "guide"}, where, pr)
         raw_lid = body.get("link")
         lid = _link_id(raw_lid)
         if lid is None or lid not in links:
@@ -577,7 +333,7 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
             if lid not in bad_links:
                 pr.add(
                     where + ".point",
-                    f"{_show(point)} is not a point of link {lid} (its points: {_known(link.points)})",
+                    f"{quote(point)} is not a point of link {lid} (its points: {name_list(link.points)})",
                 )
             continue
         guide = _guide(body.get("guide"), where + ".guide", pr, links, frame, lid, bad_links)
@@ -617,14 +373,14 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
     all_points |= named
     assembly = data.get("assembly", {})
     if not isinstance(assembly, dict):
-        pr.add("assembly", f'must be a table of hints, e.g. [assembly] C = "above BD", got {_show(assembly)}')
+        pr.add("assembly", f'must be a table of hints, e.g. [assembly] C = "above BD", got {quote(assembly)}')
         assembly = {}
     if len(assembly) > MAX_ITEMS:
         pr.add("assembly", f"{len(assembly)} hints: at most {MAX_ITEMS}")
         assembly = {}
     hints: dict[str, str] = {}
     for k, hint in assembly.items():
-        where = f"assembly.{_k(k)}"
+        where = f"assembly.{key_text(k)}"
         if k not in all_points:
             pr.add(where, _unknown_point(k, all_points))
             continue
@@ -635,50 +391,50 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
                    "group that closes two ways (the end of a coupler, a slider)")
             continue
         if not isinstance(hint, str) or len(hint) > MAX_TEXT:
-            pr.add(where, f'must be a hint such as "above BD" or "right of C", got {_show(hint)}')
+            pr.add(where, f'must be a hint such as "above BD" or "right of C", got {quote(hint)}')
             continue
         problem = _hint_problem(k, hint, sorted(all_points, key=len, reverse=True))
         if problem:
-            pr.add(where, f"{_show(hint)}: {problem}")
+            pr.add(where, f"{quote(hint)}: {problem}")
             continue
         hints[k] = hint
     scales = {}
     raw_scales = data.get("scales", {})
     if not isinstance(raw_scales, dict):
-        pr.add("scales", f"must be a table: [scales] mu_l = 0.01, mu_v = …, mu_a = …, got {_show(raw_scales)}")
+        pr.add("scales", f"must be a table: [scales] mu_l = 0.01, mu_v = …, mu_a = …, got {quote(raw_scales)}")
         raw_scales = {}
-    _check_keys(raw_scales, {"mu_l", "mu_v", "mu_a"}, "scales", pr)
+    check_keys(raw_scales, {"mu_l", "mu_v", "mu_a"}, "scales", pr)
     units = {"mu_l": "m/mm", "mu_v": "(m/s)/mm", "mu_a": "(m/s²)/mm"}
     for key in ("mu_l", "mu_v", "mu_a"):
         if key in raw_scales:
-            val = _number(raw_scales[key], f"scales.{key}", pr, positive=True, unit=units[key],
+            val = read_number(raw_scales[key], f"scales.{key}", pr, positive=True, unit=units[key],
                           low=SCALE[0], high=SCALE[1])
             if val is not None:
                 scales[key] = val
     trace = data.get("trace", [])
     if not isinstance(trace, list) or len(trace) > MAX_ITEMS:
-        pr.add("trace", f'must be a list of at most {MAX_ITEMS} point names, e.g. ["C", "S3"], got {_show(trace)}')
+        pr.add("trace", f'must be a list of at most {MAX_ITEMS} point names, e.g. ["C", "S3"], got {quote(trace)}')
         trace = []
     for i, t in enumerate(trace):
         if not isinstance(t, str):
-            pr.add(f"trace[{i}]", f'must be a point name, e.g. "C", got {_show(t)}')
+            pr.add(f"trace[{i}]", f'must be a point name, e.g. "C", got {quote(t)}')
         elif t not in all_points:
             pr.add(f"trace[{i}]", _unknown_point(t, all_points))
     trace = [t for t in trace if isinstance(t, str) and t in all_points]
     output = data.get("output")
     if output is not None:
         if not isinstance(output, str):
-            pr.add("output", f'must be a point name, e.g. "C", got {_show(output)}')
+            pr.add("output", f'must be a point name, e.g. "C", got {quote(output)}')
             output = None
         elif output not in all_points:
             pr.add("output", _unknown_point(output, all_points))
     title = data.get("title", {})
     if not isinstance(title, dict) or len(title) > MAX_ITEMS:
-        pr.add("title", f"must be a table of texts for the title block, got {_show(title)}")
+        pr.add("title", f"must be a table of texts for the title block, got {quote(title)}")
         title = {}
     for k, v in title.items():
         if isinstance(v, bool) or not isinstance(v, str | int):
-            pr.add(f"title.{_k(k)}", f"must be a text, got {_show(v)}")
+            pr.add(f"title.{key_text(k)}", f"must be a text, got {quote(v)}")
     title = {str(k)[:MAX_TEXT]: str(v)[:500] for k, v in title.items()
              if isinstance(v, str | int) and not isinstance(v, bool)}
 
@@ -699,14 +455,14 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
     )
 
 
-def _link(lid: int, lname: str, body: dict, where: str, pr: _Problems, named: set[str]):
+def _link(lid: int, lname: str, body: dict, where: str, pr: Problems, named: set[str]):
     """One link's points in its own coordinates; ``ok`` False when it has a problem."""
     before = len(pr.items)
     points: dict[str, complex] = {}
     axis = body.get("axis")
     if axis is not None:
         if not (isinstance(axis, list) and len(axis) == 2):
-            pr.add(where + ".axis", f'must be two point names, e.g. ["B", "C"], got {_show(axis)}')
+            pr.add(where + ".axis", f'must be two point names, e.g. ["B", "C"], got {quote(axis)}')
             axis = None
         else:
             a0 = _name(axis[0], where + ".axis[0]", pr)
@@ -720,25 +476,25 @@ def _link(lid: int, lname: str, body: dict, where: str, pr: _Problems, named: se
                 points[a0] = 0j
     raw_points = body.get("points", {})
     if not isinstance(raw_points, dict):
-        pr.add(where + ".points", f"must be a table, e.g. points = {{ C = 0.75, S3 = [0.25, 0.02] }}, got {_show(raw_points)}")
+        pr.add(where + ".points", f"must be a table, e.g. points = {{ C = 0.75, S3 = [0.25, 0.02] }}, got {quote(raw_points)}")
         raw_points = {}
     if len(raw_points) > MAX_LINK_POINTS:
         pr.add(where + ".points", f"{len(raw_points)} points on one link: at most {MAX_LINK_POINTS}")
         return Link(lid, lname, points, axis), False
     failed: set[str] = set()
     for pname, spec in raw_points.items():
-        pw = f"{where}.points.{_k(pname)}"
+        pw = f"{where}.points.{key_text(pname)}"
         nm = _name(pname, pw, pr)
         if nm is None:
             continue
         named.add(nm)
         if isinstance(spec, list):
             if len(spec) != 2:
-                pr.add(pw, f"must be a distance along the axis or [along, across], got {_show(spec)}")
+                pr.add(pw, f"must be a distance along the axis or [along, across], got {quote(spec)}")
                 failed.add(nm)
                 continue
-            x = _number(spec[0], pw + "[0]", pr)
-            y = _number(spec[1], pw + "[1]", pr)
+            x = read_number(spec[0], pw + "[0]", pr)
+            y = read_number(spec[1], pw + "[1]", pr)
             if x is None or y is None:
                 failed.add(nm)
                 continue
@@ -748,7 +504,7 @@ def _link(lid: int, lname: str, body: dict, where: str, pr: _Problems, named: se
                 pr.add(pw, "must be a distance along the axis or [along, across], got a table")
                 failed.add(nm)
                 continue
-            x = _number(spec, pw, pr)
+            x = read_number(spec, pw, pr)
             if x is None:
                 failed.add(nm)
                 continue
@@ -766,7 +522,7 @@ def _link(lid: int, lname: str, body: dict, where: str, pr: _Problems, named: se
             pr.add(
                 where + ".points",
                 f'the axis end "{a1}" is not among the points of link {lid} '
-                f"(its points: {_known(set(raw_points) - {a0}) if raw_points else 'none'}): "
+                f"(its points: {name_list(set(raw_points) - {a0}) if raw_points else 'none'}): "
                 f"give its distance from {a0}, e.g. {a1} = 0.2",
             )
         else:
@@ -786,7 +542,7 @@ def _link(lid: int, lname: str, body: dict, where: str, pr: _Problems, named: se
 
 
 def _coincident(points: dict[str, complex], joints: set[str], where: str, what: str,
-                pr: _Problems, tol: float = MIN_LEN) -> None:
+                pr: Problems, tol: float = MIN_LEN) -> None:
     """Two joints at one place: a zero-length link between them, or one joint with two names."""
     names = [n for n in points if n in joints]
     if len(names) > 60:  # keep it linear-ish for big files; cells of the tolerance
@@ -809,7 +565,7 @@ def _coincident(points: dict[str, complex], joints: set[str], where: str, what: 
                 )
 
 
-def _connections(frame, links, pairs, drv, bad_links, pr: _Problems) -> None:
+def _connections(frame, links, pairs, drv, bad_links, pr: Problems) -> None:
     """Links attached by fewer than two pairs (a typo in a point name, usually), and two
     joints of one link at the same place."""
     carriers: dict[str, list[int]] = {name: [0] for name in frame}
@@ -858,8 +614,8 @@ def _hint_problem(key: str, hint: str, names: list[str]) -> str | None:
     try:
         _, refs = parse_hint(hint, names)
     except ValueError as exc:
-        known = f" — known points: {_known(names)}" if "not a point name" in str(exc) else ""
-        return _oneline(str(exc), 120) + known
+        known = f" — known points: {name_list(names)}" if "not a point name" in str(exc) else ""
+        return one_line(str(exc), 120) + known
     if key in refs:
         return f"the hint places {key} relative to {key} itself: name other points, e.g. \"above BD\""
     if len(refs) == 2 and refs[0] == refs[1]:
@@ -867,12 +623,12 @@ def _hint_problem(key: str, hint: str, names: list[str]) -> str | None:
     return None
 
 
-def _guide(body, where, pr: _Problems, links, frame, slider_link, bad_links) -> Guide | None:
+def _guide(body, where, pr: Problems, links, frame, slider_link, bad_links) -> Guide | None:
     if not isinstance(body, dict):
-        got = "missing" if body is None else f"must be a table, got {_show(body)}"
+        got = "missing" if body is None else f"must be a table, got {quote(body)}"
         pr.add(where, f"{got}: e.g. guide = {{ link = 0, through = [0, 0.35], angle_deg = 0 }} or {{ link = 3 }}")
         return None
-    _check_keys(body, {"link", "through", "angle_deg", "direction", "offset", "label"}, where, pr)
+    check_keys(body, {"link", "through", "angle_deg", "direction", "offset", "label"}, where, pr)
     raw = body.get("link", 0)
     gl = _link_id(raw)
     if gl is None or (gl != 0 and gl not in links):
@@ -893,11 +649,11 @@ def _guide(body, where, pr: _Problems, links, frame, slider_link, bad_links) -> 
             return None
         direction = d / abs(d)
     else:
-        angle = _number(body.get("angle_deg", 0.0), where + ".angle_deg", pr, unit="°")
+        angle = read_number(body.get("angle_deg", 0.0), where + ".angle_deg", pr, unit="°")
         if angle is None:
             return None
         direction = complex(math.cos(math.radians(angle)), math.sin(math.radians(angle)))
-    offset = _number(body.get("offset", 0.0), where + ".offset", pr)
+    offset = read_number(body.get("offset", 0.0), where + ".offset", pr)
     if offset is None:
         return None
     through = body.get("through")
@@ -905,7 +661,7 @@ def _guide(body, where, pr: _Problems, links, frame, slider_link, bad_links) -> 
     if gl == 0:
         if isinstance(through, str):
             if through not in frame:
-                pr.add(where + ".through", f"{_show(through)} is not a fixed point (fixed points: {_known(frame)}); or give [x, y]")
+                pr.add(where + ".through", f"{quote(through)} is not a fixed point (fixed points: {name_list(frame)}); or give [x, y]")
                 return None
             point = frame[through]
         elif through is None:
@@ -923,7 +679,7 @@ def _guide(body, where, pr: _Problems, links, frame, slider_link, bad_links) -> 
             return None
         if isinstance(through, str):
             if through not in link.points:
-                pr.add(where + ".through", f"{_show(through)} is not a point of link {gl} (its points: {_known(link.points)})")
+                pr.add(where + ".through", f"{quote(through)} is not a point of link {gl} (its points: {name_list(link.points)})")
                 return None
             point = link.points[through]
         elif through is None:
@@ -935,19 +691,19 @@ def _guide(body, where, pr: _Problems, links, frame, slider_link, bad_links) -> 
         default_label = "".join(link.axis)
     point = point + offset * 1j * direction
     if label is not None and (not isinstance(label, str) or len(label) > 20):
-        pr.add(where + ".label", f'must be a short text (at most 20 characters), e.g. "x-x", got {_show(label)}')
+        pr.add(where + ".label", f'must be a short text (at most 20 characters), e.g. "x-x", got {quote(label)}')
         label = None
     return Guide(gl, point, direction, label or default_label)
 
 
-def _driver(body, pr: _Problems, links, frame, bad_links, frame_names) -> Driver | None:
+def _driver(body, pr: Problems, links, frame, bad_links, frame_names) -> Driver | None:
     """The crank; ``frame_names``: the names in [frame] (None: no [frame] at all)."""
     where = "driver"
     if not isinstance(body, dict):
-        got = "missing" if body is None else f"must be a table, got {_show(body)}"
+        got = "missing" if body is None else f"must be a table, got {quote(body)}"
         pr.add(where, f"{got}: [driver] with link, angle_deg, and omega (rad/s) or rpm")
         return None
-    _check_keys(
+    check_keys(
         body, {"link", "angle_deg", "from", "measured", "omega", "rpm", "sense"}, where, pr
     )
     raw = body.get("link", 1)
@@ -969,7 +725,7 @@ def _driver(body, pr: _Problems, links, frame, bad_links, frame_names) -> Driver
         pr.add(
             f"links.{lid}.axis[0]",
             f'the crank turns about "{pivot}", which is not a fixed point in [frame] '
-            f"(fixed points: {_known(frame)}): the driver must be attached to the frame{swapped}",
+            f"(fixed points: {name_list(frame)}): the driver must be attached to the frame{swapped}",
         )
     else:
         also = sorted(n for n in link.points if n in frame and n != pivot)
@@ -979,29 +735,29 @@ def _driver(body, pr: _Problems, links, frame, bad_links, frame_names) -> Driver
                 f'the crank is hinged to the frame at "{pivot}" and at "{also[0]}": it could '
                 "not turn; a crank has one fixed pivot",
             )
-    angle = _number(body.get("angle_deg"), where + ".angle_deg", pr, unit="°")
+    angle = read_number(body.get("angle_deg"), where + ".angle_deg", pr, unit="°")
     ref = body.get("from", "+x")
     if not isinstance(ref, str) or ref not in REFERENCES:
-        pr.add(where + ".from", f'{_show(ref, 20)} is not a reference: one of "+x", "+y", "-x", "-y"')
+        pr.add(where + ".from", f'{quote(ref, 20)} is not a reference: one of "+x", "+y", "-x", "-y"')
         ref = "+x"
     measured = body.get("measured", "ccw")
     if not isinstance(measured, str) or measured not in SENSES:
-        pr.add(where + ".measured", f'{_show(measured, 20)}: must be "ccw" (counter-clockwise) or "cw" (clockwise)')
+        pr.add(where + ".measured", f'{quote(measured, 20)}: must be "ccw" (counter-clockwise) or "cw" (clockwise)')
         measured = "ccw"
     sense = body.get("sense", "ccw")
     if not isinstance(sense, str) or sense not in SENSES:
-        pr.add(where + ".sense", f'{_show(sense, 20)}: must be "ccw" (counter-clockwise) or "cw" (clockwise)')
+        pr.add(where + ".sense", f'{quote(sense, 20)}: must be "ccw" (counter-clockwise) or "cw" (clockwise)')
         sense = "ccw"
     rpm = None
     if "omega" in body and "rpm" in body:
         pr.add(where, "give omega (rad/s) or rpm, not both")
         return None
     if "rpm" in body:
-        rpm = _number(body["rpm"], where + ".rpm", pr, positive=True, unit="rpm",
+        rpm = read_number(body["rpm"], where + ".rpm", pr, positive=True, unit="rpm",
                       low=SPEED[0], high=SPEED[1])
         omega = None if rpm is None else math.pi * rpm / 30.0
     elif "omega" in body:
-        omega = _number(body["omega"], where + ".omega", pr, positive=True, unit="rad/s",
+        omega = read_number(body["omega"], where + ".omega", pr, positive=True, unit="rad/s",
                         low=SPEED[0], high=SPEED[1])
     else:
         pr.add(where + ".omega", "missing: the crank speed, omega in rad/s or rpm")
@@ -1021,222 +777,3 @@ def _driver(body, pr: _Problems, links, frame, bad_links, frame_names) -> Driver
         measured=measured,
         rpm=rpm,
     )
-
-
-# ---------------------------------------------------------------------------------------
-# where is a key? (line numbers for the messages)
-# ---------------------------------------------------------------------------------------
-
-_BARE = re.compile(r"[A-Za-z0-9_-]+")
-
-
-def _join(path: list[str]) -> str:
-    out = ""
-    for part in path:
-        out += part if part.startswith("[") or not out else "." + part
-    return out
-
-
-def _line_of(where: str, index: dict[str, int]) -> int | None:
-    """The line of ``where`` or of the nearest enclosing key that is in the file."""
-    while where:
-        if where in index:
-            return index[where]
-        cut = max(where.rfind("."), where.rfind("["))
-        if cut <= 0:
-            return None
-        where = where[:cut]
-    return None
-
-
-def _locate(text: str) -> dict[str, int]:
-    """Key path ("links.3.points.C", "sliders[1].guide", "frame.O[0]") → line, for a TOML
-    text that parses. Best effort: never raises; an unlocated problem keeps its key path."""
-    loc = _Locator(text)
-    try:
-        loc.document()
-    except Exception:
-        pass
-    return loc.index
-
-
-def _first_duplicate(text: str) -> tuple[str, int, int] | None:
-    """The first key given twice in ``text``: (key path, first line, second line)."""
-    loc = _Locator(text)
-    try:
-        loc.document()
-    except Exception:
-        pass
-    return loc.duplicate
-
-
-class _Locator:
-    """A small reader of valid TOML that notes the line where each key is defined."""
-
-    def __init__(self, text: str):
-        self.s = text
-        self.i = 0
-        self.line = 1
-        self.index: dict[str, int] = {}
-        self.defined: dict[str, int] = {}
-        self.duplicate: tuple[str, int, int] | None = None
-        self.aot: dict[str, int] = {}  # array of tables → index of its current element
-
-    def _note(self, path: list[str], line: int, *, value: bool = False) -> None:
-        key = _join(path)
-        self.index.setdefault(key, line)
-        if value:
-            if key in self.defined and self.duplicate is None:
-                self.duplicate = (key, self.defined[key], line)
-            self.defined.setdefault(key, line)
-
-    def _peek(self) -> str:
-        return self.s[self.i] if self.i < len(self.s) else ""
-
-    def _advance(self, n: int = 1) -> None:
-        self.line += self.s.count("\n", self.i, self.i + n)
-        self.i += n
-
-    def _skip(self, newlines: bool = False) -> None:
-        s = self.s
-        while self.i < len(s):
-            c = s[self.i]
-            if c in " \t\r" or (newlines and c == "\n"):
-                self._advance()
-            elif c == "#":
-                end = s.find("\n", self.i)
-                self.i = len(s) if end < 0 else end
-            else:
-                return
-
-    def _expect(self, token: str) -> None:
-        self._skip()
-        if not self.s.startswith(token, self.i):
-            raise ValueError(f"expected {token!r} at line {self.line}")
-        self._advance(len(token))
-
-    def _key(self) -> list[str]:
-        parts = []
-        while True:
-            self._skip()
-            if self._peek() in "\"'":
-                parts.append(_k(self._string()))
-            else:
-                m = _BARE.match(self.s, self.i)
-                if not m:
-                    raise ValueError(f"no key at line {self.line}")
-                parts.append(_k(m.group()))
-                self._advance(len(m.group()))
-            self._skip()
-            if self._peek() != ".":
-                return parts
-            self._advance()
-
-    def _string(self) -> str:
-        s, q = self.s, self.s[self.i]
-        if s.startswith(q * 3, self.i):
-            end = self.i + 3
-            while True:
-                end = s.find(q * 3, end)
-                if end < 0:
-                    raise ValueError("unterminated string")
-                if q == '"' and s[end - 1] == "\\":
-                    end += 1
-                    continue
-                break
-            while s.startswith(q, end + 3):
-                end += 1
-            raw = s[self.i + 3 : end]
-            self._advance(end + 3 - self.i)
-            return raw
-        j = self.i + 1
-        while s[j] != q:
-            j += 2 if (q == '"' and s[j] == "\\") else 1
-        raw = s[self.i + 1 : j]
-        self._advance(j + 1 - self.i)
-        if q == '"' and "\\" in raw:
-            try:
-                raw = json.loads(f'"{raw}"')
-            except ValueError:
-                pass
-        return raw
-
-    def _resolve(self, parts: list[str]) -> list[str]:
-        """Header key → path, with the current element of every array of tables in it."""
-        out: list[str] = []
-        for part in parts:
-            out.append(part)
-            n = self.aot.get(_join(out))
-            if n is not None:
-                out[-1] = f"{part}[{n}]"
-        return out
-
-    def document(self) -> None:
-        table: list[str] = []
-        while True:
-            self._skip(newlines=True)
-            if self.i >= len(self.s):
-                return
-            line = self.line
-            if self.s.startswith("[[", self.i):
-                self._advance(2)
-                parts = self._key()
-                self._expect("]]")
-                base = [*self._resolve(parts[:-1]), parts[-1]]
-                key = _join(base)
-                n = self.aot.get(key, -1) + 1
-                self.aot[key] = n
-                self.index.setdefault(key, line)
-                table = [*base[:-1], f"{parts[-1]}[{n}]"]
-                self._note(table, line)
-            elif self._peek() == "[":
-                self._advance()
-                parts = self._key()
-                self._expect("]")
-                table = self._resolve(parts)
-                self._note(table, line)
-            else:
-                parts = self._key()
-                self._expect("=")
-                self._note(table + parts, line, value=True)
-                self._value(table + parts)
-
-    def _value(self, path: list[str]) -> None:
-        self._skip()
-        c = self._peek()
-        if c in "\"'":
-            self._string()
-        elif c == "[":
-            self._advance()
-            n = 0
-            while True:
-                self._skip(newlines=True)
-                if self._peek() == "]":
-                    self._advance()
-                    return
-                self._note([*path, f"[{n}]"], self.line)
-                self._value([*path, f"[{n}]"])
-                n += 1
-                self._skip(newlines=True)
-                if self._peek() == ",":
-                    self._advance()
-        elif c == "{":
-            self._advance()
-            while True:
-                self._skip()
-                if self._peek() == "}":
-                    self._advance()
-                    return
-                line = self.line
-                parts = self._key()
-                self._expect("=")
-                self._note(path + parts, line, value=True)
-                self._value(path + parts)
-                self._skip()
-                if self._peek() == ",":
-                    self._advance()
-        else:
-            m = re.compile(r"[^,\]}\n#]*").match(self.s, self.i)
-            if not m.group().strip():
-                raise ValueError(f"no value at line {self.line}")
-            self._advance(len(m.group()))

@@ -18,19 +18,17 @@ from importlib import resources
 from pathlib import Path
 
 from .errors import InputError
-from .mechanism import (
+from .fileformat import (
     MAX_ABS,
-    MIN_LINK,
-    Mechanism,
-    _guess,
-    _k,
-    _number,
-    _Problems,
-    _show,
-    from_dict,
+    Problems,
+    close_match,
+    key_text,
     parse_toml,
+    quote,
+    read_number,
     read_toml,
 )
+from .mechanism import MIN_LINK, Mechanism, from_dict
 
 BUILTIN = "Table 2 (built in)"
 COLUMNS = ("AB", "BC", "CD", "AD", "phi_deg", "rpm")
@@ -51,13 +49,13 @@ def load_table(path: str | Path | None = None) -> tuple[str, dict[int, dict]]:
     else:
         source = str(path)
         data, text = read_toml(path, "a variant table is a few KB")
-    pr = _Problems(source, text)
+    pr = Problems(source, text)
     for key in data:
         if key not in TABLE_KEYS:
-            pr.add(_k(key), "unknown key — a table has [[variant]] rows (and title, name, source, note)")
+            pr.add(key_text(key), "unknown key — a table has [[variant]] rows (and title, name, source, note)")
     rows = data.get("variant")
     if not isinstance(rows, list) or not rows:
-        got = "" if rows is None else f" (got {_show(rows)})"
+        got = "" if rows is None else f" (got {quote(rows)})"
         pr.add("variant", f"missing: the table needs [[variant]] rows with n, AB, BC, CD, AD, phi_deg, rpm{got}")
         pr.raise_if_any()
     if len(rows) > MAX_ROWS:
@@ -68,23 +66,23 @@ def load_table(path: str | Path | None = None) -> tuple[str, dict[int, dict]]:
     for i, row in enumerate(rows):
         where = f"variant[{i}]"
         if not isinstance(row, dict):
-            pr.add(where, f"must be a table ([[variant]] n = …, AB = …), got {_show(row)}")
+            pr.add(where, f"must be a table ([[variant]] n = …, AB = …), got {quote(row)}")
             continue
         n = row.get("n")
         if isinstance(n, bool) or not isinstance(n, int) or not 0 <= n < 10**6:
-            got = "missing" if n is None else f"got {_show(n, 20)}"
+            got = "missing" if n is None else f"got {quote(n, 20)}"
             pr.add(where + ".n", f"the variant number must be a whole number 0…999999, {got}")
             continue
         for key in row:
             if key not in ROW_KEYS:
-                pr.add(f"{where}.{_k(key)}", f"unknown column (variant {n}) — {_guess(key, ROW_KEYS)}known: {', '.join(sorted(ROW_KEYS))}")
+                pr.add(f"{where}.{key_text(key)}", f"unknown column (variant {n}) — {close_match(key, ROW_KEYS)}known: {', '.join(sorted(ROW_KEYS))}")
         if n in first:
             pr.add(where + ".n", f"variant {n} appears twice (first as variant[{first[n]}]): each number once")
             continue
         first[n] = i
         kind = row.get("kind", "crank-slider" if n % 2 == 0 else "four-bar")
         if kind not in KINDS:
-            pr.add(where + ".kind", f'must be "crank-slider" or "four-bar", got {_show(kind, 30)} (variant {n})')
+            pr.add(where + ".kind", f'must be "crank-slider" or "four-bar", got {quote(kind, 30)} (variant {n})')
             continue
         need = COLUMNS if kind == "four-bar" else ("AB", "BC", "phi_deg", "rpm")
         values = {}
@@ -94,11 +92,11 @@ def load_table(path: str | Path | None = None) -> tuple[str, dict[int, dict]]:
             if col not in row:
                 pr.add(cw, f"missing: {kind} variant {n} needs {', '.join(need)}")
             elif col == "phi_deg":
-                values[col] = _number(row[col], cw, pr, unit="°")
+                values[col] = read_number(row[col], cw, pr, unit="°")
             elif col == "rpm":
-                values[col] = _number(row[col], cw, pr, positive=True, unit="rpm", low=1e-6, high=MAX_ABS)
+                values[col] = read_number(row[col], cw, pr, positive=True, unit="rpm", low=1e-6, high=MAX_ABS)
             else:
-                values[col] = _number(row[col], cw, pr, positive=True, low=MIN_LINK, high=MAX_ABS)
+                values[col] = read_number(row[col], cw, pr, positive=True, low=MIN_LINK, high=MAX_ABS)
         if len(pr.items) == before:
             table[n] = dict(row, kind=kind, **values)
     pr.raise_if_any()

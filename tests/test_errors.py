@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from plans import mechanism
+from plans import fileformat, mechanism
 from plans.errors import AssemblyError, InputError, PlansError
 from plans.kinematics import Solver
 from plans.mechanism import from_dict, load
@@ -292,7 +292,7 @@ def test_the_number_of_reported_problems_is_capped():
     for i in range(10_000):
         data[f"junk{i}"] = i
     err = _quick(lambda: from_dict(data, "junk"))
-    assert len(err.problems) == mechanism.MAX_PROBLEMS + 1
+    assert len(err.problems) == fileformat.MAX_PROBLEMS + 1
     assert err.problems[-1] == "… and 9950 more problems"
 
 
