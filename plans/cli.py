@@ -75,6 +75,7 @@ def mechanism_from(args):
         mech = variants.variant(int(text), args.table)
     else:
         mech = mechanism.load(args.file)
+    _SOURCE[:] = [mech.source]
     if angle is not None:
         d = mech.driver
         ref = mechanism.REFERENCES[d.reference] + mechanism.SENSES[d.measured] * angle
@@ -84,6 +85,8 @@ def mechanism_from(args):
 
 #: the input files of the running command (set by mechanism_from): never written over
 _INPUTS: list[str] = []
+#: the mechanism the running command solves (its file, or the variant of a table)
+_SOURCE: list[str] = []
 
 
 def _arg(value, limit: int = 200) -> str:
@@ -132,11 +135,15 @@ def main(argv: list[str] | None = None) -> int:
     if not getattr(args, "run", None):
         parser.print_help()
         return EXIT_INPUT
+    _SOURCE.clear()
     try:
         return args.run(args)
     except PlansError as exc:
+        # an input error names its file itself; a position that cannot be solved (a group
+        # that does not close, a dead point) is named by the mechanism it belongs to
+        where = f"{_SOURCE[0]}: " if _SOURCE and not isinstance(exc, InputError) else ""
         for line in str(exc).splitlines() or [type(exc).__name__]:
-            print(f"plans {args.command}: {line}", file=sys.stderr)
+            print(f"plans {args.command}: {where}{line}", file=sys.stderr)
         return EXIT_INPUT
     except KeyboardInterrupt:
         print(f"plans {args.command}: interrupted", file=sys.stderr)

@@ -102,8 +102,28 @@ def test_unreachable_angle_is_reported_not_nan(capsys):
     code, out, err = run(capsys, "solve", "samples/fourbar.toml", "--angle", "180")
     assert code == 2
     assert out == ""
-    assert "group 2–3 (RRR) cannot be assembled at φ1 = 180°" in err
-    assert "nan" not in err.lower()
+    assert err.startswith(
+        "plans solve: samples/fourbar.toml: group 2–3 (RRR) cannot be assembled at φ1 = 180°")
+    assert err.count("\n") == 1 and "nan" not in err.lower()
+
+
+def test_unreachable_variant_position_names_the_variant(capsys, tmp_path):
+    """A four-bar of a course's table that cannot turn fully (AB + AD = 0.25 > BC + CD
+    = 0.22), at the crank angles where it does not close: the message names the variant."""
+    table = tmp_path / "table.toml"
+    table.write_text(
+        "[[variant]]\nn = 1\nAB = 0.12\nBC = 0.11\nCD = 0.11\nAD = 0.13\nphi_deg = 0\nrpm = 60\n",
+        encoding="utf-8")
+    failed = []
+    for angle in range(0, 360, 10):
+        code, out, err = run(capsys, "solve", "--variant", "1", "--table", str(table),
+                             "--angle", str(angle))
+        if code == 2:
+            failed.append(angle)
+            assert out == "" and err.count("\n") == 1
+            assert err.startswith(
+                f"plans solve: {table}, variant 1: group 2–3 (RRR) cannot be assembled")
+    assert 0 < len(failed) < 36  # it closes over part of the turn only
 
 
 def test_report_russian_uses_decimal_comma(capsys):
