@@ -76,6 +76,8 @@ def sweep(sv: Solver, phi, block: int = BLOCK, into: Sweep | None = None) -> Swe
         if into is not None:
             if into.phi.shape != phi.shape:
                 raise ValueError(f"into: a sweep of {into.phi.size} angles, not {n}")
+            if [name for name, _ in _layout(sv)[0]["pos"]] != list(into.position):
+                raise ValueError("into: a sweep of another mechanism (its points differ)")
             out = {"pos": into.position, "vel": into.velocity, "acc": into.acceleration}
             omega, epsilon, sine, valid = into.omega, into.epsilon, into.sine, into.valid
             into.phi[...] = phi

@@ -139,6 +139,9 @@ def test_sweep_into_reuses_the_arrays_and_keeps_the_callers_angles():
     np.testing.assert_array_equal(a, np.linspace(0, 2 * np.pi, 300))  # the caller's input
     with pytest.raises(ValueError, match="300 angles, not 299"):
         sv.sweep(b[:-1], into=first)
+    press = Solver(SCENES["press"].mechanism())
+    with pytest.raises(ValueError, match="another mechanism"):
+        press.sweep(b, into=first)
 
 
 @pytest.mark.parametrize("name", ALL)
