@@ -3,7 +3,8 @@ records the numbers as the two routes of its velocity and acceleration construct
 with the names, equations and conditions of the group (composed once per solver).
 
 Each works on numpy arrays of angles or on Python numbers of one angle (``xp``); on one
-angle a group that does not close raises ``_Fallback``, and the array path words the error.
+angle a group that does not close raises :class:`ScalarFallback`, and the array path
+words the error.
 """
 
 from __future__ import annotations
@@ -28,7 +29,8 @@ from .structure import DyadKind, Group
 if TYPE_CHECKING:
     from .kinematics import Solver
 
-class _Fallback(Exception):
+
+class ScalarFallback(Exception):
     """The one-angle scalar path met a group that does not close or a division by zero:
     the array path then finds and words the failure."""
 
@@ -37,7 +39,7 @@ def _closure(xp, valid, gap, scale):
     """(valid, gap, singular) of a group; the scalar path leaves as soon as it misses."""
     if xp.scalar:
         if not valid:
-            raise _Fallback
+            raise ScalarFallback
         return True, 0.0, False
     gap = gap()
     return valid, gap, ~valid & (gap <= 1e-9 * scale)
@@ -270,7 +272,7 @@ def _rpp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     gd = s_in.guide.direction
     if abs(gd.imag) <= SINGULAR_SINE:
         if xp.scalar:
-            raise _Fallback
+            raise ScalarFallback
         gd = 1j  # placeholder direction: every angle is reported as not closing
     Pw = pos[P]
     oB, us, vP3, aP3, (vk, ak, c1, c2, t1, t2, s1, s2, sine) = kernels.rpp(

@@ -28,7 +28,7 @@ import numpy as np
 from . import kernels
 from .branches import choose_branches, hint_holds, parse_hint
 from .errors import SingularPlanError
-from .groups import SOLVERS, _Fallback
+from .groups import SOLVERS, ScalarFallback
 from .mechanism import Mechanism
 from .records import (
     SINGULAR_SINE,
@@ -94,7 +94,7 @@ class Solver:
         phi = float(phi)
         try:
             return self._solve(kernels.SCALAR, phi, 0.0, complex(math.cos(phi), math.sin(phi)))
-        except (_Fallback, ArithmeticError, ValueError):
+        except (ScalarFallback, ArithmeticError, ValueError):
             pass
         m = self.solve(np.array([phi]))
         deg = math.degrees(phi) % 360
