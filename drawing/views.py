@@ -22,7 +22,13 @@ from dataclasses import dataclass, field
 import numpy as np
 from shapely.geometry import box as shp_box
 
-from drawing.labels import LabelRequest, obstacles_of, place_labels, text_box, text_width
+from drawing.labels import (
+    LabelRequest,
+    obstacles_of,
+    place_labels,
+    text_box,
+    text_width,
+)
 from drawing.scene import (
     Arrow,
     Circle,
@@ -446,8 +452,59 @@ def positions_view(sol, cycle, motion_all, phis_all, lang: str = "ru") -> View:
                       Arrow((p1[0] + (p2[0] - p1[0]) / 2, dy), (p2[0], dy), LineType.THIN, 3.0, 1.0)]
             items.append(Text(((p1[0] + p2[0]) / 2, dy - 1.0), f"H = {num(cycle.stroke, 4, lang)} {w['m']}",
                               size=3.5, anchor="middle"))
+    # swing ψ of a rocker: an arc between its two extreme positions, about its pivot
+    if out is not None and cycle.stroke and out.kind == "angular" and len(cycle.extremes) == 2:
+        ext = positions_at(cycle.extremes)
+        arm = _rocker_arm(mech, out)
+        if arm is not None and all(e is not None for e in ext):
+            pivot, tip = arm
+            items += _swing_arc(pos[pivot], ext[0][tip], ext[1][tip], mu_l)
+            mid = _swing_point(pos[pivot], ext[0][tip], ext[1][tip], 0.5)
+            deg = math.degrees(cycle.stroke)
+            labels.append(LabelRequest(_sheet(mid, mu_l), f"{w['swing']} = {num(deg, 4, lang)}°",
+                                       3.5, "n", markup=False))
     caption = f"{w['positions']}, μ_l = {num(mu_l, 4, lang)} {w['m']}/{w['mm']}"
     return _finish("positions", items, labels, caption, pad=8.0)
+
+
+def _rocker_arm(mech, out) -> tuple[str, str] | None:
+    """The rocker's fixed pivot and its point farthest from it (the hinge the arc spans)."""
+    link = mech.links[out.link]
+    pivots = [p for p in link.points if p in mech.frame]
+    if not pivots:
+        return None
+    pivot = pivots[0]
+    others = [p for p in link.points if p != pivot]
+    if not others:
+        return None
+    tip = max(others, key=lambda p: abs(link.points[p] - link.points[pivot]))
+    return pivot, tip
+
+
+#: the swing arc's radius, as a share of the rocker's arm
+_SWING_R = 0.55
+
+
+def _swing_point(pivot: complex, a: complex, b: complex, t: float) -> complex:
+    """The point at share ``t`` along the arc from the arm's direction at ``a`` to ``b``
+    (the shorter way round), at :data:`_SWING_R` of the arm."""
+    ra, rb = a - pivot, b - pivot
+    turn = math.atan2((ra.conjugate() * rb).imag, (ra.conjugate() * rb).real)
+    r = _SWING_R * min(abs(ra), abs(rb))
+    return pivot + r * (ra / abs(ra)) * complex(math.cos(t * turn), math.sin(t * turn))
+
+
+def _swing_arc(pivot: complex, a: complex, b: complex, mu_l: float) -> list[Item]:
+    """The dimension arc of ψ with an arrowhead at each end."""
+    pts = [_sheet(_swing_point(pivot, a, b, k / 48), mu_l) for k in range(49)]
+    length = sum(math.dist(p, q) for p, q in zip(pts, pts[1:]))  # mm on the sheet
+    out: list[Item] = [Polyline(pts, LineType.THIN)]
+    if length > 8.0:  # room for the two 3 mm heads
+        t = 3.0 / length
+        for end, inner in ((pts[0], t), (pts[-1], 1 - t)):
+            out.append(Arrow(_sheet(_swing_point(pivot, a, b, inner), mu_l), end,
+                             LineType.THIN, 3.0, 1.0))
+    return out
 
 
 # ----------------------------------------------------------------- diagrams

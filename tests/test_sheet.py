@@ -201,3 +201,50 @@ def test_no_text_sits_on_a_vector_arrow(key):
             box = text_box(t)
             hits += [(view.name, t.text) for a in arrows if box.intersects(a)]
     assert hits == []
+
+
+def test_a_rockers_swing_is_dimensioned_on_the_plan_of_positions():
+    """A crank-rocker's plan of positions carries ψ between the two extreme positions of
+    the rocker, with the value the cycle computes; a slider's carries H instead."""
+    from plans.cycle import analyse_cycle
+
+    rockers = [n for n in variant_numbers() if n % 2]  # odd variants are four-bars
+    for n in rockers:
+        mech = variant(n)
+        cycle = analyse_cycle(mech)
+        if not (cycle.full_turn and cycle.output and cycle.output.kind == "angular"):
+            continue
+        *_, svg = _sheet(n)
+        _, texts = _texts(svg)
+        psi = [t for t in texts if t.startswith("ψ = ")]
+        assert len(psi) == 1, texts
+        value = float(psi[0].removeprefix("ψ = ").removesuffix("°").replace(",", "."))
+        assert value == pytest.approx(math.degrees(cycle.stroke), abs=0.01)
+        assert not any(t.startswith("H = ") for t in texts)
+        break
+    else:
+        pytest.fail("no crank-rocker among the variants")
+    *_, svg = _sheet("press")
+    _, texts = _texts(svg)
+    assert any(t.startswith("H = ") for t in texts) and not any(t.startswith("ψ = ") for t in texts)
+
+
+def test_swing_arc_runs_from_one_extreme_arm_to_the_other():
+    import cmath
+
+    from drawing.scene import Arrow, Polyline
+    from drawing.views import _SWING_R, _swing_arc
+
+    pivot, a, b = 0.1 + 0.2j, 0.1 + 0.2j + 0.3 * cmath.exp(0.4j), 0.1 + 0.2j + 0.25 * cmath.exp(1.9j)
+    mu = 0.002
+    items = _swing_arc(pivot, a, b, mu)
+    arc = next(it for it in items if isinstance(it, Polyline))
+    to_world = lambda p: complex(p[0] * mu, -p[1] * mu)  # noqa: E731  (the sheet flips y)
+    start, end = to_world(arc.points[0]), to_world(arc.points[-1])
+    assert abs(start - pivot) == pytest.approx(_SWING_R * 0.25)
+    assert cmath.phase(start - pivot) == pytest.approx(0.4)
+    assert cmath.phase(end - pivot) == pytest.approx(1.9)
+    for p in arc.points:  # on the circle all the way
+        assert abs(to_world(p) - pivot) == pytest.approx(_SWING_R * 0.25)
+    heads = [it for it in items if isinstance(it, Arrow)]
+    assert len(heads) == 2 and {heads[0].p2, heads[1].p2} == {arc.points[0], arc.points[-1]}
