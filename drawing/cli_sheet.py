@@ -77,6 +77,15 @@ def _parse_plans(text: str | None, n: int) -> list[int] | None:
     return nums
 
 
+def trajectory_angles(cycle, n: int = 361):
+    """The crank angles the trajectories are drawn over: the whole turn, or the range the
+    cycle's positions span when the crank cannot make a full turn."""
+    import numpy as np
+
+    lo, hi = (0.0, 2 * math.pi) if cycle.full_turn else cycle.crank_range
+    return np.linspace(lo, hi, n)
+
+
 def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
                 plans: list[int] | None = None, title: list[str] = ()):
     """(scene, sheet, info) for ``mech``; info holds the solutions drawn."""
@@ -143,12 +152,7 @@ def _compose(mech, sheet, solver, cycle, chosen, mu, lang, title):
     else:
         for k in chosen:
             sols.append((str(k), f"{k}", solve_position(mech, cycle.positions[k], solver=solver, mu=mu)))
-    # the whole turn (or the reachable range) for trajectories
-    if cycle.full_turn:
-        phis = np.linspace(0.0, 2 * math.pi, 361)
-    else:
-        lo, hi = cycle.reachable[0] if cycle.reachable else (0.0, 2 * math.pi)
-        phis = np.linspace(lo, hi, 361)
+    phis = trajectory_angles(cycle)
     motion_all = solver.solve(phis)
 
     views = [V.positions_view(given, cycle, motion_all, phis, lang)]

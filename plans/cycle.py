@@ -69,7 +69,6 @@ def find_output(mech: Mechanism) -> Output | None:
 class Cycle:
     output: Output | None
     full_turn: bool
-    reachable: tuple[tuple[float, float], ...]  # crank-angle intervals (rad) where it assembles
     extremes: tuple[float, ...]  # crank angles of the extreme positions (rad)
     stroke: float | None  # H (m) or swing ψ (rad)
     theta: float | None  # rad
@@ -93,7 +92,6 @@ def analyse_cycle(mech: Mechanism, n_positions: int = 12, solver: Solver | None 
     notes: list[str] = []
     grashof = _grashof(mech, solver)
     full = bool(valid.all())
-    reachable = _intervals(grid, valid, sense)
     out = find_output(mech)
     if not full:
         lo, hi = _interval_around(grid, valid)
@@ -103,7 +101,7 @@ def analyse_cycle(mech: Mechanism, n_positions: int = 12, solver: Solver | None 
             f"({math.degrees(abs(hi - lo)):.2f}° of crank travel)"
         )
         span = np.linspace(lo, hi, n_positions) if n_positions > 1 else np.array([lo])
-        return Cycle(out, False, reachable, (), None, None, None, tuple(span), grashof, tuple(notes),
+        return Cycle(out, False, (), None, None, None, tuple(span), grashof, tuple(notes),
                      (lo, hi))
     extremes: list[float] = []
     stroke = theta = K = None
@@ -132,7 +130,7 @@ def analyse_cycle(mech: Mechanism, n_positions: int = 12, solver: Solver | None 
         elif extremes:
             notes.append(f"the output {out.point} has {len(extremes)} turning points per turn")
     pos = tuple(start + sense * TWO_PI * i / n_positions for i in range(n_positions))
-    return Cycle(out, True, reachable, tuple(extremes), stroke, theta, K, pos, grashof, tuple(notes))
+    return Cycle(out, True, tuple(extremes), stroke, theta, K, pos, grashof, tuple(notes))
 
 
 def _refine(solver: Solver, out: Output, mech: Mechanism, a: float, b: float) -> float:
@@ -154,24 +152,6 @@ def _refine(solver: Solver, out: Output, mech: Mechanism, a: float, b: float) ->
         if abs(b - a) < 1e-13:
             break
     return 0.5 * (a + b)
-
-
-def _intervals(grid, valid, sense):
-    if valid.all():
-        return ((float(grid[0]), float(grid[0] + sense * TWO_PI)),)
-    out = []
-    n = len(grid)
-    i = 0
-    while i < n:
-        if valid[i]:
-            j = i
-            while j + 1 < n and valid[j + 1]:
-                j += 1
-            out.append((float(grid[i]), float(grid[j])))
-            i = j + 1
-        else:
-            i += 1
-    return tuple(out)
 
 
 def _interval_around(grid, valid):

@@ -248,3 +248,18 @@ def test_swing_arc_runs_from_one_extreme_arm_to_the_other():
         assert abs(to_world(p) - pivot) == pytest.approx(_SWING_R * 0.25)
     heads = [it for it in items if isinstance(it, Arrow)]
     assert len(heads) == 2 and {heads[0].p2, heads[1].p2} == {arc.points[0], arc.points[-1]}
+
+
+def test_trajectories_span_the_positions_drawn_when_the_crank_cannot_turn():
+    """Seed 001's four-bar assembles over −128.8°…128.8°, across the file's angle: the
+    trajectories must cover every position drawn, not stop at the file's angle."""
+    from drawing.cli_sheet import trajectory_angles
+    from plans.cycle import analyse_cycle
+
+    cycle = analyse_cycle(_mech("fourbar"))
+    assert not cycle.full_turn
+    phis = trajectory_angles(cycle)
+    lo, hi = min(phis[0], phis[-1]), max(phis[0], phis[-1])
+    for phi in cycle.positions:
+        assert lo - 1e-12 <= phi <= hi + 1e-12
+    assert math.degrees(hi - lo) == pytest.approx(2 * 128.8, abs=0.2)
