@@ -134,7 +134,6 @@ def sheet_scales(mech, sol, extent: float, size: float) -> dict[str, float]:
 
 
 def _compose(mech, sheet, solver, cycle, chosen, mu, lang, title):
-    import numpy as np
 
     from drawing import views as V
     from drawing.layout import place_views
