@@ -263,7 +263,8 @@ class LabelRequest:
 
     ``prefer`` is a compass direction on the sheet (``"n"`` is up):
     n, ne, e, se, s, sw, w, nw.  ``markup``: ``"s_3"`` has a subscript 3
-    (see :class:`drawing.scene.Text`).
+    (see :class:`drawing.scene.Text`).  ``optional``: a label that may be left out (a
+    position's number) rather than drawn over something; it then takes no room.
     """
 
     anchor: Point
@@ -271,6 +272,7 @@ class LabelRequest:
     size: float = 3.5
     prefer: str = "ne"
     markup: bool = True
+    optional: bool = False
 
     def __post_init__(self) -> None:
         if self.prefer not in _COMPASS:
@@ -341,7 +343,8 @@ def place_labels(
     are avoided too, but a letter within ``near`` mm of its point that crosses only
     soft lines (at most ``max_soft`` of them, the fewest) beats a clear one further
     away: a letter far from its point is read as another point's.  If none is free, the candidate with the least overlap area
-    is taken and reported with ``clear=False``.
+    is taken and reported with ``clear=False`` (an ``optional`` one is then meant to be
+    left out, and later labels may take its place).
 
     Args:
         obstacles: drawn geometry to avoid, already widened; see
@@ -396,7 +399,8 @@ def place_labels(
             assert fallback is not None  # distances and directions are never empty
             _, text, box = fallback
             clear = False
-        placed.append(box)
+        if clear or not req.optional:  # an optional label left out takes no room
+            placed.append(box)
         out.append(Placement(text, box, clear=clear))
     return out
 

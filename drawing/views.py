@@ -209,7 +209,7 @@ def _finish(
                           soft=obstacles_of([it for it, s in zip(drawing, is_soft, strict=True) if s]))
     items = list(drawing) + [
         _start_anchored(p.text) for p, r in zip(placed, labels, strict=True)
-        if p.clear or r.markup  # numbers of positions are dropped rather than crowded
+        if p.clear or not r.optional  # numbers of positions are dropped rather than crowded
     ]
     x0, y0, x1, y1 = _bbox(items)
     top = y0 - 2.0
@@ -415,7 +415,8 @@ def positions_view(sol, cycle, motion_all, phis_all, lang: str = "ru") -> View:
         if pos is None:
             continue
         items += _link_segments(mech, pos, mu_l, LineType.THIN)
-        labels.append(LabelRequest(_sheet(pos[tip], mu_l), str(k), 2.5, "ne", markup=False))
+        labels.append(LabelRequest(_sheet(pos[tip], mu_l), str(k), 2.5, "ne", markup=False,
+                                   optional=True))
     for pos in positions_at(cycle.extremes):
         if pos is None:
             continue
