@@ -232,7 +232,7 @@ def _batch(args) -> int:
     if out.exists() and not out.is_dir():
         raise InputError("-o", f"{args.output} is not a folder")
     out.mkdir(parents=True, exist_ok=True)
-    numbers = list(variant_numbers())
+    numbers = list(variant_numbers(args.table))
     tty = sys.stderr.isatty()
     failed: list[tuple[int, str]] = []
     for i, n in enumerate(numbers, 1):

@@ -263,3 +263,15 @@ def test_trajectories_span_the_positions_drawn_when_the_crank_cannot_turn():
     for phi in cycle.positions:
         assert lo - 1e-12 <= phi <= hi + 1e-12
     assert math.degrees(hi - lo) == pytest.approx(2 * 128.8, abs=0.2)
+
+
+def test_batch_takes_the_variants_of_the_table_given(tmp_path):
+    """--variant all with --table draws that table's rows, not the built-in table's."""
+    from plans.cli import main
+
+    table = tmp_path / "t.toml"
+    table.write_text("[[variant]]\nn = 6\nAB = 0.05\nBC = 0.15\nphi_deg = 15\nrpm = 100\n",
+                     encoding="utf-8")
+    out = tmp_path / "sheets"
+    assert main(["sheet", "--variant", "all", "--table", str(table), "-o", str(out)]) == 0
+    assert [p.name for p in out.iterdir()] == ["variant-6.svg"]
