@@ -105,7 +105,7 @@ def choose_branches(mech: Mechanism, structure: Structure) -> tuple[int, ...]:
             if earlier:
                 asked = ", ".join(f"{k} = {mech.assembly[k]!r}" for k in earlier)
                 note = f" (the groups before it are assembled as the hints {asked} ask: is one of them wrong?)"
-            raise positions[1].groups[i].failure(0, phi, note)
+            raise positions[1].groups[i].failure(0, phi, note, source=mech.source)
         new = g.C or coincident_name(g.P, g.b)
         key = g.C or next(iter(mech.links[g.b].points))
         if not mine:

@@ -142,14 +142,13 @@ def conditioning(mech, motion) -> tuple[Status, ...]:
     """Per position: the figures of every group, warnings and errors (see the module doc)."""
     import numpy as np
 
-    from .kinematics import SINGULAR_SINE, WARN_SINE
+    from .records import SINGULAR_SINE, WARN_SINE
     from .structure import DyadKind
 
     n = len(motion.phi)
     crank_pivot = mech.frame[mech.driver.pivot]
     per_group = []
     for g in motion.groups:
-        sine = np.abs(np.asarray(g.velocity.sine, dtype=float))
         pivot = None
         if g.group.kind == DyadKind.RPR:
             P, Q = motion.position[g.group.P], motion.position[g.group.Q]
@@ -158,35 +157,24 @@ def conditioning(mech, motion) -> tuple[Status, ...]:
                 pivot = np.where(
                     loop > 0, np.abs(P - Q) / np.where(loop > 0, loop, 1.0), 0.0
                 )
-        per_group.append((g, sine, pivot))
+        per_group.append((g, pivot))
     out = []
     for k in range(n):
         deg = _deg(mech, float(motion.phi[k]))
         figures: dict[str, float] = {}
         warnings: list[str] = []
         errors: list[str] = []
-        for g, sine, pivot in per_group:
+        for g, pivot in per_group:
             label = g.group.label
-            r0, r1 = g.velocity.routes
             if not bool(g.valid[k]):
                 errors.append(str(g.failure(k, deg)))
                 figures[label] = math.nan
                 continue
-            s = float(sine[k])
-            s = s if math.isfinite(s) else 0.0
-            figures[label] = s
-            ang = math.degrees(math.asin(min(s, 1.0)))
-            if s < SINGULAR_SINE:
-                errors.append(
-                    f"{label} at φ1 = {deg:.6g}°: the lines {r0.relation} and {r1.relation} "
-                    f"are parallel (angle {ang:.3g}°, sin = {s:.3g}): a singular position "
-                    "(dead point), the plan has no unique solution"
-                )
-            elif s < WARN_SINE:
-                warnings.append(
-                    f"{label} at φ1 = {deg:.6g}°: near-singular, the lines {r0.relation} and "
-                    f"{r1.relation} meet at {ang:.3g}° (sin = {s:.3g})"
-                )
+            figures[label] = g.sine_at(k)
+            if (err := g.parallel(k, deg)) is not None:
+                errors.append(str(err))
+            elif (warning := g.near_parallel(k, deg)) is not None:
+                warnings.append(warning)
             if pivot is not None:
                 q = float(pivot[k])
                 q = q if math.isfinite(q) else 0.0

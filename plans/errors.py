@@ -25,17 +25,25 @@ class StructureError(PlansError, ValueError):
 
 
 class AssemblyError(PlansError, ValueError):
-    """A group cannot be assembled at this crank angle (its links do not reach)."""
+    """A group cannot be assembled at this crank angle (its links do not reach).
 
-    def __init__(self, message: str, *, group: str = "", phi_deg: float | None = None):
+    ``source``: the mechanism it belongs to (its file, or a table's variant), which the
+    command line puts before the message.
+    """
+
+    def __init__(self, message: str, *, group: str = "", phi_deg: float | None = None,
+                 source: str = ""):
         self.group = group
         self.phi_deg = phi_deg
+        self.source = source
         super().__init__(message)
 
 
 class SingularPlanError(PlansError, ArithmeticError):
-    """The two lines of a plan construction are parallel: a singular position."""
+    """The two lines of a plan construction are parallel: a singular position.
+    ``source`` as for :class:`AssemblyError`."""
 
-    def __init__(self, message: str, *, sine: float = 0.0):
+    def __init__(self, message: str, *, sine: float = 0.0, source: str = ""):
         self.sine = sine
+        self.source = source
         super().__init__(message)

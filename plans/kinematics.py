@@ -98,17 +98,15 @@ class Solver:
             pass
         m = self.solve(np.array([phi]))
         deg = math.degrees(phi) % 360
+        source = self.mech.source
         for g in m.groups:
             if not g.valid[0]:
-                raise g.failure(0, deg)
+                raise g.failure(0, deg, source=source)
         for g in m.groups:
-            if abs(float(g.velocity.sine[0])) < SINGULAR_SINE:
-                raise SingularPlanError(
-                    f"{g.group.label} at φ1 = {deg:.6g}°: the lines of its plan are parallel: "
-                    "a singular position (dead point), the plan has no unique solution",
-                    sine=float(g.velocity.sine[0]))
+            if (err := g.parallel(0, deg, source)) is not None:
+                raise err
         raise SingularPlanError(  # pragma: no cover - every fallback above is a failure
-            f"at φ1 = {deg:.6g}°: the plan has no unique solution")
+            f"at φ1 = {deg:.6g}°: the plan has no unique solution", source=source)
 
     def _solve(self, xp, phi, zero, rotor) -> Motion:
         mech = self.mech

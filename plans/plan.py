@@ -16,8 +16,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .errors import SingularPlanError
-from .kinematics import SINGULAR_SINE, WARN_SINE, Motion, Solver
+from .kinematics import Motion, Solver
 from .mechanism import Mechanism
 from .scales import choose_mu, choose_mu_l
 from .structure import Structure
@@ -142,22 +141,10 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     deg = math.degrees(phi) % 360
     warnings = []
     for g in motion.groups:
-        s = g.velocity.sine
-        if abs(s) >= WARN_SINE:
-            continue
-        ang = math.degrees(math.asin(min(abs(s), 1.0)))
-        r0, r1 = g.velocity.routes
-        if abs(s) < SINGULAR_SINE:
-            raise SingularPlanError(
-                f"{g.group.label} at φ1 = {deg:.6g}°: the lines {r0.relation} and "
-                f"{r1.relation} are parallel (angle {ang:.3g}°): a singular position "
-                "(dead point), the plan has no unique solution",
-                sine=s,
-            )
-        warnings.append(
-            f"{g.group.label} at φ1 = {deg:.6g}°: near-singular, the lines "
-            f"{r0.relation} and {r1.relation} meet at {ang:.3g}° (sin = {abs(s):.3g})"
-        )
+        if (err := g.parallel(None, deg, mech.source)) is not None:
+            raise err
+        if (warning := g.near_parallel(None, deg)) is not None:
+            warnings.append(warning)
     scales = dict(mech.scales)
     if mu:
         scales.update(mu)

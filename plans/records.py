@@ -7,6 +7,7 @@ whichever it solved. Everything here is immutable.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import NamedTuple
 
@@ -99,7 +100,7 @@ class GroupSolution(NamedTuple):
     singular: np.ndarray  # bool: where it does not close, is it a dead point (no miss)?
     why_singular: str  # what makes it singular, for messages
 
-    def failure(self, k: int, phi_deg: float, note: str = "") -> PlansError:
+    def failure(self, k: int, phi_deg: float, note: str = "", source: str = "") -> PlansError:
         """The error for angle index ``k`` where the group does not close.
 
         A group that misses (its links do not reach) is an :class:`AssemblyError` with the
@@ -110,13 +111,46 @@ class GroupSolution(NamedTuple):
         if bool(self.singular[k]):
             return SingularPlanError(
                 f"{label} at φ1 = {phi_deg:.6g}°: {self.why_singular}: a singular position "
-                f"(dead point), the plan has no unique solution{note}"
+                f"(dead point), the plan has no unique solution{note}", source=source,
             )
         return AssemblyError(
             f"{label} cannot be assembled at φ1 = {phi_deg:.6g}°: needs {self.admissible}, "
             f"misses by {float(self.gap[k]):.6g} m{note}",
-            group=label, phi_deg=phi_deg,
+            group=label, phi_deg=phi_deg, source=source,
         )
+
+    def sine_at(self, k: int | None = None) -> float:
+        """|sin| of the angle between the two lines of the plans (k: the angle's index in
+        an array solution; None for a solution on Python numbers)."""
+        s = self.velocity.sine
+        s = abs(float(s if k is None else s[k]))
+        return s if math.isfinite(s) else 0.0
+
+    def parallel(self, k: int | None, phi_deg: float, source: str = "") -> SingularPlanError | None:
+        """The error where the two lines of the plans are parallel (|sin| below
+        :data:`SINGULAR_SINE`): a dead point, no unique plan. None elsewhere."""
+        s = self.sine_at(k)
+        if s >= SINGULAR_SINE:
+            return None
+        r0, r1 = self.velocity.routes
+        return SingularPlanError(
+            f"{self.group.label} at φ1 = {phi_deg:.6g}°: the lines {r0.relation} and "
+            f"{r1.relation} are parallel (angle {_degrees(s):.3g}°, sin = {s:.3g}): a singular "
+            "position (dead point), the plan has no unique solution", sine=s, source=source)
+
+    def near_parallel(self, k: int | None, phi_deg: float) -> str | None:
+        """The warning where the two lines meet at under about 2° (|sin| below
+        :data:`WARN_SINE`), when they are not parallel. None elsewhere."""
+        s = self.sine_at(k)
+        if not SINGULAR_SINE <= s < WARN_SINE:
+            return None
+        r0, r1 = self.velocity.routes
+        return (f"{self.group.label} at φ1 = {phi_deg:.6g}°: near-singular, the lines "
+                f"{r0.relation} and {r1.relation} meet at {_degrees(s):.3g}° (sin = {s:.3g})")
+
+
+def _degrees(sine: float) -> float:
+    return math.degrees(math.asin(min(sine, 1.0)))
 
 
 @dataclass(frozen=True)

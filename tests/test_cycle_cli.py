@@ -162,10 +162,10 @@ def test_a_linkage_that_cannot_turn_fully_warns_at_its_limits(capsys):
 
 
 def test_singular_positions_are_errors_with_no_values(capsys, monkeypatch):
-    import plans.kinematics
+    import plans.records
 
     # make every position with |sin| < 0.7 count as singular, so the error path runs
-    monkeypatch.setattr(plans.kinematics, "SINGULAR_SINE", 0.7)
+    monkeypatch.setattr(plans.records, "SINGULAR_SINE", 0.7)
     code, out, err = run(capsys, "cycle", FOURBAR, "--json", "--positions", "9")
     assert code == 2
     rows = json.loads(out)["rows"]
