@@ -52,17 +52,8 @@ def mechanism_from(args):
 
     if (args.file is None) == (args.variant is None):
         raise InputError("command line", "give a mechanism FILE or --variant N (one of them)")
-    inputs = [p for p in (args.file, getattr(args, "table", None)) if p]
-    _INPUTS[:] = inputs
-    out = getattr(args, "output", None)
-    if out not in (None, "-"):
-        for inp in inputs:
-            if _same_file(out, inp):
-                raise InputError(
-                    "command line",
-                    f"-o {_arg(out)} is the input file {_arg(inp)}: the tool never writes into "
-                    "its inputs; choose another output name",
-                )
+    _INPUTS.clear()
+    claim_inputs(args, [p for p in (args.file, getattr(args, "table", None)) if p])
     angle = getattr(args, "angle", None)
     if angle is not None and not (math.isfinite(angle) and abs(angle) <= mechanism.MAX_ABS):
         raise InputError(
@@ -75,7 +66,6 @@ def mechanism_from(args):
         mech = variants.variant(int(text), args.table)
     else:
         mech = mechanism.load(args.file)
-    _SOURCE[:] = [mech.source]
     if angle is not None:
         d = mech.driver
         ref = mechanism.REFERENCES[d.reference] + mechanism.SENSES[d.measured] * angle
@@ -83,10 +73,27 @@ def mechanism_from(args):
     return mech
 
 
-#: the input files of the running command (set by mechanism_from): never written over
+#: the input files of the running command (see claim_inputs): never written over
 _INPUTS: list[str] = []
-#: the mechanism the running command solves (its file, or the variant of a table)
-_SOURCE: list[str] = []
+
+
+def claim_inputs(args, paths, outputs=(("-o", "output"), ("--svg", "svg"), ("--png", "png"),
+                                      ("--pdf", "pdf"))) -> None:
+    """Remember files the command reads, so that :func:`write_output` never writes over
+    them, and refuse at once (before anything is computed) an output given as one."""
+    _INPUTS.extend(str(p) for p in paths)
+    for opt, attr in outputs:
+        out = getattr(args, attr, None)
+        if out in (None, "-"):
+            continue
+        for inp in paths:
+            if _same_file(out, inp):
+                raise InputError(
+                    "command line",
+                    f"{opt} {_arg(out)} is the input file {_arg(inp)}: the tool never writes "
+                    "into its inputs; choose another output name",
+                )
+
 
 
 def _arg(value, limit: int = 200) -> str:
@@ -135,13 +142,13 @@ def main(argv: list[str] | None = None) -> int:
     if not getattr(args, "run", None):
         parser.print_help()
         return EXIT_INPUT
-    _SOURCE.clear()
     try:
         return args.run(args)
     except PlansError as exc:
         # an input error names its file itself; a position that cannot be solved (a group
-        # that does not close, a dead point) is named by the mechanism it belongs to
-        where = f"{_SOURCE[0]}: " if _SOURCE and not isinstance(exc, InputError) else ""
+        # that does not close, a dead point) carries the mechanism it belongs to
+        source = getattr(exc, "source", "")
+        where = f"{source}: " if source and not isinstance(exc, InputError) else ""
         for line in str(exc).splitlines() or [type(exc).__name__]:
             print(f"plans {args.command}: {where}{line}", file=sys.stderr)
         return EXIT_INPUT

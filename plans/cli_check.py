@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import json
 import math
-from pathlib import Path
 
 from .cli import EXIT_DEVIATIONS, EXIT_OK, write_output
 from .errors import InputError
@@ -31,15 +30,12 @@ def configure(p) -> None:
 
 def run(args) -> int:
     from . import check as ck
-    from . import cli
+    from .cli import _INPUTS, claim_inputs
 
-    cli._INPUTS[:] = [args.file]
-    _refuse_inputs(args, [args.file])
+    _INPUTS.clear()
+    claim_inputs(args, [args.file])
     meas = ck.load(args.file)
-    mech_file = meas.mechanism.source
-    if Path(mech_file).is_file():
-        cli._INPUTS.append(mech_file)
-        _refuse_inputs(args, [mech_file])
+    claim_inputs(args, meas.inputs[1:])
     tol = meas.tolerance
     if args.tolerance is not None:
         try:
@@ -52,24 +48,11 @@ def run(args) -> int:
 
         write_output(args.svg, overlay_svg(result, lang=args.lang))
     if args.json:
-        text = json.dumps(to_json(result), ensure_ascii=False, indent=2) + "\n"
+        text = json.dumps(to_json(result, args.lang), ensure_ascii=False, indent=2) + "\n"
     else:
         text = to_text(result, args.lang)
     write_output(args.output, text)
     return EXIT_OK if result.ok else EXIT_DEVIATIONS
-
-
-def _refuse_inputs(args, inputs) -> None:
-    """Never write the report or the picture over an input, and say so before computing."""
-    from .cli import _arg, _same_file
-
-    for opt, out in (("-o", args.output), ("--svg", args.svg)):
-        if out in (None, "-"):
-            continue
-        for inp in inputs:
-            if _same_file(out, inp):
-                raise InputError("command line", f"{opt} {_arg(out)} is the input file {_arg(inp)}: "
-                                 "the tool never writes into its inputs; choose another name")
 
 
 # ---------------------------------------------------------------------------------------
@@ -259,7 +242,7 @@ def diagnosis_lines(result, lang: str = "en") -> list[str]:
     return lines
 
 
-def _finding(f, lang="en"):
+def _finding(f, lang: str):
     if f is None:
         return None
     m = f.mistake
@@ -277,7 +260,8 @@ def _finding(f, lang="en"):
     }
 
 
-def to_json(result) -> dict:
+def to_json(result, lang: str = "en") -> dict:
+    """The check as data; the words of a finding (description, correction) in ``lang``."""
     meas = result.measurement
     items = []
     for d in result.deviations:
@@ -313,9 +297,9 @@ def to_json(result) -> dict:
         "failed": [d.item.name for d in result.failed],
         "diagnosis": None if result.ok else {
             "explained": diag.best is not None,
-            "best": _finding(diag.best),
-            "alternatives": [_finding(f) for f in diag.alternatives],
-            "closest": _finding(diag.closest),
+            "best": _finding(diag.best, lang),
+            "alternatives": [_finding(f, lang) for f in diag.alternatives],
+            "closest": _finding(diag.closest, lang),
             "tried": diag.tried,
         },
     }

@@ -114,6 +114,8 @@ class Measurement:
     tolerance: Tolerance | None = None  # from the file
     title: str = ""
     angle_deg: float | None = None
+    #: the files read: the measurement file, then the mechanism file or the variants' table
+    inputs: tuple[str, ...] = ()
 
 
 TOP_KEYS = {"title", "mechanism", "variant", "table", "angle_deg", "tolerance", "scales",
@@ -290,8 +292,9 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
                             f"used for {what}")
     if problems:
         _raise(source, text, problems)
+    read = [source] + [str(p) for p in (mech if not isinstance(mech, int) else table,) if p]
     return Measurement(source, m, sol, {k: sol_mu(sol, k) for k in MU_KEY.values()},
-                       tuple(items), tol, title, angle)
+                       tuple(items), tol, title, angle, tuple(read))
 
 
 def sol_mu(sol: Solution, key: str) -> float:

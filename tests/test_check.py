@@ -605,3 +605,19 @@ def test_rebuild_places_measured_points(press):
     assert abs(a["n1"]) == pytest.approx(13.26)
     assert abs(a["a3"] - a["n1"]) == pytest.approx(13)
     assert abs(a["a3"]) == pytest.approx(19)
+
+
+def test_json_words_follow_the_language(tmp_path, capsys, press):
+    """--json --lang ru gives the finding's description and correction in Russian."""
+    state = ck.simulate(press, find(press, "coriolis-reversed"), MU_PRESS)
+    meas_path = write_meas(tmp_path / "c.toml", PRESS,
+                           measured(press, state, MU_PRESS, np.random.default_rng(3)), MU_PRESS)
+    words = {}
+    for lang in ("en", "ru"):
+        code, out, _ = run(capsys, "check", meas_path, "--json", "--lang", lang)
+        assert code == 1
+        words[lang] = json.loads(out)["diagnosis"]["best"]
+    assert "Coriolis" in words["en"]["description"]
+    assert "Кориолиса" in words["ru"]["description"]
+    assert words["ru"]["correction"] != words["en"]["correction"]
+    assert words["ru"]["kind"] == words["en"]["kind"] == "coriolis-reversed"

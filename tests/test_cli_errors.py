@@ -136,6 +136,22 @@ def test_output_onto_the_variant_table_is_refused(capsys, monkeypatch, tmp_path)
     assert table.read_bytes() == before
 
 
+def test_check_never_writes_over_the_variant_table_it_read(capsys, tmp_path):
+    """A measurement file of a variant of a course's table: -o onto the table is refused,
+    and the table is left as it was."""
+    table = tmp_path / "t.toml"
+    table.write_text((ROOT / "plans" / "data" / "table2.toml").read_text("utf-8"), "utf-8")
+    meas = tmp_path / "m.toml"
+    meas.write_text('variant = 3\ntable = "t.toml"\n[scales]\nmu_v = 0.01\n'
+                    "[segments]\npb = 100\n", "utf-8")
+    before = table.read_bytes()
+    code, out, err = run(capsys, "check", meas, "-o", table)
+    assert code == 2 and out == ""
+    (line,) = assert_clean_failure(err, "check")
+    assert "-o" in line and "is the input file" in line
+    assert table.read_bytes() == before
+
+
 def test_write_output_itself_refuses_the_inputs(tmp_path, press):
     cli._INPUTS[:] = [str(press)]
     try:
