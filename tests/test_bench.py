@@ -81,7 +81,8 @@ def test_bench_chart_is_svg_with_a_marker_per_row(quick_rows):
         assert r["method"] in text
 
 
-def test_bench_table_names_the_targets(capsys, tmp_path):
+def test_bench_table_names_the_targets(capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)  # where a chart would go by default: --chart "" writes none
     code = main(
         [
             "bench",
