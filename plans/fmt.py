@@ -26,6 +26,3 @@ def num(x: float, digits: int = 4, lang: str = "en") -> str:
         s = "0"
     return s.replace(".", ",") if lang == "ru" else s
 
-
-def deg(rad: float) -> float:
-    return math.degrees(rad)

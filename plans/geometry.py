@@ -12,26 +12,21 @@ import numpy as np
 
 
 def cross(a, b):
-    """z-component of a × b (positive when b is counter-clockwise from a).
+    """z-component of a × b (positive when b is counter-clockwise from a); for arrays and
+    Python numbers alike.
 
-    >>> float(cross(1 + 0j, 1j))
+    >>> cross(1 + 0j, 1j)
     1.0
     """
-    return (np.conj(a) * b).imag
+    return (a.conjugate() * b).imag
 
 
-def dot(a, b):
-    """Scalar product of two plane vectors.
-
-    >>> float(dot(3 + 4j, 1 + 0j))
-    3.0
-    """
-    return (np.conj(a) * b).real
-
-
-def unit(a):
-    """a / |a|."""
-    return a / np.abs(a)
+def meet(w, d1, d2, inv):
+    """Parameters (t1, t2) where p1 + t1·d1 = p2 + t2·d2, given w = p2 − p1 and
+    inv = 1 / cross(d1, d2): a group's velocity and acceleration plans intersect lines of
+    the same two directions, so they share ``inv``."""
+    cw = w.conjugate()
+    return (cw * d2).imag * inv, (cw * d1).imag * inv
 
 
 def intersect(p1, d1, p2, d2):
@@ -40,28 +35,27 @@ def intersect(p1, d1, p2, d2):
     Returns ``(t1, t2, sine)`` where ``sine`` is the sine of the angle from d1 to d2: the
     conditioning figure of the construction (0 means parallel lines, a singular plan).
     The two parameters are what the plan method wants: with d1 = i·(C − B), t1 is ω of
-    link BC itself.
+    link BC itself. Parallel lines give infinite or undefined parameters (with numpy's
+    warning), never an exception.
 
     >>> t1, t2, s = intersect(0j, 1 + 0j, 2 + 1j, 1j)
     >>> float(t1), float(t2), float(s)
     (2.0, -1.0, 1.0)
     """
     den = cross(d1, d2)
-    w = p2 - p1
-    t1 = cross(w, d2) / den
-    t2 = cross(w, d1) / den
-    sine = den / (np.abs(d1) * np.abs(d2))
-    return t1, t2, sine
+    inv = np.divide(1.0, den)  # parallel lines: infinite parameters, as numpy gives them
+    t1, t2 = meet(p2 - p1, d1, d2, inv)
+    return t1, t2, den / (abs(d1) * abs(d2))
 
 
-def heron_height_sq(l1, l2, d):
-    """Square of the height over side d of the triangle with sides l1, l2, d, times (2d)².
+def heron(l1, l2, d):
+    """(2d·h)² for the triangle of sides l1, l2, d (h its height over d).
 
-    Written as the product (l1+l2+d)(−l1+l2+d)(l1−l2+d)(l1+l2−d) so that it stays
-    accurate at tangency (each factor is formed from exact data, not by cancelling
-    two large squares). Negative means the triangle does not close.
+    Written as the product of four factors, each formed from exact data rather than by
+    cancelling two large squares, so that it stays accurate at tangency. Negative: the
+    triangle does not close.
     """
-    return (l1 + l2 + d) * (-l1 + l2 + d) * (l1 - l2 + d) * (l1 + l2 - d)
+    return (d + (l1 + l2)) * (d + (l2 - l1)) * (d - (l2 - l1)) * ((l1 + l2) - d)
 
 
 def circle_circle(c1, r1, c2, r2, sign):
@@ -72,25 +66,7 @@ def circle_circle(c1, r1, c2, r2, sign):
     """
     w = c2 - c1
     d = np.abs(w)
-    disc = heron_height_sq(r1, r2, d)
+    disc = heron(r1, r2, d)
     along = (r1 * r1 - r2 * r2 + d * d) / (2 * d)
     h = np.sqrt(np.maximum(disc, 0.0)) / (2 * d)
     return c1 + (along + 1j * sign * h) * (w / d), disc
-
-
-def circle_line(c, r, p, u, sign):
-    """Intersection of circle (c, r) with the line p + t·u (|u| = 1) on the side ``sign`` along u.
-
-    Returns ``(point, disc)`` where disc = r² − h² (h the distance from c to the line),
-    formed as (r − |h|)(r + |h|) for accuracy near tangency.
-    """
-    w = c - p
-    foot = p + dot(w, u) * u
-    h = np.abs(cross(u, w))
-    disc = (r - h) * (r + h)
-    return foot + sign * np.sqrt(np.maximum(disc, 0.0)) * u, disc
-
-
-def angle_deg(z):
-    """Direction of a plane vector in degrees, counter-clockwise from +x, in [0, 360)."""
-    return np.degrees(np.angle(z)) % 360.0

@@ -28,6 +28,8 @@ import math
 
 import numpy as np
 
+from .geometry import cross, heron, meet
+
 
 class _Array:
     scalar = False
@@ -48,24 +50,6 @@ class _Scalar:
 
 ARRAY = _Array()
 SCALAR = _Scalar()
-
-
-def cross(a, b):
-    """z-component of a × b for plane vectors written as complex numbers."""
-    return (a.conjugate() * b).imag
-
-
-def meet(w, d1, d2, inv):
-    """Parameters (t1, t2) where p1 + t1·d1 = p2 + t2·d2, given w = p2 − p1 and
-    inv = 1 / cross(d1, d2) (shared by a group's velocity and acceleration plans)."""
-    cw = w.conjugate()
-    return (cw * d2).imag * inv, (cw * d1).imag * inv
-
-
-def heron(l1, l2, d):
-    """(2d·h)² for the triangle of sides l1, l2, d, as a product of four factors that
-    stays accurate at tangency. Negative: the triangle does not close."""
-    return (d + (l1 + l2)) * (d + (l2 - l1)) * (d - (l2 - l1)) * ((l1 + l2) - d)
 
 
 def rrr(xp, sigma, l2, l3, P, vP, aP, Q, vQ, aQ):

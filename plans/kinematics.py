@@ -135,11 +135,9 @@ class Solver:
                 self._fill(a, states, pos, vel, acc, owner)
             for name, (link, base) in extra.items():
                 X = pos[base]
-                st = states[link]
-                r = X - st.origin
                 pos[name] = X
-                vel[name] = st.v + 1j * st.omega * r
-                acc[name] = st.a + (1j * st.epsilon - st.omega * st.omega) * r
+                vel[name] = states[link].vel(X)
+                acc[name] = states[link].acc(X)
                 owner[name] = link
                 coincident[name] = base
         return Motion(phi, states, pos, vel, acc, owner, tuple(solutions), valid, coincident)

@@ -24,13 +24,7 @@ from .structure import Structure
 
 def plan_name(point: str) -> str:
     """Mechanism point → plan point: A3 → a3, S3 → s3."""
-    try:
-        return _PLAN_NAMES[point]
-    except KeyError:
-        return _PLAN_NAMES.setdefault(point, point.lower())
-
-
-_PLAN_NAMES: dict[str, str] = {}
+    return point.lower()
 
 
 class PlanLine(NamedTuple):
