@@ -183,7 +183,7 @@ def _plan_section(sol: Solution, plan, lang: str, number: int) -> list[str]:
 
     acc = plan.kind == "acceleration"
     mech, d = sol.mechanism, sol.mechanism.driver
-    m = sol.motion
+    m = sol.scalar  # the record the plans were built from, on Python numbers
     unit = u["m/s²"] if acc else u["m/s"]
     mu = plan.mu
     sym = "a" if acc else "V"
@@ -290,7 +290,7 @@ def _plan_section(sol: Solution, plan, lang: str, number: int) -> list[str]:
             if link is None:
                 continue
             l = abs(sol.positions[A] - sol.positions[B])
-            mag = abs(r.param[0])
+            mag = abs(r.param)
             val = (sol.epsilon if acc else sol.omega)[link]
             sense = t["sense"][int(math.copysign(1, val)) if val else 0]
             key = "eps" if acc else "omega"
