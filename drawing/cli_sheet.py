@@ -101,15 +101,33 @@ def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
     first = solve_position(mech, solver=solver)
     extent = cycle_extent(solver)
     chosen = _parse_plans(None if plans is None else ",".join(map(str, plans)), len(cycle.positions))
+    fixed = _views_of_any_size(mech, solver, cycle, lang)
     # the largest views that fit: scales the file leaves free are chosen for the sheet
     error = None
     for size in SIZES:
         mu = sheet_scales(mech, first, extent, size)
         try:
-            return _compose(mech, sheet, solver, cycle, chosen, mu, lang, title)
+            return _compose(mech, sheet, solver, cycle, chosen, mu, lang, title, fixed)
         except LayoutError as exc:
             error = exc
     raise error
+
+
+def _views_of_any_size(mech, solver, cycle, lang):
+    """What the sheet draws whatever the scale factors: the trajectories' motion, and the
+    diagrams or the note that says why there are none. Worked out once, not per size."""
+    from drawing import views as V
+
+    phis = trajectory_angles(cycle)
+    motion_all = solver.solve(phis)
+    diag = V.diagrams_view(mech, cycle, lang, solver=solver)
+    if diag is not None:
+        return motion_all, [diag], []
+    from plans.report import no_full_turn
+
+    why = (no_full_turn(cycle, lang) if not cycle.full_turn else
+           "no stroke of the output" if lang == "en" else "нет хода выходного звена")
+    return motion_all, [], [V.WORDS[lang]["no_diagrams"] + why[0].lower() + why[1:]]
 
 
 #: view sizes tried, as multiples of the engine's default drawing sizes (largest first)
@@ -119,21 +137,19 @@ SIZES = (3.0, 2.5, 2.0, 1.6, 1.25, 1.0, 0.8, 0.6, 0.5)
 def sheet_scales(mech, sol, extent: float, size: float) -> dict[str, float]:
     """μl, μv, μa from the standard series for views ``size`` times the default size;
     the factors the mechanism file fixes are kept."""
-    from plans.plan import plan_name
-    from plans.scales import choose_mu, choose_mu_l
+    from plans.plan import plan_mu, plan_name
+    from plans.scales import choose_mu_l
 
     mu = {}
     if "mu_l" not in mech.scales:
         mu["mu_l"] = choose_mu_l(extent, max_mm=150 * size)
     for key, plan in (("mu_v", sol.velocity), ("mu_a", sol.acceleration)):
         if key not in mech.scales:
-            tip = abs(plan.value(plan_name(mech.driver.tip)))
-            largest = max(abs(p.value) for p in plan.points.values())
-            mu[key] = choose_mu(tip, largest, crank_mm=80 * size, max_mm=150 * size)
+            mu[key] = plan_mu(plan.points, plan.value(plan_name(mech.driver.tip)), size)
     return mu
 
 
-def _compose(mech, sheet, solver, cycle, chosen, mu, lang, title):
+def _compose(mech, sheet, solver, cycle, chosen, mu, lang, title, fixed):
 
     from drawing import views as V
     from drawing.layout import place_views
@@ -151,23 +167,12 @@ def _compose(mech, sheet, solver, cycle, chosen, mu, lang, title):
     else:
         for k in chosen:
             sols.append((str(k), f"{k}", solve_position(mech, cycle.positions[k], solver=solver, mu=mu)))
-    phis = trajectory_angles(cycle)
-    motion_all = solver.solve(phis)
-
-    views = [V.positions_view(given, cycle, motion_all, phis, lang)]
+    motion_all, diagrams, notes = fixed
+    views = [V.positions_view(given, cycle, motion_all, lang)]
     for tag, label, sol in sols:
         views.append(V.plan_view(sol, "velocity", tag, lang, label))
         views.append(V.plan_view(sol, "acceleration", tag, lang, label))
-    diag = V.diagrams_view(mech, cycle, lang)
-    notes: list[str] = []
-    if diag is not None:
-        views.append(diag)
-    else:
-        from plans.report import no_full_turn
-
-        why = (no_full_turn(cycle, lang) if not cycle.full_turn else
-               "no stroke of the output" if lang == "en" else "нет хода выходного звена")
-        notes.append(V.WORDS[lang]["no_diagrams"] + why[0].lower() + why[1:])
+    views += diagrams
     tabsols = [(label if tag != "g" else "φ", sol) for tag, label, sol in sols]
     tabsols = [(t.replace("φ_1 = ", ""), s) for t, s in tabsols]
     views.append(V.segments_table_view(tabsols, lang))

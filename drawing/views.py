@@ -15,6 +15,7 @@ label of one view can meet another view.
 from __future__ import annotations
 
 import cmath
+import itertools
 import math
 import re
 from dataclasses import dataclass, field
@@ -359,15 +360,12 @@ def _support(xy: tuple[float, float]) -> list[Item]:
     ]
 
 
-def positions_view(sol, cycle, motion_all, phis_all, lang: str = "ru") -> View:
+def positions_view(sol, cycle, motion_all, lang: str = "ru") -> View:
     """Plan of positions at μl: the given position heavy, the cycle's positions
     and the two extreme ones thin, trajectories, pivots, sliders, stroke H."""
-    from plans.kinematics import Solver
-
-    mech, mu_l = sol.mechanism, sol.mu_l
+    mech, mu_l, solver = sol.mechanism, sol.mu_l, sol.solver
     items: list[Item] = []
     labels: list[LabelRequest] = []
-    solver = Solver(mech)
 
     def positions_at(phis):
         m = solver.solve(np.asarray(phis, dtype=float))
@@ -417,7 +415,8 @@ def positions_view(sol, cycle, motion_all, phis_all, lang: str = "ru") -> View:
         items += _link_segments(mech, pos, mu_l, LineType.THIN)
         labels.append(LabelRequest(_sheet(pos[tip], mu_l), str(k), 2.5, "ne", markup=False,
                                    optional=True))
-    for pos in positions_at(cycle.extremes):
+    extremes = positions_at(cycle.extremes)
+    for pos in extremes:
         if pos is None:
             continue
         items += _link_segments(mech, pos, mu_l, LineType.DASH_DOUBLE_DOT_THIN)
@@ -442,25 +441,24 @@ def positions_view(sol, cycle, motion_all, phis_all, lang: str = "ru") -> View:
     # stroke H of a linear output
     out = cycle.output
     w = WORDS[lang]
-    if out is not None and cycle.stroke and out.kind == "linear" and len(cycle.extremes) == 2:
-        ext = positions_at(cycle.extremes)
-        if all(e is not None for e in ext):
-            p1, p2 = (_sheet(e[out.point], mu_l) for e in ext)
-            x0, y0, x1, y1 = _bbox(items)
-            dy = y1 + 8.0
-            items += [Segment(p1, (p1[0], dy + 2), LineType.THIN), Segment(p2, (p2[0], dy + 2), LineType.THIN)]
-            items += [Arrow((p1[0] + (p2[0] - p1[0]) / 2, dy), (p1[0], dy), LineType.THIN, 3.0, 1.0),
-                      Arrow((p1[0] + (p2[0] - p1[0]) / 2, dy), (p2[0], dy), LineType.THIN, 3.0, 1.0)]
-            items.append(Text(((p1[0] + p2[0]) / 2, dy - 1.0), f"H = {num(cycle.stroke, 4, lang)} {w['m']}",
-                              size=3.5, anchor="middle"))
+    ends = len(extremes) == 2 and all(e is not None for e in extremes)
+    if out is not None and cycle.stroke and out.kind == "linear" and ends:
+        p1, p2 = (_sheet(e[out.point], mu_l) for e in extremes)
+        x0, y0, x1, y1 = _bbox(items)
+        dy = y1 + 8.0
+        items += [Segment(p1, (p1[0], dy + 2), LineType.THIN), Segment(p2, (p2[0], dy + 2), LineType.THIN)]
+        items += [Arrow((p1[0] + (p2[0] - p1[0]) / 2, dy), (p1[0], dy), LineType.THIN, 3.0, 1.0),
+                  Arrow((p1[0] + (p2[0] - p1[0]) / 2, dy), (p2[0], dy), LineType.THIN, 3.0, 1.0)]
+        items.append(Text(((p1[0] + p2[0]) / 2, dy - 1.0), f"H = {num(cycle.stroke, 4, lang)} {w['m']}",
+                          size=3.5, anchor="middle"))
     # swing ψ of a rocker: an arc between its two extreme positions, about its pivot
-    if out is not None and cycle.stroke and out.kind == "angular" and len(cycle.extremes) == 2:
-        ext = positions_at(cycle.extremes)
+    if out is not None and cycle.stroke and out.kind == "angular" and ends:
         arm = _rocker_arm(mech, out)
-        if arm is not None and all(e is not None for e in ext):
+        if arm is not None:
             pivot, tip = arm
-            items += _swing_arc(pos[pivot], ext[0][tip], ext[1][tip], mu_l)
-            mid = _swing_point(pos[pivot], ext[0][tip], ext[1][tip], 0.5)
+            a, b = extremes[0][tip], extremes[1][tip]
+            items += _swing_arc(pos[pivot], a, b, mu_l)
+            mid = _swing_point(pos[pivot], a, b, 0.5)
             deg = math.degrees(cycle.stroke)
             labels.append(LabelRequest(_sheet(mid, mu_l), f"{w['swing']} = {num(deg, 4, lang)}°",
                                        3.5, "n", markup=False))
@@ -498,7 +496,7 @@ def _swing_point(pivot: complex, a: complex, b: complex, t: float) -> complex:
 def _swing_arc(pivot: complex, a: complex, b: complex, mu_l: float) -> list[Item]:
     """The dimension arc of ψ with an arrowhead at each end."""
     pts = [_sheet(_swing_point(pivot, a, b, k / 48), mu_l) for k in range(49)]
-    length = sum(math.dist(p, q) for p, q in zip(pts, pts[1:]))  # mm on the sheet
+    length = sum(math.dist(p, q) for p, q in itertools.pairwise(pts))  # mm on the sheet
     out: list[Item] = [Polyline(pts, LineType.THIN)]
     if length > 8.0:  # room for the two 3 mm heads
         t = 3.0 / length
@@ -511,22 +509,22 @@ def _swing_arc(pivot: complex, a: complex, b: complex, mu_l: float) -> list[Item
 # ----------------------------------------------------------------- diagrams
 
 
-def diagrams_view(mech, cycle, lang: str = "ru", width: float = 180.0, height: float = 40.0) -> View | None:
+def diagrams_view(mech, cycle, lang: str = "ru", width: float = 180.0, height: float = 40.0,
+                  solver=None) -> View | None:
     """s(φ), v(φ), a(φ) of the output over one turn from the first position."""
     from plans.kinematics import Solver
 
+    solver = solver or Solver(mech)
     out = cycle.output
     if out is None or not cycle.stroke or not cycle.full_turn or not cycle.positions:
         return None
     sense = 1.0 if mech.driver.omega >= 0 else -1.0
     phi0 = cycle.positions[0]
     phis = phi0 + sense * np.linspace(0.0, 2 * math.pi, 361)
-    m = Solver(mech).solve(phis)
+    m = solver.solve(phis)
     if not np.asarray(m.valid).all():
         return None
     s = np.asarray(out.value(m, mech), dtype=float)
-    if np.iscomplexobj(s):
-        s = np.abs(s)
     s = s - s[0]
     flip = -1.0 if abs(s.min()) > abs(s.max()) else 1.0  # s from the starting extreme, ≥ 0
     s = flip * s
@@ -566,14 +564,10 @@ def diagrams_view(mech, cycle, lang: str = "ru", width: float = 180.0, height: f
 
 
 def _nice(x: float) -> float:
-    """The next value ≥ x of the series 1, 2, 2.5, 4, 5 × 10^k."""
-    if x <= 0:
-        return 1.0
-    e = math.floor(math.log10(x))
-    for m in (1, 2, 2.5, 4, 5, 10):
-        if m * 10**e >= x * (1 - 1e-12):
-            return m * 10**e
-    return 10 ** (e + 1)
+    """The next value ≥ x of the series 1, 2, 2.5, 4, 5 × 10^k (the plans' series)."""
+    from plans.scales import choose_mu
+
+    return choose_mu(x, 0.0, crank_mm=1.0) if x > 0 else 1.0
 
 
 # ----------------------------------------------------------------- tables

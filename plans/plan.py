@@ -433,14 +433,16 @@ def _follow(recipe: _Recipe, m: Motion, mu) -> Plan:
         points[pn] = PlanPoint(pn, value, src)
         if abs(value) > 0:
             vectors.append(vec)
-    mu = mu or _mu(points, store[recipe.tip])
+    mu = mu or plan_mu(points, store[recipe.tip])
     return Plan(recipe.kind, recipe.pole, points, tuple(vectors), mu, "m/s²" if acc else "m/s",
                 _plan_segments(recipe, points, mu))
 
 
-def _mu(points, tip_val) -> float:
+def plan_mu(points: dict[str, PlanPoint], tip: complex, size: float = 1.0) -> float:
+    """The plan's scale factor from the standard series: the crank's vector at most
+    80 mm and every vector at most 150 mm, times ``size`` (a sheet may draw larger)."""
     largest = max(abs(p.value) for p in points.values())
-    return choose_mu(abs(tip_val), largest)
+    return choose_mu(abs(tip), largest, crank_mm=80.0 * size, max_mm=150.0 * size)
 
 
 def _term_formula(t) -> str:
