@@ -25,10 +25,15 @@ already the sine of the angle between them.
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 
 from .geometry import cross, heron, meet
+
+#: below this |sin| of the angle between the two lines a plan is singular (and two guides
+#: are parallel: a PRP or RPP group then has no unique position)
+SINGULAR_SINE = 1e-10
 
 
 class _Array:
@@ -50,6 +55,101 @@ class _Scalar:
 
 ARRAY = _Array()
 SCALAR = _Scalar()
+
+
+class RRR(NamedTuple):
+    C: object  # the new hinge, its velocity and acceleration
+    vC: object
+    aC: object
+    w2: object  # ω, ε of the link P–C and of the link Q–C
+    e2: object
+    w3: object
+    e3: object
+    d1: object  # the two lines' directions, ⊥ CP and ⊥ CQ
+    d2: object
+    t1: object  # velocity parameters along d1, d2
+    t2: object
+    s1: object  # acceleration parameters along d1, d2 (the tangential components)
+    s2: object
+    nP: object  # normal components a^n_CP, a^n_CQ
+    nQ: object
+    sine: object  # between the two lines
+    closes: object  # the links reach: |PQ| within [|l2 − l3|, l2 + l3]
+    d: object  # |PQ|
+
+
+class RRP(NamedTuple):
+    C: object
+    vC: object
+    aC: object
+    w2: object
+    e2: object
+    d1: object  # ⊥ CP; the other line is the guide
+    t1: object
+    t2: object
+    s1: object
+    s2: object
+    nP: object
+    vCk: object  # velocity and acceleration of the guide's point under C
+    aCk: object
+    cor: object  # a^k of the slide (None on a fixed guide)
+    sine: object
+    closes: object  # the distance h of P from the guide is at most l2
+    h: object
+
+
+class RPR(NamedTuple):
+    rot: object  # the rocker's rotor and the guide's world direction
+    u: object
+    vP3: object  # the rocker's point under the block
+    aP3: object
+    w3: object
+    e3: object
+    d2: object  # ⊥ QP3; the other line is the guide
+    t1: object
+    t2: object
+    s1: object
+    s2: object
+    cor: object
+    nQ: object
+    sine: object
+    closes: object  # the block is farther from the pivot than the guide's offset
+    dist: object
+
+
+class PRP(NamedTuple):
+    C: object
+    vC: object
+    aC: object
+    v1: object  # the guides' points under C
+    v2: object
+    a1: object
+    a2: object
+    c1: object  # a^k of each slide (None on a fixed guide)
+    c2: object
+    t1: object
+    t2: object
+    s1: object
+    s2: object
+    sine: object
+    closes: object  # the guides are not parallel
+
+
+class RPP(NamedTuple):
+    oB: object  # the yoke's origin and the inner guide's world direction
+    us: object
+    vP3: object
+    aP3: object
+    vk: object  # the outer guide's point under the block
+    ak: object
+    c1: object
+    c2: object
+    t1: object
+    t2: object
+    s1: object
+    s2: object
+    sine: object
+    closes: object  # the two guides are not parallel
 
 
 def rrr(xp, sigma, l2, l3, P, vP, aP, Q, vQ, aQ):
@@ -76,8 +176,8 @@ def rrr(xp, sigma, l2, l3, P, vP, aP, Q, vQ, aQ):
     k1 = aP + nP
     s1, s2 = meet((aQ + nQ) - k1, d1, d2, inv)
     aC = k1 + s1 * d1
-    return (C, vC, aC, w2, s1 * (1 / l2), w3, s2 * (1 / l3),
-            (d1, d2, t1, t2, s1, s2, nP, nQ, sine, disc, d))
+    return RRR(C, vC, aC, w2, s1 * (1 / l2), w3, s2 * (1 / l3), d1, d2, t1, t2, s1, s2,
+               nP, nQ, sine, disc > 0, d)
 
 
 def _guide_motion(C, G, vG, aG, wk, ek):
@@ -114,7 +214,8 @@ def rrp(xp, sigma, l2, P, vP, aP, G, u, vG, aG, wk, ek):
     k1 = aP + nP
     s1, s2 = meet(known2 - k1, d1, u, inv)
     aC = k1 + s1 * d1
-    return C, vC, aC, w2, s1 * (1 / l2), (d1, t1, t2, s1, s2, nP, vCk, aCk, cor, sine, disc, h)
+    return RRP(C, vC, aC, w2, s1 * (1 / l2), d1, t1, t2, s1, s2, nP, vCk, aCk, cor, sine,
+               disc > 0, h)
 
 
 def rpr(xp, sigma, e, gd, P, vP, aP, Q, vQ, aQ):
@@ -144,7 +245,8 @@ def rpr(xp, sigma, e, gd, P, vP, aP, Q, vQ, aQ):
     k1 = aP + cor
     s1, s2 = meet((aQ + nQ) - k1, u, d2, inv)
     aP3 = k1 + s1 * u
-    return rot, u, vP3, aP3, w3, s2 / safe, (d2, t1, t2, s1, s2, cor, nQ, sine, disc, dist)
+    return RPR(rot, u, vP3, aP3, w3, s2 / safe, d2, t1, t2, s1, s2, cor, nQ, sine,
+               (disc > 0) & (dist > 0), dist)
 
 
 def prp(xp, G1, u1, vG1, aG1, w1, e1, G2, u2, vG2, aG2, w2, e2):
@@ -159,7 +261,7 @@ def prp(xp, G1, u1, vG1, aG1, w1, e1, G2, u2, vG2, aG2, w2, e2):
     v1, a1 = _guide_motion(C, G1, vG1, aG1, w1, e1)
     v2, a2 = _guide_motion(C, G2, vG2, aG2, w2, e2)
     vC, aC, (c1, c2, t1, t2, s1, s2) = _two_slides(v1, a1, u1, w1, v2, a2, u2, w2, inv)
-    return C, vC, aC, (v1, v2, a1, a2, c1, c2, t1, t2, s1, s2, sine)
+    return PRP(C, vC, aC, v1, v2, a1, a2, c1, c2, t1, t2, s1, s2, sine, abs(sine) > SINGULAR_SINE)
 
 
 def rpp(xp, P, vP, aP, G, u, vG, aG, wk, ek, locD, g0, gd):
@@ -168,7 +270,13 @@ def rpp(xp, P, vP, aP, G, u, vG, aG, wk, ek, locD, g0, gd):
     point ``locD``. Returns the yoke's origin too.
 
     V_P3 = V_P + V_P3P (∥ inner guide) = V_Pk + V_P3Pk (∥ outer guide).
+
+    The inner guide parallel to the outer one (sine −gd.imag = 0) leaves the yoke's place
+    open at every angle: ``closes`` is then False, computed with a stand-in direction.
     """
+    closes = abs(gd.imag) > SINGULAR_SINE
+    if not closes:
+        gd = 1j
     z = (P - G) * u.conjugate() + (locD - g0)
     t = z.imag / gd.imag
     sl = z.real - t * gd.real
@@ -179,7 +287,7 @@ def rpp(xp, P, vP, aP, G, u, vG, aG, wk, ek, locD, g0, gd):
     vk, ak = _guide_motion(P, G, vG, aG, wk, ek)
     # the block slides in the yoke, which turns with link k: both slides see ω_k
     vP3, aP3, (c1, c2, t1, t2, s1, s2) = _two_slides(vP, aP, us, wk, vk, ak, u, wk, inv)
-    return oB, us, vP3, aP3, (vk, ak, c1, c2, t1, t2, s1, s2, sine)
+    return RPP(oB, us, vP3, aP3, vk, ak, c1, c2, t1, t2, s1, s2, sine, closes)
 
 
 def _two_slides(v1, a1, u1, w1, v2, a2, u2, w2, inv):

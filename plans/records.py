@@ -14,10 +14,9 @@ from typing import NamedTuple
 import numpy as np
 
 from .errors import AssemblyError, PlansError, SingularPlanError
+from .kernels import SINGULAR_SINE  # noqa: F401  (also read from here by the reports)
 from .structure import Group
 
-#: below this |sin| of the angle between the two lines a plan is singular
-SINGULAR_SINE = 1e-10
 #: below this |sin| (about 2°) a position is reported as near-singular
 WARN_SINE = 0.035
 

@@ -23,7 +23,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import kernels
-from .kinematics import SINGULAR_SINE, Solver, coincident_name
+from .groups import setup
+from .kinematics import Solver
 
 #: angles per block: 8192 complex numbers are 128 KiB an array, so the few arrays a step
 #: works on at a time stay in a core's 2 MiB second-level cache, while numpy's cost per
@@ -157,6 +158,11 @@ def _plus(a, b):
     return b if isinstance(a, complex) and a == 0 else a + b
 
 
+def _rigid(vX, aX, r, w, e):
+    """Velocity and acceleration of the point X + r of a link moving with X at ω, ε."""
+    return _plus(vX, r * (1j * w)), _plus(aX, r * (1j * e - w * w))
+
+
 class _Block:
     """One block of angles, solved group by group with the shared kernels."""
 
@@ -222,13 +228,12 @@ class _Block:
         """World position, velocity and acceleration of the point ``local`` of link lid."""
         X, vX, aX, rot, w, e, xl = self.links[lid]
         r = rot * (local - xl)
-        return X + r, _plus(vX, r * (1j * w)), _plus(aX, r * (1j * e - w * w))
+        return (X + r, *_rigid(vX, aX, r, w, e))
 
     def _motion_at(self, lid: int, Y):
         """Velocity and acceleration of the point of link lid that is at Y."""
         X, vX, aX, rot, w, e, xl = self.links[lid]
-        r = Y - X
-        return _plus(vX, r * (1j * w)), _plus(aX, r * (1j * e - w * w))
+        return _rigid(vX, aX, Y - X, w, e)
 
     def _guide(self, guide):
         if guide.link == 0:
@@ -252,79 +257,70 @@ class _Block:
 
     # the five kinds ----------------------------------------------------------------------
     def _rrr(self, xp, g, sigma):
-        sv, P, C, Q = self.sv, g.P, g.C, g.Q
-        pl, cl = sv.local(g.a, P), sv.local(g.a, C)
-        ql, cl3 = sv.local(g.b, Q), sv.local(g.b, C)
-        l2, l3 = abs(cl - pl), abs(cl3 - ql)
+        P, C, Q = g.P, g.C, g.Q
+        w = setup(self.sv, g)
         Pw, Qw = self.pos[P], self.pos[Q]
-        Cw, vC, aC, w2, e2, w3, e3, rec = kernels.rrr(
-            xp, sigma, l2, l3, Pw, self.vel[P], self.acc[P], Qw, self.vel[Q], self.acc[Q])
-        self.pos[C], self.vel[C], self.acc[C] = Cw, vC, aC
-        self.links[g.a] = (Cw, vC, aC, (Cw - Pw) * (1 / (cl - pl)), w2, e2, cl)
-        self.links[g.b] = (Cw, vC, aC, (Cw - Qw) * (1 / (cl3 - ql)), w3, e3, cl3)
-        self._close(g.label, rec[8], rec[9] > 0)
+        r = kernels.rrr(xp, sigma, w["l2"], w["l3"], Pw, self.vel[P], self.acc[P],
+                        Qw, self.vel[Q], self.acc[Q])
+        self.pos[C], self.vel[C], self.acc[C] = r.C, r.vC, r.aC
+        self.links[g.a] = (r.C, r.vC, r.aC, (r.C - Pw) * (1 / (w["cl"] - w["pl"])), r.w2, r.e2,
+                           w["cl"])
+        self.links[g.b] = (r.C, r.vC, r.aC, (r.C - Qw) * (1 / (w["cl3"] - w["ql"])), r.w3, r.e3,
+                           w["cl3"])
+        self._close(g.label, r.sine, r.closes)
 
     def _rrp(self, xp, g, sigma):
-        sv, P, C, s = self.sv, g.P, g.C, g.s1
-        pl, cl = sv.local(g.a, P), sv.local(g.a, C)
-        l2 = abs(cl - pl)
+        P, C, s = g.P, g.C, g.s1
+        w = setup(self.sv, g)
         Pw = self.pos[P]
         G, u, vG, aG, wk, ek = self._guide(s.guide)
-        Cw, vC, aC, w2, e2, rec = kernels.rrp(
-            xp, sigma, l2, Pw, self.vel[P], self.acc[P], G, u, vG, aG, wk, ek)
-        self.pos[C], self.vel[C], self.acc[C] = Cw, vC, aC
+        r = kernels.rrp(xp, sigma, w["l2"], Pw, self.vel[P], self.acc[P], G, u, vG, aG, wk, ek)
+        self.pos[C], self.vel[C], self.acc[C] = r.C, r.vC, r.aC
         k = self.links[s.guide.link]
-        self.links[g.a] = (Cw, vC, aC, (Cw - Pw) * (1 / (cl - pl)), w2, e2, cl)
-        self.links[g.b] = (Cw, vC, aC, u, k[4], k[5], sv.local(g.b, C))
+        self.links[g.a] = (r.C, r.vC, r.aC, (r.C - Pw) * (1 / (w["cl"] - w["pl"])), r.w2, r.e2,
+                           w["cl"])
+        self.links[g.b] = (r.C, r.vC, r.aC, u, k[4], k[5], w["cb"])
         if s.guide.link:
-            self._coincident(coincident_name(C, s.guide.link), s.guide.link, C, rec[6], rec[7])
-        self._close(g.label, rec[9], rec[10] > 0)
+            self._coincident(w["base"], s.guide.link, C, r.vCk, r.aCk)
+        self._close(g.label, r.sine, r.closes)
 
     def _rpr(self, xp, g, sigma):
-        sv, P, Q, s = self.sv, g.P, g.Q, g.s1
-        q = sv.local(g.b, Q)
-        gd = s.guide.direction
-        e = (gd.conjugate() * (s.guide.point - q)).imag
+        P, Q = g.P, g.Q
+        w = setup(self.sv, g)
         Pw, Qw = self.pos[P], self.pos[Q]
         vP, aP = self.vel[P], self.acc[P]
-        rot, u, vP3, aP3, w3, e3, rec = kernels.rpr(
-            xp, sigma, e, gd, Pw, vP, aP, Qw, self.vel[Q], self.acc[Q])
-        self.links[g.b] = (Qw, self.vel[Q], self.acc[Q], rot, w3, e3, q)
-        self.links[g.a] = (Pw, vP, aP, u, w3, e3, sv.local(g.a, P))
-        self._coincident(coincident_name(P, g.b), g.b, P, vP3, aP3)
-        self._close(g.label, rec[7], (rec[8] > 0) & (rec[9] > 0))
+        r = kernels.rpr(xp, sigma, w["e"], w["gd"], Pw, vP, aP, Qw, self.vel[Q], self.acc[Q])
+        self.links[g.b] = (Qw, self.vel[Q], self.acc[Q], r.rot, r.w3, r.e3, w["q"])
+        self.links[g.a] = (Pw, vP, aP, r.u, r.w3, r.e3, w["pa"])
+        self._coincident(w["name"], g.b, P, r.vP3, r.aP3)
+        self._close(g.label, r.sine, r.closes)
 
     def _prp(self, xp, g, sigma):
-        sv, C, sa, sb = self.sv, g.C, g.s1, g.s2
+        C, sa, sb = g.C, g.s1, g.s2
+        w = setup(self.sv, g)
         G1, u1, vG1, aG1, w1, e1 = self._guide(sa.guide)
         G2, u2, vG2, aG2, w2, e2 = self._guide(sb.guide)
-        Cw, vC, aC, rec = kernels.prp(xp, G1, u1, vG1, aG1, w1, e1, G2, u2, vG2, aG2, w2, e2)
-        self.pos[C], self.vel[C], self.acc[C] = Cw, vC, aC
-        for lid, u, s in ((g.a, u1, sa), (g.b, u2, sb)):
+        r = kernels.prp(xp, G1, u1, vG1, aG1, w1, e1, G2, u2, vG2, aG2, w2, e2)
+        self.pos[C], self.vel[C], self.acc[C] = r.C, r.vC, r.aC
+        for lid, u, s, own in ((g.a, u1, sa, w["ca"]), (g.b, u2, sb, w["cb"])):
             k = self.links[s.guide.link]
-            self.links[lid] = (Cw, vC, aC, u, k[4], k[5], sv.local(lid, C))
-        for s, v, a in ((sa, rec[0], rec[2]), (sb, rec[1], rec[3])):
-            if s.guide.link:
-                self._coincident(coincident_name(C, s.guide.link), s.guide.link, C, v, a)
-        sine = rec[10]
-        self._close(g.label, sine, abs(sine) > SINGULAR_SINE)
+            self.links[lid] = (r.C, r.vC, r.aC, u, k[4], k[5], own)
+        for s, base, v, a in ((sa, w["b1"], r.v1, r.a1), (sb, w["b2"], r.v2, r.a2)):
+            if base:
+                self._coincident(base, s.guide.link, C, v, a)
+        self._close(g.label, r.sine, r.closes)
 
     def _rpp(self, xp, g, sigma):
-        sv, P, s_in, s_out = self.sv, g.P, g.s1, g.s2
+        P, s_out = g.P, g.s2
+        w = setup(self.sv, g)
         Gk, uk, vG, aG, wk, ek = self._guide(s_out.guide)
-        gd = s_in.guide.direction
-        good = abs(gd.imag) > SINGULAR_SINE
         Pw, vP, aP = self.pos[P], self.vel[P], self.acc[P]
-        oB, us, vP3, aP3, rec = kernels.rpp(
-            xp, Pw, vP, aP, Gk, uk, vG, aG, wk, ek, sv.local(g.b, s_out.point),
-            s_in.guide.point, gd if good else 1j)
+        r = kernels.rpp(xp, Pw, vP, aP, Gk, uk, vG, aG, wk, ek, w["locD"], w["g0"], w["gd"])
         k = self.links[s_out.guide.link]
-        w, e = k[4], k[5]
-        r = oB - Pw
-        self.links[g.b] = (oB, vP3 + r * (1j * w), aP3 + r * (1j * e - w * w), uk, w, e, 0j)
-        self.links[g.a] = (Pw, vP, aP, us, w, e, sv.local(g.a, P))
-        self._coincident(coincident_name(P, g.b), g.b, P, vP3, aP3)
-        if s_out.guide.link:
-            self._coincident(coincident_name(P, s_out.guide.link), s_out.guide.link, P,
-                             rec[0], rec[1])
-        self._close(g.label, rec[8], good)
+        vB, aB = _rigid(r.vP3, r.aP3, r.oB - Pw, k[4], k[5])  # the yoke at its origin
+        self.links[g.b] = (r.oB, vB, aB, uk, k[4], k[5], 0j)
+        self.links[g.a] = (Pw, vP, aP, r.us, k[4], k[5], w["pa"])
+        self._coincident(w["name"], g.b, P, r.vP3, r.aP3)
+        if w["bk"]:
+            self._coincident(w["bk"], s_out.guide.link, P, r.vk, r.ak)
+        self._close(g.label, r.sine, r.closes)
