@@ -14,7 +14,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from .errors import InputError, PlansError
+from .errors import PlansError
+from .fileformat import Problems, check_keys, key_text, read_number, read_toml
 from .mechanism import Mechanism
 from .plan import Plan, Solution, plan_name, solve_position
 
@@ -124,38 +125,18 @@ TOP_KEYS = {"title", "mechanism", "variant", "table", "angle_deg", "tolerance", 
 
 def load(path: str | Path) -> Measurement:
     """Read and validate a measurement file; every problem is reported, located."""
-    from .fileformat import read_toml
-
     data, text = read_toml(path, "a measurement file is a few KB")
     path = Path(path)
     return from_dict(data, str(path), path.parent, text=text)
 
 
-def _raise(source: str, text: str | None, problems: list[str]):
-    """Every problem at once, each "key: what" located to its line when the text is known."""
-    from .fileformat import Problems
-
-    pr = Problems(source, text)
-    for p in problems:
-        where, _, what = p.partition(": ")
-        pr.add(where, what)
-    raise InputError(source, pr.lines())
-
-
-def _num(value: Any, where: str, problems: list[str], *, positive=False,
-         nonneg=False) -> float | None:
-    if isinstance(value, bool) or not isinstance(value, int | float):
-        problems.append(f"{where}: must be a number, got {type(value).__name__} {value!r:.40}")
-        return None
-    x = float(value)
-    if not math.isfinite(x) or abs(x) > 1e9:
-        problems.append(f"{where}: {value!r:.40} is out of range")
-        return None
-    if positive and x <= 0:
-        problems.append(f"{where}: must be positive, got {value}")
-        return None
-    if nonneg and x < 0:
-        problems.append(f"{where}: a length on the drawing cannot be negative, got {value}")
+def _num(value: Any, where: str, problems: Problems, *, positive=False, nonneg=False,
+         unit: str = "mm") -> float | None:
+    """A number of the file (``fileformat.read_number``); a length on the drawing is not
+    negative."""
+    x = read_number(value, where, problems, positive=positive, unit=unit)
+    if x is not None and nonneg and x < 0:
+        problems.add(where, f"a length on the drawing cannot be negative, got {x:g}")
         return None
     return x
 
@@ -166,95 +147,98 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
     from . import mechanism as mechmod
     from . import variants
 
-    problems: list[str] = []
-    for key in data:
-        if key not in TOP_KEYS:
-            problems.append(f"{key}: unknown key (known: {', '.join(sorted(TOP_KEYS))})")
+    problems = Problems(source, text)
+    check_keys(data, TOP_KEYS, "", problems)
     title = data.get("title", "")
     if not isinstance(title, str) or len(title) > 300:
-        problems.append("title: must be a text of at most 300 characters")
+        problems.add("title", "must be a text of at most 300 characters")
         title = ""
     # the mechanism -------------------------------------------------------------------
     mech = None
     has_file, has_var = "mechanism" in data, "variant" in data
     if has_file == has_var:
-        problems.append('mechanism: give the mechanism file (mechanism = "press.toml") '
+        problems.add('mechanism', 'give the mechanism file (mechanism = "press.toml") '
                         "or a variant (variant = 3), one of them")
     elif has_file:
         mpath = data["mechanism"]
         if not isinstance(mpath, str) or not mpath:
-            problems.append(f"mechanism: must be a file name, got {mpath!r:.40}")
+            problems.add("mechanism", f"must be a file name, got {mpath!r:.40}")
         else:
             p = Path(mpath)
             if not p.is_absolute() and folder is not None:
                 p = folder / p
             if not p.is_file():
-                problems.append(f"mechanism: {mpath}: no such file (paths are relative to "
+                problems.add("mechanism", f"{mpath}: no such file (paths are relative to "
                                 "the measurement file)")
             else:
                 mech = p
     else:
         var = data["variant"]
         if isinstance(var, bool) or not isinstance(var, int):
-            problems.append(f"variant: must be a whole number, got {var!r:.40}")
+            problems.add("variant", f"must be a whole number, got {var!r:.40}")
         else:
             mech = var
     table = data.get("table")
     if table is not None:
         if not isinstance(table, str):
-            problems.append("table: must be a file name")
+            problems.add("table", "must be a file name")
             table = None
         elif folder is not None and not Path(table).is_absolute():
             table = str(folder / table)
     angle = None
     if "angle_deg" in data:
-        angle = _num(data["angle_deg"], "angle_deg", problems)
+        angle = _num(data["angle_deg"], "angle_deg", problems, unit="°")
     tol = None
     if "tolerance" in data:
         try:
             tol = parse_tolerance(data["tolerance"])
         except ValueError as exc:
-            problems.append(f"tolerance: {exc}")
+            problems.add("tolerance", f"{exc}")
     mu: dict[str, float] = {}
     scales = data.get("scales", {})
     if not isinstance(scales, dict):
-        problems.append("scales: must be a table, e.g. [scales] mu_v = 0.05")
+        problems.add("scales", "must be a table, e.g. [scales] mu_v = 0.05")
         scales = {}
+    check_keys(scales, set(MU_KEY.values()), "scales", problems)
     for key, value in scales.items():
         if key not in MU_KEY.values():
-            problems.append(f"scales.{key}: unknown key (known: mu_l, mu_v, mu_a)")
             continue
-        x = _num(value, f"scales.{key}", problems, positive=True)
+        x = _num(value, f"scales.{key}", problems, positive=True, unit="per mm")
         if x is not None:
             mu[key] = x
     raw_segments = data.get("segments", {})
     if not isinstance(raw_segments, dict):
-        problems.append("segments: must be a table of lengths in mm, e.g. [segments] pa3 = 55")
+        problems.add("segments", "must be a table of lengths in mm, e.g. [segments] pa3 = 55")
         raw_segments = {}
     raw_values = data.get("values", {})
     if not isinstance(raw_values, dict):
-        problems.append('values: must be a table, e.g. [values] omega3 = "4.82 ccw"')
+        problems.add('values', 'must be a table, e.g. [values] omega3 = "4.82 ccw"')
         raw_values = {}
-    segs: list[tuple[str, str | None, str, float]] = []  # key, scope, name, mm
+    # (key as the report shows it, key path as the file spells it, plan or None, name, mm)
+    segs: list[tuple[str, str, str | None, str, float]] = []
     for key, value in raw_segments.items():
         if isinstance(value, dict):
             if key not in PLANS:
-                problems.append(f"segments.{key}: a sub-table must be one of "
+                problems.add(f"segments.{key_text(key)}", f"a sub-table must be one of "
                                 f"{', '.join(PLANS)}")
                 continue
             for k2, v2 in value.items():
-                x = _num(v2, f"segments.{key}.{k2}", problems, nonneg=True)
+                where = f"segments.{key}.{key_text(k2)}"
+                x = _num(v2, where, problems, nonneg=True)
                 if x is not None:
-                    segs.append((f"segments.{key}.{k2}", key, k2, x))
+                    segs.append((f"segments.{key}.{k2}", where, key, k2, x))
             continue
-        x = _num(value, f"segments.{key}", problems, nonneg=True)
+        where = f"segments.{key_text(key)}"
+        x = _num(value, where, problems, nonneg=True)
         if x is not None:
-            segs.append((f"segments.{key}", None, key, x))
+            segs.append((f"segments.{key}", where, None, key, x))
     if not raw_segments and not raw_values:
-        problems.append("segments: nothing to check: give the measured segments, e.g. "
+        problems.add("segments", "nothing to check: give the measured segments, e.g. "
                         "[segments] pa3 = 55")
     if mech is None:
-        _raise(source, text, problems or ["mechanism: missing"])
+        if not problems:
+            problems.add("mechanism", "missing")
+        problems.raise_if_any()
     # solve at the student's scales (the names are checked against the plans even when
     # other keys have problems, so that every problem is reported at once) -------------
     try:
@@ -268,17 +252,16 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
             m = m.with_phi(math.radians(ref))
         sol = solve_position(m, mu=dict(mu))
     except PlansError:
-        if problems:  # these first; the mechanism's own problems once they are fixed
-            _raise(source, text, problems)
+        problems.raise_if_any()  # these first; the mechanism's own problems once they are fixed
         raise
     names = _Names(sol)
     items: list[Item] = []
-    for key, scope, name, x in segs:
-        item = names.segment(key, scope, name, x, problems)
+    for key, where, scope, name, x in segs:
+        item = names.segment(key, where, scope, name, x, problems)
         if item is not None:
             items.append(item)
     for key, value in raw_values.items():
-        item = names.value(f"values.{key}", key, value, problems)
+        item = names.value(f"values.{key}", f"values.{key_text(key)}", key, value, problems)
         if item is not None:
             items.append(item)
     need = {it.plan for it in items if it.kind in ("segment", "value")}
@@ -288,10 +271,9 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
         if plan in need and MU_KEY[plan] not in mu:
             what = {"positions": "the plan of positions", "velocity": "the velocity plan",
                     "acceleration": "the acceleration plan"}[plan]
-            problems.append(f"scales.{MU_KEY[plan]}: missing: the scale factor the student "
+            problems.add(f"scales.{MU_KEY[plan]}", f"missing: the scale factor the student "
                             f"used for {what}")
-    if problems:
-        _raise(source, text, problems)
+    problems.raise_if_any()
     read = [source] + [str(p) for p in (mech if not isinstance(mech, int) else table,) if p]
     return Measurement(source, m, sol, {k: sol_mu(sol, k) for k in MU_KEY.values()},
                        tuple(items), tol, title, angle, tuple(read))
@@ -336,7 +318,8 @@ class _Names:
             k for p in ("velocity", "acceleration") for k in self.recorded[p]]
         return ", ".join(names)
 
-    def segment(self, key, scope, name, mm, problems) -> Item | None:
+    def segment(self, key, where, scope, name, mm, problems) -> Item | None:
+        """The item ``key`` (located in the file by ``where``) measuring segment ``name``."""
         spellings = [name]
         if name.startswith("pi"):
             spellings.append("π" + name[2:])
@@ -356,33 +339,33 @@ class _Names:
             if len({c[0] for c in rec}) == 1:
                 cands = rec
         if not cands:
-            problems.append(f"{key}: unknown segment \"{name}\"; known: {self.known()} "
+            problems.add(where, f"unknown segment \"{name}\"; known: {self.known()} "
                             "(or any two points of one plan; write π as pi)")
             return None
         if len(cands) > 1:
-            where = sorted({c[0] for c in cands})
-            if len(where) > 1:
-                problems.append(f"{key}: \"{name}\" names a segment on the {' and the '.join(where)} "
-                                f"plans: put it under [segments.{where[-1]}] or "
-                                f"[segments.{where[0]}]")
+            plans = sorted({c[0] for c in cands})
+            if len(plans) > 1:
+                problems.add(where, f"\"{name}\" names a segment on the {' and the '.join(plans)} "
+                                f"plans: put it under [segments.{plans[-1]}] or "
+                                f"[segments.{plans[0]}]")
             else:
-                problems.append(f"{key}: \"{name}\" can be read as "
+                problems.add(where, f"\"{name}\" can be read as "
                                 + " or ".join(f"{x}–{y}" for _, x, y in cands))
             return None
         (plan, x, y), sp = next(iter(cands.items()))
         return Item(key, sp, "segment", plan, mm, x, y)
 
-    def value(self, key, name, value, problems) -> Item | None:
+    def value(self, key, where, name, value, problems) -> Item | None:
         sol = self.sol
         m = re.fullmatch(r"(omega|ω|w|epsilon|ε|eps)_?(\d+)", name)
         if m:
             link = int(m.group(2))
             kind = "omega" if m.group(1) in ("omega", "ω", "w") else "epsilon"
             if link not in sol.mechanism.links:
-                problems.append(f"{key}: there is no link {link} (links: "
+                problems.add(where, f"there is no link {link} (links: "
                                 f"{', '.join(map(str, sorted(sol.mechanism.links)))})")
                 return None
-            mag, sense = _magnitude_sense(value, key, problems, allow_sense=True)
+            mag, sense = _magnitude_sense(value, where, problems, allow_sense=True)
             if mag is None:
                 return None
             plan = "velocity" if kind == "omega" else "acceleration"
@@ -396,10 +379,10 @@ class _Names:
         if hit is None:
             labels = ["ω<link>", "ε<link>", "V_<point>", "a_<point>", "V_<point><point>"]
             labels += [v.label for v in sol.acceleration.vectors if v.component != "absolute"]
-            problems.append(f"{key}: unknown value \"{name}\"; known: {', '.join(dict.fromkeys(labels))}")
+            problems.add(where, f"unknown value \"{name}\"; known: {', '.join(dict.fromkeys(labels))}")
             return None
         plan, x, y, label = hit
-        mag, _ = _magnitude_sense(value, key, problems, allow_sense=False)
+        mag, _ = _magnitude_sense(value, where, problems, allow_sense=False)
         if mag is None:
             return None
         return Item(key, label, "value", plan, mag, x, y,
@@ -440,7 +423,7 @@ def _magnitude_sense(value, key, problems, *, allow_sense):
             mag = None
         word = parts[1].lower() if len(parts) > 1 else ""
         if mag is None or len(parts) > 3 or (word and word not in SENSE_WORDS):
-            problems.append(f'{key}: write a magnitude and a sense, e.g. "4.82 ccw" or "4.82 cw", '
+            problems.add(key, f'write a magnitude and a sense, e.g. "4.82 ccw" or "4.82 cw", '
                             f"got {value!r:.40}")
             return None, 0
         sense = SENSE_WORDS.get(word, 0)
