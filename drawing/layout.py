@@ -37,11 +37,9 @@ class Placed:
         return Group(tuple(self.view.items), (self.rect.x, self.rect.y), name=f"view {self.view.name}")
 
 
-def place_views(sheet: Sheet, views, order: str = "rows") -> list[Placed]:
-    """Positions for ``views`` in their order; :class:`LayoutError` if one does not fit.
-
-    ``order="columns"`` scans top to bottom first (fills the left columns first).
-    """
+def place_views(sheet: Sheet, views) -> list[Placed]:
+    """Positions for ``views`` in their order, each at the first free spot scanning the
+    sheet row by row; :class:`LayoutError` if one does not fit."""
     area = sheet.drawing_area().buffer(-MARGIN)
     free = prep(area)
     x0, y0, x1, y1 = area.bounds
@@ -51,7 +49,7 @@ def place_views(sheet: Sheet, views, order: str = "rows") -> list[Placed]:
         spot = None
         xs = [x0 + STEP * i for i in range(int((x1 - x0 - v.w) / STEP) + 1)]
         ys = [y0 + STEP * j for j in range(int((y1 - y0 - v.h) / STEP) + 1)]
-        pairs = ((x, y) for y in ys for x in xs) if order == "rows" else ((x, y) for x in xs for y in ys)
+        pairs = ((x, y) for y in ys for x in xs)
         for x, y in pairs:
             b = box(x, y, x + v.w, y + v.h)
             if not free.contains(b):

@@ -14,7 +14,6 @@ label of one view can meet another view.
 
 from __future__ import annotations
 
-import cmath
 import itertools
 import math
 import re
@@ -28,7 +27,6 @@ from drawing.labels import (
     obstacles_of,
     place_labels,
     text_box,
-    text_width,
 )
 from drawing.scene import (
     Arrow,
@@ -668,5 +666,3 @@ def note_view(lines: list[str], width: float = 180.0) -> View:
     items = _shift(items, -bx0 + 1, -by0 + 1)
     return View("note", items, bx1 - bx0 + 2, by1 - by0 + 2)
 
-
-_ = (cmath, text_width)  # kept for callers that letter by hand

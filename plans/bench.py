@@ -62,7 +62,6 @@ BENCH_SCENES = {
     "tangent": "PRP",
     "scotch_yoke": "RPP",
 }
-PEERS = ("pylinkage", "pyslvs")
 METHODS = ("vectorized", "reused", "recorded", "plan", "fd", "peers")
 PEER_HINTS = {
     "pylinkage": "pip install pylinkage",

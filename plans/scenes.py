@@ -9,7 +9,6 @@ The two samples (``samples/press.toml``, ``samples/fourbar.toml``) are scenes to
 
 from __future__ import annotations
 
-import math
 import tomllib
 from dataclasses import dataclass
 from pathlib import Path
@@ -436,7 +435,6 @@ link = 2
 guide = { link = 3, through = [0.05, -0.02], angle_deg = 75 }
 """
 
-_rad = math.radians
 
 SCENES: dict[str, Scene] = {
     s.name: s
