@@ -330,6 +330,8 @@ def to_csv(t: CycleTable) -> str:
     import csv
     import io
 
+    import numpy as np
+
     m, mech = t.motion, t.mechanism
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
@@ -339,26 +341,24 @@ def to_csv(t: CycleTable) -> str:
         x = float(x)
         return repr(x) if math.isfinite(x) else ""
 
+    # the columns as Python numbers, converted once (not cell by cell from numpy)
+    cols: list[list[float]] = []
+    for name in t.points:
+        for arr in (m.position[name], m.velocity[name], m.acceleration[name]):
+            z = np.asarray(arr)
+            cols += [z.real.tolist(), z.imag.tolist()]
+    for i in t.links:
+        cols += [np.asarray(m.links[i].omega).tolist(), np.asarray(m.links[i].epsilon).tolist()]
+    phis = np.asarray(m.phi).tolist()
+    out = None if t.output_values is None else np.asarray(t.output_values).tolist()
+    blank = [""] * len(cols)
     for k, st in enumerate(t.status):
-        phi = float(m.phi[k])
         good = st.ok
-        row = [
-            k,
-            f(_deg(mech, phi)),
-            f(file_angle(mech, phi)),
-            int(good),
-            f(st.min_sine),
-        ]
+        row = [k, f(_deg(mech, phis[k])), f(file_angle(mech, phis[k])), int(good), f(st.min_sine)]
         row += [f(v) for v in st.figures.values()]
-        if t.output_values is not None:
-            row.append(f(t.output_values[k]) if good else "")
-        for name in t.points:
-            for arr in (m.position[name], m.velocity[name], m.acceleration[name]):
-                z = complex(arr[k])
-                row += [f(z.real), f(z.imag)] if good else ["", ""]
-        for i in t.links:
-            st_i = m.links[i]
-            row += [f(st_i.omega[k]), f(st_i.epsilon[k])] if good else ["", ""]
+        if out is not None:
+            row.append(f(out[k]) if good else "")
+        row += [f(c[k]) for c in cols] if good else blank
         row += ["; ".join(st.warnings), "; ".join(st.errors)]
         w.writerow(row)
     return buf.getvalue()
