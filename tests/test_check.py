@@ -17,12 +17,12 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from cli_run import run
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from plans import check as ck
 from plans import mechanism
-from plans.cli import main
 from plans.kinematics import Solver
 from plans.plan import solve_position
 from plans.scenes import SCENES
@@ -57,11 +57,6 @@ points = { C = 0.1025 }
 C = "above BD"
 """
 
-
-def run(capsys, *argv):
-    code = main([str(a) for a in argv])
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def ascii_name(name: str) -> str:

@@ -10,6 +10,7 @@ import sys
 from pathlib import Path
 
 import pytest
+from cli_run import run
 
 from plans import cli
 from plans.cli import main
@@ -27,11 +28,6 @@ def expectations(path: Path) -> list[str]:
         out.append(line[len(b"# expect: ") :].decode("utf-8"))
     return out
 
-
-def run(capsys, *argv):
-    code = main([str(a) for a in argv])
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def assert_clean_failure(err: str, command: str = "solve") -> list[str]:

@@ -3,14 +3,7 @@
 import json
 
 import pytest
-
-from plans.cli import main
-
-
-def run(capsys, *argv):
-    code = main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
+from cli_run import run
 
 
 @pytest.mark.parametrize("n", range(10))

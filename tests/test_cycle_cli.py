@@ -7,9 +7,9 @@ import math
 
 import numpy as np
 import pytest
+from cli_run import run
 
 from plans import mechanism
-from plans.cli import main
 from plans.cycle import analyse_cycle
 from plans.kinematics import WARN_SINE, Solver
 from plans.plan import solve_position
@@ -17,11 +17,6 @@ from plans.plan import solve_position
 PRESS = "samples/press.toml"
 FOURBAR = "samples/fourbar.toml"
 
-
-def run(capsys, *argv):
-    code = main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def test_press_table_has_every_section_and_row(capsys):

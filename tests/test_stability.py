@@ -19,13 +19,13 @@ import tomllib
 
 import numpy as np
 import pytest
-from plans.scenes import SAMPLES, SCENES
 
 from plans import reference
 from plans.cli_cycle import compute, conditioning
 from plans.cycle import analyse_cycle
 from plans.kinematics import WARN_SINE, Solver
 from plans.mechanism import from_dict, load
+from plans.scenes import SAMPLES, SCENES
 
 EPS = np.finfo(float).eps
 C = 32.0  # the "small multiple"
