@@ -66,11 +66,7 @@ def mechanism_from(args):
         mech = variants.variant(int(text), args.table)
     else:
         mech = mechanism.load(args.file)
-    if angle is not None:
-        d = mech.driver
-        ref = mechanism.REFERENCES[d.reference] + mechanism.SENSES[d.measured] * angle
-        mech = mech.with_phi(math.radians(ref))
-    return mech
+    return mech if angle is None else mech.at_file_angle(angle)
 
 
 #: the input files of the running command (see claim_inputs): never written over

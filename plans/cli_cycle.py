@@ -211,10 +211,7 @@ def _deg(mech, phi: float) -> float:
 
 def file_angle(mech, phi: float) -> float:
     """φ1 in the file's own convention (its reference direction and sense), in [0, 360)."""
-    from .mechanism import REFERENCES, SENSES
-
-    d = mech.driver
-    return (SENSES[d.measured] * (math.degrees(phi) - REFERENCES[d.reference])) % 360.0
+    return mech.driver.file_angle(phi)
 
 
 def _fig(x: float) -> str:

@@ -247,9 +247,7 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
         else:
             m = mechmod.load(mech)
         if angle is not None:
-            d = m.driver
-            ref = mechmod.REFERENCES[d.reference] + mechmod.SENSES[d.measured] * angle
-            m = m.with_phi(math.radians(ref))
+            m = m.at_file_angle(angle)
         sol = solve_position(m, mu=dict(mu))
     except PlansError:
         problems.raise_if_any()  # these first; the mechanism's own problems once they are fixed

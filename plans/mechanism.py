@@ -89,6 +89,15 @@ class Driver:
     measured: str  # "ccw" or "cw"
     rpm: float | None = None
 
+    def phi_of(self, angle_deg: float) -> float:
+        """The crank angle (rad, counter-clockwise from +x) of an angle given in the
+        file's convention (degrees from ``reference``, ``measured`` ccw or cw)."""
+        return math.radians(REFERENCES[self.reference] + SENSES[self.measured] * angle_deg)
+
+    def file_angle(self, phi: float) -> float:
+        """The inverse: the crank angle ``phi`` in the file's convention, in [0, 360)."""
+        return (SENSES[self.measured] * (math.degrees(phi) - REFERENCES[self.reference])) % 360.0
+
 
 @dataclass(frozen=True)
 class Mechanism:
@@ -130,6 +139,14 @@ class Mechanism:
             if s.link == link:
                 return s
         return None
+
+    def at_file_angle(self, angle_deg: float) -> Mechanism:
+        """The same mechanism with the crank at ``angle_deg`` in the file's convention
+        (as ``--angle`` and a measurement file's ``angle_deg`` give it)."""
+        from dataclasses import replace
+
+        d = self.driver
+        return replace(self, driver=replace(d, phi=d.phi_of(angle_deg), angle_deg=angle_deg))
 
     def with_phi(self, phi: float) -> Mechanism:
         """The same mechanism with the crank at ``phi`` (rad, from +x)."""
@@ -764,7 +781,7 @@ def _driver(body, pr: Problems, links, frame, bad_links, frame_names) -> Driver 
         omega = None
     if angle is None or omega is None or tip not in link.points:
         return None
-    phi = math.radians(REFERENCES[ref] + SENSES[measured] * angle)
+    phi = math.radians(REFERENCES[ref] + SENSES[measured] * angle)  # as Driver.phi_of
     return Driver(
         link=lid,
         pivot=pivot,

@@ -275,3 +275,17 @@ def test_batch_takes_the_variants_of_the_table_given(tmp_path):
     out = tmp_path / "sheets"
     assert main(["sheet", "--variant", "all", "--table", str(table), "-o", str(out)]) == 0
     assert [p.name for p in out.iterdir()] == ["variant-6.svg"]
+
+
+def test_the_angle_asked_for_is_the_angle_the_titles_give(tmp_path):
+    """sheet --angle 20 draws the plans at 20° in the file's convention, and says so."""
+    from plans.cli import main
+
+    out = tmp_path / "a.svg"
+    assert main(["sheet", "samples/fourbar.toml", "--angle", "20", "-o", str(out)]) == 0
+    _, texts = _texts(out.read_text(encoding="utf-8"))
+    titles = [t for t in texts if t.startswith(("План скоростей", "План ускорений"))]
+    assert len(titles) == 2 and all("(φ1 = 20°)" in t for t in titles), titles
+    mech = _mech("fourbar").at_file_angle(20)
+    assert mech.driver.angle_deg == 20
+    assert mech.driver.file_angle(mech.driver.phi) == pytest.approx(20)
