@@ -529,6 +529,7 @@ def test_exact_reach_limit_is_a_dead_point_not_a_zero_miss():
 def test_rpr_pivot_on_the_pin_is_explained():
     msg = str(engine_error(RPR_PIVOT_ON_PIN))
     assert "misses by 0 m" not in msg
+    assert "the pivot B is on the block's pin A" in msg
 
 
 def test_a_hint_that_makes_a_later_group_fail_is_named():

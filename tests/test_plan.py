@@ -86,9 +86,12 @@ def test_each_intersection_lies_on_both_recorded_lines(press, fourbar):
 
 
 def test_similarity_points_agree_with_direct_computation(press, fourbar):
+    """Every plan point, built on Python numbers by the recipe (similarity steps among
+    them), equals the point solved directly on the array path."""
     for sol in (press, fourbar):
         m = sol.motion
         for plan, store in ((sol.velocity, m.velocity), (sol.acceleration, m.acceleration)):
+            assert any(p.source.kind == "similarity" for p in plan.points.values())
             for name, values in store.items():
                 pt = plan.points[name.lower()]
                 assert pt.value == pytest.approx(complex(values[0]), rel=1e-12, abs=1e-12)
