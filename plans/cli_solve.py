@@ -100,23 +100,13 @@ def to_text(sol, cycle=None) -> str:
         out.append("")
         out.append(f"{plan.kind.capitalize()} plan (pole {plan.pole}, μ = {num(plan.mu)} ({unit})/mm)")
         out.append(f"  {'segment':10s} {'mm':>9s} {unit:>11s}  {'how'}")
-        seen = set()
-        for name, pt in plan.points.items():
-            if pt.source.kind in ("pole",):
-                continue
-            key = plan.pole + name
-            if pt.source.kind != "component" and key not in seen:
-                seen.add(key)
-                out.append(f"  {key:10s} {num(plan.mm(plan.pole, name)):>9s} {num(abs(pt.value)):>11s}  {_how(pt)}")
-        for v in plan.vectors:
-            if v.component == "absolute":
-                continue
-            key = v.start + v.end
-            if key in seen:
-                continue
-            seen.add(key)
-            mm = plan.mm(v.start, v.end)
-            out.append(f"  {key:10s} {num(mm):>9s} {num(mm * plan.mu):>11s}  {v.label} ({v.component})")
+        vectors = {(v.start, v.end): v for v in plan.vectors if v.component != "absolute"}
+        for key, (start, end) in plan.ends.items():
+            mm = plan.segments[key]
+            pt = plan.points[end]
+            how = (_how(pt) if start == plan.pole and pt.source.kind != "component" else
+                   f"{vectors[start, end].label} ({vectors[start, end].component})")
+            out.append(f"  {key:10s} {num(mm):>9s} {num(mm * plan.mu):>11s}  {how}")
     out.append("")
     out.append("Angular velocities and accelerations")
     for i in sorted(sol.omega):

@@ -288,14 +288,7 @@ def _splits(text: str, names) -> list[tuple[str, str]]:
 
 def recorded_segments(plan: Plan) -> dict[str, tuple[str, str]]:
     """The segments a plan names (as ``plans solve`` prints them) → (start, end)."""
-    out = {}
-    for name, pt in plan.points.items():
-        if pt.source.kind not in ("pole", "component"):
-            out[plan.pole + name] = (plan.pole, name)
-    for v in plan.vectors:
-        if v.component != "absolute":
-            out[v.start + v.end] = (v.start, v.end)
-    return out
+    return dict(plan.ends)
 
 
 class _Names:

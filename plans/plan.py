@@ -10,8 +10,10 @@ and the check of a student's plan all read this one object.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
+from types import MappingProxyType
 from typing import NamedTuple
 
 import numpy as np
@@ -77,6 +79,8 @@ class Plan:
     unit: str  # "m/s" or "m/s²"
     #: every drawn segment in mm: pole to each point found, and each component vector
     segments: dict[str, float] = field(default_factory=dict)
+    #: the same segments' ends: name → (from, to), plan point names or the pole
+    ends: Mapping[str, tuple[str, str]] = field(default_factory=dict)
 
     def value(self, name: str) -> complex:
         return 0j if name == self.pole else self.points[name].value
@@ -218,7 +222,7 @@ def _plan_segments(recipe: _Recipe, pts: dict[str, PlanPoint], mu: float) -> dic
     recipe's list of segments."""
     pole = recipe.pole
     out = {}
-    for key, start, end in recipe.segments:
+    for key, (start, end) in recipe.ends.items():
         a = 0j if start == pole else pts[start].value
         out[key] = abs(pts[end].value - a) / mu
     return out
@@ -247,7 +251,7 @@ class _Recipe(NamedTuple):
     tip: str  # the crank's pin, whose vector sets the plan's scale
     steps: tuple
     same: tuple[tuple[str, str], ...]
-    segments: tuple[tuple[str, str, str], ...]  # (name, from, to) of every drawn segment
+    ends: Mapping[str, tuple[str, str]]  # every drawn segment: name → (from, to)
 
 
 def _build_plans(solver: Solver, motion: Motion, mu_v, mu_a) -> tuple[Plan, Plan]:
@@ -367,19 +371,17 @@ def _work_out(mech: Mechanism, m: Motion, kind: str) -> _Recipe:
     return _Recipe(kind, pole, drv.tip, tuple(steps), tuple(same), _segments_of(steps, pole))
 
 
-def _segments_of(steps, pole: str) -> tuple[tuple[str, str, str], ...]:
-    """The plan's drawn segments: pole to every point found (not the poles, not the ends
-    of known components), then every component vector; the absolute vectors are the
-    pole-to-point segments already."""
-    points = [(pole + st[1], pole, st[1]) for st in steps
-              if st[0] in (_VALUE, _SIMILAR, _FIGURE, _CROSS)]
-    vectors = []
+def _segments_of(steps, pole: str) -> Mapping[str, tuple[str, str]]:
+    """The plan's drawn segments, name → (from, to): pole to every point found (not the
+    poles, not the ends of known components), then every component vector; the absolute
+    vectors are the pole-to-point segments already. Read-only: every plan of the recipe
+    shares it."""
+    out = {pole + st[1]: (pole, st[1]) for st in steps
+           if st[0] in (_VALUE, _SIMILAR, _FIGURE, _CROSS)}
     for st in steps:
-        if st[0] == _TERM:
-            vectors.append(st[7])
-        elif st[0] == _CROSS:
-            vectors += st[7]
-    return tuple(points + [(v.start + v.end, v.start, v.end) for v in vectors])
+        for v in (st[7],) if st[0] == _TERM else st[7] if st[0] == _CROSS else ():
+            out.setdefault(v.start + v.end, (v.start, v.end))
+    return MappingProxyType(out)
 
 
 def _follow(recipe: _Recipe, m: Motion, mu) -> Plan:
@@ -435,7 +437,7 @@ def _follow(recipe: _Recipe, m: Motion, mu) -> Plan:
             vectors.append(vec)
     mu = mu or plan_mu(points, store[recipe.tip])
     return Plan(recipe.kind, recipe.pole, points, tuple(vectors), mu, "m/s²" if acc else "m/s",
-                _plan_segments(recipe, points, mu))
+                _plan_segments(recipe, points, mu), recipe.ends)
 
 
 def plan_mu(points: dict[str, PlanPoint], tip: complex, size: float = 1.0) -> float:
