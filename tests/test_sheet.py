@@ -162,21 +162,16 @@ def test_exported_files_get_the_usual_mode(tmp_path):
 
 
 def test_sheet_scales_fill_the_sheet_where_the_file_leaves_them_free():
-    from drawing.cli_sheet import build_sheet
-    from plans.variants import variant
-
-    _, _, info = build_sheet(variant(3))
+    _, _, _, info, _ = _sheet(3)  # the sheets the other tests build, on A1
     sol = info["solutions"][0][2]
     # the engine alone would pick 1:2.5 and μv = 0.02 for this variant; A1 has room for more
     assert sol.mu_l == 0.001 and sol.mu_v == 0.01
-    press = build_sheet(load("samples/press.toml"))[2]["solutions"][0][2]
+    press = _sheet("press")[3]["solutions"][0][2]
     assert (press.mu_l, press.mu_v, press.mu_a) == (0.01, 0.05, 1.0)  # fixed in the file
 
 
 def test_russian_fourbar_sheet_explains_the_missing_diagrams_in_russian():
-    from drawing.cli_sheet import build_sheet
-
-    scene, _, _ = build_sheet(load("samples/fourbar.toml"), lang="ru")
+    _, scene, _, _, _ = _sheet("fourbar", lang="ru")
     texts = " ".join(t.text for t in scene.items() if hasattr(t, "text"))
     assert "кривошип не может сделать полный оборот" in texts
     assert "cannot" not in texts
