@@ -17,9 +17,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from cli_run import run
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from support import run
 
 from plans import check as ck
 from plans import mechanism

@@ -10,7 +10,7 @@ import sys
 from pathlib import Path
 
 import pytest
-from cli_run import run
+from support import expectations, run
 
 from plans import cli
 from plans.cli import main
@@ -19,14 +19,6 @@ ROOT = Path(__file__).resolve().parent.parent
 CORPUS = ROOT / "tests" / "corpus"
 PRESS = ROOT / "samples" / "press.toml"
 
-
-def expectations(path: Path) -> list[str]:
-    out = []
-    for line in path.read_bytes().split(b"\n"):
-        if not line.startswith(b"# expect: "):
-            break
-        out.append(line[len(b"# expect: ") :].decode("utf-8"))
-    return out
 
 
 

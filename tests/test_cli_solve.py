@@ -3,7 +3,7 @@
 import json
 
 import pytest
-from cli_run import run
+from support import run
 
 
 @pytest.mark.parametrize("n", range(10))

@@ -7,7 +7,7 @@ import math
 
 import numpy as np
 import pytest
-from cli_run import run
+from support import run
 
 from plans import mechanism
 from plans.cycle import analyse_cycle

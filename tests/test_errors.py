@@ -14,6 +14,7 @@ import tomllib
 from pathlib import Path
 
 import pytest
+from support import expectations
 
 from plans import fileformat, mechanism
 from plans.errors import AssemblyError, InputError, PlansError
@@ -28,15 +29,6 @@ MECHANISMS = sorted(CORPUS.glob("*.toml"))
 TABLES = sorted((CORPUS / "tables").glob("*.toml"))
 SAMPLES = [ROOT / "samples" / "press.toml", ROOT / "samples" / "fourbar.toml"]
 
-
-def expectations(path: Path) -> list[str]:
-    out = []
-    for line in path.read_bytes().split(b"\n"):
-        if not line.startswith(b"# expect: "):
-            break
-        out.append(line[len(b"# expect: ") :].decode("utf-8"))
-    assert out, f"{path.name}: no '# expect:' header"
-    return out
 
 
 def problems_of(call, path: Path) -> list[str]:
