@@ -52,7 +52,6 @@ def mechanism_from(args):
 
     if (args.file is None) == (args.variant is None):
         raise InputError("command line", "give a mechanism FILE or --variant N (one of them)")
-    _INPUTS.clear()
     claim_inputs(args, [p for p in (args.file, getattr(args, "table", None)) if p])
     angle = getattr(args, "angle", None)
     if angle is not None and not (math.isfinite(angle) and abs(angle) <= mechanism.MAX_ABS):
@@ -138,6 +137,7 @@ def main(argv: list[str] | None = None) -> int:
     if not getattr(args, "run", None):
         parser.print_help()
         return EXIT_INPUT
+    _INPUTS.clear()  # each command claims the files it reads
     try:
         return args.run(args)
     except PlansError as exc:

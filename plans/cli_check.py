@@ -30,9 +30,8 @@ def configure(p) -> None:
 
 def run(args) -> int:
     from . import check as ck
-    from .cli import _INPUTS, claim_inputs
+    from .cli import claim_inputs
 
-    _INPUTS.clear()
     claim_inputs(args, [args.file])
     meas = ck.load(args.file)
     claim_inputs(args, meas.inputs[1:])
