@@ -69,8 +69,10 @@ class PlanVector(NamedTuple):
     label: str  # V_A3A, a^n_A3B …
 
 
-@dataclass(frozen=True)
-class Plan:
+class Plan(NamedTuple):
+    """One plan (velocity or acceleration) at one angle: immutable, built once per angle
+    (a NamedTuple: a fifth of a frozen dataclass's construction time)."""
+
     kind: str  # "velocity" or "acceleration"
     pole: str  # "p" or "π"
     points: dict[str, PlanPoint]
@@ -78,9 +80,9 @@ class Plan:
     mu: float
     unit: str  # "m/s" or "m/s²"
     #: every drawn segment in mm: pole to each point found, and each component vector
-    segments: dict[str, float] = field(default_factory=dict)
+    segments: dict[str, float]
     #: the same segments' ends: name → (from, to), plan point names or the pole
-    ends: Mapping[str, tuple[str, str]] = field(default_factory=dict)
+    ends: Mapping[str, tuple[str, str]]
 
     def value(self, name: str) -> complex:
         return 0j if name == self.pole else self.points[name].value
@@ -217,22 +219,12 @@ def _segment_pairs(mech: Mechanism, motion: Motion):
     return fixed, tuple(moving)
 
 
-def _plan_segments(recipe: _Recipe, pts: dict[str, PlanPoint], mu: float) -> dict[str, float]:
-    """Every drawn segment of the plan in mm (what :meth:`Plan.mm` gives), by the
-    recipe's list of segments."""
-    pole = recipe.pole
-    out = {}
-    for key, (start, end) in recipe.ends.items():
-        a = 0j if start == pole else pts[start].value
-        out[key] = abs(pts[end].value - a) / mu
-    return out
-
-
 # ---------------------------------------------------------------------------------------
 # building the plans: a recipe worked out once per solver, then filled in per angle
 # ---------------------------------------------------------------------------------------
 
 _POLE, _VALUE, _TERM, _CROSS, _SIMILAR, _FIGURE = range(6)
+_new = tuple.__new__
 _POLE_SOURCE = Source("pole")
 
 
@@ -385,59 +377,72 @@ def _segments_of(steps, pole: str) -> Mapping[str, tuple[str, str]]:
 
 
 def _follow(recipe: _Recipe, m: Motion, mu) -> Plan:
-    """The plan at the motion's angle, by the recipe's steps."""
+    """The plan at the motion's angle, by the recipe's steps.
+
+    The one hot loop of a single plan: records are made with ``_new`` (a NamedTuple built
+    positionally without its Python-level ``__new__``, half the time), and each point's
+    vector is also kept in ``vals`` for the later steps and the segments."""
     acc = recipe.kind == "acceleration"
     store = m.acceleration if acc else m.velocity
+    cons = [g.acceleration for g in m.groups] if acc else [g.velocity for g in m.groups]
     pos = m.position
+    pole = recipe.pole
+    vals = {pole: 0j}
     points: dict[str, PlanPoint] = {}
     vectors: list[PlanVector] = []
     for step in recipe.steps:
         op = step[0]
         if op == _POLE:
-            points[step[1]] = step[2]  # a fixed point: the same record at every angle
+            pn = step[1]
+            points[pn] = step[2]  # a fixed point: the same record at every angle
+            vals[pn] = 0j
             continue
-        if op == _VALUE:
-            _, pn, name, src, vec = step
-            value = store[name]
-        elif op == _FIGURE:
+        if op == _FIGURE:
             _, pn, n0, n1, ratio, src, vec = step
-            v0 = points[n0].value
-            value = v0 + ratio * (points[n1].value - v0)
-        elif op == _SIMILAR:
-            _, pn, name, b0, b1, n0, n1, eqs, vec = step
-            ratio = (pos[name] - pos[b0]) / (pos[b1] - pos[b0])
-            v0 = points[n0].value
-            value = v0 + ratio * (points[n1].value - v0)
-            # positional: a NamedTuple built from keywords takes half as long again
-            src = Source("similarity", eqs[abs(ratio.imag) >= 1e-12], (), n0, n1, ratio)
+            v0 = vals[n0]
+            value = v0 + ratio * (vals[n1] - v0)
         elif op == _TERM:
             _, tname, start, gi, ri, ti, src, vec = step
-            cons = m.groups[gi].acceleration if acc else m.groups[gi].velocity
-            value = cons.routes[ri].terms[ti].value
-            if start != recipe.pole:
-                value = points[start].value + value
-            points[tname] = PlanPoint(tname, value, src)
+            value = cons[gi].routes[ri].terms[ti].value
+            if start != pole:
+                value += vals[start]
+            points[tname] = _new(PlanPoint, (tname, value, src))
+            vals[tname] = value
             vectors.append(vec)
             continue
-        else:
+        elif op == _CROSS:
             _, pn, name, gi, lines, equation, vec, line_vectors = step
-            cons = m.groups[gi].acceleration if acc else m.groups[gi].velocity
-            routes = cons.routes
+            c = cons[gi]
+            routes = c.routes
             value = store[name]
-            src = Source("intersection", equation, tuple([
-                PlanLine(through, routes[ri].direction, rel, unknown)
-                for through, ri, rel, unknown in lines]), "", "", 0j, float(cons.sine))
-            points[pn] = PlanPoint(pn, value, src)
-            if abs(value) > 0:
+            src = _new(Source, ("intersection", equation, tuple([
+                _new(PlanLine, (through, routes[ri].direction, rel, unknown))
+                for through, ri, rel, unknown in lines]), "", "", 0j, float(c.sine), ""))
+            points[pn] = _new(PlanPoint, (pn, value, src))
+            vals[pn] = value
+            if value:
                 vectors.append(vec)
             vectors += line_vectors
             continue
-        points[pn] = PlanPoint(pn, value, src)
-        if abs(value) > 0:
+        elif op == _VALUE:
+            _, pn, name, src, vec = step
+            value = store[name]
+        else:  # _SIMILAR
+            _, pn, name, b0, b1, n0, n1, eqs, vec = step
+            ratio = (pos[name] - pos[b0]) / (pos[b1] - pos[b0])
+            v0 = vals[n0]
+            value = v0 + ratio * (vals[n1] - v0)
+            src = _new(Source, ("similarity", eqs[abs(ratio.imag) >= 1e-12], (), n0, n1, ratio,
+                                1.0, ""))
+        points[pn] = _new(PlanPoint, (pn, value, src))
+        vals[pn] = value
+        if value:
             vectors.append(vec)
-    mu = mu or plan_mu(points, store[recipe.tip])
-    return Plan(recipe.kind, recipe.pole, points, tuple(vectors), mu, "m/s²" if acc else "m/s",
-                _plan_segments(recipe, points, mu), recipe.ends)
+    if not mu:
+        mu = choose_mu(abs(store[recipe.tip]), max(map(abs, vals.values())))
+    segments = {key: abs(vals[b] - vals[a]) / mu for key, (a, b) in recipe.ends.items()}
+    return _new(Plan, (recipe.kind, pole, points, tuple(vectors), mu,
+                       "m/s²" if acc else "m/s", segments, recipe.ends))
 
 
 def plan_mu(points: dict[str, PlanPoint], tip: complex, size: float = 1.0) -> float:

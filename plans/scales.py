@@ -40,10 +40,14 @@ def choose_mu(value: float, largest: float, crank_mm: float = 80.0, max_mm: floa
     """The smallest standard μ that keeps the driver's vector ≤ ``crank_mm`` and every
     vector of the plan ≤ ``max_mm``."""
     need = max(abs(value) / crank_mm, abs(largest) / max_mm, 1e-300)
-    n = math.floor(math.log10(need)) - 1
-    while True:  # series(need, …)'s first value, formatting only the candidate that fits
+    # series(need, …)'s first value, formatting only the candidate that fits. The scan
+    # starts in need's own decade: were log10's rounding to put it one decade low, the scan
+    # would only take one decade longer; it cannot put it one decade high.
+    n = math.floor(math.log10(need))
+    while True:
+        decade = 10.0**n
         for k in MANTISSAS:
-            raw = k * 10.0**n
+            raw = k * decade
             if raw >= need * (1 - 1e-9):
                 v = float(f"{raw:.12g}")
                 if v >= need:
