@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from . import kernels
+from .kernels import record
 from .mechanism import Guide
 from .records import (
     Construction,
@@ -27,6 +28,7 @@ from .structure import DyadKind, Group
 
 if TYPE_CHECKING:
     from .kinematics import Solver
+
 
 
 class ScalarFallback(Exception):
@@ -118,25 +120,25 @@ def _rrr(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
         xp, r.closes, lambda: np.maximum(np.maximum(r.d - (l2 + l3), abs(l2 - l3) - r.d), 0.0),
         l2 + l3)
     vroute = (
-        Route(P, vel[P], (), r.d1, w["⊥P"], w["VP"], "relative", r.t1),
-        Route(Q, vel[Q], (), r.d2, w["⊥Q"], w["VQ"], "relative", r.t2),
+        record(Route, (P, vel[P], (), r.d1, w["⊥P"], w["VP"], "relative", r.t1)),
+        record(Route, (Q, vel[Q], (), r.d2, w["⊥Q"], w["VQ"], "relative", r.t2)),
     )
     aroute = (
-        Route(P, acc[P], (Term("normal", r.nP, w["nP"], (C, P)),), r.d1,
-              w["⊥P"], w["tP"], "tangential", r.s1),
-        Route(Q, acc[Q], (Term("normal", r.nQ, w["nQ"], (C, Q)),), r.d2,
-              w["⊥Q"], w["tQ"], "tangential", r.s2),
+        record(Route, (P, acc[P], (record(Term, ("normal", r.nP, w["nP"], (C, P))),), r.d1,
+              w["⊥P"], w["tP"], "tangential", r.s1)),
+        record(Route, (Q, acc[Q], (record(Term, ("normal", r.nQ, w["nQ"], (C, Q))),), r.d2,
+              w["⊥Q"], w["tQ"], "tangential", r.s2)),
     )
     oa, ra = _pose_from_two(Pw, w["pl"], r.C, w["cl"])
     ob, rb = _pose_from_two(Qw, w["ql"], r.C, w["cl3"])
     states[g.a] = state_from(oa, ra, r.C, r.vC, r.aC, r.w2, r.e2)
     states[g.b] = state_from(ob, rb, r.C, r.vC, r.aC, r.w3, r.e3)
     pos[C] = r.C
-    sol = GroupSolution(
-        g, Construction(C, r.vC, vroute, r.sine, w["veq"]),
-        Construction(C, r.aC, aroute, r.sine, w["aeq"]),
+    sol = record(GroupSolution, (
+        g, record(Construction, (C, r.vC, vroute, r.sine, w["veq"])),
+        record(Construction, (C, r.aC, aroute, r.sine, w["aeq"])),
         valid, gap, w["admissible"], singular, w["singular"],
-    )
+    ))
     return sol, {}
 
 
@@ -173,25 +175,25 @@ def _rrp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     r = kernels.rrp(xp, sigma, l2, Pw, vel[P], acc[P], G0, u, vG, aG, wk, ek)
     valid, gap, singular = _closure(xp, r.closes, lambda: np.maximum(r.h - l2, 0.0), l2)
     vroute = (
-        Route(P, vel[P], (), r.d1, w["⊥P"], w["VP"], "relative", r.t1),
-        Route(base, r.vCk, (), u, w["∥"], w["Vs"], "sliding", r.t2),
+        record(Route, (P, vel[P], (), r.d1, w["⊥P"], w["VP"], "relative", r.t1)),
+        record(Route, (base, r.vCk, (), u, w["∥"], w["Vs"], "sliding", r.t2)),
     )
-    terms2 = (Term("coriolis", r.cor, w["k"], (C, base)),) if base else ()
+    terms2 = (record(Term, ("coriolis", r.cor, w["k"], (C, base))),) if base else ()
     aroute = (
-        Route(P, acc[P], (Term("normal", r.nP, w["nP"], (C, P)),), r.d1,
-              w["⊥P"], w["tP"], "tangential", r.s1),
-        Route(base, r.aCk, terms2, u, w["∥"], w["as"], "sliding", r.s2),
+        record(Route, (P, acc[P], (record(Term, ("normal", r.nP, w["nP"], (C, P))),), r.d1,
+              w["⊥P"], w["tP"], "tangential", r.s1)),
+        record(Route, (base, r.aCk, terms2, u, w["∥"], w["as"], "sliding", r.s2)),
     )
     oa, ra = _pose_from_two(Pw, w["pl"], r.C, w["cl"])
     states[g.a] = state_from(oa, ra, r.C, r.vC, r.aC, r.w2, r.e2)
     kb = states[k]
     states[g.b] = state_from(r.C - u * w["cb"], u, r.C, r.vC, r.aC, kb.omega, kb.epsilon)
     pos[C] = r.C
-    sol = GroupSolution(
-        g, Construction(C, r.vC, vroute, r.sine, w["veq"]),
-        Construction(C, r.aC, aroute, r.sine, w["aeq"]),
+    sol = record(GroupSolution, (
+        g, record(Construction, (C, r.vC, vroute, r.sine, w["veq"])),
+        record(Construction, (C, r.aC, aroute, r.sine, w["aeq"])),
         valid, gap, w["admissible"], singular, w["singular"],
-    )
+    ))
     extra = {base: (k, C)} if base else {}
     return sol, extra
 
@@ -230,22 +232,22 @@ def _rpr(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     valid, gap, singular = _closure(xp, r.closes, lambda: np.maximum(abs(e) - r.dist, 0.0),
                                     max(abs(e), 1.0) if e else 1.0)
     vroute = (
-        Route(P, vel[P], (), r.u, w["∥"], w["VP"], "sliding", r.t1),
-        Route(Q, vel[Q], (), r.d2, w["⊥Q"], w["VQ"], "relative", r.t2),
+        record(Route, (P, vel[P], (), r.u, w["∥"], w["VP"], "sliding", r.t1)),
+        record(Route, (Q, vel[Q], (), r.d2, w["⊥Q"], w["VQ"], "relative", r.t2)),
     )
     aroute = (
-        Route(P, acc[P], (Term("coriolis", r.cor, w["k"], (name, P)),), r.u,
-              w["∥"], w["rP"], "sliding", r.s1),
-        Route(Q, acc[Q], (Term("normal", r.nQ, w["nQ"], (name, Q)),), r.d2,
-              w["⊥Q"], w["tQ"], "tangential", r.s2),
+        record(Route, (P, acc[P], (record(Term, ("coriolis", r.cor, w["k"], (name, P))),), r.u,
+              w["∥"], w["rP"], "sliding", r.s1)),
+        record(Route, (Q, acc[Q], (record(Term, ("normal", r.nQ, w["nQ"], (name, Q))),), r.d2,
+              w["⊥Q"], w["tQ"], "tangential", r.s2)),
     )
     states[G] = state_from(Qw - r.rot * w["q"], r.rot, Pw, r.vP3, r.aP3, r.w3, r.e3)
     states[g.a] = state_from(Pw - r.u * w["pa"], r.u, Pw, vel[P], acc[P], r.w3, r.e3)
-    sol = GroupSolution(
-        g, Construction(name, r.vP3, vroute, r.sine, w["veq"]),
-        Construction(name, r.aP3, aroute, r.sine, w["aeq"]),
+    sol = record(GroupSolution, (
+        g, record(Construction, (name, r.vP3, vroute, r.sine, w["veq"])),
+        record(Construction, (name, r.aP3, aroute, r.sine, w["aeq"])),
         valid, gap, w["admissible"], singular, w["singular"],
-    )
+    ))
     return sol, {name: (G, P)}
 
 
@@ -277,24 +279,24 @@ def _prp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     r = kernels.prp(xp, G1, u1, vG1, aG1, w1, e1, G2, u2, vG2, aG2, w2, e2)
     valid, gap, singular = _never_misses(xp, r.closes, np.shape(r.C))
     vroute = (
-        Route(b1, r.v1, (), u1, w["∥1"], w["V1"], "sliding", r.t1),
-        Route(b2, r.v2, (), u2, w["∥2"], w["V2"], "sliding", r.t2),
+        record(Route, (b1, r.v1, (), u1, w["∥1"], w["V1"], "sliding", r.t1)),
+        record(Route, (b2, r.v2, (), u2, w["∥2"], w["V2"], "sliding", r.t2)),
     )
-    terms1 = (Term("coriolis", r.c1, w["k1"], (C, b1)),) if b1 else ()
-    terms2 = (Term("coriolis", r.c2, w["k2"], (C, b2)),) if b2 else ()
+    terms1 = (record(Term, ("coriolis", r.c1, w["k1"], (C, b1))),) if b1 else ()
+    terms2 = (record(Term, ("coriolis", r.c2, w["k2"], (C, b2))),) if b2 else ()
     aroute = (
-        Route(b1, r.a1, terms1, u1, w["∥1"], w["r1"], "sliding", r.s1),
-        Route(b2, r.a2, terms2, u2, w["∥2"], w["r2"], "sliding", r.s2),
+        record(Route, (b1, r.a1, terms1, u1, w["∥1"], w["r1"], "sliding", r.s1)),
+        record(Route, (b2, r.a2, terms2, u2, w["∥2"], w["r2"], "sliding", r.s2)),
     )
     for lid, u, s, own in ((g.a, u1, sa, w["ca"]), (g.b, u2, sb, w["cb"])):
         k = states[s.guide.link]
         states[lid] = state_from(r.C - u * own, u, r.C, r.vC, r.aC, k.omega, k.epsilon)
     pos[C] = r.C
-    sol = GroupSolution(
-        g, Construction(C, r.vC, vroute, r.sine, w["veq"]),
-        Construction(C, r.aC, aroute, r.sine, w["aeq"]),
+    sol = record(GroupSolution, (
+        g, record(Construction, (C, r.vC, vroute, r.sine, w["veq"])),
+        record(Construction, (C, r.aC, aroute, r.sine, w["aeq"])),
         valid, gap, "the two guides not parallel", singular, w["singular"],
-    )
+    ))
     extra = {b: (s.guide.link, C) for b, s in ((b1, sa), (b2, sb)) if b}
     return sol, extra
 
@@ -330,23 +332,23 @@ def _rpp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     r = kernels.rpp(xp, Pw, vel[P], acc[P], Gk, uk, vG, aG, wk, ek, w["locD"], w["g0"], w["gd"])
     valid, gap, singular = _never_misses(xp, r.closes, np.shape(Pw))
     vroute = (
-        Route(P, vel[P], (), r.us, w["∥in"], w["VP"], "sliding", r.t1),
-        Route(bk, r.vk, (), uk, w["∥out"], w["Vk"], "sliding", r.t2),
+        record(Route, (P, vel[P], (), r.us, w["∥in"], w["VP"], "sliding", r.t1)),
+        record(Route, (bk, r.vk, (), uk, w["∥out"], w["Vk"], "sliding", r.t2)),
     )
-    terms1 = (Term("coriolis", r.c1, w["kP"], (name, P)),) if r.c1 is not None else ()
-    terms2 = (Term("coriolis", r.c2, w["kk"], (name, bk)),) if bk else ()
+    terms1 = (record(Term, ("coriolis", r.c1, w["kP"], (name, P))),) if r.c1 is not None else ()
+    terms2 = (record(Term, ("coriolis", r.c2, w["kk"], (name, bk))),) if bk else ()
     aroute = (
-        Route(P, acc[P], terms1, r.us, w["∥in"], w["rP"], "sliding", r.s1),
-        Route(bk, r.ak, terms2, uk, w["∥out"], w["rk"], "sliding", r.s2),
+        record(Route, (P, acc[P], terms1, r.us, w["∥in"], w["rP"], "sliding", r.s1)),
+        record(Route, (bk, r.ak, terms2, uk, w["∥out"], w["rk"], "sliding", r.s2)),
     )
     kst = states[s_out.guide.link]
     states[B] = state_from(r.oB, uk, Pw, r.vP3, r.aP3, kst.omega, kst.epsilon)
     states[g.a] = state_from(Pw - r.us * w["pa"], r.us, Pw, vel[P], acc[P], kst.omega, kst.epsilon)
-    sol = GroupSolution(
-        g, Construction(name, r.vP3, vroute, r.sine, w["veq"]),
-        Construction(name, r.aP3, aroute, r.sine, w["aeq"]),
+    sol = record(GroupSolution, (
+        g, record(Construction, (name, r.vP3, vroute, r.sine, w["veq"])),
+        record(Construction, (name, r.aP3, aroute, r.sine, w["aeq"])),
         valid, gap, "the two guides not parallel", singular, w["singular"],
-    )
+    ))
     extra = {name: (B, P)}
     if bk:
         extra[bk] = (s_out.guide.link, P)

@@ -35,6 +35,12 @@ from .geometry import cross, heron, meet
 #: are parallel: a PRP or RPP group then has no unique position)
 SINGULAR_SINE = 1e-10
 
+#: ``record(Cls, (field, …))``: a NamedTuple built from a tuple of all its fields, in
+#: order. The records of a construction are made at every angle of the one-angle path,
+#: where the class's own Python-level ``__new__`` takes twice as long.
+record = tuple.__new__
+
+
 
 class _Array:
     scalar = False
@@ -176,8 +182,8 @@ def rrr(xp, sigma, l2, l3, P, vP, aP, Q, vQ, aQ):
     k1 = aP + nP
     s1, s2 = meet((aQ + nQ) - k1, d1, d2, inv)
     aC = k1 + s1 * d1
-    return RRR(C, vC, aC, w2, s1 * (1 / l2), w3, s2 * (1 / l3), d1, d2, t1, t2, s1, s2,
-               nP, nQ, sine, disc > 0, d)
+    return record(RRR, (C, vC, aC, w2, s1 * (1 / l2), w3, s2 * (1 / l3), d1, d2, t1, t2, s1, s2,
+               nP, nQ, sine, disc > 0, d))
 
 
 def _guide_motion(C, G, vG, aG, wk, ek):
@@ -214,8 +220,8 @@ def rrp(xp, sigma, l2, P, vP, aP, G, u, vG, aG, wk, ek):
     k1 = aP + nP
     s1, s2 = meet(known2 - k1, d1, u, inv)
     aC = k1 + s1 * d1
-    return RRP(C, vC, aC, w2, s1 * (1 / l2), d1, t1, t2, s1, s2, nP, vCk, aCk, cor, sine,
-               disc > 0, h)
+    return record(RRP, (C, vC, aC, w2, s1 * (1 / l2), d1, t1, t2, s1, s2, nP, vCk, aCk, cor, sine,
+               disc > 0, h))
 
 
 def rpr(xp, sigma, e, gd, P, vP, aP, Q, vQ, aQ):
@@ -245,8 +251,8 @@ def rpr(xp, sigma, e, gd, P, vP, aP, Q, vQ, aQ):
     k1 = aP + cor
     s1, s2 = meet((aQ + nQ) - k1, u, d2, inv)
     aP3 = k1 + s1 * u
-    return RPR(rot, u, vP3, aP3, w3, s2 / safe, d2, t1, t2, s1, s2, cor, nQ, sine,
-               (disc > 0) & (dist > 0), dist)
+    return record(RPR, (rot, u, vP3, aP3, w3, s2 / safe, d2, t1, t2, s1, s2, cor, nQ, sine,
+               (disc > 0) & (dist > 0), dist))
 
 
 def prp(xp, G1, u1, vG1, aG1, w1, e1, G2, u2, vG2, aG2, w2, e2):
@@ -261,7 +267,7 @@ def prp(xp, G1, u1, vG1, aG1, w1, e1, G2, u2, vG2, aG2, w2, e2):
     v1, a1 = _guide_motion(C, G1, vG1, aG1, w1, e1)
     v2, a2 = _guide_motion(C, G2, vG2, aG2, w2, e2)
     vC, aC, (c1, c2, t1, t2, s1, s2) = _two_slides(v1, a1, u1, w1, v2, a2, u2, w2, inv)
-    return PRP(C, vC, aC, v1, v2, a1, a2, c1, c2, t1, t2, s1, s2, sine, abs(sine) > SINGULAR_SINE)
+    return record(PRP, (C, vC, aC, v1, v2, a1, a2, c1, c2, t1, t2, s1, s2, sine, abs(sine) > SINGULAR_SINE))
 
 
 def rpp(xp, P, vP, aP, G, u, vG, aG, wk, ek, locD, g0, gd):
@@ -287,7 +293,7 @@ def rpp(xp, P, vP, aP, G, u, vG, aG, wk, ek, locD, g0, gd):
     vk, ak = _guide_motion(P, G, vG, aG, wk, ek)
     # the block slides in the yoke, which turns with link k: both slides see ω_k
     vP3, aP3, (c1, c2, t1, t2, s1, s2) = _two_slides(vP, aP, us, wk, vk, ak, u, wk, inv)
-    return RPP(oB, us, vP3, aP3, vk, ak, c1, c2, t1, t2, s1, s2, sine, closes)
+    return record(RPP, (oB, us, vP3, aP3, vk, ak, c1, c2, t1, t2, s1, s2, sine, closes))
 
 
 def _two_slides(v1, a1, u1, w1, v2, a2, u2, w2, inv):

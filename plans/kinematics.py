@@ -61,6 +61,7 @@ class Solver:
         #: what follows from the mechanism alone, worked out once: the groups' words,
         #: the plans' recipes, the extent of the cycle (``plans.plan``)
         self.cache: dict = {}
+        self._todo: dict[int, tuple] = {}  # link → its points that _fill places
         self.steps = tuple((SOLVERS[g.kind], g, sigma)
                            for g, sigma in zip(self.structure.groups, self.sigmas, strict=True))
 
@@ -157,14 +158,20 @@ class Solver:
 
     def _fill(self, lid, states, pos, vel, acc, owner):
         """The points of link ``lid`` that no link solved before it has placed (a group's
-        new hinge is placed again here, from the first of its two links)."""
+        new hinge is placed again here, from the first of its two links).
+
+        Which points those are follows from the order of the groups alone, so it is
+        worked out at the first solve and kept."""
+        todo = self._todo.get(lid)
+        if todo is None:
+            todo = self._todo[lid] = tuple(
+                (name, local) for name, local in self.mech.links[lid].points.items()
+                if name not in owner)
+        if not todo:
+            return
         origin, rotor, v, w, a, e = states[lid]
-        jw = kk = None
-        for name, local in self.mech.links[lid].points.items():
-            if name in owner:
-                continue  # a hinge already known from the link solved before
-            if jw is None:
-                jw, kk = 1j * w, 1j * e - w * w
+        jw, kk = 1j * w, 1j * e - w * w
+        for name, local in todo:
             r = rotor * local
             pos[name] = origin + r
             vel[name] = v + jw * r

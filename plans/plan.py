@@ -18,8 +18,10 @@ from typing import NamedTuple
 
 import numpy as np
 
+from .kernels import record
 from .kinematics import Motion, Solver
 from .mechanism import Mechanism
+from .records import WARN_SINE
 from .scales import choose_mu, choose_mu_l
 from .structure import Structure
 
@@ -141,25 +143,25 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     deg = math.degrees(phi) % 360
     warnings = []
     for g in motion.groups:
-        if (err := g.parallel(None, deg, mech.source)) is not None:
-            raise err
-        if (warning := g.near_parallel(None, deg)) is not None:
-            warnings.append(warning)
-    scales = dict(mech.scales)
-    if mu:
-        scales.update(mu)
-    if "mu_l" not in scales:
-        scales["mu_l"] = choose_mu_l(cycle_extent(solver))
-    vplan, aplan = _build_plans(solver, motion, scales.get("mu_v"), scales.get("mu_a"))
+        if not abs(g.velocity.sine) >= WARN_SINE:  # NaN included: parallel() refuses it
+            if (err := g.parallel(None, deg, mech.source)) is not None:
+                raise err
+            warnings.append(g.near_parallel(None, deg))
+    scales = mech.scales
+    if mu or "mu_l" not in scales:
+        scales = dict(scales, **(mu or {}))
+        scales.setdefault("mu_l", choose_mu_l(cycle_extent(solver)))
+    vplan = _plan(solver, motion, "velocity", scales.get("mu_v"))
+    aplan = _plan(solver, motion, "acceleration", scales.get("mu_a"))
     positions = dict(motion.position)
     lengths = _position_segments(solver, motion, positions)
     mu_l = scales["mu_l"]
     segments = {k: v / mu_l for k, v in lengths.items()}
     segments.update(vplan.segments)
     segments.update(aplan.segments)
-    links = sorted(mech.links)
     states = motion.links
-    return Solution(
+    links = solver.cache.get("links") or solver.cache.setdefault("links", sorted(mech.links))
+    return _solution(
         mechanism=mech, structure=solver.structure, phi=phi, solver=solver,
         positions=positions, velocity=vplan, acceleration=aplan,
         omega={i: states[i].omega for i in links},
@@ -167,6 +169,16 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
         mu_l=mu_l, segments=segments, lengths=lengths,
         warnings=tuple(warnings), scalar=motion,
     )
+
+
+def _solution(**fields) -> Solution:
+    """A :class:`Solution` from every one of its fields, put in the instance's dict in one
+    step: the frozen dataclass's own ``__init__`` sets them one by one through
+    ``object.__setattr__``, three times as long (``tests/test_paths.py`` holds the two
+    equal)."""
+    sol = object.__new__(Solution)
+    sol.__dict__.update(fields)
+    return sol
 
 
 def cycle_extent(solver: Solver, n: int = 72) -> float:
@@ -224,7 +236,6 @@ def _segment_pairs(mech: Mechanism, motion: Motion):
 # ---------------------------------------------------------------------------------------
 
 _POLE, _VALUE, _TERM, _CROSS, _SIMILAR, _FIGURE = range(6)
-_new = tuple.__new__
 _POLE_SOURCE = Source("pole")
 
 
@@ -244,10 +255,6 @@ class _Recipe(NamedTuple):
     steps: tuple
     same: tuple[tuple[str, str], ...]
     ends: Mapping[str, tuple[str, str]]  # every drawn segment: name → (from, to)
-
-
-def _build_plans(solver: Solver, motion: Motion, mu_v, mu_a) -> tuple[Plan, Plan]:
-    return _plan(solver, motion, "velocity", mu_v), _plan(solver, motion, "acceleration", mu_a)
 
 
 def _plan(solver: Solver, motion: Motion, kind: str, mu) -> Plan:
@@ -379,8 +386,8 @@ def _segments_of(steps, pole: str) -> Mapping[str, tuple[str, str]]:
 def _follow(recipe: _Recipe, m: Motion, mu) -> Plan:
     """The plan at the motion's angle, by the recipe's steps.
 
-    The one hot loop of a single plan: records are made with ``_new`` (a NamedTuple built
-    positionally without its Python-level ``__new__``, half the time), and each point's
+    The one hot loop of a single plan: records are made with ``record`` (a NamedTuple built
+    from a tuple, half the time), and each point's
     vector is also kept in ``vals`` for the later steps and the segments."""
     acc = recipe.kind == "acceleration"
     store = m.acceleration if acc else m.velocity
@@ -406,7 +413,7 @@ def _follow(recipe: _Recipe, m: Motion, mu) -> Plan:
             value = cons[gi].routes[ri].terms[ti].value
             if start != pole:
                 value += vals[start]
-            points[tname] = _new(PlanPoint, (tname, value, src))
+            points[tname] = record(PlanPoint, (tname, value, src))
             vals[tname] = value
             vectors.append(vec)
             continue
@@ -415,10 +422,10 @@ def _follow(recipe: _Recipe, m: Motion, mu) -> Plan:
             c = cons[gi]
             routes = c.routes
             value = store[name]
-            src = _new(Source, ("intersection", equation, tuple([
-                _new(PlanLine, (through, routes[ri].direction, rel, unknown))
+            src = record(Source, ("intersection", equation, tuple([
+                record(PlanLine, (through, routes[ri].direction, rel, unknown))
                 for through, ri, rel, unknown in lines]), "", "", 0j, float(c.sine), ""))
-            points[pn] = _new(PlanPoint, (pn, value, src))
+            points[pn] = record(PlanPoint, (pn, value, src))
             vals[pn] = value
             if value:
                 vectors.append(vec)
@@ -432,16 +439,16 @@ def _follow(recipe: _Recipe, m: Motion, mu) -> Plan:
             ratio = (pos[name] - pos[b0]) / (pos[b1] - pos[b0])
             v0 = vals[n0]
             value = v0 + ratio * (vals[n1] - v0)
-            src = _new(Source, ("similarity", eqs[abs(ratio.imag) >= 1e-12], (), n0, n1, ratio,
+            src = record(Source, ("similarity", eqs[abs(ratio.imag) >= 1e-12], (), n0, n1, ratio,
                                 1.0, ""))
-        points[pn] = _new(PlanPoint, (pn, value, src))
+        points[pn] = record(PlanPoint, (pn, value, src))
         vals[pn] = value
         if value:
             vectors.append(vec)
     if not mu:
         mu = choose_mu(abs(store[recipe.tip]), max(map(abs, vals.values())))
     segments = {key: abs(vals[b] - vals[a]) / mu for key, (a, b) in recipe.ends.items()}
-    return _new(Plan, (recipe.kind, pole, points, tuple(vectors), mu,
+    return record(Plan, (recipe.kind, pole, points, tuple(vectors), mu,
                        "m/s²" if acc else "m/s", segments, recipe.ends))
 
 

@@ -14,11 +14,15 @@ from typing import NamedTuple
 import numpy as np
 
 from .errors import AssemblyError, PlansError, SingularPlanError
-from .kernels import SINGULAR_SINE  # noqa: F401  (also read from here by the reports)
+from .kernels import (
+    SINGULAR_SINE,  # noqa: F401  (also read from here by the reports)
+    record,
+)
 from .structure import Group
 
 #: below this |sin| (about 2°) a position is reported as near-singular
 WARN_SINE = 0.035
+
 
 
 class LinkState(NamedTuple):
@@ -45,9 +49,9 @@ class LinkState(NamedTuple):
 def state_from(origin, rotor, X, vX, aX, omega, eps) -> LinkState:
     """The state of a link from one of its points X with known velocity and acceleration."""
     r = origin - X
-    return LinkState(
+    return record(LinkState, (
         origin, rotor, vX + 1j * omega * r, omega, aX + (1j * eps - omega**2) * r, eps
-    )
+    ))
 
 
 class Term(NamedTuple):

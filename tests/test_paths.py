@@ -144,6 +144,24 @@ def test_sweep_into_reuses_the_arrays_and_keeps_the_callers_angles():
         press.sweep(b, into=first)
 
 
+def test_solution_built_in_one_step_equals_the_dataclass_built():
+    """solve_position fills a Solution's dict in one step; it holds every field, equals
+    one built by the frozen dataclass's own __init__, and stays frozen."""
+    import dataclasses
+
+    from plans.plan import Solution, solve_position
+
+    mech = SCENES["press"].mechanism()
+    sol = solve_position(mech, 0.7)
+    names = {f.name for f in dataclasses.fields(Solution)}
+    assert set(vars(sol)) == names
+    again = Solution(**{n: getattr(sol, n) for n in names})
+    assert again == sol
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        sol.phi = 0.0  # type: ignore[misc]
+    assert sol.motion.velocity["C"][0] == pytest.approx(sol.velocity.value("c"), rel=1e-13)
+
+
 @pytest.mark.parametrize("name", ALL)
 def test_plan_recipe_made_once_gives_the_plans_made_afresh(name):
     """solve_position follows a recipe worked out at the first angle a solver sees; at
