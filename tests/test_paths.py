@@ -201,7 +201,7 @@ def test_plan_recipe_made_once_gives_the_plans_made_afresh(name):
 def test_plan_recipe_is_worked_out_again_where_a_similarity_base_degenerates():
     """A recipe whose similarity step divides by two points that have met is not
     followed blindly: the plan is worked out again there (and the result is finite)."""
-    from plans.plan import _SIMILAR, solve_position
+    from plans.plan import _SIMILAR, _compile, solve_position
 
     mech = SCENES["press"].mechanism()
     sv = Solver(mech)
@@ -211,7 +211,8 @@ def test_plan_recipe_is_worked_out_again_where_a_similarity_base_degenerates():
     k = next(i for i, st in enumerate(steps) if st[0] == _SIMILAR)
     st = steps[k]
     steps[k] = (st[0], st[1], st[2], st[3], st[3]) + st[5:]  # base b1 := b0: divides by 0
-    sv.cache[("plan recipe", "velocity")] = recipe._replace(steps=tuple(steps))
+    broken = _compile(recipe.kind, recipe.pole, recipe.tip, steps, recipe.ends)
+    sv.cache[("plan recipe", "velocity")] = recipe._replace(steps=tuple(steps), follow=broken)
     again = solve_position(mech, 0.3, solver=sv)
     assert again.velocity.points == good.velocity.points
     assert sv.cache[("plan recipe", "velocity")].steps == recipe.steps
