@@ -29,6 +29,7 @@ from . import kernels
 from .branches import choose_branches, hint_holds, parse_hint
 from .errors import SingularPlanError
 from .groups import SOLVERS, ScalarFallback
+from .kernels import record
 from .mechanism import Mechanism
 from .records import (
     SINGULAR_SINE,
@@ -40,6 +41,7 @@ from .records import (
     Route,
     Term,
     coincident_name,
+    frozen,
 )
 from .structure import Structure, analyse
 
@@ -122,7 +124,7 @@ class Solver:
         states: dict[int, LinkState] = {0: frame_state}
         pos, vel, acc, owner = dict(pos), dict(vel), dict(acc), dict(owner)
         zc = frame_state.v
-        states[drv.link] = LinkState(zc + mech.frame[drv.pivot], rotor, zc, zero + drv.omega, zc, zero)
+        states[drv.link] = record(LinkState, (zc + mech.frame[drv.pivot], rotor, zc, zero + drv.omega, zc, zero))
         self._fill(drv.link, states, pos, vel, acc, owner)
         solutions = []
         valid = True if xp.scalar else np.ones(phi.shape, dtype=bool)
@@ -141,7 +143,9 @@ class Solver:
                 acc[name] = states[link].acc(X)
                 owner[name] = link
                 coincident[name] = base
-        return Motion(phi, states, pos, vel, acc, owner, tuple(solutions), valid, coincident)
+        return frozen(Motion, phi=phi, links=states, position=pos, velocity=vel,
+                      acceleration=acc, point_link=owner, groups=tuple(solutions), valid=valid,
+                      coincident=coincident)
 
     def _frame(self, zc, zero):
         """The frame's state and its points: fixed, at rest."""

@@ -22,7 +22,7 @@ import numpy as np
 from .kernels import record
 from .kinematics import Motion, Solver
 from .mechanism import Mechanism
-from .records import WARN_SINE
+from .records import WARN_SINE, frozen
 from .scales import choose_mu, choose_mu_l
 from .structure import Structure
 
@@ -162,7 +162,8 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     segments.update(aplan.segments)
     states = motion.links
     links = solver.cache.get("links") or solver.cache.setdefault("links", sorted(mech.links))
-    return _solution(
+    return frozen(
+        Solution,
         mechanism=mech, structure=solver.structure, phi=phi, solver=solver,
         positions=positions, velocity=vplan, acceleration=aplan,
         omega={i: states[i].omega for i in links},
@@ -170,16 +171,6 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
         mu_l=mu_l, segments=segments, lengths=lengths,
         warnings=tuple(warnings), scalar=motion,
     )
-
-
-def _solution(**fields) -> Solution:
-    """A :class:`Solution` from every one of its fields, put in the instance's dict in one
-    step: the frozen dataclass's own ``__init__`` sets them one by one through
-    ``object.__setattr__``, three times as long (``tests/test_paths.py`` holds the two
-    equal)."""
-    sol = object.__new__(Solution)
-    sol.__dict__.update(fields)
-    return sol
 
 
 def cycle_extent(solver: Solver, n: int = 72) -> float:

@@ -156,6 +156,17 @@ def _degrees(sine: float) -> float:
     return math.degrees(math.asin(min(sine, 1.0)))
 
 
+def frozen(cls, **fields):
+    """An instance of the frozen dataclass ``cls`` from every one of its fields, put in its
+    dict in one step: the class's own ``__init__`` sets them one by one through
+    ``object.__setattr__``, three times as long, and the one-angle path makes a
+    :class:`Motion` and a ``Solution`` at every angle (``tests/test_paths.py`` holds the
+    two ways equal)."""
+    obj = object.__new__(cls)
+    obj.__dict__.update(fields)
+    return obj
+
+
 @dataclass(frozen=True)
 class Motion:
     """Positions, velocities and accelerations of every point and link over angles ``phi``."""

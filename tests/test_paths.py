@@ -13,7 +13,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as hs
 
 from plans.errors import AssemblyError, SingularPlanError
-from plans.kinematics import Solver
+from plans.kinematics import Motion, Solver
 from plans.scenes import SCENES
 
 ALL = sorted(SCENES)
@@ -145,8 +145,9 @@ def test_sweep_into_reuses_the_arrays_and_keeps_the_callers_angles():
 
 
 def test_solution_built_in_one_step_equals_the_dataclass_built():
-    """solve_position fills a Solution's dict in one step; it holds every field, equals
-    one built by the frozen dataclass's own __init__, and stays frozen."""
+    """solve_position fills a Solution's dict in one step, and solve_one a Motion's; each
+    holds every field, equals one built by the frozen dataclass's own __init__, and stays
+    frozen."""
     import dataclasses
 
     from plans.plan import Solution, solve_position
@@ -159,6 +160,10 @@ def test_solution_built_in_one_step_equals_the_dataclass_built():
     assert again == sol
     with pytest.raises(dataclasses.FrozenInstanceError):
         sol.phi = 0.0  # type: ignore[misc]
+    m = sol.scalar  # the Motion it was built from, made the same way
+    fields = {f.name for f in dataclasses.fields(Motion)}
+    assert set(vars(m)) == fields
+    assert Motion(**{n: getattr(m, n) for n in fields}) == m
     assert sol.motion.velocity["C"][0] == pytest.approx(sol.velocity.value("c"), rel=1e-13)
 
 
