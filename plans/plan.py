@@ -251,18 +251,26 @@ class _Recipe(NamedTuple):
 
 
 def _plan(solver: Solver, motion: Motion, kind: str, mu) -> Plan:
-    """The plan by the solver's recipe, worked out again where it does not hold here: a
-    similarity base whose two points have met (caught by its division by zero), or two
-    points that coincided when the recipe was made and no longer do."""
-    key = ("plan recipe", kind)
-    recipe = solver.cache.get(key)
-    if recipe is not None and not any(abs(motion.position[b] - motion.position[a]) > 0
-                                      for a, b in recipe.same):
+    """The plan by one of the solver's recipes, the last one used first. A recipe does not
+    hold where a similarity base's two points have met (caught by its division by zero)
+    or where two points that coincided when it was made no longer do; where none holds,
+    one is worked out here and kept too. A mechanism whose points meet at some angles
+    only (a Scotch yoke) so keeps two recipes, instead of compiling one anew at each
+    change."""
+    recipes = solver.cache.setdefault(("plan recipes", kind), [])
+    pos = motion.position
+    for i, recipe in enumerate(recipes):
+        if any(abs(pos[b] - pos[a]) > 0 for a, b in recipe.same):
+            continue
         try:
-            return _follow(recipe, motion, mu)
+            plan = _follow(recipe, motion, mu)
         except ZeroDivisionError:
-            pass
-    recipe = solver.cache[key] = _work_out(solver.mech, motion, kind)
+            continue
+        if i:
+            recipes.insert(0, recipes.pop(i))
+        return plan
+    recipe = _work_out(solver.mech, motion, kind)
+    recipes.insert(0, recipe)
     return _follow(recipe, motion, mu)
 
 

@@ -211,16 +211,38 @@ def test_plan_recipe_is_worked_out_again_where_a_similarity_base_degenerates():
     mech = SCENES["press"].mechanism()
     sv = Solver(mech)
     good = solve_position(mech, 0.3, solver=sv)
-    recipe = sv.cache[("plan recipe", "velocity")]
+    (recipe,) = sv.cache[("plan recipes", "velocity")]
     steps = list(recipe.steps)
     k = next(i for i, st in enumerate(steps) if st[0] == _SIMILAR)
     st = steps[k]
     steps[k] = (st[0], st[1], st[2], st[3], st[3]) + st[5:]  # base b1 := b0: divides by 0
     broken = _compile(recipe.kind, recipe.pole, recipe.tip, steps, recipe.ends)
-    sv.cache[("plan recipe", "velocity")] = recipe._replace(steps=tuple(steps), follow=broken)
+    sv.cache[("plan recipes", "velocity")] = [recipe._replace(steps=tuple(steps), follow=broken)]
     again = solve_position(mech, 0.3, solver=sv)
     assert again.velocity.points == good.velocity.points
-    assert sv.cache[("plan recipe", "velocity")].steps == recipe.steps
+    # worked out afresh and kept first; the broken one stays behind it
+    fresh, kept = sv.cache[("plan recipes", "velocity")]
+    assert fresh.steps == recipe.steps and kept.steps == tuple(steps)
+
+
+def test_a_mechanism_whose_points_meet_at_some_angles_keeps_one_recipe_for_each_case():
+    """The Scotch yoke's recipe changes where two of its points meet (at φ1 = 0); over
+    angles that go back and forth between the two cases each recipe is worked out (and
+    compiled) once."""
+    from plans.plan import solve_position
+
+    mech = SCENES["scotch_yoke"].mechanism()
+    sv = Solver(mech)
+    angles = [0.0, *_angles(SCENES["scotch_yoke"], 24)]  # at 0 the pin A3 is on D
+    for _ in range(3):
+        for x in angles:
+            a = solve_position(mech, float(x), solver=sv)
+            b = solve_position(mech, float(x), solver=Solver(mech))
+            assert a.velocity.points == b.velocity.points
+            assert a.acceleration.points == b.acceleration.points
+    # every recipe worked out is kept, so their number is the number of work-outs
+    kept = {kind: len(sv.cache[("plan recipes", kind)]) for kind in ("velocity", "acceleration")}
+    assert max(kept.values()) == 2  # the two cases, and no more
 
 
 def test_the_readmes_python_example_runs_and_its_comments_are_true(monkeypatch):
