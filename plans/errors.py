@@ -21,7 +21,12 @@ class InputError(PlansError, ValueError):
 
 
 class StructureError(PlansError, ValueError):
-    """The chain is not W = 1, or it does not split into class-II groups."""
+    """The chain is not W = 1, or it does not split into class-II groups.
+    ``source`` as for :class:`AssemblyError`."""
+
+    def __init__(self, message: str, *, source: str = ""):
+        self.source = source
+        super().__init__(message)
 
 
 class AssemblyError(PlansError, ValueError):

@@ -94,9 +94,12 @@ class Structure:
         return " → ".join(parts)
 
     def chebyshev(self) -> str:
-        return (
-            f"W = 3n − 2p5 − p4 = 3·{self.n} − 2·{self.p5} − {self.p4} = {self.W}"
-        )
+        """Chebyshev's formula with its numbers, as the note and the errors write it."""
+        return chebyshev(self.n, self.p5, self.p4)
+
+
+def chebyshev(n: int, p5: int, p4: int = 0) -> str:
+    return f"W = 3n − 2p5 − p4 = 3·{n} − 2·{p5} − {p4} = {3 * n - 2 * p5 - p4}"
 
 
 def edges(mech: Mechanism) -> list[Edge]:
@@ -106,7 +109,16 @@ def edges(mech: Mechanism) -> list[Edge]:
 
 
 def analyse(mech: Mechanism) -> Structure:
-    """Mobility and Assur decomposition; raises :class:`StructureError` with the reason."""
+    """Mobility and Assur decomposition; raises :class:`StructureError` with the reason,
+    naming the mechanism's file."""
+    try:
+        return _analyse(mech)
+    except StructureError as err:
+        err.source = err.source or mech.source
+        raise
+
+
+def _analyse(mech: Mechanism) -> Structure:
     all_edges = edges(mech)
     n = len(mech.links)
     p5 = len(all_edges)
@@ -114,7 +126,7 @@ def analyse(mech: Mechanism) -> Structure:
     if W != 1:
         what = "over-constrained (a structure or a locked chain)" if W < 1 else "under-constrained: more inputs than one crank"
         raise StructureError(
-            f"W = 3n − 2p5 − p4 = 3·{n} − 2·{p5} − 0 = {W}: the chain is {what}; "
+            f"{chebyshev(n, p5)}: the chain is {what}; "
             "a mechanism with one crank needs W = 1"
         )
     drv = mech.driver.link
@@ -191,8 +203,22 @@ def _classify(x: int, y: int, ex: Edge, inner: Edge, ey: Edge) -> Group:
                 f"{label}: the block (link {x}) hinged at {ex.point} must slide along the "
                 f"guide carried by link {y}"
             )
+        if _parallel(s_in.guide.direction, 1):  # in the yoke's coordinates: x along its guide
+            raise StructureError(
+                f"{label}: the guide {s_in.guide.label} of link {y} is parallel to the guide "
+                f"{ey.slider.guide.label} it moves along, so the yoke's position is not fixed "
+                "at any crank angle: turn one of them"
+            )
         return Group(DyadKind.RPP, x, y, P=ex.point, s1=s_in, s2=ey.slider)
     raise StructureError(f"{label}: a group of three prismatic pairs has no fixed position")
+
+
+def _parallel(u: complex, v: complex) -> bool:
+    """Two unit directions fixed to one link, whose plan lines could never meet (the
+    threshold of a singular plan, :data:`plans.kernels.SINGULAR_SINE`)."""
+    from .kernels import SINGULAR_SINE
+
+    return abs((u.conjugate() * v).imag) <= SINGULAR_SINE
 
 
 def _must_slide(slider: Slider | None, link: int, label: str) -> None:

@@ -59,6 +59,69 @@ def test_table_corpus_through_the_cli(capsys, path):
         assert line.startswith(f"plans solve: {path}: ") and expected in line
 
 
+LOCKED = """name = "Locked"
+[frame]
+A = [0, 0]
+D = [-0.2, 0]
+[driver]
+angle_deg = 40
+omega = 10
+[links.1]
+axis = ["A", "B"]
+points = { B = 0.05 }
+[links.2]
+axis = ["B", "C"]
+points = { C = 0.2 }
+[links.3]
+axis = ["D", "C"]
+points = { C = 0.15, B = 0.1 }
+"""
+
+YOKE_GUIDES_PARALLEL = """name = "Yoke"
+[frame]
+O = [0.0, 0.0]
+[driver]
+angle_deg = 35
+omega = 10
+[links.1]
+axis = ["O", "A"]
+points = { A = 0.1 }
+[links.2]
+points = { A = 0 }
+[links.3]
+axis = ["D", "E"]
+points = { E = 0.3 }
+[[sliders]]
+link = 2
+guide = { link = 3, angle_deg = 0 }
+[[sliders]]
+link = 3
+point = "D"
+guide = { link = 0, through = [0.0, 0.0], angle_deg = 0 }
+"""
+
+
+@pytest.mark.parametrize("command", ["solve", "cycle", "report"])
+@pytest.mark.parametrize(("text", "expected"), [
+    (LOCKED, "W = 3n − 2p5 − p4 = 3·3 − 2·5 − 0 = -1: the chain is over-constrained"),
+    (YOKE_GUIDES_PARALLEL, "group 2–3 (RPP): the guide DE of link 3 is parallel to the guide "
+                           "x-x it moves along, so the yoke's position is not fixed at any "
+                           "crank angle"),
+], ids=["locked", "yoke"])
+def test_a_chain_that_cannot_move_is_reported_with_its_file(capsys, tmp_path, command, text,
+                                                            expected):
+    """A file that reads well but whose chain is not a mechanism of one crank: one line
+    naming the file, exit 2, nothing written."""
+    path = tmp_path / "chain.toml"
+    path.write_text(text, encoding="utf-8")
+    out = tmp_path / "out"
+    code, stdout, err = run(capsys, command, path, "-o", out)
+    assert code == 2 and stdout == ""
+    (line,) = assert_clean_failure(err, command)
+    assert line.startswith(f"plans {command}: {path}: {expected}")
+    assert not out.exists()
+
+
 @pytest.mark.parametrize("command", ["report", "cycle", "sheet"])
 @pytest.mark.parametrize("name", ["many_problems", "toml_truncated", "garbage_bytes", "unknown_point_in_axis"])
 def test_other_commands_report_bad_files_the_same_way(capsys, tmp_path, command, name):

@@ -17,7 +17,13 @@ import pytest
 from support import expectations
 
 from plans import fileformat, mechanism
-from plans.errors import AssemblyError, InputError, PlansError
+from plans.errors import (
+    AssemblyError,
+    InputError,
+    PlansError,
+    SingularPlanError,
+    StructureError,
+)
 from plans.kinematics import Solver
 from plans.mechanism import from_dict, load
 from plans.plan import solve_position
@@ -507,10 +513,20 @@ guide = { link = 3 }
 """
 
 
-@pytest.mark.parametrize("text", [PARALLEL_PRP, PARALLEL_RPP], ids=["PRP", "RPP"])
-def test_parallel_guides_are_named_without_a_made_up_gap(text):
-    msg = str(engine_error(text))
-    assert "parallel" in msg and "misses by 1 m" not in msg
+def test_parallel_guides_are_named_without_a_made_up_gap():
+    """Guides parallel at one crank angle (PRP, one guide on the crank) make that angle a
+    dead point; guides parallel at every angle (RPP: both fixed to the yoke's axis) are
+    refused with the structure, not reported as a dead point of one angle."""
+    err = engine_error(PARALLEL_PRP)
+    msg = str(err)
+    assert isinstance(err, SingularPlanError)
+    assert "parallel" in msg and "φ1 = 0°" in msg and "misses by" not in msg
+    err = engine_error(PARALLEL_RPP)
+    msg = str(err)
+    assert isinstance(err, StructureError)
+    assert msg == ("group 2–3 (RPP): the guide DE of link 3 is parallel to the guide x-x it "
+                   "moves along, so the yoke's position is not fixed at any crank angle: "
+                   "turn one of them")
 
 
 def test_exact_reach_limit_is_a_dead_point_not_a_zero_miss():
