@@ -386,19 +386,9 @@ def to_text(t: CycleTable) -> str:
     lines.append(
         f"φ1: degrees from {d.reference}, measured {d.measured} (the file's convention)"
     )
-    if c.grashof:
-        lines.append(f"Grashof: {c.grashof}")
-    for note in c.notes:
-        lines.append(note)
-    if c.stroke is not None and c.output is not None:
-        if c.output.kind == "linear":
-            lines.append(f"stroke of {c.output.point}: H = {num(c.stroke)} m")
-        else:
-            lines.append(
-                f"swing of link {c.output.link}: ψ = {num(math.degrees(c.stroke))}°"
-            )
-        if c.theta is not None:
-            lines.append(f"θ = {num(math.degrees(c.theta))}°, K = {num(c.K)}")
+    from .cycle import summary
+
+    lines += summary(c)
     moving = [p for p in t.points if p not in mech.frame]
     fixed = [p for p in t.points if p in mech.frame]
     if fixed:

@@ -117,21 +117,10 @@ def to_text(sol, cycle=None) -> str:
         )
     if cycle is not None:
         out.append("")
+        from .cycle import summary
+
         out.append("Cycle")
-        if cycle.grashof:
-            out.append(f"  Grashof: {cycle.grashof}")
-        for note in cycle.notes:
-            out.append(f"  {note}")
-        if cycle.stroke is not None and cycle.output is not None:
-            if cycle.output.kind == "linear":
-                out.append(f"  stroke of {cycle.output.point}: H = {num(cycle.stroke)} m")
-            else:
-                out.append(f"  swing of link {cycle.output.link}: ψ = {num(math.degrees(cycle.stroke))}°")
-            out.append(
-                "  extreme positions at φ1 = "
-                + ", ".join(f"{num(math.degrees(x) % 360)}°" for x in cycle.extremes)
-                + f"; θ = {num(math.degrees(cycle.theta))}°, K = {num(cycle.K)}"
-            )
+        out += [f"  {line}" for line in summary(cycle)]
     for w in sol.warnings:
         out.append(f"warning: {w}")
     return "\n".join(out) + "\n"

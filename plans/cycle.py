@@ -80,6 +80,25 @@ class Cycle:
     crank_range: tuple[float, float] | None = None  # rad: where it assembles, if not a full turn
 
 
+def summary(c: Cycle) -> list[str]:
+    """The cycle in a few lines, as ``plans solve`` and ``plans cycle`` print it: the
+    Grashof class, the notes, the stroke H or swing ψ, the extreme positions, θ and K."""
+    from .fmt import num
+
+    lines = [f"Grashof: {c.grashof}"] if c.grashof else []
+    lines += c.notes
+    if c.stroke is not None and c.output is not None:
+        if c.output.kind == "linear":
+            lines.append(f"stroke of {c.output.point}: H = {num(c.stroke)} m")
+        else:
+            lines.append(f"swing of link {c.output.link}: ψ = {num(math.degrees(c.stroke))}°")
+        lines.append(
+            "extreme positions at φ1 = "
+            + ", ".join(f"{num(math.degrees(x) % 360)}°" for x in c.extremes)
+            + f"; θ = {num(math.degrees(c.theta))}°, K = {num(c.K)}")
+    return lines
+
+
 def analyse_cycle(mech: Mechanism, n_positions: int = 12, solver: Solver | None = None,
                   samples: int = 3600) -> Cycle:
     solver = solver or Solver(mech)

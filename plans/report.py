@@ -123,7 +123,7 @@ def note(sol: Solution, lang: str = "en", cycle=None) -> str:
     out = [f"# {t['title']}: {mech.name}", ""]
     # structure ----------------------------------------------------------------------
     out += [f"## 1. {t['structure']}", "", t["cheb"], ""]
-    out.append(f"- `W = 3n − 2p5 − p4 = 3·{st.n} − 2·{st.p5} − {st.p4} = {st.W}`")
+    out.append(f"- `{st.chebyshev()}`")
     out.append(f"  (n = {st.n} {t['n']}, p5 = {st.p5} {t['p5']}, p4 = 0 {t['p4']})")
     out += ["", t["groups"].format(d=d.link), ""]
     for g in st.groups:
