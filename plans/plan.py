@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import linecache
 import math
+import zlib
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -490,9 +491,10 @@ def _compile(kind: str, pole: str, tip: str, steps, ends):
     scope = {"record": record, "Plan": Plan, "PlanPoint": PlanPoint, "Source": Source,
              "PlanLine": PlanLine, "choose_mu": choose_mu}
     scope.update((f"K{j}", c) for j, c in enumerate(consts))
-    filename = f"<plan recipe {kind} {id(steps):x}>"
+    # named by its text, so that a traceback through it shows the generated line, and one
+    # mechanism solved again and again keeps one entry in linecache
+    filename = f"<plan recipe {kind} {zlib.crc32(source.encode()):08x}>"
     exec(compile(source, filename, "exec"), scope)  # noqa: S102
-    # a traceback through it shows the generated line, as for dataclasses' methods
     linecache.cache[filename] = (len(source), None, source.splitlines(True), filename)
     follow = scope["follow"]
     follow.source = source

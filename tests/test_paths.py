@@ -225,6 +225,28 @@ def test_plan_recipe_is_worked_out_again_where_a_similarity_base_degenerates():
     assert fresh.steps == recipe.steps and kept.steps == tuple(steps)
 
 
+def test_a_compiled_recipe_shows_its_generated_line_in_a_traceback():
+    """The compiled recipe is ordinary Python: a failure inside it points at the
+    generated line, and two solvers of one mechanism share its linecache entry."""
+    import linecache
+    import traceback
+
+    from plans.plan import solve_position
+
+    mech = SCENES["press"].mechanism()
+    one, two = Solver(mech), Solver(mech)
+    solve_position(mech, 0.3, solver=one)
+    solve_position(mech, 0.3, solver=two)
+    (r1,), (r2,) = (sv.cache[("plan recipes", "velocity")] for sv in (one, two))
+    assert r1.follow is not r2.follow and r1.follow.source == r2.follow.source
+    with pytest.raises(KeyError) as info:
+        r1.follow({}, [], {}, None)  # no solved vectors at all
+    frame = traceback.extract_tb(info.tb)[-1]
+    assert frame.filename.startswith("<plan recipe velocity ")
+    assert frame.filename == r2.follow.__code__.co_filename
+    assert linecache.getline(frame.filename, frame.lineno).strip() == "v2 = store['A']"
+
+
 def test_a_mechanism_whose_points_meet_at_some_angles_keeps_one_recipe_for_each_case():
     """The Scotch yoke's recipe changes where two of its points meet (at φ1 = 0); over
     angles that go back and forth between the two cases each recipe is worked out (and
