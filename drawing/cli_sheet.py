@@ -1,7 +1,7 @@
 """``plans sheet``: drawing sheet 1 (plan of positions, velocity and acceleration
 plans, kinematic diagrams, tables) as one SVG in real millimetres.
 
-    plans sheet samples/press.toml -o press.svg
+    plans sheet samples/press.toml --format A2 -o press.svg
     plans sheet --variant 3 --format A2 --lang en --plans 1,4 -o v3.svg --png v3.png
     plans sheet --variant all -o sheets/      # one sheet per variant
 
@@ -198,11 +198,32 @@ def render(mech, args) -> str:
     from drawing.layout import LayoutError
 
     try:
-        scene, sheet, _ = build_sheet(mech, args.format, args.lang, args.positions, plans,
-                                      args.title_block)
+        scene, sheet, info = build_sheet(mech, args.format, args.lang, args.positions, plans,
+                                         args.title_block)
     except LayoutError as exc:
         raise InputError("--format", str(exc)) from None
+    if (note := sparse_note(mech, sheet, info["placed"])) is not None:
+        print(f"plans sheet: note: {mech.source}: {note}", file=sys.stderr)
     return to_svg(scene, sheet, title=mech.name)
+
+
+#: below this share of the sheet's field, views drawn at scales the file fixes are noted
+SPARSE = 0.3
+
+
+def sparse_note(mech, sheet, placed) -> str | None:
+    """Why a sheet is mostly empty, where the file's own scale factors made it so; None
+    where the sheet chose its scales or the views fill it."""
+    from drawing.layout import share_used
+
+    fixed = [k for k in ("mu_l", "mu_v", "mu_a") if k in mech.scales]
+    share = share_used(sheet, placed)
+    if not fixed or share >= SPARSE:
+        return None
+    names = ", ".join("μ" + k[-1] for k in fixed)
+    return (f"the views take {share:.0%} of the {sheet.name} sheet's field at the scale "
+            f"factors the file fixes ({names}); leave them out of [scales] for the sheet to "
+            "choose them, or take a smaller --format")
 
 
 def _extras(svg: str, args) -> None:

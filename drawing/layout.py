@@ -17,7 +17,7 @@ from shapely.prepared import prep
 from drawing.scene import Group, Rect
 from drawing.sheet import Sheet
 
-__all__ = ["LayoutError", "Placed", "place_views"]
+__all__ = ["LayoutError", "Placed", "place_views", "share_used"]
 
 GAP = 6.0
 MARGIN = 4.0
@@ -68,3 +68,14 @@ def place_views(sheet: Sheet, views) -> list[Placed]:
         placed.append(Placed(v, r))
         boxes.append(box(*r.bounds))
     return placed
+
+
+def share_used(sheet: Sheet, placed: list[Placed]) -> float:
+    """The share of the sheet's free field that the views' bounding box covers: about 0.7
+    on a well-filled sheet, under 0.3 where fixed small scales leave most of it empty."""
+    if not placed:
+        return 0.0
+    xs0, ys0, xs1, ys1 = zip(*(p.rect.bounds for p in placed), strict=True)
+    used = box(min(xs0), min(ys0), max(xs1), max(ys1))
+    area = sheet.drawing_area()
+    return used.intersection(area).area / area.area

@@ -128,6 +128,11 @@ def test_cli_stdout_and_batch(tmp_path):
     assert r.returncode == 0, r.stderr.decode()
     _, texts = _texts(r.stdout.decode())
     assert "Иванов" in texts and "1:10" in texts
+    # the press file fixes its scales, small for A1: the command says so, and how to mend it
+    assert r.stderr.decode() == (
+        "plans sheet: note: samples/press.toml: the views take 21% of the A1 sheet's field "
+        "at the scale factors the file fixes (μl, μv, μa); leave them out of [scales] for "
+        "the sheet to choose them, or take a smaller --format\n")
     r = subprocess.run([sys.executable, "-m", "plans", "sheet", "--variant", "all", "-o", str(tmp_path)],
                        cwd=ROOT, capture_output=True, env=env, timeout=120)
     assert r.returncode == 0, r.stderr.decode()
@@ -168,6 +173,23 @@ def test_sheet_scales_fill_the_sheet_where_the_file_leaves_them_free():
     assert sol.mu_l == 0.001 and sol.mu_v == 0.01
     press = _sheet("press")[3]["solutions"][0][2]
     assert (press.mu_l, press.mu_v, press.mu_a) == (0.01, 0.05, 1.0)  # fixed in the file
+
+
+def test_only_a_sheet_left_empty_by_the_files_own_scales_gets_a_note():
+    """The press at its fixed scales fills a fifth of A1 (noted) and half of A2 (not);
+    sheets whose scales the tool chose are not noted, however they fill the field."""
+    from drawing.cli_sheet import SPARSE, sparse_note
+    from drawing.layout import share_used
+
+    mech, _, sheet, info, _ = _sheet("press")
+    assert 0.15 < share_used(sheet, info["placed"]) < SPARSE
+    assert "21% of the A1 sheet's field" in sparse_note(mech, sheet, info["placed"])
+    mech, _, sheet, info, _ = _sheet("press", "A2")
+    assert share_used(sheet, info["placed"]) > 0.45
+    assert sparse_note(mech, sheet, info["placed"]) is None
+    for key in ("fourbar", 3):
+        mech, _, sheet, info, _ = _sheet(key)
+        assert not mech.scales and sparse_note(mech, sheet, info["placed"]) is None
 
 
 def test_russian_fourbar_sheet_explains_the_missing_diagrams_in_russian():
