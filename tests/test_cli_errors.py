@@ -11,6 +11,7 @@ from pathlib import Path
 
 import pytest
 from support import expectations, run
+from test_errors import PARALLEL_RPP
 
 from plans import cli
 from plans.cli import main
@@ -77,28 +78,7 @@ axis = ["D", "C"]
 points = { C = 0.15, B = 0.1 }
 """
 
-YOKE_GUIDES_PARALLEL = """name = "Yoke"
-[frame]
-O = [0.0, 0.0]
-[driver]
-angle_deg = 35
-omega = 10
-[links.1]
-axis = ["O", "A"]
-points = { A = 0.1 }
-[links.2]
-points = { A = 0 }
-[links.3]
-axis = ["D", "E"]
-points = { E = 0.3 }
-[[sliders]]
-link = 2
-guide = { link = 3, angle_deg = 0 }
-[[sliders]]
-link = 3
-point = "D"
-guide = { link = 0, through = [0.0, 0.0], angle_deg = 0 }
-"""
+YOKE_GUIDES_PARALLEL = 'name = "Yoke"\n' + PARALLEL_RPP  # guides parallel at every angle
 
 
 @pytest.mark.parametrize("command", ["solve", "cycle", "report"])
