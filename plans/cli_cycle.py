@@ -240,6 +240,8 @@ def _cycle_summary(t: CycleTable) -> dict:
         "theta_deg": None if c.theta is None else math.degrees(c.theta),
         "K": c.K,
         "grashof": c.grashof,
+        "crank_range_phi_deg": None if c.crank_range is None
+        else [_deg(t.mechanism, x) for x in c.crank_range],
         "notes": list(c.notes),
     }
     return out
@@ -388,7 +390,7 @@ def to_text(t: CycleTable) -> str:
     )
     from .cycle import summary
 
-    lines += summary(c)
+    lines += summary(c, d.file_angle)
     moving = [p for p in t.points if p not in mech.frame]
     fixed = [p for p in t.points if p in mech.frame]
     if fixed:

@@ -80,12 +80,20 @@ class Cycle:
     crank_range: tuple[float, float] | None = None  # rad: where it assembles, if not a full turn
 
 
-def summary(c: Cycle) -> list[str]:
+def summary(c: Cycle, deg=None) -> list[str]:
     """The cycle in a few lines, as ``plans solve`` and ``plans cycle`` print it: the
-    Grashof class, the notes, the stroke H or swing ψ, the extreme positions, θ and K."""
-    from .fmt import num
+    four-bar's Grashof class, the crank range where it cannot make a full turn, the notes,
+    the stroke H or swing ψ, the extreme positions, θ and K.
 
-    lines = [f"Grashof: {c.grashof}"] if c.grashof else []
+    ``deg``: a crank angle (rad from +x) in degrees in the caller's convention (the file's
+    for ``plans cycle``); default counter-clockwise from +x."""
+    from .fmt import num
+    from .report import no_full_turn
+
+    deg = deg or from_x
+    lines = [f"four-bar: {c.grashof}"] if c.grashof else []
+    if not c.full_turn:
+        lines.append(no_full_turn(c, "en", deg))
     lines += c.notes
     if c.stroke is not None and c.output is not None:
         if c.output.kind == "linear":
@@ -94,9 +102,19 @@ def summary(c: Cycle) -> list[str]:
             lines.append(f"swing of link {c.output.link}: ψ = {num(math.degrees(c.stroke))}°")
         lines.append(
             "extreme positions at φ1 = "
-            + ", ".join(f"{num(math.degrees(x) % 360)}°" for x in c.extremes)
+            + ", ".join(f"{_angle(num(deg(x), 4))}°" for x in c.extremes)
             + f"; θ = {num(math.degrees(c.theta))}°, K = {num(c.K)}")
     return lines
+
+
+def _angle(text: str) -> str:
+    """An angle in [0, 360) as written: one that rounds to 360 is 0."""
+    return "0" if text == "360" else text
+
+
+def from_x(phi: float) -> float:
+    """A crank angle (rad) in degrees counter-clockwise from +x, in [0, 360)."""
+    return math.degrees(phi) % 360.0
 
 
 def analyse_cycle(mech: Mechanism, n_positions: int = 12, solver: Solver | None = None,
@@ -113,13 +131,8 @@ def analyse_cycle(mech: Mechanism, n_positions: int = 12, solver: Solver | None 
     grashof = _grashof(mech, solver)
     full = bool(valid.all())
     out = find_output(mech)
-    if not full:
+    if not full:  # the range is worded where it is shown (report.no_full_turn)
         lo, hi = _interval_around(grid, valid)
-        notes.append(
-            "the crank cannot make a full turn: it assembles only for φ1 from "
-            f"{math.degrees(lo) % 360:.2f}° to {math.degrees(hi) % 360:.2f}° "
-            f"({math.degrees(abs(hi - lo)):.2f}° of crank travel)"
-        )
         span = np.linspace(lo, hi, n_positions) if n_positions > 1 else np.array([lo])
         return Cycle(out, False, (), None, None, None, tuple(span), grashof, tuple(notes),
                      (lo, hi))
@@ -142,6 +155,8 @@ def analyse_cycle(mech: Mechanism, n_positions: int = 12, solver: Solver | None 
             slow, fast = max(span, TWO_PI - span), min(span, TWO_PI - span)
             theta = (slow - fast) / 2
             K = slow / fast
+            if abs(theta) < 1e-9:  # equal strokes, as the tie below: θ = 0 and K = 1 exactly
+                theta, K = 0.0, 1.0
             # position 0 starts the slower (working) stroke; on a tie, the lower output value
             if abs(span - (TWO_PI - span)) < 1e-9:
                 start = extremes[int(np.argmin(val))]
@@ -219,7 +234,7 @@ def grashof_class(a: float, b: float, c: float, d: float) -> str:
     if math.isclose(lhs, rhs, rel_tol=1e-12):
         return f"change-point linkage (Grashof equality: {tag}): it folds at two positions"
     if lhs > rhs:
-        return f"double rocker (non-Grashof: {tag}): the crank cannot make a full turn"
+        return f"double rocker (non-Grashof: {tag})"
     if s == a:
         return f"crank-rocker (Grashof: {tag})"
     if s == d:

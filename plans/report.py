@@ -144,7 +144,7 @@ def note(sol: Solution, lang: str = "en", cycle=None) -> str:
     if cycle is not None:
         out.append("")
         if not cycle.full_turn:
-            out.append(no_full_turn(cycle, lang))
+            out.append(no_full_turn(cycle, lang, mech.driver.file_angle))
         elif cycle.stroke is not None:
             if cycle.output.kind == "linear":
                 out.append(t["stroke"].format(p=cycle.output.point))
@@ -166,11 +166,14 @@ def note(sol: Solution, lang: str = "en", cycle=None) -> str:
     return "\n".join(out).rstrip() + "\n"
 
 
-def no_full_turn(cycle, lang: str = "en") -> str:
-    """The sentence for a crank that cannot make a full turn, with its range."""
+def no_full_turn(cycle, lang: str = "en", deg=None) -> str:
+    """The sentence for a crank that cannot make a full turn, with its range: from the
+    cycle's first position to its last, in degrees by ``deg`` (a crank angle in rad →
+    degrees in the convention wanted; default counter-clockwise from +x)."""
     lo, hi = cycle.crank_range
+    deg = deg or (lambda phi: math.degrees(phi) % 360.0)
     return T[lang]["noturn"].format(
-        lo=num(math.degrees(lo) % 360, 4, lang), hi=num(math.degrees(hi) % 360, 4, lang),
+        lo=num(deg(lo), 4, lang), hi=num(deg(hi), 4, lang),
         span=num(math.degrees(abs(hi - lo)), 4, lang),
     )
 

@@ -225,3 +225,21 @@ def test_cycle_pays_for_no_heavy_import(tmp_path):
         check=True,
     )
     assert out.stdout.strip() == "[]"
+
+
+def test_cycle_text_gives_every_crank_angle_in_the_files_convention(capsys):
+    """The press measures φ1 clockwise from +y: the extreme positions in the summary are
+    in that convention, and position 0, which starts the working stroke, is one of them."""
+    import re
+
+    code, out, _ = run(capsys, "cycle", PRESS)
+    assert code == 0
+    mech = mechanism.load(PRESS)
+    c = analyse_cycle(mech, 12)
+    (line,) = [ln for ln in out.splitlines() if ln.startswith("extreme positions at φ1 = ")]
+    shown = [float(x) for x in re.findall(r"([\d.]+)°", line.split(";")[0])]
+    want = [mech.driver.file_angle(x) for x in c.extremes]
+    assert shown == pytest.approx(want, abs=0.05)
+    assert shown == pytest.approx([250.1, 109.9], abs=0.05)  # 199.9° and 340.1° from +x
+    row0 = next(ln for ln in out.splitlines() if re.match(r"\s+0\s", ln))
+    assert float(row0.split()[1]) == pytest.approx(shown[1], abs=0.05)

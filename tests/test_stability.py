@@ -22,7 +22,7 @@ import pytest
 
 from plans import reference
 from plans.cli_cycle import compute, conditioning
-from plans.cycle import analyse_cycle
+from plans.cycle import analyse_cycle, summary
 from plans.kinematics import WARN_SINE, Solver
 from plans.mechanism import from_dict, load
 from plans.scenes import SAMPLES, SCENES
@@ -297,7 +297,18 @@ def test_linkage_that_cannot_make_a_full_turn():
     mech = load(SAMPLES / "fourbar.toml")
     solver = Solver(mech)
     cyc = analyse_cycle(mech, n_positions=12, solver=solver)
-    assert not cyc.full_turn and "cannot make a full turn" in cyc.notes[0]
+    assert not cyc.full_turn
+    # it folds where |BD| = |BC − CD|: the crank at 180° ± γ about AD, by the cosine rule
+    a = mech.driver.length
+    bc = abs(mech.links[2].points["C"] - mech.links[2].points["B"])
+    cd = abs(mech.links[3].points["C"] - mech.links[3].points["D"])
+    ad = abs(mech.frame["D"] - mech.frame["A"])
+    gamma = math.degrees(math.acos((a * a + ad * ad - (bc - cd) ** 2) / (2 * a * ad)))
+    lo, hi = (math.degrees(x) % 360 for x in cyc.crank_range)
+    assert lo == pytest.approx(180 + gamma, abs=0.1) and hi == pytest.approx(180 - gamma, abs=0.1)
+    assert summary(cyc)[1] == (f"The crank cannot make a full turn: it assembles only for φ1 "
+                               f"from {lo:.1f}° to {hi:.1f}° ({360 - 2 * gamma:.1f}° of crank "
+                               "travel).")
     phi = worst_angles(mech, solver)
     _, _, kappa = check(mech, phi)
     assert kappa.max() > 1 / WARN_SINE
