@@ -147,15 +147,15 @@ def _rrr(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
 
 
 def _rrp_setup(sv: Solver, g: Group) -> dict:
-    P, C, gl = g.P, g.C, g.s1.guide.label
+    P, C, gl, along = g.P, g.C, g.s1.guide.label, g.s1.guide.along
     pl, cl = sv.local(g.a, P), sv.local(g.a, C)
     l2 = abs(cl - pl)
     base = _base_name(C, g.s1.guide)
-    second = f"V_{base} + V_{C}{base}" if base else f"V_{C}(∥ {gl})"
-    asecond = f"a_{base} + a^k_{C}{base} + a^r_{C}{base}" if base else f"a_{C}(∥ {gl})"
+    second = f"V_{base} + V_{C}{base}" if base else f"V_{C}({along})"
+    asecond = f"a_{base} + a^k_{C}{base} + a^r_{C}{base}" if base else f"a_{C}({along})"
     return {
         "pl": pl, "cl": cl, "l2": l2, "cb": sv.local(g.b, C), "base": base,
-        "⊥P": f"⊥ {C}{P}", "VP": f"V_{C}{P}", "∥": f"∥ {gl}",
+        "⊥P": f"⊥ {C}{P}", "VP": f"V_{C}{P}", "∥": along,
         "Vs": f"V_{C}{base}" if base else f"V_{C}", "k": f"a^k_{C}{base}",
         "nP": f"a^n_{C}{P}", "tP": f"a^t_{C}{P}",
         "as": f"a^r_{C}{base}" if base else f"a_{C}",
@@ -204,13 +204,13 @@ def _rrp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
 
 def _rpr_setup(sv: Solver, g: Group) -> dict:
     P, Q, G, s = g.P, g.Q, g.b, g.s1  # block g.a hinged at P slides on the guide of G
-    gl, gd = s.guide.label, s.guide.direction
+    gd = s.guide.direction
     q = sv.local(G, Q)
     e = (gd.conjugate() * (s.guide.point - q)).imag  # offset of the guide from the pivot Q
     name = coincident_name(P, G)
     return {
         "q": q, "e": e, "gd": gd, "pa": sv.local(g.a, P), "name": name,
-        "∥": f"∥ {gl}", "VP": f"V_{name}{P}", "⊥Q": f"⊥ {Q}{name}", "VQ": f"V_{name}{Q}",
+        "∥": s.guide.along, "VP": f"V_{name}{P}", "⊥Q": f"⊥ {Q}{name}", "VQ": f"V_{name}{Q}",
         "k": f"a^k_{name}{P}", "rP": f"a^r_{name}{P}", "nQ": f"a^n_{name}{Q}",
         "tQ": f"a^t_{name}{Q}",
         "veq": f"V_{name} = V_{P} + V_{name}{P} = V_{Q} + V_{name}{Q}",
@@ -261,7 +261,7 @@ def _prp_setup(sv: Solver, g: Group) -> dict:
     l1, l2 = sa.guide.label, sb.guide.label
     return {
         "ca": sv.local(g.a, C), "cb": sv.local(g.b, C), "b1": b1, "b2": b2,
-        "∥1": f"∥ {l1}", "∥2": f"∥ {l2}", "V1": f"V_{C}{b1 or ''}", "V2": f"V_{C}{b2 or ''}",
+        "∥1": sa.guide.along, "∥2": sb.guide.along, "V1": f"V_{C}{b1 or ''}", "V2": f"V_{C}{b2 or ''}",
         "k1": f"a^k_{C}{b1}", "k2": f"a^k_{C}{b2}",
         "r1": f"a^r_{C}{b1 or ''}", "r2": f"a^r_{C}{b2 or ''}",
         "veq": f"V_{C} = V_{b1 or '0'} + V_{C}{b1 or ''} = V_{b2 or '0'} + V_{C}{b2 or ''}",
@@ -313,7 +313,7 @@ def _rpp_setup(sv: Solver, g: Group) -> dict:
     return {
         "locD": sv.local(B, s_out.point), "g0": s_in.guide.point, "gd": s_in.guide.direction,
         "pa": sv.local(g.a, P), "name": name, "bk": bk,
-        "∥in": f"∥ {li}", "∥out": f"∥ {lo}", "VP": f"V_{name}{P}", "Vk": f"V_{name}{bk or ''}",
+        "∥in": s_in.guide.along, "∥out": s_out.guide.along, "VP": f"V_{name}{P}", "Vk": f"V_{name}{bk or ''}",
         "kP": f"a^k_{name}{P}", "kk": f"a^k_{name}{bk}",
         "rP": f"a^r_{name}{P}", "rk": f"a^r_{name}{bk or ''}",
         "veq": f"V_{name} = V_{P} + V_{name}{P} = V_{bk or '0'} + V_{name}{bk or ''}",

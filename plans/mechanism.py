@@ -8,7 +8,8 @@ named on two links (or on a link and the frame) is a hinge joining them.
 A link's own coordinates: the origin at ``axis[0]`` and the x-axis towards ``axis[1]``; a
 point is given by its distance along that axis, or ``[along, across]`` (across positive to
 the left of the axis). A link without an axis slides on a guide: its origin is its point
-on the guide and its x-axis runs along the guide.
+on the guide and its x-axis runs along the guide. A link with an axis that slides on a
+guide has its axis along the guide too (a Scotch yoke's).
 
 Lengths are metres, angles degrees in the file and radians inside, time seconds.
 """
@@ -55,6 +56,12 @@ class Guide:
     point: complex
     direction: complex  # unit
     label: str
+
+    @property
+    def along(self) -> str:
+        """The guide's direction as a plan's line is described: "∥ x-x", "∥ DE", or
+        "⊥ DE" for a slot across the axis of the link that carries it."""
+        return self.label if self.label.startswith("⊥") else f"∥ {self.label}"
 
 
 @dataclass(frozen=True, slots=True)
@@ -705,7 +712,11 @@ def _guide(body, where, pr: Problems, links, frame, slider_link, bad_links) -> G
             point = _pair(through, where + ".through", pr)
             if point is None:
                 return None
-        default_label = "".join(link.axis)
+        # the link's own x-axis runs along its axis: a guide along it or across it is
+        # named by it, any other by its link
+        axis = "".join(link.axis)
+        default_label = (axis if abs(direction.imag) < 1e-12 else f"⊥ {axis}"
+                         if abs(direction.real) < 1e-12 else f"slot of link {gl}")
     point = point + offset * 1j * direction
     if label is not None and (not isinstance(label, str) or len(label) > 20):
         pr.add(where + ".label", f'must be a short text (at most 20 characters), e.g. "x-x", got {quote(label)}')

@@ -99,7 +99,8 @@ class Structure:
 
 
 def chebyshev(n: int, p5: int, p4: int = 0) -> str:
-    return f"W = 3n − 2p5 − p4 = 3·{n} − 2·{p5} − {p4} = {3 * n - 2 * p5 - p4}"
+    W = 3 * n - 2 * p5 - p4
+    return f"W = 3n − 2p5 − p4 = 3·{n} − 2·{p5} − {p4} = {W}".replace("= -", "= −")
 
 
 def edges(mech: Mechanism) -> list[Edge]:
@@ -206,8 +207,9 @@ def _classify(x: int, y: int, ex: Edge, inner: Edge, ey: Edge) -> Group:
         if _parallel(s_in.guide.direction, 1):  # in the yoke's coordinates: x along its guide
             raise StructureError(
                 f"{label}: the guide {s_in.guide.label} of link {y} is parallel to the guide "
-                f"{ey.slider.guide.label} it moves along, so the yoke's position is not fixed "
-                "at any crank angle: turn one of them"
+                f"{ey.slider.guide.label} it moves along (a sliding link's x-axis runs along "
+                "its guide), so the yoke's position is not fixed at any crank angle: turn "
+                f"one of them, e.g. angle_deg = 90 for a slot across link {y}"
             )
         return Group(DyadKind.RPP, x, y, P=ex.point, s1=s_in, s2=ey.slider)
     raise StructureError(f"{label}: a group of three prismatic pairs has no fixed position")

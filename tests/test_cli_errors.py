@@ -83,10 +83,10 @@ YOKE_GUIDES_PARALLEL = 'name = "Yoke"\n' + PARALLEL_RPP  # guides parallel at ev
 
 @pytest.mark.parametrize("command", ["solve", "cycle", "report"])
 @pytest.mark.parametrize(("text", "expected"), [
-    (LOCKED, "W = 3n − 2p5 − p4 = 3·3 − 2·5 − 0 = -1: the chain is over-constrained"),
+    (LOCKED, "W = 3n − 2p5 − p4 = 3·3 − 2·5 − 0 = −1: the chain is over-constrained"),
     (YOKE_GUIDES_PARALLEL, "group 2–3 (RPP): the guide DE of link 3 is parallel to the guide "
-                           "x-x it moves along, so the yoke's position is not fixed at any "
-                           "crank angle"),
+                           "x-x it moves along (a sliding link's x-axis runs along its guide), "
+                           "so the yoke's position is not fixed at any crank angle"),
 ], ids=["locked", "yoke"])
 def test_a_chain_that_cannot_move_is_reported_with_its_file(capsys, tmp_path, command, text,
                                                             expected):

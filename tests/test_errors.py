@@ -525,8 +525,20 @@ def test_parallel_guides_are_named_without_a_made_up_gap():
     msg = str(err)
     assert isinstance(err, StructureError)
     assert msg == ("group 2–3 (RPP): the guide DE of link 3 is parallel to the guide x-x it "
-                   "moves along, so the yoke's position is not fixed at any crank angle: "
-                   "turn one of them")
+                   "moves along (a sliding link's x-axis runs along its guide), so the "
+                   "yoke's position is not fixed at any crank angle: turn one of them, e.g. "
+                   "angle_deg = 90 for a slot across link 3")
+    # as the message says: the same yoke with its slot across DE solves
+    across = PARALLEL_RPP.replace("guide = { link = 3, angle_deg = 0 }",
+                                  "guide = { link = 3, angle_deg = 90 }")
+    assert across != PARALLEL_RPP
+    sol = solve_position(from_dict(tomllib.loads(across), "yoke"))
+    (a3,) = [p for p in sol.velocity.points.values() if p.source.kind == "intersection"]
+    assert [ln.relation for ln in a3.source.lines] == ["⊥ DE", "∥ x-x"]
+    slanted = across.replace("angle_deg = 90 }", "angle_deg = 60 }")
+    sol = solve_position(from_dict(tomllib.loads(slanted), "yoke"))
+    (a3,) = [p for p in sol.velocity.points.values() if p.source.kind == "intersection"]
+    assert [ln.relation for ln in a3.source.lines] == ["∥ slot of link 3", "∥ x-x"]
 
 
 def test_exact_reach_limit_is_a_dead_point_not_a_zero_miss():

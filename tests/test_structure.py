@@ -48,7 +48,7 @@ def _fourbar(**extra):
 def test_locked_chain_reports_W():
     data = _fourbar()
     data["links"]["3"]["points"]["B"] = 0.1  # a fourth hinge makes a structure
-    with pytest.raises(StructureError, match=r"3·3 − 2·5 − 0 = -1"):
+    with pytest.raises(StructureError, match=r"3·3 − 2·5 − 0 = −1"):
         analyse(from_dict(data, "locked.toml"))
 
 
