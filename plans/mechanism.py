@@ -219,6 +219,17 @@ def _name(value: Any, where: str, problems: Problems) -> str | None:
     return value
 
 
+def _one_spelling(nm: str, where: str, spellings: dict[str, str], pr: Problems) -> bool:
+    """False (with the problem) for a name that differs from another only in case: the
+    plans write points in lower case (C → c), so EF and Ef would be one plan point."""
+    other = spellings.setdefault(nm.lower(), nm)
+    if other == nm:
+        return True
+    pr.add(where, f'"{nm}" and "{other}" differ only in case, and the plans write both as '
+                  f'"{nm.lower()}": rename one')
+    return False
+
+
 def _ids(links) -> str:
     return ", ".join(str(i) for i in sorted(links)) or "none"
 
@@ -257,6 +268,7 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
     # frame -------------------------------------------------------------------------
     frame: dict[str, complex] = {}
     named: set[str] = set()  # every point name the file uses, valid coordinates or not
+    spellings: dict[str, str] = {}  # plan name (lower case) → the point name that has it
     frame_names: set[str] = set()
     raw_frame = data.get("frame")
     if not isinstance(raw_frame, dict) or not raw_frame:
@@ -269,7 +281,7 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
     for key, value in raw_frame.items():
         where = f"frame.{key_text(key)}"
         nm = _name(key, where, pr)
-        if nm:
+        if nm and _one_spelling(nm, where, spellings, pr):
             named.add(nm)
             frame_names.add(nm)
         xy = _pair(value, where, pr)
@@ -305,7 +317,7 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
             continue
         check_keys(body, {"name", "axis", "points"}, where, pr)
         lname = read_text(body.get("name"), where + ".name", pr, f"link {lid}")
-        link, ok = _link(lid, lname, body, where, pr, named)
+        link, ok = _link(lid, lname, body, where, pr, named, spellings)
         total_points += len(link.points)
         if not ok:
             bad_links.add(lid)
@@ -479,7 +491,8 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
     )
 
 
-def _link(lid: int, lname: str, body: dict, where: str, pr: Problems, named: set[str]):
+def _link(lid: int, lname: str, body: dict, where: str, pr: Problems, named: set[str],
+          spellings: dict[str, str]):
     """One link's points in its own coordinates; ``ok`` False when it has a problem."""
     before = len(pr.items)
     points: dict[str, complex] = {}
@@ -491,6 +504,8 @@ def _link(lid: int, lname: str, body: dict, where: str, pr: Problems, named: set
         else:
             a0 = _name(axis[0], where + ".axis[0]", pr)
             a1 = _name(axis[1], where + ".axis[1]", pr)
+            a0 = a0 if a0 and _one_spelling(a0, where + ".axis[0]", spellings, pr) else None
+            a1 = a1 if a1 and _one_spelling(a1, where + ".axis[1]", spellings, pr) else None
             named |= {a for a in (a0, a1) if a}
             axis = (a0, a1) if a0 and a1 else None
             if axis and a0 == a1:
@@ -509,7 +524,7 @@ def _link(lid: int, lname: str, body: dict, where: str, pr: Problems, named: set
     for pname, spec in raw_points.items():
         pw = f"{where}.points.{key_text(pname)}"
         nm = _name(pname, pw, pr)
-        if nm is None:
+        if nm is None or not _one_spelling(nm, pw, spellings, pr):
             continue
         named.add(nm)
         if isinstance(spec, list):

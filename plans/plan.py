@@ -9,9 +9,9 @@ and the check of a student's plan all read this one object.
 
 from __future__ import annotations
 
+import hashlib
 import linecache
 import math
-import zlib
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -74,8 +74,11 @@ class PlanVector(NamedTuple):
 
 
 class Plan(NamedTuple):
-    """One plan (velocity or acceleration) at one angle: immutable, built once per angle
-    (a NamedTuple: a fifth of a frozen dataclass's construction time)."""
+    """One plan (velocity or acceleration) at one angle: immutable, built once per angle.
+
+    A NamedTuple, built in a fifth of a frozen dataclass's time: a changed copy is
+    ``plan._replace(mu=…)`` (not ``dataclasses.replace``), and it unpacks and compares
+    as the tuple of its eight fields."""
 
     kind: str  # "velocity" or "acceleration"
     pole: str  # "p" or "π"
@@ -84,9 +87,9 @@ class Plan(NamedTuple):
     mu: float
     unit: str  # "m/s" or "m/s²"
     #: every drawn segment in mm: pole to each point found, and each component vector
-    segments: dict[str, float]
+    segments: Mapping[str, float] = MappingProxyType({})
     #: the same segments' ends: name → (from, to), plan point names or the pole
-    ends: Mapping[str, tuple[str, str]]
+    ends: Mapping[str, tuple[str, str]] = MappingProxyType({})
 
     def value(self, name: str) -> complex:
         return 0j if name == self.pole else self.points[name].value
@@ -145,7 +148,7 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     deg = math.degrees(phi) % 360
     warnings = []
     for g in motion.groups:
-        if not abs(g.velocity.sine) >= WARN_SINE:  # NaN included: parallel() refuses it
+        if not WARN_SINE <= abs(g.velocity.sine) < math.inf:  # NaN, inf: parallel() refuses them
             if (err := g.parallel(None, deg, mech.source)) is not None:
                 raise err
             warnings.append(g.near_parallel(None, deg))
@@ -423,7 +426,7 @@ def _compile(kind: str, pole: str, tip: str, steps, ends):
     vectors: list[str] = []  # expressions of the vector list, in order
 
     def absolute(v: str, vec) -> None:
-        vectors.append(f"*(({k(vec)},) if {v} else ())")
+        vectors.append(f"*(({k(vec)},) if abs({v}) > 0 else ())")
 
     for i, step in enumerate(steps):
         op, pn = step[0], step[1]
@@ -471,7 +474,7 @@ def _compile(kind: str, pole: str, tip: str, steps, ends):
         var[pn] = v
         points.append((pn, v, rec))
         absolute(v, vec)
-    values = ", ".join(v for _, v, _ in points)
+    values = ", ".join(dict((pn, v) for pn, v, _ in points).values())  # as the plan keeps them
     segments = ", ".join(f"{key!r}: abs({var[b]} - {var[a]}) / mu" if var[a] != "0j"
                          else f"{key!r}: abs({var[b]}) / mu" for key, (a, b) in ends.items())
     unit = "m/s²" if kind == "acceleration" else "m/s"
@@ -493,7 +496,7 @@ def _compile(kind: str, pole: str, tip: str, steps, ends):
     scope.update((f"K{j}", c) for j, c in enumerate(consts))
     # named by its text, so that a traceback through it shows the generated line, and one
     # mechanism solved again and again keeps one entry in linecache
-    filename = f"<plan recipe {kind} {zlib.crc32(source.encode()):08x}>"
+    filename = f"<plan recipe {kind} {hashlib.sha1(source.encode()).hexdigest()[:16]}>"
     exec(compile(source, filename, "exec"), scope)  # noqa: S102
     linecache.cache[filename] = (len(source), None, source.splitlines(True), filename)
     follow = scope["follow"]

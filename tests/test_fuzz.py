@@ -280,8 +280,11 @@ GARBAGE_VALUES = [
 TABLE = (ROOT / "plans" / "data" / "table2.toml").read_text("utf-8")
 
 
+SEED_TEXTS = tuple(sorted(SEEDS.values()))
+
+
 @st.composite
-def mutated(draw, seeds=tuple(sorted(SEEDS.values()))):
+def mutated(draw, seeds=SEED_TEXTS):
     """A valid file with one to three random mutations, as bytes."""
     text = draw(st.sampled_from(seeds))
     names = ["A", "AB", "AD", "B", "C", "D", "O", "Q", "S3", "n", "rpm"]
