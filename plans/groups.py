@@ -90,6 +90,17 @@ def _base_name(point: str, guide: Guide) -> str | None:
     return None if guide.link == 0 else coincident_name(point, guide.link)
 
 
+def _slide(sym: str, C: str, base: str | None, guide: Guide) -> str:
+    """One side of an equation for C sliding along ``guide``: from the coincident point
+    ``base`` of the guide's link (with the Coriolis term, the link turning), or straight
+    along a fixed guide: "V_C4 + V_CC4", "a_C4 + a^k_CC4 + a^r_CC4", "V_C(∥ x-x)"."""
+    if base is None:
+        return f"{sym}_{C}({guide.along})"
+    if sym == "V":
+        return f"V_{base} + V_{C}{base}"
+    return f"a_{base} + a^k_{C}{base} + a^r_{C}{base}"
+
+
 # ---------------------------------------------------------------------------------------
 # RRR
 
@@ -151,8 +162,7 @@ def _rrp_setup(sv: Solver, g: Group) -> dict:
     pl, cl = sv.local(g.a, P), sv.local(g.a, C)
     l2 = abs(cl - pl)
     base = _base_name(C, g.s1.guide)
-    second = f"V_{base} + V_{C}{base}" if base else f"V_{C}({along})"
-    asecond = f"a_{base} + a^k_{C}{base} + a^r_{C}{base}" if base else f"a_{C}({along})"
+    second, asecond = _slide("V", C, base, g.s1.guide), _slide("a", C, base, g.s1.guide)
     return {
         "pl": pl, "cl": cl, "l2": l2, "cb": sv.local(g.b, C), "base": base,
         "⊥P": f"⊥ {C}{P}", "VP": f"V_{C}{P}", "∥": along,
@@ -264,8 +274,8 @@ def _prp_setup(sv: Solver, g: Group) -> dict:
         "∥1": sa.guide.along, "∥2": sb.guide.along, "V1": f"V_{C}{b1 or ''}", "V2": f"V_{C}{b2 or ''}",
         "k1": f"a^k_{C}{b1}", "k2": f"a^k_{C}{b2}",
         "r1": f"a^r_{C}{b1 or ''}", "r2": f"a^r_{C}{b2 or ''}",
-        "veq": f"V_{C} = V_{b1 or '0'} + V_{C}{b1 or ''} = V_{b2 or '0'} + V_{C}{b2 or ''}",
-        "aeq": f"a_{C} = a_{b1 or '0'} + a^k + a^r = a_{b2 or '0'} + a^k + a^r",
+        "veq": f"V_{C} = {_slide('V', C, b1, sa.guide)} = {_slide('V', C, b2, sb.guide)}",
+        "aeq": f"a_{C} = {_slide('a', C, b1, sa.guide)} = {_slide('a', C, b2, sb.guide)}",
         "singular": f"the guides {l1} and {l2} are parallel: the hinge {C} is not fixed",
     }
 
@@ -316,8 +326,10 @@ def _rpp_setup(sv: Solver, g: Group) -> dict:
         "∥in": s_in.guide.along, "∥out": s_out.guide.along, "VP": f"V_{name}{P}", "Vk": f"V_{name}{bk or ''}",
         "kP": f"a^k_{name}{P}", "kk": f"a^k_{name}{bk}",
         "rP": f"a^r_{name}{P}", "rk": f"a^r_{name}{bk or ''}",
-        "veq": f"V_{name} = V_{P} + V_{name}{P} = V_{bk or '0'} + V_{name}{bk or ''}",
-        "aeq": f"a_{name} = a_{P} + a^k + a^r = a_{bk or '0'} + a^k + a^r",
+        # the block slides in the yoke, which turns only if its own guide does
+        "veq": f"V_{name} = V_{P} + V_{name}{P} = {_slide('V', name, bk, s_out.guide)}",
+        "aeq": f"a_{name} = a_{P}{f' + a^k_{name}{P}' if bk else ''} + a^r_{name}{P} = "
+               f"{_slide('a', name, bk, s_out.guide)}",
         "singular": f"the guide {li} of link {B} is parallel to the guide {lo}: the yoke's "
                     "position is not fixed",
     }

@@ -129,3 +129,27 @@ def test_variant_plans_solve(n):
     sol = solve_position(variant(n))
     assert sol.segments["pb"] > 0
     assert all(np.isfinite(v) for v in sol.segments.values())
+
+
+@pytest.mark.parametrize(("name", "velocity", "acceleration"), [
+    ("scotch_yoke", "V_A3 = V_A + V_A3A = V_A3(∥ x-x)", "a_A3 = a_A + a^r_A3A = a_A3(∥ x-x)"),
+    ("yoke_on_rocker", "V_A5 = V_A + V_A5A = V_A3 + V_A5A3",
+     "a_A5 = a_A + a^k_A5A + a^r_A5A = a_A3 + a^k_A5A3 + a^r_A5A3"),
+    ("tangent", "V_C = V_C1 + V_CC1 = V_C(∥ y-y)", "a_C = a_C1 + a^k_CC1 + a^r_CC1 = a_C(∥ y-y)"),
+])
+def test_sliding_groups_write_each_side_of_their_equations_as_on_paper(name, velocity,
+                                                                         acceleration):
+    """A side along a fixed guide is the point's own vector along it; a side along a
+    turning link's guide starts at the coincident point and carries the Coriolis term; a
+    block in a yoke that only translates has none."""
+    from plans.scenes import SCENES
+
+    sol = solve_position(SCENES[name].mechanism())
+    got = {p.source.equation for plan in (sol.velocity, sol.acceleration)
+           for p in plan.points.values() if p.source.kind == "intersection"}
+    assert {velocity, acceleration} <= got
+    # and the Coriolis terms drawn for its point are exactly the ones the equation names
+    point = acceleration.split(" ")[0][2:]
+    ks = {p.source.label for p in sol.acceleration.points.values()
+          if p.source.kind == "component" and p.source.label.startswith(f"a^k_{point}")}
+    assert ks == {t for t in acceleration.replace("=", "+").split(" + ") if t.startswith("a^k")}
