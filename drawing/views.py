@@ -303,11 +303,17 @@ def _sheet(z: complex, mu_l: float) -> tuple[float, float]:
     return (z.real / mu_l, -z.imag / mu_l)
 
 
+def _centre_of_mass(mech, name: str) -> bool:
+    """S1, S2 …: a centre of mass, marked on its link but not drawn as a bar of it
+    (unless a pair is there too)."""
+    return name[0] == "S" and name[1:].isdigit() and len(mech.links_of(name)) == 1
+
+
 def _link_segments(mech, pos: dict[str, complex], mu_l: float, line: LineType) -> list[Item]:
     out: list[Item] = []
     slider_links = {s.link for s in mech.sliders}
     for lid, link in mech.links.items():
-        names = [n for n in link.points if n in pos]
+        names = [n for n in link.points if n in pos and not _centre_of_mass(mech, n)]
         if lid in slider_links and len(names) <= 1:
             continue
         if link.axis and link.axis[0] in pos:
@@ -339,14 +345,54 @@ def _block(center: tuple[float, float], direction: complex, line: LineType,
 
 
 def _guide_dir(mech, slider, pos) -> complex:
+    """The guide's direction in the world: its own direction turned with its link."""
     g = slider.guide
     if g.link == 0:
         return g.direction
-    link = mech.links[g.link]
-    if link.axis and all(a in pos for a in link.axis):
-        d = pos[link.axis[1]] - pos[link.axis[0]]
-        return d / abs(d) if abs(d) > 1e-12 else 1
-    return 1
+    pose = _pose(mech, g.link, pos)
+    return g.direction if pose is None else pose[1] * g.direction
+
+
+def _pose(mech, lid: int, pos) -> tuple[complex, complex] | None:
+    """(origin, rotor) of a link with an axis, from its axis points' positions."""
+    link = mech.links[lid]
+    if not (link.axis and all(a in pos for a in link.axis)):
+        return None
+    d = pos[link.axis[1]] - pos[link.axis[0]]
+    return (pos[link.axis[0]], d / abs(d)) if abs(d) > 1e-12 else None
+
+
+def _slots(mech, motion_all, valid) -> list[tuple[object, float, float]]:
+    """The guides carried by moving links that do not run along the link's own axis (a
+    Scotch yoke's slot), each with the reach of its block along it (own coordinates)."""
+    out = []
+    for s in mech.sliders:
+        g = s.guide
+        if g.link == 0 or abs(g.direction.imag) < 1e-12 and abs(g.point.imag) < 1e-12:
+            continue  # the frame's, or along the axis, which the link's bar draws
+        link = mech.links[g.link]
+        if not link.axis:
+            continue
+        P = motion_all.position
+        o, e = (np.asarray(P[a])[valid] for a in link.axis)
+        rotor = (e - o) / np.abs(e - o)
+        local = (np.asarray(P[s.point])[valid] - o) * np.conj(rotor)
+        t = ((local - g.point) * np.conj(g.direction)).real
+        if t.size:
+            pad = 0.1 * (np.ptp(t) + 0.05)
+            out.append((s, float(t.min()) - pad, float(t.max()) + pad))
+    return out
+
+
+def _slot_segments(mech, slots, pos, mu_l: float, line: LineType) -> list[Item]:
+    out: list[Item] = []
+    for s, a, b in slots:
+        pose = _pose(mech, s.guide.link, pos)
+        if pose is not None:
+            o, r = pose
+            ends = (o + r * (s.guide.point + t * s.guide.direction) for t in (a, b))
+            out.append(Segment(*(_sheet(z, mu_l) for z in ends), line))
+    return out
 
 
 def _support(xy: tuple[float, float]) -> list[Item]:
@@ -407,10 +453,12 @@ def positions_view(sol, cycle, motion_all, lang: str = "ru") -> View:
                              LineType.DASH_DOT_THIN))
     # the cycle's positions, numbered, and the extreme positions
     tip = mech.driver.tip
+    slots = _slots(mech, motion_all, valid)
     for k, pos in enumerate(positions_at(cycle.positions)):
         if pos is None:
             continue
         items += _link_segments(mech, pos, mu_l, LineType.THIN)
+        items += _slot_segments(mech, slots, pos, mu_l, LineType.THIN)
         labels.append(LabelRequest(_sheet(pos[tip], mu_l), str(k), 2.5, "ne", markup=False,
                                    optional=True))
     extremes = positions_at(cycle.extremes)
@@ -418,9 +466,14 @@ def positions_view(sol, cycle, motion_all, lang: str = "ru") -> View:
         if pos is None:
             continue
         items += _link_segments(mech, pos, mu_l, LineType.DASH_DOUBLE_DOT_THIN)
-    # the given position, heavy
+        items += _slot_segments(mech, slots, pos, mu_l, LineType.DASH_DOUBLE_DOT_THIN)
+    # the given position, heavy; centres of mass as small dots on their links
     pos = sol.positions
     items += _link_segments(mech, pos, mu_l, LineType.MAIN)
+    items += _slot_segments(mech, slots, pos, mu_l, LineType.MAIN)
+    for n in pos:
+        if n in mech.point_names() and _centre_of_mass(mech, n):
+            items.append(Circle(_sheet(pos[n], mu_l), 0.6, LineType.MAIN, fill="black"))
     for s in mech.sliders:
         if s.point in pos:
             items.append(_block(_sheet(pos[s.point], mu_l), _guide_dir(mech, s, pos), LineType.MAIN))

@@ -306,3 +306,37 @@ def test_the_angle_asked_for_is_the_angle_the_titles_give(tmp_path):
     mech = _mech("fourbar").at_file_angle(20)
     assert mech.driver.angle_deg == 20
     assert mech.driver.file_angle(mech.driver.phi) == pytest.approx(20)
+
+
+def test_a_scotch_yokes_slot_is_drawn_across_its_axis_and_its_block_slides_along_it():
+    """The yoke's slot (a guide at 90° to its axis DE) is drawn on the yoke through the
+    block, the block stands along it, and the yoke's centre of mass S3 (off its axis) is
+    a dot, not a bar."""
+    import numpy as np
+
+    from drawing import views as V
+    from drawing.cli_sheet import trajectory_angles
+    from plans.cycle import analyse_cycle
+    from plans.kinematics import Solver
+    from plans.plan import solve_position
+    from plans.scenes import SCENES
+
+    mech = SCENES["scotch_yoke"].mechanism()
+    solver = Solver(mech)
+    sol = solve_position(mech, solver=solver)
+    pos, mu_l = sol.positions, sol.mu_l
+    slot = next(s for s in mech.sliders if s.guide.link == 3)
+    de = pos["E"] - pos["D"]
+    across = V._guide_dir(mech, slot, pos)
+    assert abs((across * np.conj(de / abs(de))) - 1j) < 1e-12  # ⊥ DE, turned +90°
+    cycle = analyse_cycle(mech, 12, solver=solver)
+    motion_all = solver.solve(trajectory_angles(cycle))
+    slots = V._slots(mech, motion_all, np.asarray(motion_all.valid))
+    (seg,) = V._slot_segments(mech, slots, pos, mu_l, V.LineType.MAIN)
+    (ax, ay), (bx, by), (px, py) = seg.p1, seg.p2, V._sheet(pos["A"], mu_l)
+    assert abs(ax - bx) < 1e-9 and abs(ax - px) < 1e-9  # vertical, through the block's pin
+    assert min(ay, by) < py < max(ay, by)
+    # it spans the block's whole travel in the slot (the crank's ±0.1 m) and a little more
+    assert abs(ay - by) * mu_l == pytest.approx(0.2 + 2 * 0.1 * (0.2 + 0.05), rel=1e-6)
+    ends = {p for s in V._link_segments(mech, pos, mu_l, V.LineType.MAIN) for p in (s.p1, s.p2)}
+    assert V._sheet(pos["S3"], mu_l) not in ends and V._sheet(pos["E"], mu_l) in ends
