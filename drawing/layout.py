@@ -25,7 +25,12 @@ STEP = 5.0
 
 
 class LayoutError(ValueError):
-    """A view does not fit on the sheet."""
+    """A view does not fit on the sheet; ``any_sheet`` False where no format could hold
+    it (then it is the mechanism's doing, not the --format's)."""
+
+    def __init__(self, message: str, any_sheet: bool = True):
+        super().__init__(message)
+        self.any_sheet = any_sheet
 
 
 @dataclass(frozen=True)
@@ -60,10 +65,7 @@ def place_views(sheet: Sheet, views) -> list[Placed]:
             spot = (x, y)
             break
         if spot is None:
-            raise LayoutError(
-                f"the view {v.name!r} ({v.w:.0f} × {v.h:.0f} mm) does not fit on {sheet.name} "
-                "beside the others; try a larger --format or fewer --plans"
-            )
+            raise LayoutError(*_why_not(sheet, v))
         r = Rect(spot[0], spot[1], v.w, v.h)
         placed.append(Placed(v, r))
         boxes.append(box(*r.bounds))
@@ -79,3 +81,15 @@ def share_used(sheet: Sheet, placed: list[Placed]) -> float:
     used = box(min(xs0), min(ys0), max(xs1), max(ys1))
     area = sheet.drawing_area()
     return used.intersection(area).area / area.area
+
+
+def _why_not(sheet: Sheet, v) -> tuple[str, bool]:
+    """Why a view found no place, and whether a larger sheet could hold it."""
+    size = f"the view {v.name!r} ({v.w:.0f} × {v.h:.0f} mm)"
+    x0, y0, x1, y1 = Sheet("A0").drawing_area().bounds
+    if min(v.w, v.h) > min(x1 - x0, y1 - y0) or max(v.w, v.h) > max(x1 - x0, y1 - y0):
+        return (f"{size} is larger than any sheet, A0 included: over the cycle the "
+                "mechanism's points run that far apart (a slider running off towards a "
+                "dead point?)"), False
+    return (f"{size} does not fit on {sheet.name} beside the others; try a larger --format "
+            "or fewer --plans"), True

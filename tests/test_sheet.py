@@ -340,3 +340,20 @@ def test_a_scotch_yokes_slot_is_drawn_across_its_axis_and_its_block_slides_along
     assert abs(ay - by) * mu_l == pytest.approx(0.2 + 2 * 0.1 * (0.2 + 0.05), rel=1e-6)
     ends = {p for s in V._link_segments(mech, pos, mu_l, V.LineType.MAIN) for p in (s.p1, s.p2)}
     assert V._sheet(pos["S3"], mu_l) not in ends and V._sheet(pos["E"], mu_l) in ends
+
+
+def test_a_view_no_sheet_can_hold_is_blamed_on_the_mechanism_not_the_format(capsys, tmp_path):
+    """The tangent mechanism's slider runs off towards infinity at the ends of its crank
+    range: no format holds its plan of positions, and the message says so, naming the
+    file instead of suggesting a larger --format."""
+    from support import run
+
+    from plans.scenes import SCENES
+
+    path = tmp_path / "tangent.toml"
+    path.write_text(SCENES["tangent"].toml, encoding="utf-8")
+    out = tmp_path / "t.svg"
+    code, _, err = run(capsys, "sheet", path, "-o", out, "--format", "A0")
+    assert code == 2 and not out.exists()
+    assert err.startswith(f"plans sheet: {path}: the view 'positions' (")
+    assert "is larger than any sheet, A0 included" in err and "--format" not in err
