@@ -89,19 +89,20 @@ def trajectory_angles(cycle, n: int = 361):
 def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
                 plans: list[int] | None = None, title: list[str] = ()):
     """(scene, sheet, info) for ``mech``; info holds the solutions drawn."""
+    from drawing import views as V
     from drawing.layout import LayoutError
     from drawing.sheet import Sheet
     from plans.cycle import analyse_cycle
     from plans.kinematics import Solver
-    from plans.plan import cycle_extent, solve_position
+    from plans.plan import solve_position
 
     sheet = Sheet(fmt)
     solver = Solver(mech)
     cycle = analyse_cycle(mech, n_positions, solver=solver)
     first = solve_position(mech, solver=solver)
-    extent = cycle_extent(solver)
     chosen = _parse_plans(None if plans is None else ",".join(map(str, plans)), len(cycle.positions))
     fixed = _views_of_any_size(mech, solver, cycle, lang)
+    extent = V.drawn_extent(mech, solver, cycle, fixed[0])
     # the largest views that fit: scales the file leaves free are chosen for the sheet
     error = None
     for size in SIZES:

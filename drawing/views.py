@@ -362,25 +362,29 @@ def _pose(mech, lid: int, pos) -> tuple[complex, complex] | None:
     return (pos[link.axis[0]], d / abs(d)) if abs(d) > 1e-12 else None
 
 
-def _slots(mech, motion_all, valid) -> list[tuple[object, float, float]]:
+def _reach(t: list[float]) -> tuple[float, float]:
+    """A guide's drawn stretch: the block's travel along it, and a tenth more each way."""
+    pad = 0.1 * (max(t) - min(t) + 0.05)
+    return min(t) - pad, max(t) + pad
+
+
+def _slots(mech, drawn) -> list[tuple[object, float, float]]:
     """The guides carried by moving links that do not run along the link's own axis (a
-    Scotch yoke's slot), each with the reach of its block along it (own coordinates)."""
+    Scotch yoke's slot), each with the reach (own coordinates) of its block over the
+    positions ``drawn``."""
     out = []
     for s in mech.sliders:
         g = s.guide
         if g.link == 0 or abs(g.direction.imag) < 1e-12 and abs(g.point.imag) < 1e-12:
             continue  # the frame's, or along the axis, which the link's bar draws
-        link = mech.links[g.link]
-        if not link.axis:
-            continue
-        P = motion_all.position
-        o, e = (np.asarray(P[a])[valid] for a in link.axis)
-        rotor = (e - o) / np.abs(e - o)
-        local = (np.asarray(P[s.point])[valid] - o) * np.conj(rotor)
-        t = ((local - g.point) * np.conj(g.direction)).real
-        if t.size:
-            pad = 0.1 * (np.ptp(t) + 0.05)
-            out.append((s, float(t.min()) - pad, float(t.max()) + pad))
+        t = []
+        for pos in drawn:
+            pose = _pose(mech, g.link, pos)
+            if pose is not None:
+                local = (pos[s.point] - pose[0]) * pose[1].conjugate()
+                t.append(((local - g.point) * g.direction.conjugate()).real)
+        if t:
+            out.append((s, *_reach(t)))
     return out
 
 
@@ -402,6 +406,25 @@ def _support(xy: tuple[float, float]) -> list[Item]:
         Polyline([(x, y), (x - 3, y + 5), (x + 3, y + 5)], LineType.MAIN, closed=True),
         Hatch((x - 5, y + 5), (x + 5, y + 5), side=1, spacing=1.6, length=2.0),
     ]
+
+
+def drawn_extent(mech, solver, cycle, motion_all) -> float:
+    """The larger side (m) of the box round what the plan of positions draws: the links
+    at the cycle's positions, the extreme ones and the given one, and the trajectories.
+    A point that runs far out between the positions drawn (a cross-slide near its dead
+    point) does not shrink the drawing."""
+    phis = np.array([*cycle.positions, *cycle.extremes, mech.driver.phi])
+    with np.errstate(all="ignore"):
+        m = solver.solve(phis)
+    ok = np.asarray(m.valid, dtype=bool)
+    pts = [np.asarray(v)[ok] for v in m.position.values()]
+    traj = np.asarray(motion_all.valid, dtype=bool)
+    pts += [np.asarray(motion_all.position[n])[traj] for n in (*mech.trace, mech.driver.tip)
+            if n in motion_all.position]
+    z = np.concatenate([np.ravel(p) for p in pts])
+    if z.size == 0:
+        return 1.0
+    return float(max(np.ptp(z.real), np.ptp(z.imag), 1e-9))
 
 
 def positions_view(sol, cycle, motion_all, lang: str = "ru") -> View:
@@ -440,28 +463,26 @@ def positions_view(sol, cycle, motion_all, lang: str = "ru") -> View:
             closed = bool(valid.all()) and cycle.full_turn
             items.append(Polyline(run, LineType.DASHED if name != mech.driver.tip else LineType.THIN,
                                   closed=closed))
-    # fixed guides: the axis dash-dot over the reach of the slider
-    all_pos = motion_all.position
+    # the positions drawn: the cycle's, numbered, the extreme ones, and the given one
+    cycle_pos, extremes = positions_at(cycle.positions), positions_at(cycle.extremes)
+    drawn = [p for p in (*cycle_pos, *extremes, sol.positions) if p is not None]
+    # fixed guides: the axis dash-dot over the slider's reach in the positions drawn
     for s in mech.sliders:
         if s.guide.link != 0:
             continue
         d = s.guide.direction
-        z = np.asarray(all_pos[s.point])[valid]
-        t = ((z - s.guide.point) * np.conj(d)).real
-        a, b = float(t.min()) - 0.1 * (np.ptp(t) + 0.05), float(t.max()) + 0.1 * (np.ptp(t) + 0.05)
+        a, b = _reach([((p[s.point] - s.guide.point) * d.conjugate()).real for p in drawn])
         items.append(Segment(_sheet(s.guide.point + a * d, mu_l), _sheet(s.guide.point + b * d, mu_l),
                              LineType.DASH_DOT_THIN))
-    # the cycle's positions, numbered, and the extreme positions
     tip = mech.driver.tip
-    slots = _slots(mech, motion_all, valid)
-    for k, pos in enumerate(positions_at(cycle.positions)):
+    slots = _slots(mech, drawn)
+    for k, pos in enumerate(cycle_pos):
         if pos is None:
             continue
         items += _link_segments(mech, pos, mu_l, LineType.THIN)
         items += _slot_segments(mech, slots, pos, mu_l, LineType.THIN)
         labels.append(LabelRequest(_sheet(pos[tip], mu_l), str(k), 2.5, "ne", markup=False,
                                    optional=True))
-    extremes = positions_at(cycle.extremes)
     for pos in extremes:
         if pos is None:
             continue

@@ -315,7 +315,6 @@ def test_a_scotch_yokes_slot_is_drawn_across_its_axis_and_its_block_slides_along
     import numpy as np
 
     from drawing import views as V
-    from drawing.cli_sheet import trajectory_angles
     from plans.cycle import analyse_cycle
     from plans.kinematics import Solver
     from plans.plan import solve_position
@@ -330,8 +329,9 @@ def test_a_scotch_yokes_slot_is_drawn_across_its_axis_and_its_block_slides_along
     across = V._guide_dir(mech, slot, pos)
     assert abs((across * np.conj(de / abs(de))) - 1j) < 1e-12  # ⊥ DE, turned +90°
     cycle = analyse_cycle(mech, 12, solver=solver)
-    motion_all = solver.solve(trajectory_angles(cycle))
-    slots = V._slots(mech, motion_all, np.asarray(motion_all.valid))
+    m = solver.solve(np.array(cycle.positions))
+    drawn = [{n: complex(v[k]) for n, v in m.position.items()} for k in range(len(cycle.positions))]
+    slots = V._slots(mech, drawn)
     (seg,) = V._slot_segments(mech, slots, pos, mu_l, V.LineType.MAIN)
     (ax, ay), (bx, by), (px, py) = seg.p1, seg.p2, V._sheet(pos["A"], mu_l)
     assert abs(ax - bx) < 1e-9 and abs(ax - px) < 1e-9  # vertical, through the block's pin
@@ -344,16 +344,41 @@ def test_a_scotch_yokes_slot_is_drawn_across_its_axis_and_its_block_slides_along
 
 def test_a_view_no_sheet_can_hold_is_blamed_on_the_mechanism_not_the_format(capsys, tmp_path):
     """The tangent mechanism's slider runs off towards infinity at the ends of its crank
-    range: no format holds its plan of positions, and the message says so, naming the
-    file instead of suggesting a larger --format."""
+    range: at the μl its file fixes no format holds its plan of positions, and the
+    message says so, naming the file instead of suggesting a larger --format."""
     from support import run
 
     from plans.scenes import SCENES
 
     path = tmp_path / "tangent.toml"
-    path.write_text(SCENES["tangent"].toml, encoding="utf-8")
+    path.write_text(SCENES["tangent"].toml + "[scales]\nmu_l = 0.002\n", encoding="utf-8")
     out = tmp_path / "t.svg"
     code, _, err = run(capsys, "sheet", path, "-o", out, "--format", "A0")
     assert code == 2 and not out.exists()
     assert err.startswith(f"plans sheet: {path}: the view 'positions' (")
     assert "is larger than any sheet, A0 included" in err and "--format" not in err
+
+
+@pytest.mark.parametrize(("name", "low", "high"), [("press", 0.95, 1.01), ("crank_rocker", 0.95, 1.01),
+                                                   ("prp_two_moving", 0.0, 0.5)])
+def test_the_plan_of_positions_is_sized_by_what_it_draws(name, low, high):
+    """μl of a sheet comes from the positions drawn (the cycle's, the extreme ones, the
+    given one, the trajectories): the same as the whole cycle's extent for an ordinary
+    linkage, but a cross-slide's point that runs far out between the positions drawn
+    does not shrink the drawing."""
+    import numpy as np
+
+    from drawing import views as V
+    from drawing.cli_sheet import trajectory_angles
+    from plans.cycle import analyse_cycle
+    from plans.kinematics import Solver
+    from plans.plan import cycle_extent
+    from plans.scenes import SCENES
+
+    mech = SCENES[name].mechanism()
+    solver = Solver(mech)
+    cycle = analyse_cycle(mech, 12, solver=solver)
+    drawn = V.drawn_extent(mech, solver, cycle, solver.solve(trajectory_angles(cycle)))
+    whole = cycle_extent(solver)
+    assert low * whole <= drawn <= high * whole  # 72 samples of the cycle, 361 drawn
+    assert np.isfinite(drawn) and drawn > 0
