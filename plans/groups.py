@@ -65,13 +65,16 @@ def _pose_from_two(P, pl, C, cl):
     return P - r * pl, r
 
 
-def _guide(guide: Guide, states):
-    """A world point of the guide, its direction, and the motion of its link there."""
+def _guide(sv: Solver, guide: Guide, states):
+    """A world point of the guide, its direction, the motion of its link there, and the
+    link's ω, ε: None where the link never turns (no Coriolis term, as for the frame)."""
     st = states[guide.link]
     G = st.pos(guide.point)
     u = st.rotor * guide.direction
     if guide.link == 0:
         return G, u, 0j, 0j, None, None
+    if guide.link in sv.translating:
+        return G, u, st.v, st.a, None, None
     return G, u, st.vel(G), st.acc(G), st.omega, st.epsilon
 
 
@@ -90,15 +93,17 @@ def _base_name(point: str, guide: Guide) -> str | None:
     return None if guide.link == 0 else coincident_name(point, guide.link)
 
 
-def _slide(sym: str, C: str, base: str | None, guide: Guide) -> str:
+def _slide(sv: Solver, sym: str, C: str, base: str | None, guide: Guide) -> str:
     """One side of an equation for C sliding along ``guide``: from the coincident point
-    ``base`` of the guide's link (with the Coriolis term, the link turning), or straight
-    along a fixed guide: "V_C4 + V_CC4", "a_C4 + a^k_CC4 + a^r_CC4", "V_C(∥ x-x)"."""
+    ``base`` of the guide's link, with the Coriolis term where that link turns, or
+    straight along a fixed guide: "V_C4 + V_CC4", "a_C4 + a^k_CC4 + a^r_CC4",
+    "V_C(∥ x-x)"."""
     if base is None:
         return f"{sym}_{C}({guide.along})"
     if sym == "V":
         return f"V_{base} + V_{C}{base}"
-    return f"a_{base} + a^k_{C}{base} + a^r_{C}{base}"
+    k = "" if guide.link in sv.translating else f" + a^k_{C}{base}"
+    return f"a_{base}{k} + a^r_{C}{base}"
 
 
 # ---------------------------------------------------------------------------------------
@@ -162,7 +167,7 @@ def _rrp_setup(sv: Solver, g: Group) -> dict:
     pl, cl = sv.local(g.a, P), sv.local(g.a, C)
     l2 = abs(cl - pl)
     base = _base_name(C, g.s1.guide)
-    second, asecond = _slide("V", C, base, g.s1.guide), _slide("a", C, base, g.s1.guide)
+    second, asecond = _slide(sv, "V", C, base, g.s1.guide), _slide(sv, "a", C, base, g.s1.guide)
     return {
         "pl": pl, "cl": cl, "l2": l2, "cb": sv.local(g.b, C), "base": base,
         "⊥P": f"⊥ {C}{P}", "VP": f"V_{C}{P}", "∥": along,
@@ -181,14 +186,14 @@ def _rrp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     w = setup(sv, g)
     l2, base, k = w["l2"], w["base"], s.guide.link
     Pw = pos[P]
-    G0, u, vG, aG, wk, ek = _guide(s.guide, states)
+    G0, u, vG, aG, wk, ek = _guide(sv, s.guide, states)
     r = kernels.rrp(xp, sigma, l2, Pw, vel[P], acc[P], G0, u, vG, aG, wk, ek)
     valid, gap, singular = _closure(xp, r.closes, lambda: np.maximum(r.h - l2, 0.0), l2)
     vroute = (
         record(Route, (P, vel[P], (), r.d1, w["⊥P"], w["VP"], "relative", r.t1)),
         record(Route, (base, r.vCk, (), u, w["∥"], w["Vs"], "sliding", r.t2)),
     )
-    terms2 = (record(Term, ("coriolis", r.cor, w["k"], (C, base))),) if base else ()
+    terms2 = (record(Term, ("coriolis", r.cor, w["k"], (C, base))),) if r.cor is not None else ()
     aroute = (
         record(Route, (P, acc[P], (record(Term, ("normal", r.nP, w["nP"], (C, P))),), r.d1,
               w["⊥P"], w["tP"], "tangential", r.s1)),
@@ -273,9 +278,9 @@ def _prp_setup(sv: Solver, g: Group) -> dict:
         "ca": sv.local(g.a, C), "cb": sv.local(g.b, C), "b1": b1, "b2": b2,
         "∥1": sa.guide.along, "∥2": sb.guide.along, "V1": f"V_{C}{b1 or ''}", "V2": f"V_{C}{b2 or ''}",
         "k1": f"a^k_{C}{b1}", "k2": f"a^k_{C}{b2}",
-        "r1": f"a^r_{C}{b1 or ''}", "r2": f"a^r_{C}{b2 or ''}",
-        "veq": f"V_{C} = {_slide('V', C, b1, sa.guide)} = {_slide('V', C, b2, sb.guide)}",
-        "aeq": f"a_{C} = {_slide('a', C, b1, sa.guide)} = {_slide('a', C, b2, sb.guide)}",
+        "r1": f"a^r_{C}{b1}" if b1 else f"a_{C}", "r2": f"a^r_{C}{b2}" if b2 else f"a_{C}",
+        "veq": f"V_{C} = {_slide(sv, 'V', C, b1, sa.guide)} = {_slide(sv, 'V', C, b2, sb.guide)}",
+        "aeq": f"a_{C} = {_slide(sv, 'a', C, b1, sa.guide)} = {_slide(sv, 'a', C, b2, sb.guide)}",
         "singular": f"the guides {l1} and {l2} are parallel: the hinge {C} is not fixed",
     }
 
@@ -284,16 +289,16 @@ def _prp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     C, sa, sb = g.C, g.s1, g.s2
     w = setup(sv, g)
     b1, b2 = w["b1"], w["b2"]
-    G1, u1, vG1, aG1, w1, e1 = _guide(sa.guide, states)
-    G2, u2, vG2, aG2, w2, e2 = _guide(sb.guide, states)
+    G1, u1, vG1, aG1, w1, e1 = _guide(sv, sa.guide, states)
+    G2, u2, vG2, aG2, w2, e2 = _guide(sv, sb.guide, states)
     r = kernels.prp(xp, G1, u1, vG1, aG1, w1, e1, G2, u2, vG2, aG2, w2, e2)
     valid, gap, singular = _never_misses(xp, r.closes, np.shape(r.C))
     vroute = (
         record(Route, (b1, r.v1, (), u1, w["∥1"], w["V1"], "sliding", r.t1)),
         record(Route, (b2, r.v2, (), u2, w["∥2"], w["V2"], "sliding", r.t2)),
     )
-    terms1 = (record(Term, ("coriolis", r.c1, w["k1"], (C, b1))),) if b1 else ()
-    terms2 = (record(Term, ("coriolis", r.c2, w["k2"], (C, b2))),) if b2 else ()
+    terms1 = (record(Term, ("coriolis", r.c1, w["k1"], (C, b1))),) if r.c1 is not None else ()
+    terms2 = (record(Term, ("coriolis", r.c2, w["k2"], (C, b2))),) if r.c2 is not None else ()
     aroute = (
         record(Route, (b1, r.a1, terms1, u1, w["∥1"], w["r1"], "sliding", r.s1)),
         record(Route, (b2, r.a2, terms2, u2, w["∥2"], w["r2"], "sliding", r.s2)),
@@ -320,16 +325,17 @@ def _rpp_setup(sv: Solver, g: Group) -> dict:
     name = coincident_name(P, B)
     bk = _base_name(P, s_out.guide)
     li, lo = s_in.guide.label, s_out.guide.label
+    still = s_out.guide.link in sv.translating  # the yoke never turns
     return {
         "locD": sv.local(B, s_out.point), "g0": s_in.guide.point, "gd": s_in.guide.direction,
         "pa": sv.local(g.a, P), "name": name, "bk": bk,
         "∥in": s_in.guide.along, "∥out": s_out.guide.along, "VP": f"V_{name}{P}", "Vk": f"V_{name}{bk or ''}",
         "kP": f"a^k_{name}{P}", "kk": f"a^k_{name}{bk}",
-        "rP": f"a^r_{name}{P}", "rk": f"a^r_{name}{bk or ''}",
+        "rP": f"a^r_{name}{P}", "rk": f"a^r_{name}{bk}" if bk else f"a_{name}",
         # the block slides in the yoke, which turns only if its own guide does
-        "veq": f"V_{name} = V_{P} + V_{name}{P} = {_slide('V', name, bk, s_out.guide)}",
-        "aeq": f"a_{name} = a_{P}{f' + a^k_{name}{P}' if bk else ''} + a^r_{name}{P} = "
-               f"{_slide('a', name, bk, s_out.guide)}",
+        "veq": f"V_{name} = V_{P} + V_{name}{P} = {_slide(sv, 'V', name, bk, s_out.guide)}",
+        "aeq": f"a_{name} = a_{P}{'' if still else f' + a^k_{name}{P}'} + a^r_{name}{P} = "
+               f"{_slide(sv, 'a', name, bk, s_out.guide)}",
         "singular": f"the guide {li} of link {B} is parallel to the guide {lo}: the yoke's "
                     "position is not fixed",
     }
@@ -339,7 +345,7 @@ def _rpp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     P, B, s_out = g.P, g.b, g.s2
     w = setup(sv, g)
     name, bk = w["name"], w["bk"]
-    Gk, uk, vG, aG, wk, ek = _guide(s_out.guide, states)
+    Gk, uk, vG, aG, wk, ek = _guide(sv, s_out.guide, states)
     Pw = pos[P]
     r = kernels.rpp(xp, Pw, vel[P], acc[P], Gk, uk, vG, aG, wk, ek, w["locD"], w["g0"], w["gd"])
     valid, gap, singular = _never_misses(xp, r.closes, np.shape(Pw))
@@ -348,7 +354,7 @@ def _rpp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
         record(Route, (bk, r.vk, (), uk, w["∥out"], w["Vk"], "sliding", r.t2)),
     )
     terms1 = (record(Term, ("coriolis", r.c1, w["kP"], (name, P))),) if r.c1 is not None else ()
-    terms2 = (record(Term, ("coriolis", r.c2, w["kk"], (name, bk))),) if bk else ()
+    terms2 = (record(Term, ("coriolis", r.c2, w["kk"], (name, bk))),) if r.c2 is not None else ()
     aroute = (
         record(Route, (P, acc[P], terms1, r.us, w["∥in"], w["rP"], "sliding", r.s1)),
         record(Route, (bk, r.ak, terms2, uk, w["∥out"], w["rk"], "sliding", r.s2)),

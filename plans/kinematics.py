@@ -64,6 +64,8 @@ class Solver:
         #: the plans' recipes, the extent of the cycle (``plans.plan``)
         self.cache: dict = {}
         self._todo: dict[int, tuple] = {}  # link → its points that _fill places
+        #: links that never turn: a guide on one carries no Coriolis term
+        self.translating = mech.translating()
         self.steps = tuple((SOLVERS[g.kind], g, sigma)
                            for g, sigma in zip(self.structure.groups, self.sigmas, strict=True))
 

@@ -141,6 +141,21 @@ class Mechanism:
             pairs += [(name, carriers[0], other) for other in carriers[1:]]
         return pairs
 
+    def translating(self) -> frozenset[int]:
+        """The links that never turn: the frame, and every link joined to one of them by
+        a prismatic pair (a slider on a fixed guide, a block in a translating yoke). A
+        guide on such a link carries no Coriolis term."""
+        out = {0}
+        grew = True
+        while grew:
+            grew = False
+            for s in self.sliders:
+                pair = {s.link, s.guide.link}
+                if pair & out and not pair <= out:
+                    out |= pair
+                    grew = True
+        return frozenset(out)
+
     def slider_of(self, link: int) -> Slider | None:
         for s in self.sliders:
             if s.link == link:

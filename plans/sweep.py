@@ -236,10 +236,13 @@ class _Block:
         return _rigid(vX, aX, Y - X, w, e)
 
     def _guide(self, guide):
+        """As :func:`plans.groups._guide`: ω, ε None where the guide's link never turns."""
         if guide.link == 0:
             return guide.point, guide.direction, 0j, 0j, None, None
         X, vX, aX, rot, w, e, xl = self.links[guide.link]
         G, vG, aG = self._at(guide.link, guide.point)
+        if guide.link in self.sv.translating:
+            return G, rot * guide.direction, vG, aG, None, None
         return G, rot * guide.direction, vG, aG, w, e
 
     def _coincident(self, name, lid, at, v=None, a=None):
