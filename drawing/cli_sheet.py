@@ -202,7 +202,7 @@ def render(mech, args) -> str:
         scene, sheet, info = build_sheet(mech, args.format, args.lang, args.positions, plans,
                                          args.title_block)
     except LayoutError as exc:
-        raise InputError("--format" if exc.any_sheet else mech.source, str(exc)) from None
+        raise InputError(exc.option or mech.source, str(exc)) from None
     if (note := sparse_note(mech, sheet, info["placed"])) is not None:
         print(f"plans sheet: note: {mech.source}: {note}", file=sys.stderr)
     return to_svg(scene, sheet, title=mech.name)

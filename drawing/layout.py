@@ -25,12 +25,13 @@ STEP = 5.0
 
 
 class LayoutError(ValueError):
-    """A view does not fit on the sheet; ``any_sheet`` False where no format could hold
-    it (then it is the mechanism's doing, not the --format's)."""
+    """A view does not fit on the sheet. ``option``: what to change, "--format" for a
+    full sheet, "--plans" for a plan no sheet holds, "" where the mechanism itself is
+    the cause (its plan of positions larger than any sheet)."""
 
-    def __init__(self, message: str, any_sheet: bool = True):
+    def __init__(self, message: str, option: str = "--format"):
         super().__init__(message)
-        self.any_sheet = any_sheet
+        self.option = option
 
 
 @dataclass(frozen=True)
@@ -83,13 +84,17 @@ def share_used(sheet: Sheet, placed: list[Placed]) -> float:
     return used.intersection(area).area / area.area
 
 
-def _why_not(sheet: Sheet, v) -> tuple[str, bool]:
-    """Why a view found no place, and whether a larger sheet could hold it."""
+def _why_not(sheet: Sheet, v) -> tuple[str, str]:
+    """Why a view found no place, and the option to change (see :class:`LayoutError`)."""
     size = f"the view {v.name!r} ({v.w:.0f} × {v.h:.0f} mm)"
     x0, y0, x1, y1 = Sheet("A0").drawing_area().bounds
     if min(v.w, v.h) > min(x1 - x0, y1 - y0) or max(v.w, v.h) > max(x1 - x0, y1 - y0):
-        return (f"{size} is larger than any sheet, A0 included: over the cycle the "
-                "mechanism's points run that far apart (a slider running off towards a "
-                "dead point?)"), False
+        if v.name == "positions":
+            return (f"{size} is larger than any sheet, A0 included: over the cycle the "
+                    "mechanism's points run that far apart (a slider running off towards a "
+                    "dead point?)"), ""
+        return (f"{size} is larger than any sheet, A0 included: the plans' scale factors "
+                "are chosen at the given position, and this position needs far larger ones; "
+                "choose other --plans or give mu_v and mu_a in [scales]"), "--plans"
     return (f"{size} does not fit on {sheet.name} beside the others; try a larger --format "
-            "or fewer --plans"), True
+            "or fewer --plans"), "--format"

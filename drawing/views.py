@@ -304,9 +304,12 @@ def _sheet(z: complex, mu_l: float) -> tuple[float, float]:
 
 
 def _centre_of_mass(mech, name: str) -> bool:
-    """S1, S2 …: a centre of mass, marked on its link but not drawn as a bar of it
-    (unless a pair is there too)."""
-    return name[0] == "S" and name[1:].isdigit() and len(mech.links_of(name)) == 1
+    """S1, S2 …: a centre of mass, marked on its link but not drawn as a bar of it;
+    never a point where a pair is (a hinge, a slider's point) nor an axis end."""
+    if not (name[0] == "S" and name[1:].isdigit() and len(mech.links_of(name)) == 1):
+        return False
+    return (all(s.point != name for s in mech.sliders)
+            and all(name not in (link.axis or ()) for link in mech.links.values()))
 
 
 def _link_segments(mech, pos: dict[str, complex], mu_l: float, line: LineType) -> list[Item]:
@@ -368,34 +371,54 @@ def _reach(t: list[float]) -> tuple[float, float]:
     return min(t) - pad, max(t) + pad
 
 
-def _slots(mech, drawn) -> list[tuple[object, float, float]]:
-    """The guides carried by moving links that do not run along the link's own axis (a
-    Scotch yoke's slot), each with the reach (own coordinates) of its block over the
-    positions ``drawn``."""
+def _slots(mech, drawn) -> list[tuple[object, float, float, tuple[float, float] | None]]:
+    """The guides carried by moving links (a slot in a rocker or a yoke), each with its
+    stretch in its own coordinates along the guide: from the guide's point on its link to
+    every place of the block in the positions ``drawn``, kept within twice the link's own
+    size, so that a position near a dead point does not stretch it at every position
+    (that one is reached by :func:`_slot_segments`). A guide along the link's axis lies
+    on the link's bar: the bar's stretch is given, and only the part beyond it is drawn."""
     out = []
     for s in mech.sliders:
         g = s.guide
-        if g.link == 0 or abs(g.direction.imag) < 1e-12 and abs(g.point.imag) < 1e-12:
-            continue  # the frame's, or along the axis, which the link's bar draws
-        t = []
+        if g.link == 0:
+            continue
+        own = mech.links[g.link].points.values()
+        size = max((abs(p - q) for p in own for q in own), default=0.0) or 0.1
+        t = [0.0]
         for pos in drawn:
             pose = _pose(mech, g.link, pos)
             if pose is not None:
                 local = (pos[s.point] - pose[0]) * pose[1].conjugate()
                 t.append(((local - g.point) * g.direction.conjugate()).real)
-        if t:
-            out.append((s, *_reach(t)))
+        a, b = _reach(t)
+        a, b = max(a, -2 * size), min(b, 2 * size)
+        bar = None
+        if abs(g.direction.imag) < 1e-12 and abs(g.point.imag) < 1e-12:  # along the axis
+            proj = [((p - g.point) * g.direction.conjugate()).real for p in own]
+            bar = (min(proj), max(proj))
+        out.append((s, a, b, bar))
     return out
 
 
 def _slot_segments(mech, slots, pos, mu_l: float, line: LineType) -> list[Item]:
     out: list[Item] = []
-    for s, a, b in slots:
-        pose = _pose(mech, s.guide.link, pos)
-        if pose is not None:
-            o, r = pose
-            ends = (o + r * (s.guide.point + t * s.guide.direction) for t in (a, b))
-            out.append(Segment(*(_sheet(z, mu_l) for z in ends), line))
+    for s, a, b, bar in slots:
+        g = s.guide
+        pose = _pose(mech, g.link, pos)
+        if pose is None:
+            continue
+        o, r = pose
+        t = (((pos[s.point] - o) * r.conjugate() - g.point) * g.direction.conjugate()).real
+        pad = 0.1 * (b - a)
+        a, b = min(a, t - pad), max(b, t + pad)  # the block is always on its guide
+        if bar is not None:  # only where the block runs past the link's own bar
+            lo, hi = bar
+            if lo - 1e-9 <= t <= hi + 1e-9:
+                continue
+            a, b = (hi, t + pad) if t > hi else (t - pad, lo)
+        ends = (o + r * (g.point + x * g.direction) for x in (a, b))
+        out.append(Segment(*(_sheet(z, mu_l) for z in ends), line))
     return out
 
 

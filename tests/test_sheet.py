@@ -382,3 +382,71 @@ def test_the_plan_of_positions_is_sized_by_what_it_draws(name, low, high):
     whole = cycle_extent(solver)
     assert low * whole <= drawn <= high * whole  # 72 samples of the cycle, 361 drawn
     assert np.isfinite(drawn) and drawn > 0
+
+
+def _drawn_at(name_or_mech, angles=None):
+    """(mech, positions at the cycle's angles and at the given one) of a built-in scene."""
+    import numpy as np
+
+    from plans.cycle import analyse_cycle
+    from plans.kinematics import Solver
+    from plans.scenes import SCENES
+
+    mech = SCENES[name_or_mech].mechanism() if isinstance(name_or_mech, str) else name_or_mech
+    solver = Solver(mech)
+    phis = np.array(angles if angles is not None else
+                    [*analyse_cycle(mech, 12, solver=solver).positions, mech.driver.phi])
+    m = solver.solve(phis)
+    ok = np.asarray(m.valid)
+    return mech, [{n: complex(v[k]) for n, v in m.position.items()} for k in range(len(phis)) if ok[k]]
+
+
+def test_a_block_past_the_end_of_its_links_bar_is_joined_to_it():
+    """The tangent mechanism's block C slides on the crank's line beyond A: the guide is
+    drawn from the bar's end A out past C, at every position; where the block is on the
+    bar (the press's A3 on BC) nothing is added."""
+    from drawing import views as V
+
+    mech, drawn = _drawn_at("tangent")
+    slots = V._slots(mech, drawn)
+    for pos in drawn:
+        (seg,) = V._slot_segments(mech, slots, pos, 1e-3, V.LineType.MAIN)
+        a, c, o = (complex(*V._sheet(pos[n], 1e-3)) for n in ("A", "C", "O"))
+        p1, p2 = complex(*seg.p1), complex(*seg.p2)
+        assert abs(p1 - a) < 1e-6  # from the bar's end …
+        assert abs(p2 - o) > abs(c - o) and abs(((p2 - o) / (c - o)).imag) < 1e-9  # … past C
+    mech, drawn = _drawn_at("press")
+    slots = V._slots(mech, drawn)
+    assert all(V._slot_segments(mech, slots, pos, 1e-3, V.LineType.MAIN) == [] for pos in drawn)
+
+
+def test_a_point_named_like_a_centre_of_mass_but_carrying_a_pair_stays_on_the_bar():
+    """S4 where the yoke slides on its guide is a pair, not a centre of mass: the yoke's
+    bar S4–E is drawn; S3 off the axis is only a dot."""
+    import tomllib
+
+    from drawing import views as V
+    from plans.mechanism import from_dict
+    from plans.scenes import SCENES
+
+    text = SCENES["scotch_yoke"].toml.replace('"D"', '"S4"')
+    mech = from_dict(tomllib.loads(text), "yoke_S4")
+    assert not V._centre_of_mass(mech, "S4") and V._centre_of_mass(mech, "S3")
+    _, (pos, *_) = _drawn_at(mech, [mech.driver.phi])
+    ends = {p for s in V._link_segments(mech, pos, 1e-3, V.LineType.MAIN) for p in (s.p1, s.p2)}
+    assert {V._sheet(pos["S4"], 1e-3), V._sheet(pos["E"], 1e-3)} <= ends
+    assert V._sheet(pos["S3"], 1e-3) not in ends
+
+
+def test_a_plan_no_sheet_can_hold_points_to_the_plans_option():
+    from drawing.layout import LayoutError, place_views
+    from drawing.sheet import Sheet
+    from drawing.views import View
+
+    for name, option in (("positions", ""), ("acceleration-1", "--plans")):
+        with pytest.raises(LayoutError) as info:
+            place_views(Sheet("A3"), [View(name, [], 900.0, 3200.0)])
+        assert info.value.option == option and "larger than any sheet" in str(info.value)
+    with pytest.raises(LayoutError) as info:
+        place_views(Sheet("A4"), [View("positions", [], 400.0, 250.0)])
+    assert info.value.option == "--format"
