@@ -155,34 +155,19 @@ def test_sliding_groups_write_each_side_of_their_equations_as_on_paper(name, vel
     assert ks == {t for t in acceleration.replace("=", "+").split(" + ") if t.startswith("a^k")}
 
 
-YOKE_AND_ROCKER = """
-name = "Scotch yoke driving a rocker"
-[frame]
-O = [0.0, 0.0]
-F = [0.1, 0.25]
-[driver]
-angle_deg = 35
-omega = 10
-[links.1]
-axis = ["O", "A"]
-points = { A = 0.1 }
-[links.2]
-points = { A = 0 }
-[links.3]
-axis = ["D", "E"]
-points = { E = 0.3 }
+def _yoke_and_rocker() -> str:
+    """The built-in Scotch yoke with a rocker FG whose block G slides in a second slot of
+    the yoke."""
+    from plans.scenes import SCENES
+
+    text = SCENES["scotch_yoke"].toml
+    assert "[frame]\nO = [0.0, 0.0]\n" in text
+    return text.replace("[frame]\nO = [0.0, 0.0]\n", "[frame]\nO = [0.0, 0.0]\nF = [0.1, 0.25]\n") + """
 [links.4]
 axis = ["F", "G"]
 points = { G = 0.2 }
 [links.5]
 points = { G = 0 }
-[[sliders]]
-link = 2
-guide = { link = 3, angle_deg = 90 }
-[[sliders]]
-link = 3
-point = "D"
-guide = { link = 0, through = [0.0, 0.0], angle_deg = 0 }
 [[sliders]]
 link = 5
 guide = { link = 3, angle_deg = 90, through = [0.15, 0.0] }
@@ -202,7 +187,7 @@ def test_a_guide_on_a_link_that_only_translates_has_no_coriolis_term():
     from plans.kinematics import Solver
     from plans.mechanism import from_dict
 
-    mech = from_dict(tomllib.loads(YOKE_AND_ROCKER), "yoke_rocker")
+    mech = from_dict(tomllib.loads(_yoke_and_rocker()), "yoke_rocker")
     assert mech.translating() == {0, 2, 3, 5}  # the yoke and the blocks in its slots
     sol = solve_position(mech)
     g = sol.acceleration.points["g"].source
