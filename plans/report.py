@@ -204,7 +204,7 @@ def _plan_section(sol: Solution, plan, lang: str, number: int) -> list[str]:
     else:
         out += [t["va"].format(t=d.tip, p=d.pivot), ""]
         if d.rpm:
-            out.append(Step("ω1 = π·n1 / 30", f"3.1416·{n(d.rpm)} / 30", n(w1), u["rad/s"]).markdown())
+            out.append(Step("ω1 = π·n1 / 30", f"{n(math.pi, 5)}·{n(d.rpm)} / 30", n(w1), u["rad/s"]).markdown())
         out.append(Step(f"V_{d.tip} = ω1·l_{d.pivot}{d.tip}", f"{n(w1)}·{n(d.length)}", n(val), unit).markdown())
         out += ["", t["muv"].format(mm=n(val / mu), t=tip), ""]
         out.append(Step(f"μv = V_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu), u["mu_v"]).markdown())

@@ -127,6 +127,18 @@ def test_report_russian_uses_decimal_comma(capsys):
     assert "`bc = ba3·BC / BA3 = 55,43·75 / 57,48 = 72,33 мм`" in out
 
 
+@pytest.mark.parametrize("path", ["samples/press.toml", "samples/fourbar.toml"])
+def test_no_number_in_a_russian_note_has_a_decimal_point(capsys, path):
+    """Every number of the Russian note, π in ω1 = π·n1/30 included, has a decimal comma."""
+    import re
+
+    code, out, _ = run(capsys, "report", path, "--lang", "ru")
+    assert code == 0
+    assert re.findall(r"\d\.\d", out) == []
+    if "fourbar" in path:  # its file gives n1 in rpm, the press ω1
+        assert "`ω1 = π·n1 / 30 = 3,1416·149,2 / 30 = 15,62 рад/с`" in out
+
+
 def test_report_english(capsys):
     code, out, _ = run(capsys, "report", "samples/press.toml")
     assert code == 0
