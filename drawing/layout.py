@@ -89,10 +89,10 @@ def _why_not(sheet: Sheet, v) -> tuple[str, str]:
     size = f"the view {v.name!r} ({v.w:.0f} × {v.h:.0f} mm)"
     x0, y0, x1, y1 = Sheet("A0").drawing_area().bounds
     if min(v.w, v.h) > min(x1 - x0, y1 - y0) or max(v.w, v.h) > max(x1 - x0, y1 - y0):
-        if v.name == "positions":
-            return (f"{size} is larger than any sheet, A0 included: over the cycle the "
-                    "mechanism's points run that far apart (a slider running off towards a "
-                    "dead point?)"), ""
+        if v.name == "positions":  # the sheet's own μl always fits: the file fixed it
+            return (f"{size} is larger than any sheet, A0 included, at the μl the file "
+                    "fixes: give a larger mu_l in [scales], or leave it out for the sheet "
+                    "to choose"), ""
         return (f"{size} is larger than any sheet, A0 included: the plans' scale factors "
                 "are chosen at the given position, and this position needs far larger ones; "
                 "choose other --plans or give mu_v and mu_a in [scales]"), "--plans"

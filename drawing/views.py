@@ -76,6 +76,7 @@ WORDS = {
         "stroke": "H",
         "swing": "ψ",
         "no_diagrams": "Диаграммы не строятся: ",
+        "left_off": "Положения {k} не показаны: точки механизма уходят в них дальше {d} м",
         "rad": "рад",
         "deg": "°",
         "ms": "м/с",
@@ -101,6 +102,7 @@ WORDS = {
         "stroke": "H",
         "swing": "ψ",
         "no_diagrams": "No diagrams: ",
+        "left_off": "Positions {k} not shown: points of the mechanism run farther than {d} m out",
         "rad": "rad",
         "deg": "°",
         "ms": "m/s",
@@ -431,22 +433,49 @@ def _support(xy: tuple[float, float]) -> list[Item]:
     ]
 
 
+#: a position is left off the plan of positions where one of its points lies farther than
+#: this many times the given position's own size from it (a slider near a dead point at
+#: infinity, as the tangent mechanism's at the ends of its crank range)
+FAR = 20.0
+
+
+def _positions_at(solver, phis) -> list[dict[str, complex] | None]:
+    """Every point's position at each angle; None where the mechanism does not close."""
+    with np.errstate(all="ignore"):
+        m = solver.solve(np.asarray(phis, dtype=float))
+    ok = np.asarray(m.valid, dtype=bool)
+    return [{n: complex(np.asarray(a)[i]) for n, a in m.position.items()} if ok[i] else None
+            for i in range(len(phis))]
+
+
+def _far(given: dict[str, complex]):
+    """A test for points too far from the given position to be drawn with it, and the
+    distance it allows (m)."""
+    pts = np.array(list(given.values()))
+    centre = pts.mean()
+    size = max(float(np.abs(pts - centre).max()), 1e-6)
+    limit = FAR * size
+    return (lambda z: np.abs(np.asarray(z) - centre) > limit), limit
+
+
 def drawn_extent(mech, solver, cycle, motion_all) -> float:
     """The larger side (m) of the box round what the plan of positions draws: the links
     at the cycle's positions, the extreme ones and the given one, and the trajectories.
     A point that runs far out between the positions drawn (a cross-slide near its dead
-    point) does not shrink the drawing."""
-    phis = np.array([*cycle.positions, *cycle.extremes, mech.driver.phi])
-    with np.errstate(all="ignore"):
-        m = solver.solve(phis)
-    ok = np.asarray(m.valid, dtype=bool)
-    pts = [np.asarray(v)[ok] for v in m.position.values()]
-    traj = np.asarray(motion_all.valid, dtype=bool)
-    pts += [np.asarray(motion_all.position[n])[traj] for n in (*mech.trace, mech.driver.tip)
-            if n in motion_all.position]
-    z = np.concatenate([np.ravel(p) for p in pts])
-    if z.size == 0:
+    point) does not shrink the drawing, nor do the positions left off (:data:`FAR`)."""
+    given = _positions_at(solver, [mech.driver.phi])[0]
+    if given is None:
         return 1.0
+    far, _ = _far(given)
+    drawn = [p for p in _positions_at(solver, [*cycle.positions, *cycle.extremes])
+             if p is not None and not far(list(p.values())).any()] + [given]
+    pts = [np.array(list(p.values())) for p in drawn]
+    traj = np.asarray(motion_all.valid, dtype=bool)
+    for n in (*mech.trace, mech.driver.tip):
+        if n in motion_all.position:
+            z = np.asarray(motion_all.position[n])[traj]
+            pts.append(z[~far(z)])
+    z = np.concatenate(pts)
     return float(max(np.ptp(z.real), np.ptp(z.imag), 1e-9))
 
 
@@ -457,18 +486,24 @@ def positions_view(sol, cycle, motion_all, lang: str = "ru") -> View:
     items: list[Item] = []
     labels: list[LabelRequest] = []
 
-    def positions_at(phis):
-        m = solver.solve(np.asarray(phis, dtype=float))
-        out = []
-        for i in range(len(phis)):
-            if not bool(np.asarray(m.valid)[i]):
-                out.append(None)
-                continue
-            out.append({n: complex(np.asarray(a)[i]) for n, a in m.position.items()})
+    far, limit = _far(sol.positions)
+    left_off: list[int] = []
+
+    def positions_at(phis, numbers=False):
+        out = _positions_at(solver, phis)
+        for k, pos in enumerate(out):
+            if pos is not None and far(list(pos.values())).any():
+                out[k] = None
+                if numbers:
+                    left_off.append(k)
         return out
 
-    # trajectories
+    # trajectories, where they stay near the mechanism
     valid = np.asarray(motion_all.valid, dtype=bool)
+    valid = valid & ~far(np.asarray(motion_all.position[mech.driver.tip]))
+    for name in mech.trace:
+        if name in motion_all.position:
+            valid = valid & ~far(np.asarray(motion_all.position[name]))
     for name in (*mech.trace, mech.driver.tip):
         if name not in motion_all.position:
             continue
@@ -487,7 +522,7 @@ def positions_view(sol, cycle, motion_all, lang: str = "ru") -> View:
             items.append(Polyline(run, LineType.DASHED if name != mech.driver.tip else LineType.THIN,
                                   closed=closed))
     # the positions drawn: the cycle's, numbered, the extreme ones, and the given one
-    cycle_pos, extremes = positions_at(cycle.positions), positions_at(cycle.extremes)
+    cycle_pos, extremes = positions_at(cycle.positions, numbers=True), positions_at(cycle.extremes)
     drawn = [p for p in (*cycle_pos, *extremes, sol.positions) if p is not None]
     # fixed guides: the axis dash-dot over the slider's reach in the positions drawn
     for s in mech.sliders:
@@ -558,7 +593,9 @@ def positions_view(sol, cycle, motion_all, lang: str = "ru") -> View:
             labels.append(LabelRequest(_sheet(mid, mu_l), f"{w['swing']} = {num(deg, 4, lang)}°",
                                        3.5, "n", markup=False))
     caption = f"{w['positions']}, μ_l = {num(mu_l, 4, lang)} {w['m']}/{w['mm']}"
-    return _finish("positions", items, labels, caption, pad=8.0)
+    under = [w["left_off"].format(k=", ".join(map(str, left_off)),
+                                  d=num(limit, 2, lang))] if left_off else []
+    return _finish("positions", items, labels, caption, under, pad=8.0)
 
 
 def _rocker_arm(mech, out) -> tuple[str, str] | None:

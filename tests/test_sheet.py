@@ -343,20 +343,38 @@ def test_a_scotch_yokes_slot_is_drawn_across_its_axis_and_its_block_slides_along
 
 
 def test_a_view_no_sheet_can_hold_is_blamed_on_the_mechanism_not_the_format(capsys, tmp_path):
-    """The tangent mechanism's slider runs off towards infinity at the ends of its crank
-    range: at the μl its file fixes no format holds its plan of positions, and the
-    message says so, naming the file instead of suggesting a larger --format."""
+    """The press drawn at μl = 0.0005 m/mm (2:1) fixed in its file: no format holds its
+    plan of positions, and the message says so, naming the file and its [scales]
+    instead of suggesting a larger --format."""
     from support import run
 
-    from plans.scenes import SCENES
-
-    path = tmp_path / "tangent.toml"
-    path.write_text(SCENES["tangent"].toml + "[scales]\nmu_l = 0.002\n", encoding="utf-8")
+    text = (ROOT / "samples" / "press.toml").read_text(encoding="utf-8")
+    assert "mu_l = 0.01\n" in text
+    path = tmp_path / "press.toml"
+    path.write_text(text.replace("mu_l = 0.01\n", "mu_l = 0.0005\n"), encoding="utf-8")
     out = tmp_path / "t.svg"
     code, _, err = run(capsys, "sheet", path, "-o", out, "--format", "A0")
     assert code == 2 and not out.exists()
     assert err.startswith(f"plans sheet: {path}: the view 'positions' (")
-    assert "is larger than any sheet, A0 included" in err and "--format" not in err
+    assert "is larger than any sheet, A0 included, at the μl the file fixes" in err
+    assert "--format" not in err
+
+
+def test_positions_where_a_slider_runs_off_to_infinity_are_left_off_and_said_so():
+    """The tangent mechanism's crank range ends where its slider runs off to infinity
+    (C at 114 m at φ1 = ±89.9°): those positions are not drawn, the view says which, and
+    the sheet's μl is chosen for the rest (not 1 m/mm for a speck)."""
+    from drawing.cli_sheet import build_sheet
+    from plans.scenes import SCENES
+
+    mech = SCENES["tangent"].mechanism()
+    _, sheet, info = build_sheet(mech, "A2", "en")
+    (view,) = [p.view for p in info["placed"] if p.view.name == "positions"]
+    texts = [it.text for it in view.items if isinstance(it, Text)]
+    (note,) = [t for t in texts if t.startswith("Positions ")]
+    assert note.startswith("Positions 0, 11 not shown: points of the mechanism run farther than")
+    sol = info["solutions"][0][2]
+    assert sol.mu_l <= 0.01 and view.h < 400
 
 
 @pytest.mark.parametrize(("name", "low", "high"), [("press", 0.95, 1.01), ("crank_rocker", 0.95, 1.01),
