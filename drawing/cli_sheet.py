@@ -96,6 +96,8 @@ def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
     from plans.kinematics import Solver
     from plans.plan import solve_position
 
+    if not 3 <= n_positions <= 72:
+        raise InputError("--positions", f"give 3 to 72 positions, got {n_positions}")
     sheet = Sheet(fmt)
     solver = Solver(mech)
     cycle = analyse_cycle(mech, n_positions, solver=solver)

@@ -381,6 +381,9 @@ def place_labels(
                             fallback = (cost, text, box)
                         continue
                     n_soft = 0 if soft_tree is None else len(soft_tree.query(box, predicate="intersects"))
+                    # the last resort too, when every spot crosses more thin lines than allowed
+                    if fallback is None or 1e-9 * n_soft < fallback[0]:
+                        fallback = (1e-9 * n_soft, text, box)
                     if n_soft == 0:
                         chosen = (text, box)
                         break

@@ -234,3 +234,15 @@ def test_near_label_may_cross_a_thin_line_rather_than_drift_away():
     bundle = [Point(anchor).buffer(r).exterior.buffer(0.1) for r in radii]
     far = place_labels(req, [], distances=distances, soft=bundle)[0]
     assert far.clear and far.box.distance(Point(anchor)) > 7.0
+
+
+def test_a_label_among_more_thin_lines_than_allowed_everywhere_still_gets_a_place():
+    """Thirty thin rings round the anchor: every spot crosses more than ``max_soft`` of
+    them and none hits a hard line. The label is placed where it crosses fewest, marked
+    not clear (a sheet with 72 positions crashed here)."""
+    from shapely.geometry import Point
+
+    rings = [Point(50, 50).buffer(r).exterior.buffer(0.05) for r in [0.5 + 0.4 * k for k in range(30)]]
+    (p,) = place_labels([LabelRequest((50, 50), "A", 3.5)], obstacles=[], soft=rings)
+    assert not p.clear
+    assert sum(1 for g in rings if g.intersects(p.box)) > 2

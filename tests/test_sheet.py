@@ -468,3 +468,13 @@ def test_a_plan_no_sheet_can_hold_points_to_the_plans_option():
     with pytest.raises(LayoutError) as info:
         place_views(Sheet("A4"), [View("positions", [], 400.0, 250.0)])
     assert info.value.option == "--format"
+
+
+@pytest.mark.parametrize("n", ["2", "73", "500"])
+def test_positions_outside_3_to_72_are_refused_before_any_work(capsys, tmp_path, n):
+    from support import run
+
+    out = tmp_path / "s.svg"
+    code, _, err = run(capsys, "sheet", "samples/fourbar.toml", "--positions", n, "-o", out)
+    assert code == 2 and not out.exists()
+    assert err == f"plans sheet: --positions: give 3 to 72 positions, got {n}\n"
