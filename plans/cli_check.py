@@ -10,7 +10,7 @@ import math
 
 from .cli import EXIT_DEVIATIONS, EXIT_OK, write_output
 from .errors import InputError
-from .fmt import num
+from .fmt import angle, num
 
 
 def configure(p) -> None:
@@ -180,8 +180,8 @@ def to_text(result, lang: str = "en") -> str:
     out = [f"{w['head']}: {meas.source}"]
     if meas.title:
         out.append(f"  {meas.title}")
-    deg = math.degrees(sol.phi) % 360
-    out.append(f"{w['mech']}: {mech.name} ({mech.source}), φ1 = {num(deg, 4, lang)}° {w['from_x']}")
+    out.append(f"{w['mech']}: {mech.name} ({mech.source}), "
+               f"φ1 = {angle(math.degrees(sol.phi), 4, lang)}° {w['from_x']}")
     mu = meas.mu
     out.append(f"{w['scales']}: μl = {num(mu['mu_l'], 4, lang)} {_u('m/mm', lang)}, "
                f"μv = {num(mu['mu_v'], 4, lang)} {_u('(m/s)/mm', lang)}, "

@@ -7,7 +7,7 @@ import math
 import sys
 
 from .cli import add_source, mechanism_from, write_output
-from .fmt import num
+from .fmt import angle, num
 
 
 def configure(p) -> None:
@@ -86,7 +86,7 @@ def to_text(sol, cycle=None) -> str:
     d = mech.driver
     out.append(
         f"Crank: link {d.link}, l_{d.pivot}{d.tip} = {num(d.length)} m, "
-        f"φ1 = {num(math.degrees(sol.phi) % 360)}° from +x, ω1 = {num(abs(d.omega))} rad/s {_sense(d.omega)}"
+        f"φ1 = {angle(math.degrees(sol.phi))}° from +x, ω1 = {num(abs(d.omega))} rad/s {_sense(d.omega)}"
     )
     out.append(
         f"Scales: μl = {num(sol.mu_l)} m/mm, μv = {num(sol.mu_v)} (m/s)/mm, μa = {num(sol.mu_a)} (m/s²)/mm"

@@ -87,7 +87,7 @@ def summary(c: Cycle, deg=None) -> list[str]:
 
     ``deg``: a crank angle (rad from +x) in degrees in the caller's convention (the file's
     for ``plans cycle``); default counter-clockwise from +x."""
-    from .fmt import num
+    from .fmt import angle, num
     from .report import no_full_turn
 
     deg = deg or from_x
@@ -102,14 +102,9 @@ def summary(c: Cycle, deg=None) -> list[str]:
             lines.append(f"swing of link {c.output.link}: ψ = {num(math.degrees(c.stroke))}°")
         lines.append(
             "extreme positions at φ1 = "
-            + ", ".join(f"{_angle(num(deg(x), 4))}°" for x in c.extremes)
+            + ", ".join(f"{angle(deg(x))}°" for x in c.extremes)
             + f"; θ = {num(math.degrees(c.theta))}°, K = {num(c.K)}")
     return lines
-
-
-def _angle(text: str) -> str:
-    """An angle in [0, 360) as written: one that rounds to 360 is 0."""
-    return "0" if text == "360" else text
 
 
 def from_x(phi: float) -> float:

@@ -26,3 +26,13 @@ def num(x: float, digits: int = 4, lang: str = "en") -> str:
         s = "0"
     return s.replace(".", ",") if lang == "ru" else s
 
+
+def angle(deg: float, digits: int = 4, lang: str = "en") -> str:
+    """A crank angle in degrees, in [0, 360) as written: one that rounds to 360 is 0.
+
+    >>> angle(359.99), angle(-30.0), angle(40.0, 4, "ru"), angle(12.345, 3)
+    ('0', '330', '40', '12.3')
+    """
+    s = num(deg % 360.0, digits, lang)
+    return "0" if s == "360" else s
+

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .fmt import num
+from .fmt import angle, num
 from .plan import Solution, plan_name
 
 T = {
@@ -171,9 +171,9 @@ def no_full_turn(cycle, lang: str = "en", deg=None) -> str:
     cycle's first position to its last, in degrees by ``deg`` (a crank angle in rad →
     degrees in the convention wanted; default counter-clockwise from +x)."""
     lo, hi = cycle.crank_range
-    deg = deg or (lambda phi: math.degrees(phi) % 360.0)
+    deg = deg or math.degrees
     return T[lang]["noturn"].format(
-        lo=num(deg(lo), 4, lang), hi=num(deg(hi), 4, lang),
+        lo=angle(deg(lo), 4, lang), hi=angle(deg(hi), 4, lang),
         span=num(math.degrees(abs(hi - lo)), 4, lang),
     )
 

@@ -153,3 +153,9 @@ def test_russian_note_says_the_crank_range_in_russian(capsys):
     assert ("Кривошип не может сделать полный оборот: механизм собирается только при "
             "φ1 от 231,2° до 128,8° (ход кривошипа 257,6°).") in out
     assert "cannot" not in out
+
+
+def test_an_angle_that_rounds_to_360_is_written_0(capsys):
+    code, out, _ = run(capsys, "solve", "--variant", "1", "--angle", "359.99")
+    assert code == 0
+    assert "φ1 = 0° from +x" in out and "360°" not in out
