@@ -177,7 +177,6 @@ def _compose(mech, sheet, solver, cycle, chosen, mu, lang, title, fixed):
         views.append(V.plan_view(sol, "acceleration", tag, lang, label))
     views += diagrams
     tabsols = [(label if tag != "g" else "φ", sol) for tag, label, sol in sols]
-    tabsols = [(t.replace("φ_1 = ", ""), s) for t, s in tabsols]
     views.append(V.segments_table_view(tabsols, lang))
     views.append(V.omega_table_view(tabsols, lang))
     if notes:

@@ -43,11 +43,9 @@ import math
 import sys
 import time
 from dataclasses import dataclass
-from pathlib import Path
 
 from .cli import write_output
 
-ROOT = Path(__file__).resolve().parent.parent
 SIZES = (12, 100, 1_000, 10_000, 100_000, 1_000_000)
 QUICK_SIZES = (12, 100)
 FD_STEPS = (1e-2, 1e-4, 1e-6)

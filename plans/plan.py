@@ -155,7 +155,8 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     scales = mech.scales
     if mu or "mu_l" not in scales:
         scales = dict(scales, **(mu or {}))
-        scales.setdefault("mu_l", choose_mu_l(cycle_extent(solver)))
+        if "mu_l" not in scales:  # the cycle is solved only when μl is to be chosen
+            scales["mu_l"] = choose_mu_l(cycle_extent(solver))
     vplan = _plan(solver, motion, "velocity", scales.get("mu_v"))
     aplan = _plan(solver, motion, "acceleration", scales.get("mu_a"))
     positions = dict(motion.position)

@@ -254,7 +254,7 @@ def simulate(sol: Solution, mk: Mistake | None, mu: dict[str, float] | None = No
     if mk is None:
         return _Replayer(sol).exact()
     if mk.kind == "branch":
-        sigmas = list(Solver(sol.mechanism, sol.structure).sigmas)
+        sigmas = list(sol.solver.sigmas)  # the branches the solution was solved on
         sigmas[mk.group] = -sigmas[mk.group]
         mu = mu or {"mu_l": sol.mu_l, "mu_v": sol.mu_v, "mu_a": sol.mu_a}
         other = solve_position(sol.mechanism, sol.phi,
