@@ -45,31 +45,33 @@ class Placed:
 
 def place_views(sheet: Sheet, views) -> list[Placed]:
     """Positions for ``views`` in their order, each at the first free spot scanning the
-    sheet row by row; :class:`LayoutError` if one does not fit."""
+    sheet row by row; :class:`LayoutError` if one does not fit.
+
+    The boxes placed are kept widened by ``GAP``, so that a candidate is tested against
+    them by plain arithmetic (touching counts as meeting); only a spot clear of them is
+    tested against the free field with shapely."""
     area = sheet.drawing_area().buffer(-MARGIN)
     free = prep(area)
     x0, y0, x1, y1 = area.bounds
     placed: list[Placed] = []
-    boxes = []
+    wide: list[tuple[float, float, float, float]] = []
     for v in views:
         spot = None
         xs = [x0 + STEP * i for i in range(int((x1 - x0 - v.w) / STEP) + 1)]
         ys = [y0 + STEP * j for j in range(int((y1 - y0 - v.h) / STEP) + 1)]
-        pairs = ((x, y) for y in ys for x in xs)
-        for x, y in pairs:
-            b = box(x, y, x + v.w, y + v.h)
-            if not free.contains(b):
+        for x, y in ((x, y) for y in ys for x in xs):
+            if any(x <= bx1 and bx0 <= x + v.w and y <= by1 and by0 <= y + v.h
+                   for bx0, by0, bx1, by1 in wide):
                 continue
-            wide = b.buffer(GAP, join_style=2)
-            if any(wide.intersects(o) for o in boxes):
-                continue
-            spot = (x, y)
-            break
+            if free.contains(box(x, y, x + v.w, y + v.h)):
+                spot = (x, y)
+                break
         if spot is None:
             raise LayoutError(*_why_not(sheet, v))
         r = Rect(spot[0], spot[1], v.w, v.h)
         placed.append(Placed(v, r))
-        boxes.append(box(*r.bounds))
+        bx0, by0, bx1, by1 = r.bounds
+        wide.append((bx0 - GAP, by0 - GAP, bx1 + GAP, by1 + GAP))
     return placed
 
 
