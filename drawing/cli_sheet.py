@@ -106,13 +106,18 @@ def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
     fixed = _views_of_any_size(mech, solver, cycle, lang)
     extent = V.drawn_extent(mech, solver, cycle, fixed[0])
     # the largest views that fit: scales the file leaves free are chosen for the sheet
-    error = None
+    error, tried = None, []
     for size in SIZES:
         mu = sheet_scales(mech, first, extent, size)
+        if mu in tried:  # the file fixes the scales this size would change: same sheet
+            continue
+        tried.append(mu)
         try:
             return _compose(mech, sheet, solver, cycle, chosen, mu, lang, title, fixed)
         except LayoutError as exc:
             error = exc
+            if not exc.option:  # the file's own μl: no size of the sheet's changes it
+                break
     raise error
 
 
