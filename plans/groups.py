@@ -58,6 +58,17 @@ def _never_misses(xp, closes, shape):
     return closes, np.zeros(shape), ~closes
 
 
+def _solution(g: Group, w: dict, point: str, v, a, vroute, aroute, sine, closure):
+    """A group's recorded solution: the velocity and acceleration constructions of its
+    new ``point``, where the group closes, and the words of its conditions (``w``)."""
+    valid, gap, singular = closure
+    return record(GroupSolution, (
+        g, record(Construction, (point, v, vroute, sine, w["veq"])),
+        record(Construction, (point, a, aroute, sine, w["aeq"])),
+        valid, gap, w["admissible"], singular, w["singular"],
+    ))
+
+
 def _pose_from_two(P, pl, C, cl):
     """Origin and rotor of a link from two world points and their own coordinates."""
     r = (C - P) / (cl - pl)
@@ -132,7 +143,7 @@ def _rrr(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     l2, l3 = w["l2"], w["l3"]
     Pw, Qw = pos[P], pos[Q]
     r = kernels.rrr(xp, sigma, l2, l3, Pw, vel[P], acc[P], Qw, vel[Q], acc[Q])
-    valid, gap, singular = _closure(
+    closure = _closure(
         xp, r.closes, lambda: np.maximum(np.maximum(r.d - (l2 + l3), abs(l2 - l3) - r.d), 0.0),
         l2 + l3)
     vroute = (
@@ -150,12 +161,7 @@ def _rrr(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     states[g.a] = state_from(oa, ra, r.C, r.vC, r.aC, r.w2, r.e2)
     states[g.b] = state_from(ob, rb, r.C, r.vC, r.aC, r.w3, r.e3)
     pos[C] = r.C
-    sol = record(GroupSolution, (
-        g, record(Construction, (C, r.vC, vroute, r.sine, w["veq"])),
-        record(Construction, (C, r.aC, aroute, r.sine, w["aeq"])),
-        valid, gap, w["admissible"], singular, w["singular"],
-    ))
-    return sol, {}
+    return _solution(g, w, C, r.vC, r.aC, vroute, aroute, r.sine, closure), {}
 
 
 # ---------------------------------------------------------------------------------------
@@ -188,7 +194,7 @@ def _rrp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     Pw = pos[P]
     G0, u, vG, aG, wk, ek = _guide(sv, s.guide, states)
     r = kernels.rrp(xp, sigma, l2, Pw, vel[P], acc[P], G0, u, vG, aG, wk, ek)
-    valid, gap, singular = _closure(xp, r.closes, lambda: np.maximum(r.h - l2, 0.0), l2)
+    closure = _closure(xp, r.closes, lambda: np.maximum(r.h - l2, 0.0), l2)
     vroute = (
         record(Route, (P, vel[P], (), r.d1, w["⊥P"], w["VP"], "relative", r.t1)),
         record(Route, (base, r.vCk, (), u, w["∥"], w["Vs"], "sliding", r.t2)),
@@ -204,13 +210,8 @@ def _rrp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     kb = states[k]
     states[g.b] = state_from(r.C - u * w["cb"], u, r.C, r.vC, r.aC, kb.omega, kb.epsilon)
     pos[C] = r.C
-    sol = record(GroupSolution, (
-        g, record(Construction, (C, r.vC, vroute, r.sine, w["veq"])),
-        record(Construction, (C, r.aC, aroute, r.sine, w["aeq"])),
-        valid, gap, w["admissible"], singular, w["singular"],
-    ))
-    extra = {base: (k, C)} if base else {}
-    return sol, extra
+    extra = {base: (k, C, r.vCk, r.aCk)} if base else {}
+    return _solution(g, w, C, r.vC, r.aC, vroute, aroute, r.sine, closure), extra
 
 
 # ---------------------------------------------------------------------------------------
@@ -244,8 +245,7 @@ def _rpr(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     e, name = w["e"], w["name"]
     Pw, Qw = pos[P], pos[Q]
     r = kernels.rpr(xp, sigma, e, w["gd"], Pw, vel[P], acc[P], Qw, vel[Q], acc[Q])
-    valid, gap, singular = _closure(xp, r.closes, lambda: np.maximum(abs(e) - r.dist, 0.0),
-                                    max(abs(e), 1.0) if e else 1.0)
+    closure = _closure(xp, r.closes, lambda: np.maximum(abs(e) - r.dist, 0.0), max(abs(e), 1.0))
     vroute = (
         record(Route, (P, vel[P], (), r.u, w["∥"], w["VP"], "sliding", r.t1)),
         record(Route, (Q, vel[Q], (), r.d2, w["⊥Q"], w["VQ"], "relative", r.t2)),
@@ -258,12 +258,8 @@ def _rpr(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     )
     states[G] = state_from(Qw - r.rot * w["q"], r.rot, Pw, r.vP3, r.aP3, r.w3, r.e3)
     states[g.a] = state_from(Pw - r.u * w["pa"], r.u, Pw, vel[P], acc[P], r.w3, r.e3)
-    sol = record(GroupSolution, (
-        g, record(Construction, (name, r.vP3, vroute, r.sine, w["veq"])),
-        record(Construction, (name, r.aP3, aroute, r.sine, w["aeq"])),
-        valid, gap, w["admissible"], singular, w["singular"],
-    ))
-    return sol, {name: (G, P)}
+    return (_solution(g, w, name, r.vP3, r.aP3, vroute, aroute, r.sine, closure),
+            {name: (G, P, r.vP3, r.aP3)})
 
 
 # ---------------------------------------------------------------------------------------
@@ -281,6 +277,7 @@ def _prp_setup(sv: Solver, g: Group) -> dict:
         "r1": f"a^r_{C}{b1}" if b1 else f"a_{C}", "r2": f"a^r_{C}{b2}" if b2 else f"a_{C}",
         "veq": f"V_{C} = {_slide(sv, 'V', C, b1, sa.guide)} = {_slide(sv, 'V', C, b2, sb.guide)}",
         "aeq": f"a_{C} = {_slide(sv, 'a', C, b1, sa.guide)} = {_slide(sv, 'a', C, b2, sb.guide)}",
+        "admissible": "the two guides not parallel",
         "singular": f"the guides {l1} and {l2} are parallel: the hinge {C} is not fixed",
     }
 
@@ -292,7 +289,7 @@ def _prp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     G1, u1, vG1, aG1, w1, e1 = _guide(sv, sa.guide, states)
     G2, u2, vG2, aG2, w2, e2 = _guide(sv, sb.guide, states)
     r = kernels.prp(xp, G1, u1, vG1, aG1, w1, e1, G2, u2, vG2, aG2, w2, e2)
-    valid, gap, singular = _never_misses(xp, r.closes, np.shape(r.C))
+    closure = _never_misses(xp, r.closes, np.shape(r.C))
     vroute = (
         record(Route, (b1, r.v1, (), u1, w["∥1"], w["V1"], "sliding", r.t1)),
         record(Route, (b2, r.v2, (), u2, w["∥2"], w["V2"], "sliding", r.t2)),
@@ -307,13 +304,9 @@ def _prp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
         k = states[s.guide.link]
         states[lid] = state_from(r.C - u * own, u, r.C, r.vC, r.aC, k.omega, k.epsilon)
     pos[C] = r.C
-    sol = record(GroupSolution, (
-        g, record(Construction, (C, r.vC, vroute, r.sine, w["veq"])),
-        record(Construction, (C, r.aC, aroute, r.sine, w["aeq"])),
-        valid, gap, "the two guides not parallel", singular, w["singular"],
-    ))
-    extra = {b: (s.guide.link, C) for b, s in ((b1, sa), (b2, sb)) if b}
-    return sol, extra
+    extra = {b: (s.guide.link, C, v, a)
+             for b, s, v, a in ((b1, sa, r.v1, r.a1), (b2, sb, r.v2, r.a2)) if b}
+    return _solution(g, w, C, r.vC, r.aC, vroute, aroute, r.sine, closure), extra
 
 
 # ---------------------------------------------------------------------------------------
@@ -336,6 +329,7 @@ def _rpp_setup(sv: Solver, g: Group) -> dict:
         "veq": f"V_{name} = V_{P} + V_{name}{P} = {_slide(sv, 'V', name, bk, s_out.guide)}",
         "aeq": f"a_{name} = a_{P}{'' if still else f' + a^k_{name}{P}'} + a^r_{name}{P} = "
                f"{_slide(sv, 'a', name, bk, s_out.guide)}",
+        "admissible": "the two guides not parallel",
         "singular": f"the guide {li} of link {B} is parallel to the guide {lo}: the yoke's "
                     "position is not fixed",
     }
@@ -348,7 +342,7 @@ def _rpp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     Gk, uk, vG, aG, wk, ek = _guide(sv, s_out.guide, states)
     Pw = pos[P]
     r = kernels.rpp(xp, Pw, vel[P], acc[P], Gk, uk, vG, aG, wk, ek, w["locD"], w["g0"], w["gd"])
-    valid, gap, singular = _never_misses(xp, r.closes, np.shape(Pw))
+    closure = _never_misses(xp, r.closes, np.shape(Pw))
     vroute = (
         record(Route, (P, vel[P], (), r.us, w["∥in"], w["VP"], "sliding", r.t1)),
         record(Route, (bk, r.vk, (), uk, w["∥out"], w["Vk"], "sliding", r.t2)),
@@ -362,15 +356,10 @@ def _rpp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     kst = states[s_out.guide.link]
     states[B] = state_from(r.oB, uk, Pw, r.vP3, r.aP3, kst.omega, kst.epsilon)
     states[g.a] = state_from(Pw - r.us * w["pa"], r.us, Pw, vel[P], acc[P], kst.omega, kst.epsilon)
-    sol = record(GroupSolution, (
-        g, record(Construction, (name, r.vP3, vroute, r.sine, w["veq"])),
-        record(Construction, (name, r.aP3, aroute, r.sine, w["aeq"])),
-        valid, gap, "the two guides not parallel", singular, w["singular"],
-    ))
-    extra = {name: (B, P)}
+    extra = {name: (B, P, r.vP3, r.aP3)}
     if bk:
-        extra[bk] = (s_out.guide.link, P)
-    return sol, extra
+        extra[bk] = (s_out.guide.link, P, r.vk, r.ak)
+    return _solution(g, w, name, r.vP3, r.aP3, vroute, aroute, r.sine, closure), extra
 
 
 SOLVERS = {

@@ -138,11 +138,8 @@ class Solver:
                 valid &= sol.valid
             for a in (g.a, g.b):
                 self._fill(a, states, pos, vel, acc, owner)
-            for name, (link, base) in extra.items():
-                X = pos[base]
-                pos[name] = X
-                vel[name] = states[link].vel(X)
-                acc[name] = states[link].acc(X)
+            for name, (link, base, v, a) in extra.items():  # the kernel's own values
+                pos[name], vel[name], acc[name] = pos[base], v, a
                 owner[name] = link
                 coincident[name] = base
         return frozen(Motion, phi=phi, links=states, position=pos, velocity=vel,
