@@ -155,7 +155,7 @@ class RPP(NamedTuple):
     s1: object
     s2: object
     sine: object
-    closes: object  # the two guides are not parallel
+    closes: object  # always True: parallel guides are refused with the structure
 
 
 def rrr(xp, sigma, l2, l3, P, vP, aP, Q, vQ, aQ):
@@ -277,12 +277,9 @@ def rpp(xp, P, vP, aP, G, u, vG, aG, wk, ek, locD, g0, gd):
 
     V_P3 = V_P + V_P3P (∥ inner guide) = V_Pk + V_P3Pk (∥ outer guide).
 
-    The inner guide parallel to the outer one (sine −gd.imag = 0) leaves the yoke's place
-    open at every angle: ``closes`` is then False, computed with a stand-in direction.
+    The two guides keep their angle at every crank angle, so parallel ones (gd.imag = 0)
+    are refused with the structure (``plans.structure``); ``closes`` is always True.
     """
-    closes = abs(gd.imag) > SINGULAR_SINE
-    if not closes:
-        gd = 1j
     z = (P - G) * u.conjugate() + (locD - g0)
     t = z.imag / gd.imag
     sl = z.real - t * gd.real
@@ -293,7 +290,7 @@ def rpp(xp, P, vP, aP, G, u, vG, aG, wk, ek, locD, g0, gd):
     vk, ak = _guide_motion(P, G, vG, aG, wk, ek)
     # the block slides in the yoke, which turns with link k: both slides see ω_k
     vP3, aP3, (c1, c2, t1, t2, s1, s2) = _two_slides(vP, aP, us, wk, vk, ak, u, wk, inv)
-    return record(RPP, (oB, us, vP3, aP3, vk, ak, c1, c2, t1, t2, s1, s2, sine, closes))
+    return record(RPP, (oB, us, vP3, aP3, vk, ak, c1, c2, t1, t2, s1, s2, sine, True))
 
 
 def _two_slides(v1, a1, u1, w1, v2, a2, u2, w2, inv):

@@ -204,7 +204,11 @@ def _classify(x: int, y: int, ex: Edge, inner: Edge, ey: Edge) -> Group:
                 f"{label}: the block (link {x}) hinged at {ex.point} must slide along the "
                 f"guide carried by link {y}"
             )
-        if _parallel(s_in.guide.direction, 1):  # in the yoke's coordinates: x along its guide
+        from .kernels import SINGULAR_SINE  # here: the structure itself needs no numpy
+
+        # the inner guide in the yoke's coordinates, whose x runs along the yoke's own guide:
+        # along x, the two stay parallel at every angle (the threshold of a singular plan)
+        if abs(s_in.guide.direction.imag) <= SINGULAR_SINE:
             raise StructureError(
                 f"{label}: the guide {s_in.guide.label} of link {y} is parallel to the guide "
                 f"{ey.slider.guide.label} it moves along (a sliding link's x-axis runs along "
@@ -213,14 +217,6 @@ def _classify(x: int, y: int, ex: Edge, inner: Edge, ey: Edge) -> Group:
             )
         return Group(DyadKind.RPP, x, y, P=ex.point, s1=s_in, s2=ey.slider)
     raise StructureError(f"{label}: a group of three prismatic pairs has no fixed position")
-
-
-def _parallel(u: complex, v: complex) -> bool:
-    """Two unit directions fixed to one link, whose plan lines could never meet (the
-    threshold of a singular plan, :data:`plans.kernels.SINGULAR_SINE`)."""
-    from .kernels import SINGULAR_SINE
-
-    return abs((u.conjugate() * v).imag) <= SINGULAR_SINE
 
 
 def _must_slide(slider: Slider | None, link: int, label: str) -> None:
