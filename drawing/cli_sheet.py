@@ -16,6 +16,7 @@ import copy
 import math
 import sys
 from pathlib import Path
+from typing import NamedTuple
 
 from plans.cli import EXIT_INPUT, EXIT_OK, add_source, mechanism_from, write_output
 from plans.errors import InputError, PlansError
@@ -89,7 +90,6 @@ def trajectory_angles(cycle, n: int = 361):
 def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
                 plans: list[int] | None = None, title: list[str] = ()):
     """(scene, sheet, info) for ``mech``; info holds the solutions drawn."""
-    from drawing import views as V
     from drawing.layout import LayoutError
     from drawing.sheet import Sheet
     from plans.cycle import analyse_cycle
@@ -104,7 +104,7 @@ def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
     first = solve_position(mech, solver=solver)
     chosen = _parse_plans(None if plans is None else ",".join(map(str, plans)), len(cycle.positions))
     fixed = _views_of_any_size(mech, solver, cycle, lang)
-    extent = V.drawn_extent(mech, solver, cycle, fixed[0])
+    extent = fixed.shown.extent(mech, fixed.motion_all)
     # the largest views that fit: scales the file leaves free are chosen for the sheet
     error, tried = None, []
     for size in SIZES:
@@ -121,21 +121,28 @@ def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
     raise error
 
 
-def _views_of_any_size(mech, solver, cycle, lang):
-    """What the sheet draws whatever the scale factors: the trajectories' motion, and the
-    diagrams or the note that says why there are none. Worked out once, not per size."""
+class _AnySize(NamedTuple):
+    """What the sheet draws whatever the scale factors, worked out once, not per size."""
+
+    motion_all: object  # the trajectories' motion (trajectory_angles)
+    shown: object  # the positions the plan of positions draws (views.Drawn)
+    diagrams: list  # the kinematic diagrams, or none …
+    notes: list  # … and the note that says why
+
+
+def _views_of_any_size(mech, solver, cycle, lang) -> _AnySize:
     from drawing import views as V
 
-    phis = trajectory_angles(cycle)
-    motion_all = solver.solve(phis)
+    motion_all = solver.solve(trajectory_angles(cycle))
+    shown = V.drawn(mech, solver, cycle, motion_all)
     diag = V.diagrams_view(mech, cycle, lang, solver=solver)
     if diag is not None:
-        return motion_all, [diag], []
+        return _AnySize(motion_all, shown, [diag], [])
     from plans.report import no_full_turn
 
     why = (no_full_turn(cycle, lang, mech.driver.file_angle) if not cycle.full_turn else
            "no stroke of the output" if lang == "en" else "нет хода выходного звена")
-    return motion_all, [], [V.WORDS[lang]["no_diagrams"] + why[0].lower() + why[1:]]
+    return _AnySize(motion_all, shown, [], [V.WORDS[lang]["no_diagrams"] + why[0].lower() + why[1:]])
 
 
 #: view sizes tried, as multiples of the engine's default drawing sizes (largest first)
@@ -175,17 +182,16 @@ def _compose(mech, sheet, solver, cycle, chosen, mu, lang, title, fixed):
     else:
         for k in chosen:
             sols.append((str(k), f"{k}", solve_position(mech, cycle.positions[k], solver=solver, mu=mu)))
-    motion_all, diagrams, notes = fixed
-    views = [V.positions_view(given, cycle, motion_all, lang)]
+    views = [V.positions_view(given, cycle, fixed.motion_all, lang, fixed.shown)]
     for tag, label, sol in sols:
         views.append(V.plan_view(sol, "velocity", tag, lang, label))
         views.append(V.plan_view(sol, "acceleration", tag, lang, label))
-    views += diagrams
+    views += fixed.diagrams
     tabsols = [(label if tag != "g" else "φ", sol) for tag, label, sol in sols]
     views.append(V.segments_table_view(tabsols, lang))
     views.append(V.omega_table_view(tabsols, lang))
-    if notes:
-        views.append(V.note_view(notes))
+    if fixed.notes:
+        views.append(V.note_view(fixed.notes))
     placed = place_views(sheet, views)
     tb = TitleBlock(**_title_fields(mech, title, gost_scale(given.mu_l)))
     scene = frame_scene(sheet, tb, lang=lang)

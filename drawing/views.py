@@ -448,62 +448,75 @@ def _positions_at(solver, phis) -> list[dict[str, complex] | None]:
             for i in range(len(phis))]
 
 
-def _far(given: dict[str, complex]):
-    """A test for points too far from the given position to be drawn with it, and the
-    distance it allows (m)."""
+@dataclass(frozen=True)
+class Drawn:
+    """What the plan of positions draws, whatever its scale, worked out once per sheet:
+    the given position, the cycle's positions and the extreme ones (None where the
+    mechanism does not close there, or where a point runs farther than ``limit`` from the
+    given position: those cycle positions are ``left_off``), and which samples of the
+    trajectories are drawn."""
+
+    given: dict[str, complex]
+    cycle: list[dict[str, complex] | None]
+    extremes: list[dict[str, complex] | None]
+    left_off: tuple[int, ...]
+    limit: float
+    trajectory: np.ndarray  # bool per sample of the trajectories' angles
+
+    @property
+    def positions(self) -> list[dict[str, complex]]:
+        return [p for p in (*self.cycle, *self.extremes, self.given) if p is not None]
+
+    def extent(self, mech, motion_all) -> float:
+        """The larger side (m) of the box round it all: the sheet's μl is chosen from
+        this, so a point that runs far out between the positions drawn (a cross-slide
+        near its dead point) does not shrink the drawing, nor do the positions left off."""
+        pts = [np.array(list(p.values())) for p in self.positions]
+        pts += [np.asarray(motion_all.position[n])[self.trajectory]
+                for n in (*mech.trace, mech.driver.tip) if n in motion_all.position]
+        z = np.concatenate(pts)
+        return float(max(np.ptp(z.real), np.ptp(z.imag), 1e-9))
+
+
+def drawn(mech, solver, cycle, motion_all) -> Drawn:
+    """The positions the plan of positions draws (:class:`Drawn`); a position is left off
+    where one of its points lies more than :data:`FAR` times the given position's size
+    from it."""
+    given = _positions_at(solver, [mech.driver.phi])[0]
     pts = np.array(list(given.values()))
     centre = pts.mean()
-    size = max(float(np.abs(pts - centre).max()), 1e-6)
-    limit = FAR * size
-    return (lambda z: np.abs(np.asarray(z) - centre) > limit), limit
+    limit = FAR * max(float(np.abs(pts - centre).max()), 1e-6)
 
+    def far(z) -> np.ndarray:
+        return np.abs(np.asarray(z) - centre) > limit
 
-def drawn_extent(mech, solver, cycle, motion_all) -> float:
-    """The larger side (m) of the box round what the plan of positions draws: the links
-    at the cycle's positions, the extreme ones and the given one, and the trajectories.
-    A point that runs far out between the positions drawn (a cross-slide near its dead
-    point) does not shrink the drawing, nor do the positions left off (:data:`FAR`)."""
-    given = _positions_at(solver, [mech.driver.phi])[0]
-    if given is None:
-        return 1.0
-    far, _ = _far(given)
-    drawn = [p for p in _positions_at(solver, [*cycle.positions, *cycle.extremes])
-             if p is not None and not far(list(p.values())).any()] + [given]
-    pts = [np.array(list(p.values())) for p in drawn]
-    traj = np.asarray(motion_all.valid, dtype=bool)
+    def near(positions):
+        return [p if p is not None and not far(list(p.values())).any() else None
+                for p in positions]
+
+    everywhere = _positions_at(solver, cycle.positions)
+    kept = near(everywhere)
+    left_off = tuple(k for k, (p, q) in enumerate(zip(everywhere, kept, strict=True))
+                     if p is not None and q is None)
+    trajectory = np.asarray(motion_all.valid, dtype=bool).copy()
     for n in (*mech.trace, mech.driver.tip):
         if n in motion_all.position:
-            z = np.asarray(motion_all.position[n])[traj]
-            pts.append(z[~far(z)])
-    z = np.concatenate(pts)
-    return float(max(np.ptp(z.real), np.ptp(z.imag), 1e-9))
+            trajectory &= ~far(motion_all.position[n])
+    return Drawn(given, kept, near(_positions_at(solver, cycle.extremes)), left_off, limit,
+                 trajectory)
 
 
-def positions_view(sol, cycle, motion_all, lang: str = "ru") -> View:
+def positions_view(sol, cycle, motion_all, lang: str = "ru", shown: Drawn | None = None) -> View:
     """Plan of positions at μl: the given position heavy, the cycle's positions
-    and the two extreme ones thin, trajectories, pivots, sliders, stroke H."""
-    mech, mu_l, solver = sol.mechanism, sol.mu_l, sol.solver
+    and the two extreme ones thin, trajectories, pivots, sliders, stroke H.
+    ``shown``: the positions drawn, if worked out already (:func:`drawn`)."""
+    mech, mu_l = sol.mechanism, sol.mu_l
+    shown = shown or drawn(mech, sol.solver, cycle, motion_all)
     items: list[Item] = []
     labels: list[LabelRequest] = []
 
-    far, limit = _far(sol.positions)
-    left_off: list[int] = []
-
-    def positions_at(phis, numbers=False):
-        out = _positions_at(solver, phis)
-        for k, pos in enumerate(out):
-            if pos is not None and far(list(pos.values())).any():
-                out[k] = None
-                if numbers:
-                    left_off.append(k)
-        return out
-
     # trajectories, where they stay near the mechanism
-    valid = np.asarray(motion_all.valid, dtype=bool)
-    valid = valid & ~far(np.asarray(motion_all.position[mech.driver.tip]))
-    for name in mech.trace:
-        if name in motion_all.position:
-            valid = valid & ~far(np.asarray(motion_all.position[name]))
+    valid = shown.trajectory
     for name in (*mech.trace, mech.driver.tip):
         if name not in motion_all.position:
             continue
@@ -522,18 +535,18 @@ def positions_view(sol, cycle, motion_all, lang: str = "ru") -> View:
             items.append(Polyline(run, LineType.DASHED if name != mech.driver.tip else LineType.THIN,
                                   closed=closed))
     # the positions drawn: the cycle's, numbered, the extreme ones, and the given one
-    cycle_pos, extremes = positions_at(cycle.positions, numbers=True), positions_at(cycle.extremes)
-    drawn = [p for p in (*cycle_pos, *extremes, sol.positions) if p is not None]
+    cycle_pos, extremes = shown.cycle, shown.extremes
+    drawn_at = [p for p in (*cycle_pos, *extremes, sol.positions) if p is not None]
     # fixed guides: the axis dash-dot over the slider's reach in the positions drawn
     for s in mech.sliders:
         if s.guide.link != 0:
             continue
         d = s.guide.direction
-        a, b = _reach([((p[s.point] - s.guide.point) * d.conjugate()).real for p in drawn])
+        a, b = _reach([((p[s.point] - s.guide.point) * d.conjugate()).real for p in drawn_at])
         items.append(Segment(_sheet(s.guide.point + a * d, mu_l), _sheet(s.guide.point + b * d, mu_l),
                              LineType.DASH_DOT_THIN))
     tip = mech.driver.tip
-    slots = _slots(mech, drawn)
+    slots = _slots(mech, drawn_at)
     for k, pos in enumerate(cycle_pos):
         if pos is None:
             continue
@@ -593,8 +606,8 @@ def positions_view(sol, cycle, motion_all, lang: str = "ru") -> View:
             labels.append(LabelRequest(_sheet(mid, mu_l), f"{w['swing']} = {num(deg, 4, lang)}°",
                                        3.5, "n", markup=False))
     caption = f"{w['positions']}, μ_l = {num(mu_l, 4, lang)} {w['m']}/{w['mm']}"
-    under = [w["left_off"].format(k=", ".join(map(str, left_off)),
-                                  d=num(limit, 2, lang))] if left_off else []
+    under = [w["left_off"].format(k=", ".join(map(str, shown.left_off)),
+                                  d=num(shown.limit, 2, lang))] if shown.left_off else []
     return _finish("positions", items, labels, caption, under, pad=8.0)
 
 

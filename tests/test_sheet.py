@@ -396,7 +396,8 @@ def test_the_plan_of_positions_is_sized_by_what_it_draws(name, low, high):
     mech = SCENES[name].mechanism()
     solver = Solver(mech)
     cycle = analyse_cycle(mech, 12, solver=solver)
-    drawn = V.drawn_extent(mech, solver, cycle, solver.solve(trajectory_angles(cycle)))
+    motion_all = solver.solve(trajectory_angles(cycle))
+    drawn = V.drawn(mech, solver, cycle, motion_all).extent(mech, motion_all)
     whole = cycle_extent(solver)
     assert low * whole <= drawn <= high * whole  # 72 samples of the cycle, 361 drawn
     assert np.isfinite(drawn) and drawn > 0
