@@ -158,26 +158,34 @@ def conditioning(mech, motion) -> tuple[Status, ...]:
                     loop > 0, np.abs(P - Q) / np.where(loop > 0, loop, 1.0), 0.0
                 )
         per_group.append((g, pivot))
+    # each group's figures as Python lists, once; words only where a position is flagged
+    cols = []
+    for g, pivot in per_group:
+        s = np.abs(np.broadcast_to(np.asarray(g.velocity.sine, dtype=float), (n,)))
+        s = np.where(np.isfinite(s), s, 0.0)  # as GroupSolution.sine_at reads it
+        valid = np.broadcast_to(np.asarray(g.valid, dtype=bool), (n,))
+        q = None if pivot is None else np.where(np.isfinite(pivot), pivot, 0.0).tolist()
+        cols.append((g, g.group.label, valid.tolist(), s.tolist(), (s < WARN_SINE).tolist(), q))
+    degs = [_deg(mech, x) for x in np.asarray(motion.phi, dtype=float).tolist()]
     out = []
     for k in range(n):
-        deg = _deg(mech, float(motion.phi[k]))
+        deg = degs[k]
         figures: dict[str, float] = {}
         warnings: list[str] = []
         errors: list[str] = []
-        for g, pivot in per_group:
-            label = g.group.label
-            if not bool(g.valid[k]):
+        for g, label, valid, sine, low, pivot in cols:
+            if not valid[k]:
                 errors.append(str(g.failure(k, deg)))
                 figures[label] = math.nan
                 continue
-            figures[label] = g.sine_at(k)
-            if (err := g.parallel(k, deg)) is not None:
-                errors.append(str(err))
-            elif (warning := g.near_parallel(k, deg)) is not None:
-                warnings.append(warning)
+            figures[label] = sine[k]
+            if low[k]:
+                if (err := g.parallel(k, deg)) is not None:
+                    errors.append(str(err))
+                elif (warning := g.near_parallel(k, deg)) is not None:
+                    warnings.append(warning)
             if pivot is not None:
-                q = float(pivot[k])
-                q = q if math.isfinite(q) else 0.0
+                q = pivot[k]
                 figures[f"{label} pivot"] = q
                 P, Q = g.group.P, g.group.Q
                 if q < SINGULAR_SINE:
