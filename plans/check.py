@@ -45,7 +45,6 @@ from .measured import (  # noqa: F401  (the public names of the check live here)
     load,
     parse_tolerance,
     recorded_segments,
-    sol_mu,
 )
 from .replay import (  # noqa: F401
     Mistake,

@@ -52,7 +52,7 @@ def to_json(sol) -> dict:
     return {
         "points": points,
         "links": {str(i): {"omega": sol.omega[i], "epsilon": sol.epsilon[i]} for i in sorted(sol.omega)},
-        "scales": {"mu_l": sol.mu_l, "mu_v": sol.mu_v, "mu_a": sol.mu_a},
+        "scales": sol.mu,
         "segments": {k: float(v) for k, v in sol.segments.items()},
         "plans": {
             plan.kind: {"pole": plan.pole, "mu": plan.mu, "unit": plan.unit,

@@ -273,12 +273,8 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
                             f"used for {what}")
     problems.raise_if_any()
     read = [source] + [str(p) for p in (mech if not isinstance(mech, int) else table,) if p]
-    return Measurement(source, m, sol, {k: sol_mu(sol, k) for k in MU_KEY.values()},
+    return Measurement(source, m, sol, sol.mu,
                        tuple(items), tol, title, angle, tuple(read))
-
-
-def sol_mu(sol: Solution, key: str) -> float:
-    return {"mu_l": sol.mu_l, "mu_v": sol.mu_v, "mu_a": sol.mu_a}[key]
 
 
 def _splits(text: str, names) -> list[tuple[str, str]]:
@@ -363,7 +359,7 @@ class _Names:
             pair = self.rep.pairs.get(link)
             per_mm = 0.0
             if pair:
-                per_mm = sol_mu(sol, MU_KEY[plan]) / abs(sol.positions[pair[0]] - sol.positions[pair[1]])
+                per_mm = sol.mu[MU_KEY[plan]] / abs(sol.positions[pair[0]] - sol.positions[pair[1]])
             sym = "ω" if kind == "omega" else "ε"
             return Item(key, f"{sym}{link}", kind, plan, mag, link=link, sense=sense, per_mm=per_mm)
         hit = self._physical(name)
@@ -377,7 +373,7 @@ class _Names:
         if mag is None:
             return None
         return Item(key, label, "value", plan, mag, x, y,
-                    per_mm=sol_mu(sol, MU_KEY[plan]))
+                    per_mm=sol.mu[MU_KEY[plan]])
 
     def _physical(self, name: str):
         m = re.fullmatch(r"(V|v|a)(?:\^?([nktr]))?_(\w+)", name)

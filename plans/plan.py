@@ -128,6 +128,11 @@ class Solution:
     def mu_a(self) -> float:
         return self.acceleration.mu
 
+    @property
+    def mu(self) -> dict[str, float]:
+        """The three scale factors by their file names: mu_l, mu_v, mu_a."""
+        return {"mu_l": self.mu_l, "mu_v": self.velocity.mu, "mu_a": self.acceleration.mu}
+
     @cached_property
     def motion(self) -> Motion:
         """The same solution as arrays of one angle, for everything the plans do not name.

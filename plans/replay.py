@@ -256,7 +256,7 @@ def simulate(sol: Solution, mk: Mistake | None, mu: dict[str, float] | None = No
     if mk.kind == "branch":
         sigmas = list(sol.solver.sigmas)  # the branches the solution was solved on
         sigmas[mk.group] = -sigmas[mk.group]
-        mu = mu or {"mu_l": sol.mu_l, "mu_v": sol.mu_v, "mu_a": sol.mu_a}
+        mu = mu or sol.mu
         other = solve_position(sol.mechanism, sol.phi,
                                solver=Solver(sol.mechanism, sol.structure, tuple(sigmas)), mu=mu)
         return _Replayer(other).exact()
