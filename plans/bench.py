@@ -448,21 +448,21 @@ class Bench:
             sols = [solve_position(mech, float(x), solver=solver) for x in phi[idx]]
             names = list(sols[0].motion.position)
 
-            def plan_value(sol, plan, nm, store):
+            def plan_value(plan, nm, store):
                 pt = plan.points.get(plan_name(nm))
                 return pt.value if pt is not None else complex(store[nm][0])
 
             pos = {nm: np.array([s.positions[nm] for s in sols]) for nm in names}
             vel = {
                 nm: np.array(
-                    [plan_value(s, s.velocity, nm, s.motion.velocity) for s in sols]
+                    [plan_value(s.velocity, nm, s.motion.velocity) for s in sols]
                 )
                 for nm in names
             }
             acc = {
                 nm: np.array(
                     [
-                        plan_value(s, s.acceleration, nm, s.motion.acceleration)
+                        plan_value(s.acceleration, nm, s.motion.acceleration)
                         for s in sols
                     ]
                 )

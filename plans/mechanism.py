@@ -387,7 +387,7 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
                     f"{quote(point)} is not a point of link {lid} (its points: {name_list(link.points)})",
                 )
             continue
-        guide = _guide(body.get("guide"), where + ".guide", pr, links, frame, lid, bad_links)
+        guide = _guide(body.get("guide"), where + ".guide", pr, links, frame, bad_links)
         if guide is None or point is None:
             continue
         if guide.link == lid:
@@ -677,7 +677,7 @@ def _hint_problem(key: str, hint: str, names: list[str]) -> str | None:
     return None
 
 
-def _guide(body, where, pr: Problems, links, frame, slider_link, bad_links) -> Guide | None:
+def _guide(body, where, pr: Problems, links, frame, bad_links) -> Guide | None:
     if not isinstance(body, dict):
         got = "missing" if body is None else f"must be a table, got {quote(body)}"
         pr.add(where, f"{got}: e.g. guide = {{ link = 0, through = [0, 0.35], angle_deg = 0 }} or {{ link = 3 }}")

@@ -199,7 +199,7 @@ class _Replayer:
             elif s.kind == "similarity":
                 r = s.ratio
                 if mk.kind.startswith("similarity") and mk.target == name and self._applies(mk, kind):
-                    r = self._ratio(mk, s.ratio)
+                    r = complex(mk.factor)
                 v = vals[s.base] + r * (vals[s.other] - vals[s.base])
             elif s.kind == "component":
                 t = self.terms[s.label]
@@ -229,10 +229,6 @@ class _Replayer:
                         break
             vals[name] = complex(v)
         return vals
-
-    @staticmethod
-    def _ratio(mk: Mistake, r: complex) -> complex:
-        return complex(mk.factor)
 
     def _term(self, t, mk: Mistake, vel, omega) -> complex:
         X, Y = t.about
