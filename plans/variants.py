@@ -28,7 +28,7 @@ from .fileformat import (
     read_number,
     read_toml,
 )
-from .mechanism import MIN_LINK, Mechanism, from_dict
+from .mechanism import MIN_LINK, SPEED, Mechanism, from_dict
 
 BUILTIN = "Table 2 (built in)"
 COLUMNS = ("AB", "BC", "CD", "AD", "phi_deg", "rpm")
@@ -94,7 +94,8 @@ def load_table(path: str | Path | None = None) -> tuple[str, dict[int, dict]]:
             elif col == "phi_deg":
                 values[col] = read_number(row[col], cw, pr, unit="°")
             elif col == "rpm":
-                values[col] = read_number(row[col], cw, pr, positive=True, unit="rpm", low=1e-6, high=MAX_ABS)
+                values[col] = read_number(row[col], cw, pr, positive=True, unit="rpm", low=SPEED[0],
+                                          high=SPEED[1])  # as a mechanism file's rpm
             else:
                 values[col] = read_number(row[col], cw, pr, positive=True, low=MIN_LINK, high=MAX_ABS)
         if len(pr.items) == before:
