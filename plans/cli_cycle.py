@@ -21,7 +21,7 @@ import math
 from dataclasses import dataclass
 
 from .cli import EXIT_INPUT, EXIT_OK, add_source, mechanism_from, write_output
-from .fmt import num
+from .fmt import from_x, num
 
 MAX_POSITIONS = 1_000_000
 
@@ -166,7 +166,7 @@ def conditioning(mech, motion) -> tuple[Status, ...]:
         valid = np.broadcast_to(np.asarray(g.valid, dtype=bool), (n,))
         q = None if pivot is None else np.where(np.isfinite(pivot), pivot, 0.0).tolist()
         cols.append((g, g.group.label, valid.tolist(), s.tolist(), (s < WARN_SINE).tolist(), q))
-    degs = [_deg(mech, x) for x in np.asarray(motion.phi, dtype=float).tolist()]
+    degs = [from_x(x) for x in np.asarray(motion.phi, dtype=float).tolist()]
     out = []
     for k in range(n):
         deg = degs[k]
@@ -212,16 +212,6 @@ def conditioning(mech, motion) -> tuple[Status, ...]:
     return tuple(out)
 
 
-def _deg(mech, phi: float) -> float:
-    """φ1 in degrees, counter-clockwise from +x, in [0, 360)."""
-    return math.degrees(phi) % 360.0
-
-
-def file_angle(mech, phi: float) -> float:
-    """φ1 in the file's own convention (its reference direction and sense), in [0, 360)."""
-    return mech.driver.file_angle(phi)
-
-
 def _fig(x: float) -> str:
     return "—" if not math.isfinite(x) else f"{x:.3g}"
 
@@ -243,13 +233,13 @@ def _cycle_summary(t: CycleTable) -> dict:
         "output": None
         if c.output is None
         else {"point": c.output.point, "kind": c.output.kind, "link": c.output.link},
-        "extremes_phi_deg": [_deg(t.mechanism, x) for x in c.extremes],
+        "extremes_phi_deg": [from_x(x) for x in c.extremes],
         "stroke": c.stroke,
         "theta_deg": None if c.theta is None else math.degrees(c.theta),
         "K": c.K,
         "grashof": c.grashof,
         "crank_range_phi_deg": None if c.crank_range is None
-        else [_deg(t.mechanism, x) for x in c.crank_range],
+        else [from_x(x) for x in c.crank_range],
         "notes": list(c.notes),
     }
     return out
@@ -272,8 +262,8 @@ def to_json(t: CycleTable) -> dict:
         good = st.ok
         row = {
             "index": k,
-            "phi_deg": _deg(mech, phi),
-            "angle_deg": file_angle(mech, phi),
+            "phi_deg": from_x(phi),
+            "angle_deg": mech.driver.file_angle(phi),
             "solved": good,
             "conditioning": {
                 "min_sine": _ok(st.min_sine),
@@ -361,7 +351,7 @@ def to_csv(t: CycleTable) -> str:
     blank = [""] * len(cols)
     for k, st in enumerate(t.status):
         good = st.ok
-        row = [k, f(_deg(mech, phis[k])), f(file_angle(mech, phis[k])), int(good), f(st.min_sine)]
+        row = [k, f(from_x(phis[k])), f(mech.driver.file_angle(phis[k])), int(good), f(st.min_sine)]
         row += [f(v) for v in st.figures.values()]
         if out is not None:
             row.append(f(out[k]) if good else "")
@@ -411,7 +401,7 @@ def to_text(t: CycleTable) -> str:
         )
 
     def lead(k: int) -> list[str]:
-        return [str(k), f"{file_angle(mech, float(m.phi[k])):.2f}"]
+        return [str(k), f"{mech.driver.file_angle(float(m.phi[k])):.2f}"]
 
     def cell(k: int, value) -> str:
         return num(float(value)) if t.status[k].ok else "—"

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .errors import PlansError
+from .fmt import from_x
 from .kinematics import Motion, Solver
 from .mechanism import Mechanism
 from .structure import DyadKind
@@ -105,11 +106,6 @@ def summary(c: Cycle, deg=None) -> list[str]:
             + ", ".join(f"{angle(deg(x))}°" for x in c.extremes)
             + f"; θ = {num(math.degrees(c.theta))}°, K = {num(c.K)}")
     return lines
-
-
-def from_x(phi: float) -> float:
-    """A crank angle (rad) in degrees counter-clockwise from +x, in [0, 360)."""
-    return math.degrees(phi) % 360.0
 
 
 def analyse_cycle(mech: Mechanism, n_positions: int = 12, solver: Solver | None = None,

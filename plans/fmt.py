@@ -27,6 +27,11 @@ def num(x: float, digits: int = 4, lang: str = "en") -> str:
     return s.replace(".", ",") if lang == "ru" else s
 
 
+def from_x(phi: float) -> float:
+    """A crank angle (rad) in degrees counter-clockwise from +x, in [0, 360)."""
+    return math.degrees(phi) % 360.0
+
+
 def angle(deg: float, digits: int = 4, lang: str = "en") -> str:
     """A crank angle in degrees, in [0, 360) as written: one that rounds to 360 is 0.
 

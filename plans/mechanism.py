@@ -99,11 +99,17 @@ class Driver:
     def phi_of(self, angle_deg: float) -> float:
         """The crank angle (rad, counter-clockwise from +x) of an angle given in the
         file's convention (degrees from ``reference``, ``measured`` ccw or cw)."""
-        return math.radians(REFERENCES[self.reference] + SENSES[self.measured] * angle_deg)
+        return phi_of(angle_deg, self.reference, self.measured)
 
     def file_angle(self, phi: float) -> float:
         """The inverse: the crank angle ``phi`` in the file's convention, in [0, 360)."""
         return (SENSES[self.measured] * (math.degrees(phi) - REFERENCES[self.reference])) % 360.0
+
+
+def phi_of(angle_deg: float, reference: str, measured: str) -> float:
+    """A crank angle in a file's convention (degrees from ``reference``, ``measured`` ccw
+    or cw) as the engine's: radians counter-clockwise from +x."""
+    return math.radians(REFERENCES[reference] + SENSES[measured] * angle_deg)
 
 
 @dataclass(frozen=True)
@@ -822,7 +828,7 @@ def _driver(body, pr: Problems, links, frame, bad_links, frame_names) -> Driver 
         omega = None
     if angle is None or omega is None or tip not in link.points:
         return None
-    phi = math.radians(REFERENCES[ref] + SENSES[measured] * angle)  # as Driver.phi_of
+    phi = phi_of(angle, ref, measured)
     return Driver(
         link=lid,
         pivot=pivot,
