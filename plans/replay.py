@@ -99,7 +99,7 @@ class _Replayer:
 
     def __init__(self, sol: Solution):
         self.sol = sol
-        m = sol.motion
+        m = sol.scalar
         self.pos = sol.positions
         self.mech_name = {plan_name(n): n for n in sol.positions}
         self.terms = {t.label: t for g in m.groups for r in g.acceleration.routes for t in r.terms}
@@ -131,7 +131,7 @@ class _Replayer:
                 self.pairs[lid] = best
 
     def guide_link(self, t) -> int:
-        m = self.sol.motion
+        m = self.sol.scalar
         for n in t.about:
             if n in m.coincident:
                 return m.point_link[n]
@@ -187,7 +187,7 @@ class _Replayer:
     def _plan(self, plan: Plan, mk: Mistake, vel, omega) -> dict[str, complex]:
         kind = plan.kind
         vals: dict[str, complex] = {plan.pole: 0j}
-        groups = self.sol.motion.groups
+        groups = self.sol.scalar.groups
         for name, pt in plan.points.items():
             s = pt.source
             if s.kind == "pole":
@@ -220,7 +220,7 @@ class _Replayer:
                 v = vals[l0.through] + t0 * d0
             else:  # "rigid": moves with the first known point of its link
                 X = self.mech_name.get(name, "")
-                lid = self.sol.motion.point_link.get(X)
+                lid = self.sol.scalar.point_link.get(X)
                 v = pt.value
                 for other in self.link_points.get(lid, []):
                     on = plan_name(other)
@@ -269,7 +269,7 @@ def hypotheses(sol: Solution, plans: set[str] | None = None) -> list[Mistake]:
     """Every common mistake that can be made on these plans, in order of preference."""
     plans = set(PLANS) if plans is None else plans
     rep = _Replayer(sol)
-    m = sol.motion
+    m = sol.scalar
     out: list[Mistake] = []
     cor = [t for t in rep.terms.values() if t.kind == "coriolis"]
     nor = [t for t in rep.terms.values() if t.kind == "normal"]
