@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import Any
 
 from .errors import PlansError
-from .fileformat import Problems, check_keys, key_text, read_number, read_toml
+from .fileformat import Problems, check_keys, key_text, quote, read_number, read_toml
 from .mechanism import Mechanism
 from .plan import Plan, Solution, plan_name, solve_position
 
@@ -162,7 +162,7 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
     elif has_file:
         mpath = data["mechanism"]
         if not isinstance(mpath, str) or not mpath:
-            problems.add("mechanism", f"must be a file name, got {mpath!r:.40}")
+            problems.add("mechanism", f"must be a file name, got {quote(mpath)}")
         else:
             p = Path(mpath)
             if not p.is_absolute() and folder is not None:
@@ -175,7 +175,7 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
     else:
         var = data["variant"]
         if isinstance(var, bool) or not isinstance(var, int):
-            problems.add("variant", f"must be a whole number, got {var!r:.40}")
+            problems.add("variant", f"must be a whole number, got {quote(var, 20)}")
         else:
             mech = var
     table = data.get("table")
@@ -411,7 +411,7 @@ def _magnitude_sense(value, key, problems, *, allow_sense):
         word = parts[1].lower() if len(parts) > 1 else ""
         if mag is None or len(parts) > 3 or (word and word not in SENSE_WORDS):
             problems.add(key, f'write a magnitude and a sense, e.g. "4.82 ccw" or "4.82 cw", '
-                            f"got {value!r:.40}")
+                            f"got {quote(value)}")
             return None, 0
         sense = SENSE_WORDS.get(word, 0)
         value = mag
