@@ -135,12 +135,13 @@ def _pct(x: float, lang: str) -> str:
     return _signed(x, lang, 1)
 
 
-UNITS_RU = {"mm": "мм", "m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с", "rad/s²": "рад/с²",
-            "m/mm": "м/мм", "(m/s)/mm": "(м/с)/мм", "(m/s²)/mm": "(м/с²)/мм"}
-
-
 def _u(unit: str, lang: str) -> str:
-    return UNITS_RU.get(unit, unit) if lang == "ru" else unit
+    """A unit written in English, in ``lang``: the note's own words (report.UNITS)."""
+    from .report import UNITS
+
+    if lang == "en":
+        return unit
+    return next((UNITS[lang][k] for k, v in UNITS["en"].items() if v == unit), unit)
 
 
 def _sense(x: float, w) -> str:
