@@ -122,6 +122,26 @@ def test_sweep_fixed_points_cost_no_memory_and_cannot_be_written():
     assert np.all(sw.omega[mech.driver.link] == mech.driver.omega)
 
 
+@pytest.mark.parametrize("n", [1, 13, 1000])
+def test_sweep_arrays_are_cut_from_one_block_without_overlapping(n):
+    """Every writable array of a sweep is its own stretch of one allocation: writing one
+    leaves every other unchanged (n = 13 leaves the booleans a ragged last slot)."""
+    sw = Solver(SCENES["press"].mechanism()).sweep(np.linspace(0, 1, n))
+    arrays = [sw.phi, sw.valid, *sw.sine.values()]
+    for store in (sw.position, sw.velocity, sw.acceleration, sw.omega, sw.epsilon):
+        arrays += [a for a in store.values() if a.flags.writeable]
+    assert len(arrays) == 28 and all(a.shape == (n,) for a in arrays)
+    bases = {id(a.base if a.base is not None else a) for a in arrays}
+    assert len(bases) <= 2  # the block, and its boolean view
+    before = [a.copy() for a in arrays]
+    for i, a in enumerate(arrays):
+        a[...] = True if a.dtype == bool else 7.0 + i
+        for j, b in enumerate(arrays):
+            if j != i:
+                np.testing.assert_array_equal(b, before[j])
+        a[...] = before[i]
+
+
 def test_sweep_into_reuses_the_arrays_and_keeps_the_callers_angles():
     mech = SCENES["crank_rocker"].mechanism()
     sv = Solver(mech)
