@@ -270,11 +270,10 @@ def test_swing_arc_runs_from_one_extreme_arm_to_the_other():
 def test_trajectories_span_the_positions_drawn_when_the_crank_cannot_turn():
     """Seed 001's four-bar assembles over −128.8°…128.8°, across the file's angle: the
     trajectories must cover every position drawn, not stop at the file's angle."""
-    from drawing.cli_sheet import trajectory_angles
-    from plans.cycle import analyse_cycle
-
     import numpy as np
 
+    from drawing.cli_sheet import trajectory_angles
+    from plans.cycle import analyse_cycle
     from plans.kinematics import Solver
 
     mech = _mech("fourbar")
