@@ -38,6 +38,7 @@ from drawing.scene import (
     SUB_SHIFT,
     SUP_SHIFT,
     Arrow,
+    Blank,
     Circle,
     Hatch,
     Item,
@@ -265,6 +266,10 @@ class LabelRequest:
     n, ne, e, se, s, sw, w, nw.  ``markup``: ``"s_3"`` has a subscript 3
     (see :class:`drawing.scene.Text`).  ``optional``: a label that may be left out (a
     position's number) rather than drawn over something; it then takes no room.
+    ``also``: further anchors the label may stand at, tried after ``anchor`` at each
+    distance (the value of a dimension may go anywhere along its arc).  ``blank``: a
+    dimension's value, under which thin lines are broken (GOST 2.307), see
+    :class:`drawing.scene.Blank`.
     """
 
     anchor: Point
@@ -273,6 +278,8 @@ class LabelRequest:
     prefer: str = "ne"
     markup: bool = True
     optional: bool = False
+    also: tuple[Point, ...] = ()
+    blank: bool = False
 
     def __post_init__(self) -> None:
         if self.prefer not in _COMPASS:
@@ -295,8 +302,8 @@ _UNIT = {
 }  # fmt: skip
 
 
-def _candidate(req: LabelRequest, direction: str, gap: float) -> Text:
-    """The label with its box ``gap`` mm from the anchor towards ``direction``.
+def _candidate(req: LabelRequest, direction: str, gap: float, anchor: Point) -> Text:
+    """The label with its box ``gap`` mm from ``anchor`` towards ``direction``.
 
     Sideways (e, w) the capitals are centred on the anchor's height; up or
     down, the box's near edge is ``gap`` away; diagonally its near corner is.
@@ -304,7 +311,7 @@ def _candidate(req: LabelRequest, direction: str, gap: float) -> Text:
     ux, uy = _UNIT[direction]
     d = gap if ux == 0 or uy == 0 else gap * math.sqrt(0.5)
     kind = "start" if ux > 0 else "end" if ux < 0 else "middle"
-    ax, ay = req.anchor
+    ax, ay = anchor
     probe = Text((ax, ay), req.text, req.size, anchor=kind, markup=req.markup)
     _, top, _, bottom = text_box(probe).bounds  # relative to a baseline at ay
     if uy < 0:
@@ -365,9 +372,11 @@ def place_labels(
         for ring in rings:
             # clear of everything wins; else the spot crossing the fewest thin lines
             relaxed: tuple[int, Text, Polygon] | None = None
+            spots = [(anchor, direction) for anchor in (req.anchor, *req.also)
+                     for direction in _directions(req.prefer)]
             for gap in ring:
-                for direction in _directions(req.prefer):
-                    text = _candidate(req, direction, gap)
+                for anchor, direction in spots:
+                    text = _candidate(req, direction, gap, anchor)
                     box = text_box(text)
                     hits = [] if hard_tree is None else [
                         hard[i] for i in hard_tree.query(box, predicate="intersects")]
@@ -421,6 +430,8 @@ def obstacles_of(
     for it in flatten(items):
         if isinstance(it, Text):
             out.append(text_box(it))
+            continue
+        if isinstance(it, Blank):  # white: nothing to keep clear of
             continue
         if isinstance(it, Hatch):
             lines = [LineString(s) for s in it.strokes()]

@@ -29,6 +29,7 @@ from drawing.styles import LineType
 
 __all__ = [
     "Arrow",
+    "Blank",
     "Circle",
     "Group",
     "Hatch",
@@ -320,6 +321,20 @@ def parse_markup(s: str) -> tuple[Run, ...]:
 
 
 @dataclass(frozen=True, slots=True)
+class Blank:
+    """A white box from ``p1`` (top-left) to ``p2`` (bottom-right): the break in the thin
+    lines under a dimension's value (GOST 2.307: no line of the drawing crosses a
+    dimension's value). Drawn after the lines it breaks, before the ones it must not."""
+
+    p1: Point
+    p2: Point
+
+    def __post_init__(self) -> None:
+        _set(self, "p1", _pt(self.p1))
+        _set(self, "p2", _pt(self.p2))
+
+
+@dataclass(frozen=True, slots=True)
 class Hatch:
     """Hatching of a fixed support: short parallel thin strokes along a base.
 
@@ -397,7 +412,7 @@ class Group:
         _set(self, "offset", _pt(self.offset))
 
 
-Item: TypeAlias = Segment | Polyline | Circle | Arrow | Text | Hatch | Group
+Item: TypeAlias = Segment | Polyline | Circle | Arrow | Text | Hatch | Blank | Group
 
 
 @dataclass(frozen=True, slots=True)
@@ -467,7 +482,7 @@ def translate(item: Item, dx: float, dy: float) -> Item:
     def mv(p: Point) -> Point:
         return (p[0] + dx, p[1] + dy)
 
-    if isinstance(item, Segment | Arrow | Hatch):
+    if isinstance(item, Segment | Arrow | Hatch | Blank):
         return replace(item, p1=mv(item.p1), p2=mv(item.p2))
     if isinstance(item, Polyline):
         return replace(item, points=tuple(mv(p) for p in item.points))

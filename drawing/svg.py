@@ -27,6 +27,7 @@ from drawing.scene import (
     SUB_SHIFT,
     SUP_SHIFT,
     Arrow,
+    Blank,
     Circle,
     Group,
     Hatch,
@@ -156,6 +157,11 @@ class _Writer:
             return out
         if isinstance(it, Text):
             return [self.text(it)]
+        if isinstance(it, Blank):
+            el = dwg.rect()
+            el.attribs.update(x=fmt(it.p1[0]), y=fmt(it.p1[1]), width=fmt(it.p2[0] - it.p1[0]),
+                              height=fmt(it.p2[1] - it.p1[1]), fill="white", stroke="none")
+            return [el]
         if isinstance(it, Group):
             g = dwg.g()
             if it.name:

@@ -30,6 +30,7 @@ from drawing.labels import (
 )
 from drawing.scene import (
     Arrow,
+    Blank,
     Circle,
     Group,
     Hatch,
@@ -57,6 +58,7 @@ PAD = 6.0  # room around a drawing inside its view box, for labels
 CAPTION = 5.0  # caption size, mm
 LETTER = 3.5  # letters of points, mm
 JOINT_R = 1.0
+BLANK_PAD = 0.5  # the break in thin lines around a dimension's value, mm
 HEAD = dict(head_len=3.5, head_width=1.0)
 
 WORDS = {
@@ -208,10 +210,15 @@ def _finish(
                           obstacles_of([it for it, s in zip(drawing, is_soft, strict=True) if not s]),
                           region=region, distances=(1.0, 2.0, 3.0, 4.5, 6.0, 8.0),
                           soft=obstacles_of([it for it, s in zip(drawing, is_soft, strict=True) if s]))
-    items = list(drawing) + [
-        _start_anchored(p.text) for p, r in zip(placed, labels, strict=True)
-        if p.clear or not r.optional  # numbers of positions are dropped rather than crowded
-    ]
+    texts = [_start_anchored(p.text) for p, r in zip(placed, labels, strict=True)
+             if p.clear or not r.optional]  # numbers of positions are dropped, not crowded
+    blanks = [Blank((x0 - BLANK_PAD, y0 - BLANK_PAD), (x1 + BLANK_PAD, y1 + BLANK_PAD))
+              for p, r in zip(placed, labels, strict=True) if r.blank
+              for x0, y0, x1, y1 in [p.box.bounds]]
+    if blanks:  # thin lines, the breaks in them, then the lines a break must not hide
+        drawing = ([it for it, s in zip(drawing, is_soft, strict=True) if s] + blanks
+                   + [it for it, s in zip(drawing, is_soft, strict=True) if not s])
+    items = list(drawing) + texts
     x0, y0, x1, y1 = _bbox(items)
     top = y0 - 2.0
     cap = centred(((x0 + x1) / 2, top), caption, CAPTION)
@@ -601,10 +608,11 @@ def positions_view(sol, cycle, motion_all, lang: str = "ru", shown: Drawn | None
             pivot, tip = arm
             a, b = extremes[0][tip], extremes[1][tip]
             items += _swing_arc(pos[pivot], a, b, mu_l)
-            mid = _swing_point(pos[pivot], a, b, 0.5)
+            along = [_sheet(_swing_point(pos[pivot], a, b, t), mu_l) for t in _SWING_AT]
             deg = math.degrees(cycle.stroke)
-            labels.append(LabelRequest(_sheet(mid, mu_l), f"{w['swing']} = {num(deg, 4, lang)}°",
-                                       3.5, "n", markup=False))
+            labels.append(LabelRequest(along[0], f"{w['swing']} = {num(deg, 4, lang)}°",
+                                       3.5, "n", markup=False, also=tuple(along[1:]),
+                                       blank=True))
     caption = f"{w['positions']}, μ_l = {num(mu_l, 4, lang)} {w['m']}/{w['mm']}"
     under = [w["left_off"].format(k=", ".join(map(str, shown.left_off)),
                                   d=num(shown.limit, 2, lang))] if shown.left_off else []
@@ -627,6 +635,8 @@ def _rocker_arm(mech, out) -> tuple[str, str] | None:
 
 #: the swing arc's radius, as a share of the rocker's arm
 _SWING_R = 0.55
+#: where along the arc ψ's value may stand, in order of preference: its middle first
+_SWING_AT = (0.5, 0.35, 0.65, 0.2, 0.8)
 
 
 def _swing_point(pivot: complex, a: complex, b: complex, t: float) -> complex:

@@ -120,6 +120,21 @@ def test_label_avoids_a_line_through_the_preferred_place():
     assert blocked[0].box.centroid.x > 50  # clockwise neighbour "e" first
 
 
+def test_a_label_with_further_anchors_goes_to_the_first_free_one():
+    """A dimension's value may stand anywhere along its arc: when every spot around the
+    first anchor is blocked, it goes next to the first further anchor that is free, and
+    not next to a later one."""
+    first, second, third = (20.0, 20.0), (60.0, 20.0), (100.0, 20.0)
+    walls = [box(first[0] - 15, first[1] - 15, first[0] + 15, first[1] + 15)]  # all round
+    req = LabelRequest(first, "ψ = 39,04°", 3.5, "n", markup=False, also=(second, third))
+    (got,) = place_labels([req], walls)
+    assert got.clear and not got.box.intersects(walls[0])
+    assert got.box.distance(shapely.Point(second)) == pytest.approx(1.0, abs=0.01)
+    assert got.box.centroid.y < second[1]  # "n" of it, as preferred
+    (alone,) = place_labels([LabelRequest(first, "ψ = 39,04°", 3.5, "n", markup=False)], walls)
+    assert not alone.clear  # the same label with one anchor had nowhere to go
+
+
 def test_labels_avoid_each_other_and_the_taken_boxes():
     anchor = (20.0, 20.0)
     taken = [text_box(Text((21, 18.95), "XX", size=3.5))]  # sits where "ne" would go

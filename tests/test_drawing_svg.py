@@ -10,6 +10,7 @@ import pytest
 from drawing.export import ExportUnavailableError, write_pdf, write_png, write_svg
 from drawing.scene import (
     Arrow,
+    Blank,
     Circle,
     Group,
     Hatch,
@@ -335,6 +336,18 @@ def test_arrow_hatch_circle_and_group():
     assert g.find("svg:circle", NS).get("fill") == "white"
     grp = g.find("svg:g", NS)
     assert grp.get("transform") == "translate(100 200)" and grp.get("class") == "pivot"
+
+
+def test_a_blank_is_a_white_box_without_a_stroke_in_drawing_order():
+    """The break under a dimension's value: a white rectangle, drawn between the line
+    before it (hidden) and the line after it (shown)."""
+    items = (Segment((0, 5), (20, 5), LineType.THIN), Blank((4.5, 3), (12.25, 7)),
+             Segment((8, 0), (8, 10)))
+    g = layer(parse(to_svg(Scene((Layer("n", items),)), Sheet("A4"), embed_font=False)), "n")
+    assert [el.tag.split("}")[1] for el in g] == ["line", "rect", "line"]
+    rect = g.find("svg:rect", NS)
+    assert [rect.get(k) for k in ("x", "y", "width", "height", "fill", "stroke")] == [
+        "4.5", "3", "7.75", "4", "white", "none"]
 
 
 def test_font_is_embedded_as_base64():

@@ -246,6 +246,45 @@ def test_a_rockers_swing_is_dimensioned_on_the_plan_of_positions():
     assert any(t.startswith("H = ") for t in texts) and not any(t.startswith("ψ = ") for t in texts)
 
 
+@pytest.mark.parametrize("scene", ["slotted_offset", "slot_rrp_moving", "crank_rocker"])
+def test_the_value_of_the_swing_breaks_the_thin_lines_under_it(scene):
+    """GOST 2.307: no line crosses a dimension's value. ψ stands in a white break drawn
+    over every thin line (other positions, slots, the arc) and under every heavy one, so
+    the given position is never hidden; it touches no heavy line and no other label."""
+    from shapely.geometry import box
+
+    from drawing.labels import obstacles_of, text_box
+    from drawing.scene import Blank, Polyline, Segment, flatten
+    from drawing.styles import LineType
+    from plans.scenes import SCENES
+
+    scene_, *_ = build_sheet(SCENES[scene].mechanism(), "A1", "ru", 12, None)
+    view = next(g for g in scene_.layer("views").items if g.name == "view positions")
+    items = flatten([view])
+    psi = [t for t in items if isinstance(t, Text) and t.text.startswith("ψ = ")]
+    assert len(psi) == 1
+    label = text_box(psi[0])
+    (blank,) = [(i, b) for i, b in enumerate(items) if isinstance(b, Blank)]
+    at, blank = blank
+    assert box(*blank.p1, *blank.p2).contains(label)
+    thin = (LineType.THIN, LineType.DASHED, LineType.DASH_DOUBLE_DOT_THIN)
+    crossing = 0
+    for i, it in enumerate(items):
+        if isinstance(it, Text | Blank):
+            continue
+        soft = isinstance(it, Segment | Polyline) and it.line in thin
+        hit = any(g.intersects(label) for g in obstacles_of([it], clearance=0.0))
+        if soft:
+            assert i < at  # broken by the blank
+            crossing += hit
+        else:
+            assert i > at and not hit, it  # drawn over the blank, and clear of the value
+    others = [text_box(t) for t in items if isinstance(t, Text) and t is not psi[0]]
+    assert not any(label.intersects(o) for o in others)
+    if scene == "slotted_offset":
+        assert crossing >= 2  # in a fan of slot lines: the break is what keeps it readable
+
+
 def test_swing_arc_runs_from_one_extreme_arm_to_the_other():
     import cmath
 
