@@ -19,7 +19,7 @@ from __future__ import annotations
 import difflib
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -171,15 +171,11 @@ class Mechanism:
     def at_file_angle(self, angle_deg: float) -> Mechanism:
         """The same mechanism with the crank at ``angle_deg`` in the file's convention
         (as ``--angle`` and a measurement file's ``angle_deg`` give it)."""
-        from dataclasses import replace
-
         d = self.driver
         return replace(self, driver=replace(d, phi=d.phi_of(angle_deg), angle_deg=angle_deg))
 
     def with_phi(self, phi: float) -> Mechanism:
         """The same mechanism with the crank at ``phi`` (rad, from +x)."""
-        from dataclasses import replace
-
         return replace(self, driver=replace(self.driver, phi=phi))
 
 
@@ -356,6 +352,7 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
         pr.add("sliders", f"{len(raw_sliders)} sliders: at most {MAX_ITEMS}")
         raw_sliders = []
     sliding: dict[int, int] = {}  # link → index of its [[sliders]] entry
+    unnamed: set[int] = set()  # sliders on a fixed guide the file gives no label
     pairs: list[tuple[int, int | None]] = []  # (link, guide's link) of every entry, valid or not
     for i, body in enumerate(raw_sliders):
         where = f"sliders[{i}]"
@@ -393,7 +390,7 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
                     f"{quote(point)} is not a point of link {lid} (its points: {name_list(link.points)})",
                 )
             continue
-        guide = _guide(body.get("guide"), where + ".guide", pr, links, frame, bad_links)
+        guide = _guide(body.get("guide"), where + ".guide", pr, links, frame, bad_links, point)
         if guide is None or point is None:
             continue
         if guide.link == lid:
@@ -403,6 +400,9 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
             pr.add(f"links.{lid}.points.{point}", "the sliding point of a link without an axis is its origin: 0")
             continue
         sliders.append(Slider(lid, guide, point))
+        if guide.link == 0 and "label" not in body["guide"]:
+            unnamed.add(len(sliders) - 1)
+    sliders = _name_fixed_guides(sliders, unnamed)
     # what follows is derived from the links and sliders as a whole: only when they are
     # valid, so that one typo does not come back as a second, misleading message
     whole = not any(w.split(".")[0].split("[")[0] in ("frame", "links", "sliders") for w, _ in pr.items)
@@ -683,7 +683,44 @@ def _hint_problem(key: str, hint: str, names: list[str]) -> str | None:
     return None
 
 
-def _guide(body, where, pr: Problems, links, frame, bad_links) -> Guide | None:
+#: names of fixed guides, in the order an inclined one takes them
+FIXED_NAMES = ("x-x", "y-y", "z-z", "u-u", "w-w")
+
+
+def _name_fixed_guides(sliders: list[Slider], unnamed: set[int]) -> list[Slider]:
+    """An unlabelled inclined fixed guide is x-x, the slider's axis, unless a fixed guide
+    of another direction is already called so: then the first free of
+    :data:`FIXED_NAMES`. Parallel guides may share a name: a plan's line only says
+    "∥ x-x"."""
+    def inclined(d: complex) -> bool:
+        return abs(d.real) > 1e-12 and abs(d.imag) > 1e-12
+
+    def crosses(a: complex, b: complex) -> bool:
+        return abs((a.conjugate() * b).imag) > 1e-12
+
+    renamed = [i for i in sorted(unnamed) if inclined(sliders[i].guide.direction)]
+    names = {s.guide.label: s.guide.direction for i, s in enumerate(sliders)
+             if s.guide.link == 0 and i not in renamed}
+    out = list(sliders)
+    for i in renamed:
+        g = out[i].guide
+        name = next((n for n in FIXED_NAMES if n not in names or not crosses(names[n], g.direction)),
+                    g.label)
+        names.setdefault(name, g.direction)
+        out[i] = replace(out[i], guide=replace(g, label=name))
+    return out
+
+
+def _guide(body, where, pr: Problems, links, frame, bad_links, slides: str | None = None
+           ) -> Guide | None:
+    """The guide of a [[sliders]] entry whose point ``slides`` runs along it.
+
+    Without a ``label`` it is named by notation, never by a word, so that a Russian sheet
+    says what an English one does: x-x or y-y on the frame (an inclined fixed guide
+    too is the slider's axis x-x, see :func:`_name_fixed_guides`); on a link, its axis
+    (along it), "⊥ DE" (across it), else the line through a named point of the link and
+    the sliding point ("DA"), or x3-x3 for link 3 when no named point lies on it.
+    """
     if not isinstance(body, dict):
         got = "missing" if body is None else f"must be a table, got {quote(body)}"
         pr.add(where, f"{got}: e.g. guide = {{ link = 0, through = [0, 0.35], angle_deg = 0 }} or {{ link = 3 }}")
@@ -731,7 +768,7 @@ def _guide(body, where, pr: Problems, links, frame, bad_links) -> Guide | None:
             point = _pair(through, where + ".through", pr)
             if point is None:
                 return None
-        default_label = "x-x" if abs(direction.imag) < 1e-12 else "y-y" if abs(direction.real) < 1e-12 else "guide"
+        default_label = "y-y" if abs(direction.real) < 1e-12 else "x-x"
     else:
         link = links[gl]
         if link.axis is None:
@@ -748,12 +785,16 @@ def _guide(body, where, pr: Problems, links, frame, bad_links) -> Guide | None:
             point = _pair(through, where + ".through", pr)
             if point is None:
                 return None
-        # the link's own x-axis runs along its axis: a guide along it or across it is
-        # named by it, any other by its link
-        axis = "".join(link.axis)
-        default_label = (axis if abs(direction.imag) < 1e-12 else f"⊥ {axis}"
-                         if abs(direction.real) < 1e-12 else f"slot of link {gl}")
     point = point + offset * 1j * direction
+    if gl != 0:
+        # the link's own x-axis runs along its axis: a guide along it or across it is
+        # named by it, any other by a named point on it and the point sliding along it
+        axis = "".join(link.axis)
+        on = [n for n, q in link.points.items()
+              if n != slides and abs(((q - point) * direction.conjugate()).imag) < SAME]
+        default_label = (axis if abs(direction.imag) < 1e-12 else f"⊥ {axis}"
+                         if abs(direction.real) < 1e-12
+                         else f"{on[0]}{slides}" if on and slides else f"x{gl}-x{gl}")
     if label is not None and (not isinstance(label, str) or len(label) > 20):
         pr.add(where + ".label", f'must be a short text (at most 20 characters), e.g. "x-x", got {quote(label)}')
         label = None

@@ -538,7 +538,21 @@ def test_parallel_guides_are_named_without_a_made_up_gap():
     slanted = across.replace("angle_deg = 90 }", "angle_deg = 60 }")
     sol = solve_position(from_dict(tomllib.loads(slanted), "yoke"))
     (a3,) = [p for p in sol.velocity.points.values() if p.source.kind == "intersection"]
-    assert [ln.relation for ln in a3.source.lines] == ["∥ slot of link 3", "∥ x-x"]
+    # a slanted slot is the line through D and the block's A, both on it
+    assert [ln.relation for ln in a3.source.lines] == ["∥ DA", "∥ x-x"]
+    assert abs(cmath_phase_between(sol, "D", "A") - math.radians(60)) < 1e-12
+    off = slanted.replace("angle_deg = 60 }", "angle_deg = 60, offset = 0.02 }")
+    sol = solve_position(from_dict(tomllib.loads(off), "yoke"))
+    (a3,) = [p for p in sol.velocity.points.values() if p.source.kind == "intersection"]
+    assert [ln.relation for ln in a3.source.lines] == ["∥ x3-x3", "∥ x-x"]  # no named point on it
+
+
+def cmath_phase_between(sol, a, b):
+    """The angle of the line from point a to point b, measured from the yoke's guide DE."""
+    import cmath
+
+    pos = sol.positions
+    return cmath.phase((pos[b] - pos[a]) / (pos["E"] - pos["D"]))
 
 
 def test_exact_reach_limit_is_a_dead_point_not_a_zero_miss():

@@ -63,3 +63,51 @@ def test_class_three_group_is_named():
     data["links"]["7"] = {"axis": ["I", "G"], "points": {"G": 0.2}}
     with pytest.raises(StructureError, match=r"links 4, 5, 6, 7 do not form class-II groups"):
         analyse(from_dict(data, "triad.toml"))
+
+
+def _with_guides(*guides: str):
+    """A crank-slider whose rod carries further blocks (at C, D) on guides of the frame:
+    only the guides' names matter here, not whether the chain moves."""
+    body = """
+[frame]
+O = [0.0, 0.0]
+[driver]
+angle_deg = 30
+omega = 10
+[links.1]
+axis = ["O", "A"]
+points = { A = 0.1 }
+[links.2]
+axis = ["A", "B"]
+points = { B = 0.4, C = 0.2, D = 0.3 }
+"""
+    for k, g in enumerate(guides):
+        body += f"[links.{3 + k}]\npoints = {{ {'BCDE'[k]} = 0 }}\n"
+        body += f"[[sliders]]\nlink = {3 + k}\nguide = {g}\n"
+    import tomllib
+
+    return from_dict(tomllib.loads(body), "guides.toml")
+
+
+@pytest.mark.parametrize(("guides", "names"), [
+    # the slider's guide is its axis x-x, inclined or not, y-y when vertical
+    (["{ link = 0, through = [0, 0], angle_deg = 30 }"], ["x-x"]),
+    (["{ link = 0, through = [0, 0], angle_deg = 90 }"], ["y-y"]),
+    # an inclined guide beside a horizontal one takes the first free name
+    (["{ link = 0, through = [0, 0], angle_deg = 0 }",
+      "{ link = 0, through = [0, 0.1], angle_deg = 30 }"], ["x-x", "y-y"]),
+    (["{ link = 0, through = [0, 0], angle_deg = 30 }",
+      "{ link = 0, through = [0, 0], angle_deg = 90 }",
+      "{ link = 0, through = [0, 0.1], angle_deg = 0 }"], ["z-z", "y-y", "x-x"]),
+    # parallel guides may share a name: a plan's line only says "∥ x-x"
+    (["{ link = 0, through = [0, 0], angle_deg = 30 }",
+      "{ link = 0, through = [0, 0.1], angle_deg = 30 }"], ["x-x", "x-x"]),
+    # the file's own label is kept, and counts as taken
+    (['{ link = 0, through = [0, 0], angle_deg = 30, label = "n-n" }'], ["n-n"]),
+    (['{ link = 0, through = [0, 0], angle_deg = 0, label = "x-x" }',
+      "{ link = 0, through = [0, 0.1], angle_deg = 45 }"], ["x-x", "y-y"]),
+])
+def test_unlabelled_guides_are_named_by_notation_not_by_words(guides, names):
+    """No default guide name is an English word, so a Russian note and sheet read right."""
+    mech = _with_guides(*guides)
+    assert [s.guide.label for s in mech.sliders] == names
