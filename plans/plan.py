@@ -95,8 +95,11 @@ class Plan(NamedTuple):
         return 0j if name == self.pole else self.points[name].value
 
     def mm(self, start: str, end: str) -> float:
-        """Length of the segment start→end on the drawing, in mm."""
-        return abs(self.value(end) - self.value(start)) / self.mu
+        """Length of the segment start→end on the drawing, in mm; 0 below :data:`NOISE`
+        of the plan's longest vector, as in ``segments``."""
+        mm = abs(self.value(end) - self.value(start)) / self.mu
+        big = max((abs(p.value) for p in self.points.values()), default=0.0)
+        return mm if mm > NOISE * big / self.mu else 0.0
 
 
 @dataclass(frozen=True)
@@ -239,6 +242,11 @@ def _segment_pairs(mech: Mechanism, motion: Motion):
 
 _POLE, _VALUE, _TERM, _CROSS, _SIMILAR, _FIGURE = range(6)
 _POLE_SOURCE = Source("pole")
+
+#: a plan's segment shorter than this share of its longest vector is 0: rounding left by
+#: two vectors that are equal (a sliding velocity at a dead point, a translating link's
+#: points), 1e-15 of the drawing, never a length to draw, measure or print as 4e-16
+NOISE = 1e-12
 
 
 class _Recipe(NamedTuple):
@@ -487,18 +495,20 @@ def _compile(kind: str, pole: str, tip: str, steps, ends):
     source = "\n".join([
         "def follow(store, cons, pos, mu):",
         *(f"    {line}" for line in body),
+        f"    big = max(map(abs, ({values}, 0j)))",
         "    if not mu:",
-        f"        mu = choose_mu(abs(store[{tip!r}]), max(map(abs, ({values}, 0j))))",
+        f"        mu = choose_mu(abs(store[{tip!r}]), big)",
+        "    tiny = NOISE * big / mu",
         "    return record(Plan, (",
         f"        {kind!r}, {pole!r},",
         "        {" + ", ".join(f"{pn!r}: {rec}" for pn, _, rec in points) + "},",
         f"        ({''.join(v + ', ' for v in vectors)}),",
         f"        mu, {unit!r},",
-        "        {" + segments + "},",
+        "        {key: mm if mm > tiny else 0.0 for key, mm in {" + segments + "}.items()},",
         f"        {k(ends)}))",
     ])
     scope = {"record": record, "Plan": Plan, "PlanPoint": PlanPoint, "Source": Source,
-             "PlanLine": PlanLine, "choose_mu": choose_mu}
+             "PlanLine": PlanLine, "choose_mu": choose_mu, "NOISE": NOISE}
     scope.update((f"K{j}", c) for j, c in enumerate(consts))
     # named by its text, so that a traceback through it shows the generated line, and one
     # mechanism solved again and again keeps one entry in linecache

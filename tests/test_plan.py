@@ -220,3 +220,29 @@ def test_the_unknown_along_a_fixed_guide_is_the_points_own_acceleration(name, po
 
     sol = solve_position(SCENES[name].mechanism())
     assert [ln.unknown for ln in sol.acceleration.points[point].source.lines] == unknowns
+
+
+@pytest.mark.parametrize("deg", [200.0, 230.0])
+def test_a_segment_that_is_zero_reads_zero_not_rounding(deg):
+    """The inclined yoke (guide at 20°, slot at 80°) at φ1 = 200°: the crank pin's
+    acceleration −ω²·OA points along the guide, so its share along the slot, a^r_A3A, is
+    0. It was printed as 4.4e-16 m/s² (two equal vectors subtracted); every reader of the
+    plan now gets 0. At 230° the same segment is the exact decomposition."""
+    from plans.report import note
+    from plans.scenes import SCENES
+
+    mech = SCENES["yoke_inclined"].mechanism()
+    sol = solve_position(mech, math.radians(deg))
+    acc = sol.acceleration
+    w, r = abs(mech.driver.omega), mech.driver.length
+    a_pin = -w * w * r * complex(math.cos(math.radians(deg)), math.sin(math.radians(deg)))
+    u, s = complex(math.cos(math.radians(20)), math.sin(math.radians(20))), complex(
+        math.cos(math.radians(80)), math.sin(math.radians(80)))
+    beta = (u.conjugate() * a_pin).imag / (u.conjugate() * s).imag  # a_A = α·u + β·s
+    want = abs(beta) / acc.mu
+    for got in (acc.segments["aa3"], acc.mm("a", "a3"), sol.segments["aa3"]):
+        assert got == (0.0 if deg == 200.0 else pytest.approx(want, rel=1e-12))
+    text = note(sol, "ru")
+    assert "e-1" not in text
+    if deg == 200.0:
+        assert "a^r_A3A = aa3·μa = 0·0,2 = 0 м/с²" in text
