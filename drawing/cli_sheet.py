@@ -18,7 +18,14 @@ import sys
 from pathlib import Path
 from typing import NamedTuple
 
-from plans.cli import EXIT_INPUT, EXIT_OK, add_source, mechanism_from, write_output
+from plans.cli import (
+    EXIT_INPUT,
+    EXIT_OK,
+    add_source,
+    mechanism_from,
+    number,
+    write_output,
+)
 from plans.errors import InputError, PlansError
 
 FIELDS = {
@@ -46,7 +53,8 @@ def configure(p) -> None:
                    help="title-block fields: " + ", ".join(sorted(FIELDS)))
     p.add_argument("--png", metavar="FILE", help="also write a PNG (needs cairosvg)")
     p.add_argument("--pdf", metavar="FILE", help="also write a PDF (needs cairosvg)")
-    p.add_argument("--dpi", type=float, default=100.0, help="PNG resolution (default 100)")
+    p.add_argument("--dpi", type=number(10, 600), default=100.0,
+                   help="PNG resolution, 10 to 600 (default 100)")
 
 
 def _title_fields(mech, pairs, scale: str) -> dict[str, str]:
@@ -239,13 +247,19 @@ def sparse_note(mech, sheet, placed) -> str | None:
             "choose them, or take a smaller --format")
 
 
-def _extras(svg: str, args) -> None:
-    from drawing import export
+def _write(svg: str, args) -> None:
+    """The SVG and any PNG and PDF asked for: all rendered before the first is written, so
+    that a failed export leaves every existing output as it was."""
+    files: list[tuple[str | None, str | bytes]] = [(args.output, svg)]
+    if args.png or args.pdf:
+        from drawing import export
 
-    if args.png:
-        export.write_png(svg, args.png, dpi=args.dpi)
-    if args.pdf:
-        export.write_pdf(svg, args.pdf)
+        if args.png:
+            files.append((args.png, export.png_bytes(svg, dpi=args.dpi)))
+        if args.pdf:
+            files.append((args.pdf, export.pdf_bytes(svg)))
+    for path, data in files:
+        write_output(path, data)
 
 
 def run(args) -> int:
@@ -255,10 +269,8 @@ def run(args) -> int:
     if args.png or args.pdf:
         from drawing import export
 
-        export.require()  # before anything is written
-    svg = render(mech, args)
-    write_output(args.output, svg)
-    _extras(svg, args)
+        export.require()  # before anything is computed
+    _write(render(mech, args), args)
     return EXIT_OK
 
 
@@ -284,9 +296,7 @@ def _batch(args) -> int:
         a.pdf = str(out / f"variant-{n}.pdf") if args.pdf else None
         try:
             mech = mechanism_from(a)
-            svg = render(mech, a)
-            write_output(a.output, svg)
-            _extras(svg, a)
+            _write(render(mech, a), a)
         except (PlansError, ValueError, ArithmeticError) as exc:
             failed.append((n, str(exc)))
     if tty:

@@ -20,6 +20,8 @@ from plans.errors import PlansError
 
 __all__ = [
     "ExportUnavailableError",
+    "pdf_bytes",
+    "png_bytes",
     "write_bytes_atomic",
     "write_pdf",
     "write_png",
@@ -62,13 +64,21 @@ def write_svg(svg: str, path: str | os.PathLike[str]) -> Path:
     return write_bytes_atomic(svg.encode("utf-8"), path)
 
 
+def png_bytes(svg: str, dpi: float = 150) -> bytes:
+    """The SVG rendered to a PNG at ``dpi`` (an A1 sheet at 150 dpi is 4967 × 3508 px)."""
+    return _cairosvg().svg2png(bytestring=svg.encode("utf-8"), dpi=dpi)
+
+
+def pdf_bytes(svg: str) -> bytes:
+    """The SVG rendered to a one-page PDF of the sheet's real size."""
+    return _cairosvg().svg2pdf(bytestring=svg.encode("utf-8"))
+
+
 def write_png(svg: str, path: str | os.PathLike[str], dpi: float = 150) -> Path:
-    """Render the SVG to a PNG at ``dpi`` (an A1 sheet at 150 dpi is 4967 × 3508 px)."""
-    png = _cairosvg().svg2png(bytestring=svg.encode("utf-8"), dpi=dpi)
-    return write_bytes_atomic(png, path)
+    """Render the SVG to a PNG file at ``dpi``."""
+    return write_bytes_atomic(png_bytes(svg, dpi), path)
 
 
 def write_pdf(svg: str, path: str | os.PathLike[str]) -> Path:
-    """Render the SVG to a one-page PDF of the sheet's real size."""
-    pdf = _cairosvg().svg2pdf(bytestring=svg.encode("utf-8"))
-    return write_bytes_atomic(pdf, path)
+    """Render the SVG to a one-page PDF file of the sheet's real size."""
+    return write_bytes_atomic(pdf_bytes(svg), path)

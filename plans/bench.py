@@ -44,7 +44,7 @@ import sys
 import time
 from dataclasses import dataclass
 
-from .cli import write_output
+from .cli import check_outputs, number, write_output
 
 SIZES = (12, 100, 1_000, 10_000, 100_000, 1_000_000)
 QUICK_SIZES = (12, 100)
@@ -96,7 +96,7 @@ def configure(p) -> None:
     )
     p.add_argument(
         "--max-positions",
-        type=int,
+        type=number(1, 10_000_000, integer=True),
         default=SIZES[-1],
         metavar="N",
         help=f"largest N of crank positions (default {SIZES[-1]})",
@@ -116,21 +116,21 @@ def configure(p) -> None:
     )
     p.add_argument(
         "--ref-angles",
-        type=int,
+        type=number(1, 100_000, integer=True),
         default=100,
         metavar="M",
         help="angles on which the reference is evaluated (default 100)",
     )
     p.add_argument(
         "--plan-max",
-        type=int,
+        type=number(1, 10_000_000, integer=True),
         default=1_000,
         metavar="N",
         help="largest N timed for the single-position plan (default 1000)",
     )
     p.add_argument(
         "--budget",
-        type=float,
+        type=number(0, 600),
         default=0.3,
         metavar="S",
         help="seconds spent repeating a short measurement, best run kept (default 0.3)",
@@ -156,12 +156,12 @@ def run(args) -> int:
 
     methods = {m.strip() for m in args.methods.split(",") if m.strip()}
     unknown = methods - set(METHODS)
-    if unknown:
+    if unknown or not methods:
         raise InputError(
-            "command line", f"--methods: unknown {', '.join(sorted(unknown))}"
+            "command line", f"--methods: unknown {', '.join(sorted(unknown))}" if unknown
+            else f"--methods: give at least one of {','.join(METHODS)}"
         )
-    if args.max_positions < 1 or args.ref_angles < 1:
-        raise InputError("command line", "--max-positions and --ref-angles must be ≥ 1")
+    check_outputs(args)  # a bad --chart is found now, not after minutes of timing
     scenes = load_scenes()
     names = args.scene or [n for n in BENCH_SCENES if n in scenes]
     skipped = [n for n in BENCH_SCENES if n not in scenes]

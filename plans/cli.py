@@ -39,6 +39,24 @@ def add_source(p: argparse.ArgumentParser, *, allow_all: bool = False) -> None:
                    help="crank angle, in the convention of the file (default: the file's)")
 
 
+def number(lo: float, hi: float, integer: bool = False):
+    """An argparse type: a finite number from ``lo`` to ``hi`` (an integer if asked), else
+    one line saying so."""
+    import math
+
+    def parse(text: str):
+        try:
+            value = int(text) if integer else float(text)
+        except ValueError:
+            value = None
+        if value is None or not math.isfinite(value) or not lo <= value <= hi:
+            kind = "a whole number" if integer else "a number"
+            raise argparse.ArgumentTypeError(f"{_arg(text, 30)} is not {kind} from {lo:g} to {hi:g}")
+        return value
+
+    return parse
+
+
 def mechanism_from(args):
     """The mechanism named by FILE or --variant, with --angle applied.
 
@@ -72,10 +90,16 @@ def mechanism_from(args):
 _INPUTS: list[str] = []
 
 
-def claim_inputs(args, paths, outputs=(("-o", "output"), ("--svg", "svg"), ("--png", "png"),
-                                      ("--pdf", "pdf"))) -> None:
+#: the output options of the commands: (option, attribute); ``-o`` alone is stdout when
+#: absent, the others are then not written at all
+OUTPUTS = (("-o", "output"), ("--svg", "svg"), ("--png", "png"), ("--pdf", "pdf"),
+           ("--chart", "chart"))
+
+
+def claim_inputs(args, paths, outputs=OUTPUTS) -> None:
     """Remember files the command reads, so that :func:`write_output` never writes over
-    them, and refuse at once (before anything is computed) an output given as one."""
+    them, and refuse at once (before anything is computed) an output given as one, or
+    any output that could not be written (:func:`check_outputs`)."""
     _INPUTS.extend(str(p) for p in paths)
     for opt, attr in outputs:
         out = getattr(args, attr, None)
@@ -88,6 +112,30 @@ def claim_inputs(args, paths, outputs=(("-o", "output"), ("--svg", "svg"), ("--p
                     f"{opt} {_arg(out)} is the input file {_arg(inp)}: the tool never writes "
                     "into its inputs; choose another output name",
                 )
+    check_outputs(args, outputs)
+
+
+def check_outputs(args, outputs=OUTPUTS) -> None:
+    """Refuse, before anything is computed or written, an output that could not be
+    written (a folder, a folder that does not exist, an input) and two outputs that
+    are one file, or both stdout: a run writes all its outputs or none."""
+    seen: list[tuple[str, str]] = []
+    for opt, attr in outputs:
+        if not hasattr(args, attr):
+            continue
+        out = getattr(args, attr)
+        if out in (None, "") and attr != "output":  # not asked for ('' is bench's "no chart")
+            continue
+        target = "-" if out in (None, "-") else str(out)
+        for other_opt, other in seen:
+            if (target == "-" and other == "-") or (target != "-" and other != "-"
+                                                    and _same_file(target, other)):
+                what = "stdout" if target == "-" else _arg(target)
+                raise InputError("command line", f"{other_opt} and {opt} are both {what}: "
+                                 "give each output its own file")
+        seen.append((opt, target))
+        if target != "-":
+            _target(target)
 
 
 
@@ -108,8 +156,17 @@ def _same_file(a, b) -> bool:
         return False
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse with the tool's own error format: one line, ``plans COMMAND: command line:
+    …``, exit 2, no usage block (``--help`` still prints it)."""
+
+    def error(self, message: str):  # type: ignore[override]
+        print(f"{self.prog}: command line: {message} (see {self.prog} --help)", file=sys.stderr)
+        sys.exit(EXIT_INPUT)
+
+
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="plans",
         description="Exact vector plans (velocity and acceleration polygons) of planar linkages.",
         epilog=EPILOG,
@@ -180,20 +237,8 @@ def write_output(path: str | None, text: str | bytes) -> None:
         else:
             sys.stdout.write(text)
         return
-    where = _arg(path)[1:-1]
-    for inp in _INPUTS:
-        if _same_file(path, inp):
-            raise InputError(where, f"is the input file {_arg(inp)}: the tool never writes into its inputs")
-    target = Path(path)
+    where, target, st, folder = _target(path)
     data = text.encode("utf-8") if isinstance(text, str) else text
-    try:
-        st = target.stat()
-    except FileNotFoundError:
-        st = None
-    except OSError as exc:
-        raise InputError(where, f"cannot write: {exc.strerror}") from None
-    if st is not None and stat.S_ISDIR(st.st_mode):
-        raise InputError(where, "is a folder: give a file name")
     if st is not None and not stat.S_ISREG(st.st_mode):  # /dev/null, a pipe: no rename
         try:
             with open(target, "wb") as fh:
@@ -201,9 +246,6 @@ def write_output(path: str | None, text: str | bytes) -> None:
         except OSError as exc:
             raise InputError(where, f"cannot write: {exc.strerror}") from None
         return
-    folder = target.parent if str(target.parent) else Path(".")
-    if not folder.is_dir():
-        raise InputError(where, f"the folder {_arg(folder)} does not exist")
     if st is not None:
         mode = stat.S_IMODE(st.st_mode)
     else:
@@ -226,3 +268,28 @@ def write_output(path: str | None, text: str | bytes) -> None:
         if isinstance(exc, OSError):
             raise InputError(where, f"cannot write: {exc.strerror or exc}") from None
         raise
+
+
+def _target(path: str):
+    """(name for messages, Path, its stat or None, its folder) of an output file that can
+    be written; InputError where it cannot (an input, a folder, no such folder)."""
+    import stat
+
+    where = _arg(path)[1:-1]
+    for inp in _INPUTS:
+        if _same_file(path, inp):
+            raise InputError(where, f"is the input file {_arg(inp)}: the tool never writes into its inputs")
+    target = Path(path)
+    try:
+        st = target.stat()
+    except FileNotFoundError:
+        st = None
+    except OSError as exc:
+        raise InputError(where, f"cannot write: {exc.strerror}") from None
+    if st is not None and stat.S_ISDIR(st.st_mode):
+        raise InputError(where, "is a folder: give a file name")
+    folder = target.parent if str(target.parent) else Path(".")
+    if st is None or stat.S_ISREG(st.st_mode):
+        if not folder.is_dir():
+            raise InputError(where, f"the folder {_arg(folder)} does not exist")
+    return where, target, st, folder

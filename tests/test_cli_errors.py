@@ -450,3 +450,64 @@ def test_subprocess_internal_error_exit_3_without_traceback(press):
     proc = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=env, timeout=120)
     assert proc.returncode == 3
     assert proc.stderr == "plans solve: internal error: KeyError: 'boom' (rerun with --debug for the traceback)\n"
+
+
+# ---------------------------------------------------------------------------------------
+# several outputs: all checked before any is written
+# ---------------------------------------------------------------------------------------
+
+
+def _main_exit(capsys, *argv) -> tuple[int, str]:
+    """(exit status, stderr) of a run that argparse may end with SystemExit."""
+    try:
+        code = main([str(a) for a in argv])
+    except SystemExit as exc:
+        code = exc.code
+    return code, capsys.readouterr().err
+
+
+@pytest.mark.parametrize("extra", [
+    ["--png", "{d}/nodir/o.png"],                      # the PNG's folder is missing
+    ["--png", "{d}/o.png", "--dpi", "-1"],            # a resolution cairo cannot render
+    ["--png", "{d}/o.png", "--pdf", "{d}/nodir/o.pdf"],  # the last of three outputs is bad
+    ["--png", "{d}/o.svg"],                            # the PNG would replace the SVG
+])
+def test_a_sheet_whose_png_or_pdf_would_fail_writes_nothing(capsys, tmp_path, extra):
+    """The SVG used to be written first and then the PNG or PDF failed: the old SVG was
+    lost. Every output is now checked before anything is computed or written."""
+    svg, png = tmp_path / "o.svg", tmp_path / "o.png"
+    svg.write_text("KEEP")
+    png.write_bytes(b"KEEP")
+    code, err = _main_exit(capsys, "sheet", PRESS, "-o", svg, *(a.format(d=tmp_path) for a in extra))
+    assert code == 2 and len(err.splitlines()) == 1 and "Traceback" not in err, err
+    assert err.startswith("plans sheet: ")
+    assert svg.read_text() == "KEEP" and png.read_bytes() == b"KEEP"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["o.png", "o.svg"]
+
+
+@pytest.mark.parametrize(("argv", "message"), [
+    (["check", "{m}", "--svg", "-"], "-o and --svg are both stdout"),
+    (["check", "{m}", "-o", "{d}/k.txt", "--svg", "{d}/k.txt"], "-o and --svg are both"),
+    (["bench", "--quick", "-o", "{d}/t.txt", "--chart", "{d}/t.txt"], "-o and --chart are both"),
+    (["bench", "--quick", "-o", "{d}/t.txt", "--chart", "{d}/nodir/c.svg"], "does not exist"),
+])
+def test_outputs_that_would_collide_or_fail_are_refused_first(capsys, tmp_path, argv, message):
+    meas = ROOT / "samples" / "check_press.toml"
+    code, err = _main_exit(capsys, *(a.format(m=meas, d=tmp_path) for a in argv))
+    assert code == 2 and len(err.splitlines()) == 1 and message in err, err
+    assert list(tmp_path.iterdir()) == []  # bench stopped before minutes of timing
+
+
+@pytest.mark.parametrize(("argv", "message"), [
+    (["solve", "{p}", "--angle", "abc"], "plans solve: command line: argument --angle: invalid float value: 'abc'"),
+    (["sheet", "{p}", "--format", "a2"], "plans sheet: command line: argument --format: invalid choice: 'a2'"),
+    (["sheet", "{p}", "--dpi", "nan"], "plans sheet: command line: argument --dpi: 'nan' is not a number from 10 to 600"),
+    (["bench", "--budget", "inf"], "plans bench: command line: argument --budget: 'inf' is not a number from 0 to 600"),
+    (["bench", "--plan-max", "0"], "argument --plan-max: '0' is not a whole number from 1 to 1e+07"),
+    (["bench", "--methods", ","], "plans bench: command line: --methods: give at least one of"),
+    (["solve", "{p}", "{p}"], "plans: command line: unrecognized arguments"),
+])
+def test_command_line_mistakes_are_one_line_and_exit_2(capsys, argv, message):
+    code, err = _main_exit(capsys, *(a.format(p=PRESS) for a in argv))
+    assert code == 2 and len(err.splitlines()) == 1 and message in err, err
+    assert "usage:" not in err and "Traceback" not in err
