@@ -225,6 +225,9 @@ def render(mech, args) -> str:
         raise InputError(exc.option or mech.source, str(exc)) from None
     if (note := sparse_note(mech, sheet, info["placed"])) is not None:
         print(f"plans sheet: note: {mech.source}: {note}", file=sys.stderr)
+    for _, _, sol in info["solutions"]:  # a plan drawn near a dead point is said so
+        for w in sol.warnings:
+            print(f"plans sheet: warning: {mech.source}: {w}", file=sys.stderr)
     return to_svg(scene, sheet, title=mech.name)
 
 

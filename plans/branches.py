@@ -6,8 +6,6 @@ and then kept over the whole cycle, so the branch stays continuous.
 
 from __future__ import annotations
 
-import numpy as np
-
 from .errors import InputError
 from .geometry import cross
 from .mechanism import Mechanism
@@ -98,14 +96,14 @@ def choose_branches(mech: Mechanism, structure: Structure) -> tuple[int, ...]:
         if g.kind == DyadKind.RPR and not mine:
             sigmas.append(1)  # the guide's axis points from its pivot towards the block
             continue
-        phi = np.degrees(mech.driver.phi)
         if not positions[1].valid[0]:
             earlier = sorted(used - set(mine))
             note = ""
             if earlier:
                 asked = ", ".join(f"{k} = {mech.assembly[k]!r}" for k in earlier)
                 note = f" (the groups before it are assembled as the hints {asked} ask: is one of them wrong?)"
-            raise positions[1].groups[i].failure(0, phi, note, source=mech.source)
+            raise positions[1].groups[i].failure(0, mech.driver.at(mech.driver.phi), note,
+                                                 source=mech.source)
         new = g.C or coincident_name(g.P, g.b)
         key = g.C or next(iter(mech.links[g.b].points))
         if not mine:
@@ -115,7 +113,7 @@ def choose_branches(mech: Mechanism, structure: Structure) -> tuple[int, ...]:
                 cands.append(f"({X.real:.4g}, {X.imag:.4g})")
             raise InputError(
                 mech.source,
-                f"assembly: {g.label} closes two ways at φ1 = {phi:.6g}°, with {key} at "
+                f"assembly: {g.label} closes two ways at {mech.driver.at(mech.driver.phi)}, with {key} at "
                 f"{cands[0]} or {cands[1]}: add a hint such as [assembly] {key} = "
                 f'"above {g.P or ""}{g.Q or ""}"',
             )
@@ -123,7 +121,7 @@ def choose_branches(mech: Mechanism, structure: Structure) -> tuple[int, ...]:
             mech.source,
             f"assembly: the hints {', '.join(f'{k} = {mech.assembly[k]!r}' for k in mine)} "
             f"{'fit neither' if not ok else 'fit both'} assembly of {g.label} "
-            f"at φ1 = {phi:.6g}° (new point {new})",
+            f"at {mech.driver.at(mech.driver.phi)} (new point {new})",
         )
     unused = set(hints) - used
     if unused:

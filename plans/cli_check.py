@@ -207,7 +207,9 @@ def to_text(result, lang: str = "en") -> str:
     else:
         out.append(w["some"].format(k=len(failed), n=n, names=", ".join(d.item.name for d in failed)))
         out += diagnosis_lines(result, lang)
-    for warn in sol.warnings:
+    from .report import warnings
+
+    for warn in warnings(sol, lang):
         out.append(f"{w['warning']}: {warn}")
     return "\n".join(out) + "\n"
 

@@ -166,23 +166,22 @@ def conditioning(mech, motion) -> tuple[Status, ...]:
         valid = np.broadcast_to(np.asarray(g.valid, dtype=bool), (n,))
         q = None if pivot is None else np.where(np.isfinite(pivot), pivot, 0.0).tolist()
         cols.append((g, g.group.label, valid.tolist(), s.tolist(), (s < WARN_SINE).tolist(), q))
-    degs = [from_x(x) for x in np.asarray(motion.phi, dtype=float).tolist()]
+    phis = np.asarray(motion.phi, dtype=float).tolist()  # messages: mech.driver.at(phis[k])
     out = []
     for k in range(n):
-        deg = degs[k]
         figures: dict[str, float] = {}
         warnings: list[str] = []
         errors: list[str] = []
         for g, label, valid, sine, low, pivot in cols:
             if not valid[k]:
-                errors.append(str(g.failure(k, deg)))
+                errors.append(str(g.failure(k, mech.driver.at(phis[k]))))
                 figures[label] = math.nan
                 continue
             figures[label] = sine[k]
             if low[k]:
-                if (err := g.parallel(k, deg)) is not None:
+                if (err := g.parallel(k, mech.driver.at(phis[k]))) is not None:
                     errors.append(str(err))
-                elif (warning := g.near_parallel(k, deg)) is not None:
+                elif (warning := g.near_parallel(k, mech.driver.at(phis[k]))) is not None:
                     warnings.append(warning)
             if pivot is not None:
                 q = pivot[k]
@@ -190,12 +189,12 @@ def conditioning(mech, motion) -> tuple[Status, ...]:
                 P, Q = g.group.P, g.group.Q
                 if q < SINGULAR_SINE:
                     errors.append(
-                        f"{label} at φ1 = {deg:.6g}°: the block {P} is on the rocker's pivot "
+                        f"{label} at {mech.driver.at(phis[k])}: the block {P} is on the rocker's pivot "
                         f"{Q} (|{Q}{P}| ratio {q:.3g}): the rocker's ω is undefined"
                     )
                 elif q < WARN_SINE:
                     warnings.append(
-                        f"{label} at φ1 = {deg:.6g}°: the block {P} passes close to the "
+                        f"{label} at {mech.driver.at(phis[k])}: the block {P} passes close to the "
                         f"rocker's pivot {Q} (|{Q}{P}| / (|O{Q}| + |O{P}|) = {q:.3g}): the "
                         "rocker's ω and ε lose digits"
                     )

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import sys
+
 from .cli import add_source, mechanism_from, write_output
 
 
@@ -21,4 +23,6 @@ def run(args) -> int:
     solver = Solver(mech)
     sol = solve_position(mech, solver=solver)
     write_output(args.output, note(sol, args.lang, analyse_cycle(mech, solver=solver)))
+    for w in sol.warnings:
+        print(f"plans report: warning: {w}", file=sys.stderr)
     return 0

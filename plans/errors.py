@@ -36,10 +36,8 @@ class AssemblyError(PlansError, ValueError):
     command line puts before the message.
     """
 
-    def __init__(self, message: str, *, group: str = "", phi_deg: float | None = None,
-                 source: str = ""):
+    def __init__(self, message: str, *, group: str = "", source: str = ""):
         self.group = group
-        self.phi_deg = phi_deg
         self.source = source
         super().__init__(message)
 

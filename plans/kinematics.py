@@ -102,16 +102,16 @@ class Solver:
         except (ScalarFallback, ArithmeticError, ValueError):
             pass
         m = self.solve(np.array([phi]))
-        deg = math.degrees(phi) % 360
+        at = self.mech.driver.at(phi)
         source = self.mech.source
         for g in m.groups:
             if not g.valid[0]:
-                raise g.failure(0, deg, source=source)
+                raise g.failure(0, at, source=source)
         for g in m.groups:
-            if (err := g.parallel(0, deg, source)) is not None:
+            if (err := g.parallel(0, at, source)) is not None:
                 raise err
         raise SingularPlanError(  # pragma: no cover - every fallback above is a failure
-            f"at φ1 = {deg:.6g}°: the plan has no unique solution", source=source)
+            f"at {at}: the plan has no unique solution", source=source)
 
     def _solve(self, xp, phi, zero, rotor) -> Motion:
         mech = self.mech

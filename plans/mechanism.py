@@ -105,6 +105,25 @@ class Driver:
         """The inverse: the crank angle ``phi`` in the file's convention, in [0, 360)."""
         return (SENSES[self.measured] * (math.degrees(phi) - REFERENCES[self.reference])) % 360.0
 
+    def at(self, phi: float, lang: str = "en") -> str:
+        """"φ1 = 330°" for a message about crank angle ``phi``, in the file's convention as
+        ``--angle`` takes it, which it names unless it is the usual one (from +x, ccw).
+
+        >>> d = Driver(1, "O", "A", 0.1, math.radians(-240), 1.0, 330.0, "+y", "cw")
+        >>> d.at(math.radians(-240)), d.at(math.radians(-240.5), "ru")
+        ('φ1 = 330° (from +y, cw)', 'φ1 = 330,5° (от +y, по часовой стрелке)')
+        """
+        from .fmt import angle
+
+        text = f"φ1 = {angle(self.file_angle(phi), 6, lang)}°"
+        if (self.reference, self.measured) != ("+x", "ccw"):
+            sense = self.measured if lang == "en" else _SENSE_RU[self.measured]
+            text += f" ({'from' if lang == 'en' else 'от'} {self.reference}, {sense})"
+        return text
+
+
+_SENSE_RU = {"ccw": "против часовой стрелки", "cw": "по часовой стрелке"}
+
 
 def phi_of(angle_deg: float, reference: str, measured: str) -> float:
     """A crank angle in a file's convention (degrees from ``reference``, ``measured`` ccw

@@ -153,13 +153,13 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     solver = solver or Solver(mech)
     phi = mech.driver.phi if phi is None else float(phi)
     motion = solver.solve_one(phi)
-    deg = math.degrees(phi) % 360
     warnings = []
     for g in motion.groups:
         if not WARN_SINE <= abs(g.velocity.sine) < math.inf:  # NaN, inf: parallel() refuses them
-            if (err := g.parallel(None, deg, mech.source)) is not None:
+            at = mech.driver.at(phi)
+            if (err := g.parallel(None, at, mech.source)) is not None:
                 raise err
-            warnings.append(g.near_parallel(None, deg))
+            warnings.append(g.near_parallel(None, at))
     scales = mech.scales
     if mu or "mu_l" not in scales:
         scales = dict(scales, **(mu or {}))

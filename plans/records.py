@@ -103,8 +103,9 @@ class GroupSolution(NamedTuple):
     singular: np.ndarray  # bool: where it does not close, is it a dead point (no miss)?
     why_singular: str  # what makes it singular, for messages
 
-    def failure(self, k: int, phi_deg: float, note: str = "", source: str = "") -> PlansError:
-        """The error for angle index ``k`` where the group does not close.
+    def failure(self, k: int, at: str, note: str = "", source: str = "") -> PlansError:
+        """The error for angle index ``k`` where the group does not close; ``at`` names the
+        crank angle ("φ1 = 330°", :meth:`plans.mechanism.Driver.at`).
 
         A group that misses (its links do not reach) is an :class:`AssemblyError` with the
         distance it misses by; one exactly at the limit (links in line, parallel guides,
@@ -113,13 +114,13 @@ class GroupSolution(NamedTuple):
         label = self.group.label
         if bool(self.singular[k]):
             return SingularPlanError(
-                f"{label} at φ1 = {phi_deg:.6g}°: {self.why_singular}: a singular position "
+                f"{label} at {at}: {self.why_singular}: a singular position "
                 f"(dead point), the plan has no unique solution{note}", source=source,
             )
         return AssemblyError(
-            f"{label} cannot be assembled at φ1 = {phi_deg:.6g}°: needs {self.admissible}, "
+            f"{label} cannot be assembled at {at}: needs {self.admissible}, "
             f"misses by {float(self.gap[k]):.6g} m{note}",
-            group=label, phi_deg=phi_deg, source=source,
+            group=label, source=source,
         )
 
     def sine_at(self, k: int | None = None) -> float:
@@ -129,7 +130,7 @@ class GroupSolution(NamedTuple):
         s = abs(float(s if k is None else s[k]))
         return s if math.isfinite(s) else 0.0
 
-    def parallel(self, k: int | None, phi_deg: float, source: str = "") -> SingularPlanError | None:
+    def parallel(self, k: int | None, at: str, source: str = "") -> SingularPlanError | None:
         """The error where the two lines of the plans are parallel (|sin| below
         :data:`SINGULAR_SINE`): a dead point, no unique plan. None elsewhere."""
         s = self.sine_at(k)
@@ -137,18 +138,24 @@ class GroupSolution(NamedTuple):
             return None
         r0, r1 = self.velocity.routes
         return SingularPlanError(
-            f"{self.group.label} at φ1 = {phi_deg:.6g}°: the lines {r0.relation} and "
+            f"{self.group.label} at {at}: the lines {r0.relation} and "
             f"{r1.relation} are parallel (angle {_degrees(s):.3g}°, sin = {s:.3g}): a singular "
             "position (dead point), the plan has no unique solution", sine=s, source=source)
 
-    def near_parallel(self, k: int | None, phi_deg: float) -> str | None:
+    def near_parallel(self, k: int | None, at: str, lang: str = "en") -> str | None:
         """The warning where the two lines meet at under about 2° (|sin| below
         :data:`WARN_SINE`), when they are not parallel. None elsewhere."""
         s = self.sine_at(k)
         if not SINGULAR_SINE <= s < WARN_SINE:
             return None
         r0, r1 = self.velocity.routes
-        return (f"{self.group.label} at φ1 = {phi_deg:.6g}°: near-singular, the lines "
+        if lang == "ru":
+            from .fmt import num
+
+            return (f"группа {self.group.label.removeprefix('group ')} при {at}: положение, "
+                    f"близкое к особому: прямые {r0.relation} и {r1.relation} пересекаются "
+                    f"под углом {num(_degrees(s), 3, 'ru')}° (sin = {num(s, 3, 'ru')})")
+        return (f"{self.group.label} at {at}: near-singular, the lines "
                 f"{r0.relation} and {r1.relation} meet at {_degrees(s):.3g}° (sin = {s:.3g})")
 
 

@@ -161,9 +161,18 @@ def note(sol: Solution, lang: str = "en", cycle=None) -> str:
     out.append("")
     out += _plan_section(sol, sol.velocity, lang, 3)
     out += _plan_section(sol, sol.acceleration, lang, 4)
-    for w in sol.warnings:
+    for w in warnings(sol, lang):
         out += [f"> {t['warn']}: {w}", ""]
     return "\n".join(out).rstrip() + "\n"
+
+
+def warnings(sol: Solution, lang: str = "en") -> list[str]:
+    """The solution's near-singular groups in ``lang``: ``sol.warnings`` in English, written
+    again from the groups' own figures in Russian."""
+    if lang == "en":
+        return list(sol.warnings)
+    at = sol.mechanism.driver.at(sol.phi, lang)
+    return [w for g in sol.scalar.groups if (w := g.near_parallel(None, at, lang)) is not None]
 
 
 def no_full_turn(cycle, lang: str = "en", deg=None) -> str:

@@ -511,3 +511,36 @@ def test_command_line_mistakes_are_one_line_and_exit_2(capsys, argv, message):
     code, err = _main_exit(capsys, *(a.format(p=PRESS) for a in argv))
     assert code == 2 and len(err.splitlines()) == 1 and message in err, err
     assert "usage:" not in err and "Traceback" not in err
+
+
+def test_messages_give_the_crank_angle_as_the_file_measures_it(capsys, tmp_path):
+    """Seed 001's four-bar measured from +y clockwise: --angle 270 is φ = 180° from +x,
+    where BD is too long. The message said "φ1 = -90°" (from +x, unlabelled); it now
+    gives the angle the user typed, and the convention it is in."""
+    text = (ROOT / "samples" / "fourbar.toml").read_text("utf-8")
+    text = text.replace("angle_deg = 40\n", 'angle_deg = 50\nfrom = "+y"\nmeasured = "cw"\n')
+    path = tmp_path / "fourbar_y.toml"
+    path.write_text(text, "utf-8")
+    code, _, err = run(capsys, "solve", path, "--angle", "270")
+    assert code == 2
+    (line,) = assert_clean_failure(err)
+    assert "cannot be assembled at φ1 = 270° (from +y, cw): needs BD within" in line, line
+    code, out, err = run(capsys, "cycle", path, "--positions", "12")
+    assert "φ1 = -" not in out + err
+
+
+def test_near_a_dead_point_every_command_warns_in_its_language(capsys, tmp_path):
+    """Seed 001's four-bar at 128.8046°, 0.03° short of where BD is too long: the plan's
+    lines ⊥ CB and ⊥ CD meet at 0.03°. The sheet drew it silently; the Russian note and
+    check gave the warning in English with a decimal point."""
+    fourbar = ROOT / "samples" / "fourbar.toml"
+    code, out, err = run(capsys, "report", fourbar, "--angle", "128.8046", "--lang", "ru")
+    assert code == 0 and err.startswith("plans report: warning: group 2–3 (RRR) at φ1 = 128.805°")
+    (line,) = [ln for ln in out.splitlines() if ln.startswith("> Предупреждение")]
+    assert line.startswith("> Предупреждение: группа 2–3 (RRR) при φ1 = 128,805°: положение, "
+                           "близкое к особому: прямые ⊥ CB и ⊥ CD пересекаются под углом 0,0")
+    assert "." not in line and "near" not in line
+    code, _, err = run(capsys, "sheet", fourbar, "--angle", "128.8046", "-o", tmp_path / "n.svg")
+    assert code == 0 and len(err.splitlines()) == 1
+    assert err.startswith(f"plans sheet: warning: {fourbar}: group 2–3 (RRR) at φ1 = 128.805°: "
+                          "near-singular, the lines ⊥ CB and ⊥ CD meet at 0.0")

@@ -5,8 +5,6 @@ does not close or a plan is singular."""
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -76,7 +74,7 @@ def test_scalar_path_fails_in_the_array_paths_words():
     k = int(bad[0])
     with pytest.raises(AssemblyError) as one:
         sv.solve_one(float(phi[k]))
-    assert str(one.value) == str(arr.groups[0].failure(k, math.degrees(phi[k]) % 360))
+    assert str(one.value) == str(arr.groups[0].failure(k, mech.driver.at(float(phi[k]))))
     assert "misses by" in str(one.value)
 
 
