@@ -57,8 +57,8 @@ def configure(p) -> None:
                    help="PNG resolution, 10 to 600 (default 100)")
 
 
-def _title_fields(mech, pairs, scale: str) -> dict[str, str]:
-    out = {"name": mech.name, "scale": scale}
+def _title_fields(mech, pairs, scale: str, lang: str = "ru") -> dict[str, str]:
+    out = {"name": mech.name_in(lang), "scale": scale}
     items = list((mech.title or {}).items())
     for pair in pairs:
         if "=" not in pair:
@@ -178,7 +178,7 @@ def _compose(mech, sheet, solver, cycle, chosen, mu, lang, title, fixed):
     from drawing.layout import place_views
     from drawing.scene import Layer, Scene
     from drawing.sheet import TitleBlock, frame_scene
-    from plans.fmt import num
+    from plans.fmt import angle, num
     from plans.plan import solve_position
     from plans.scales import gost_scale
 
@@ -189,19 +189,21 @@ def _compose(mech, sheet, solver, cycle, chosen, mu, lang, title, fixed):
         sols.append(("g", f"φ_1 = {num(deg, 4, lang)}°", given))
     else:
         for k in chosen:
-            sols.append((str(k), f"{k}", solve_position(mech, cycle.positions[k], solver=solver, mu=mu)))
+            deg = mech.driver.file_angle(cycle.positions[k])
+            label = f"{V.WORDS[lang]['position']} {k}, φ_1 = {angle(deg, 4, lang)}°"
+            sols.append((str(k), label, solve_position(mech, cycle.positions[k], solver=solver, mu=mu)))
     views = [V.positions_view(given, cycle, fixed.motion_all, lang, fixed.shown)]
     for tag, label, sol in sols:
         views.append(V.plan_view(sol, "velocity", tag, lang, label))
         views.append(V.plan_view(sol, "acceleration", tag, lang, label))
     views += fixed.diagrams
-    tabsols = [(label if tag != "g" else "φ", sol) for tag, label, sol in sols]
+    tabsols = [(tag if tag != "g" else "φ", sol) for tag, _, sol in sols]  # columns by number
     views.append(V.segments_table_view(tabsols, lang))
     views.append(V.omega_table_view(tabsols, lang))
     if fixed.notes:
         views.append(V.note_view(fixed.notes))
     placed = place_views(sheet, views)
-    tb = TitleBlock(**_title_fields(mech, title, gost_scale(given.mu_l)))
+    tb = TitleBlock(**_title_fields(mech, title, gost_scale(given.mu_l, lang), lang))
     scene = frame_scene(sheet, tb, lang=lang)
     scene = scene + Scene((Layer("views", tuple(p.group() for p in placed)),))
     return scene, sheet, {"solutions": sols, "cycle": cycle, "placed": placed}
@@ -228,7 +230,7 @@ def render(mech, args) -> str:
     for _, _, sol in info["solutions"]:  # a plan drawn near a dead point is said so
         for w in sol.warnings:
             print(f"plans sheet: warning: {mech.source}: {w}", file=sys.stderr)
-    return to_svg(scene, sheet, title=mech.name)
+    return to_svg(scene, sheet, title=mech.name_in(args.lang))
 
 
 #: below this share of the sheet's field, views drawn at scales the file fixes are noted

@@ -710,7 +710,8 @@ def diagrams_view(mech, cycle, lang: str = "ru", width: float = 180.0, height: f
                                   size=2.5, anchor="middle", baseline="hanging", italic=True))
         items.append(Text((2, y - 6), f"{name}, {unit}", size=3.5, baseline="hanging"))
         items.append(Text((width + 6, y_zero - 1.5), "φ", size=3.5, anchor="end"))
-        items.append(_start_anchored(Text((width - 2, y - 6), f"μ_{{{name}}} = {num(mu, 3, lang)} {unit}/{w['mm']}",
+        per_mm = f"({unit})/{w['mm']}" if "/" in unit else f"{unit}/{w['mm']}"  # (м/с)/мм
+        items.append(_start_anchored(Text((width - 2, y - 6), f"μ_{{{name}}} = {num(mu, 3, lang)} {per_mm}",
                           size=2.5, anchor="end", baseline="hanging", markup=True)))
         y += h + 16.0
     mu_phi = 2 * math.pi / width
@@ -763,7 +764,7 @@ def segments_table_view(sols: list[tuple[str, object]], lang: str = "ru") -> Vie
     header = [w["segment"]]
     for tag, _ in sols:
         pre = f"{tag}: " if len(sols) > 1 else ""  # name the position only when there are several
-        header += [f"{pre}{w['mm']}", f"{pre}SI"]
+        header += [f"{pre}{w['mm']}", f"{pre}{w['value']}"]
     keys: list[tuple[str, str, str, str]] = []  # kind, start, end, label
     seen = set()
     for _, sol in sols:

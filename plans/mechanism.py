@@ -144,6 +144,13 @@ class Mechanism:
     output: str | None = None
     title: dict[str, str] = field(default_factory=dict)
     source: str = "<mechanism>"
+    #: the name in other languages ("ru": …), from ``name = { en = "…", ru = "…" }``
+    names: dict[str, str] = field(default_factory=dict)
+
+    def name_in(self, lang: str) -> str:
+        """The name for a note or sheet in ``lang``: the file's name in that language if
+        it gives one, else its name."""
+        return self.names.get(lang, self.name)
 
     # ---- derived, read-only views -------------------------------------------------
     def links_of(self, point: str) -> list[int]:
@@ -299,7 +306,7 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
          "output", "title"},
         "", pr,
     )
-    name = read_text(data.get("name"), "name", pr, Path(source).stem[:MAX_TEXT] or "mechanism")
+    name, names = _title_names(data.get("name"), pr, Path(source).stem[:MAX_TEXT] or "mechanism")
 
     # frame -------------------------------------------------------------------------
     frame: dict[str, complex] = {}
@@ -528,6 +535,7 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
         output=output,
         title=title,
         source=source,
+        names=names,
     )
 
 
@@ -728,6 +736,23 @@ def _name_fixed_guides(sliders: list[Slider], unnamed: set[int]) -> list[Slider]
         names.setdefault(name, g.direction)
         out[i] = replace(out[i], guide=replace(g, label=name))
     return out
+
+
+#: the languages a name may be given in
+LANGS = ("en", "ru")
+
+
+def _title_names(value, pr: Problems, default: str) -> tuple[str, dict[str, str]]:
+    """``name = "…"`` or ``name = { en = "…", ru = "…" }``: (the name, names by language).
+    The plain name is the English one, else the first given."""
+    if not isinstance(value, dict):
+        return read_text(value, "name", pr, default), {}
+    check_keys(value, set(LANGS), "name", pr)
+    names = {lang: read_text(value[lang], f"name.{lang}", pr, default)
+             for lang in LANGS if lang in value}
+    if not names and not any(k not in LANGS for k in value):
+        pr.add("name", 'an empty table: give a text, or { en = "…", ru = "…" }')
+    return names.get("en") or next(iter(names.values()), default), names
 
 
 def _guide(body, where, pr: Problems, links, frame, bad_links, slides: str | None = None

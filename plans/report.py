@@ -120,7 +120,7 @@ def note(sol: Solution, lang: str = "en", cycle=None) -> str:
 
     mech, st = sol.mechanism, sol.structure
     d = mech.driver
-    out = [f"# {t['title']}: {mech.name}", ""]
+    out = [f"# {t['title']}: {mech.name_in(lang)}", ""]
     # structure ----------------------------------------------------------------------
     out += [f"## 1. {t['structure']}", "", t["cheb"], ""]
     out.append(f"- `{st.chebyshev()}`")

@@ -63,9 +63,13 @@ def choose_mu_l(extent: float, max_mm: float = 150.0) -> float:
     return next(series(extent / max_mm, extent))
 
 
-def gost_scale(mu_l: float) -> str:
-    """'1:10' for μl = 0.01 m/mm, '2:1' for 0.0005 m/mm (1 mm of drawing = μl metres)."""
+def gost_scale(mu_l: float, lang: str = "en") -> str:
+    """'1:10' for μl = 0.01 m/mm, '2:1' for 0.0005 m/mm (1 mm of drawing = μl metres);
+    '1:2,5' in Russian.
+
+    >>> gost_scale(0.0025), gost_scale(0.0025, "ru"), gost_scale(0.0004)
+    ('1:2.5', '1:2,5', '2.5:1')
+    """
     ratio = mu_l / 0.001
-    if ratio >= 1:
-        return f"1:{ratio:.10g}"
-    return f"{1 / ratio:.10g}:1"
+    text = f"1:{ratio:.10g}" if ratio >= 1 else f"{1 / ratio:.10g}:1"
+    return text.replace(".", ",") if lang == "ru" else text

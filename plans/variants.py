@@ -112,7 +112,8 @@ def variant_dict(row: dict) -> dict:
     if row["kind"] == "four-bar":
         cd, ad = row["CD"], row["AD"]
         return {
-            "name": f"Four-bar linkage, variant {n}",
+            "name": {"en": f"Four-bar linkage, variant {n}",
+                     "ru": f"Шарнирный четырёхзвенник, вариант {n}"},
             "frame": {"A": [0.0, 0.0], "D": [-ad, 0.0]},
             "driver": driver,
             "links": {
@@ -127,7 +128,8 @@ def variant_dict(row: dict) -> dict:
             "title": {"designation": f"ПМ.01.{n:02d}"},
         }
     return {
-        "name": f"Crank-slider mechanism, variant {n}",
+        "name": {"en": f"Crank-slider mechanism, variant {n}",
+                 "ru": f"Кривошипно-ползунный механизм, вариант {n}"},
         "frame": {"A": [0.0, 0.0]},
         "driver": driver,
         "links": {

@@ -113,10 +113,15 @@ def test_diagrams_only_with_a_stroke():
 
 
 def test_two_positions_english_a1():
+    from plans.fmt import angle
+
     mech, scene, sheet, info, svg = _sheet("press", "A1", "en", (1, 4))
     _, texts = _texts(svg)
-    assert any(t.startswith("Velocity plan (1)") for t in texts)
-    assert any(t.startswith("Acceleration plan (4)") for t in texts)
+    # a plan names its position and its crank angle, in the file's convention
+    deg = [angle(mech.driver.file_angle(info["cycle"].positions[k])) for k in (1, 4)]
+    assert any(t.startswith(f"Velocity plan (position 1, φ1 = {deg[0]}°)") for t in texts), texts
+    assert any(t.startswith(f"Acceleration plan (position 4, φ1 = {deg[1]}°)") for t in texts)
+    assert len(set(deg)) == 2
     assert overlaps([it for it in scene.items() if isinstance(it, Text)]) == []
 
 
@@ -529,3 +534,24 @@ def test_positions_outside_3_to_72_are_refused_before_any_work(capsys, tmp_path,
     code, _, err = run(capsys, "sheet", "samples/fourbar.toml", "--positions", n, "-o", out)
     assert code == 2 and not out.exists()
     assert err == f"plans sheet: --positions: give 3 to 72 positions, got {n}\n"
+
+
+def test_a_russian_sheet_names_and_measures_in_russian():
+    """Variant 5 in Russian: the title block names it in Russian, the segments table's
+    value column is «Величина» (was the Latin "SI"), a diagram's scale is per mm of
+    drawing with its unit in brackets, «(рад/с)/мм» (was «рад/с/мм»)."""
+    *_, svg = _sheet(5)
+    _, texts = _texts(svg)
+    assert "Шарнирный четырёхзвенник, вариант 5" in " ".join(texts)
+    assert "Величина" in texts and "SI" not in texts
+    assert any(t.startswith("μω = ") and t.endswith(" (рад/с)/мм") for t in texts), texts
+    assert not any("/с/мм" in t for t in texts)
+
+
+def test_a_gost_scale_has_a_decimal_comma_on_a_russian_sheet():
+    from plans.scenes import SCENES
+
+    scene, sheet, info = build_sheet(SCENES["yoke_on_rocker"].mechanism(), "A1", "ru")
+    _, texts = _texts(to_svg(scene, sheet, embed_font=False))
+    assert info["solutions"][0][2].mu_l == 0.0025
+    assert "1:2,5" in texts and "1:2.5" not in texts

@@ -1,5 +1,7 @@
 """Chebyshev's mobility and the Assur decomposition."""
 
+from pathlib import Path
+
 import pytest
 
 from plans.errors import StructureError
@@ -111,3 +113,40 @@ def test_unlabelled_guides_are_named_by_notation_not_by_words(guides, names):
     """No default guide name is an English word, so a Russian note and sheet read right."""
     mech = _with_guides(*guides)
     assert [s.guide.label for s in mech.sliders] == names
+
+
+@pytest.mark.parametrize(("name", "en", "ru"), [
+    ('"Press"', "Press", "Press"),
+    ('{ en = "Press", ru = "Пресс" }', "Press", "Пресс"),
+    ('{ ru = "Пресс" }', "Пресс", "Пресс"),
+])
+def test_a_name_may_be_given_in_each_language(name, en, ru):
+    import tomllib
+
+    text = (Path(__file__).resolve().parent.parent / "samples" / "fourbar.toml").read_text("utf-8")
+    text = text.replace('name = { en = "Four-bar linkage", ru = "Шарнирный четырёхзвенник" }', f"name = {name}")
+    mech = from_dict(tomllib.loads(text), "f.toml")
+    assert (mech.name, mech.name_in("en"), mech.name_in("ru")) == (en, en, ru)
+
+
+@pytest.mark.parametrize(("name", "message"), [
+    ('{ de = "Presse" }', 'f.toml: name.de: unknown key — known: en, ru'),
+    ("{ en = 5 }", "f.toml: name.en: must be a text of at most"),
+    ("{}", 'f.toml: name: an empty table: give a text, or { en = "…", ru = "…" }'),
+])
+def test_a_bad_name_table_is_located(name, message):
+    import tomllib
+
+    from plans.errors import InputError
+
+    text = (Path(__file__).resolve().parent.parent / "samples" / "fourbar.toml").read_text("utf-8")
+    text = text.replace('name = { en = "Four-bar linkage", ru = "Шарнирный четырёхзвенник" }', f"name = {name}")
+    with pytest.raises(InputError) as err:
+        from_dict(tomllib.loads(text), "f.toml")
+    assert message in str(err.value)
+
+
+def test_the_variants_are_named_in_the_language_of_the_note():
+    assert variant(5).name_in("ru") == "Шарнирный четырёхзвенник, вариант 5"
+    assert variant(5).name_in("en") == "Four-bar linkage, variant 5"
+    assert variant(4).name_in("ru") == "Кривошипно-ползунный механизм, вариант 4"
