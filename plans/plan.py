@@ -324,8 +324,10 @@ def _work_out(mech: Mechanism, m: Motion, kind: str) -> _Recipe:
             if len(base) >= 2 and abs(pos[base[1]] - pos[base[0]]) > 0:
                 b0, b1 = base[0], base[1]
                 n0, n1 = plan_name(b0), plan_name(b1)
-                eqs = (f"{n0}{nx} = {n0}{n1}·{b0}{name}/{b0}{b1}",
-                       f"△{n0}{n1}{nx} ∼ △{b0}{b1}{name}")
+                # a fixed point lies at the pole, and is written by the pole's letter
+                w0, w1 = (pole if b in mech.frame else nb for b, nb in ((b0, n0), (b1, n1)))
+                eqs = (f"{w0}{nx} = {w0}{w1}·{b0}{name}/{b0}{b1}",
+                       f"△{w0}{w1}{nx} ∼ △{b0}{b1}{name}")
                 if name in own and b0 in own and b1 in own:
                     # three points of the rigid figure: the ratio is the figure's own
                     ratio = (own[name] - own[b0]) / (own[b1] - own[b0])

@@ -166,6 +166,13 @@ def note(sol: Solution, lang: str = "en", cycle=None) -> str:
     return "\n".join(out).rstrip() + "\n"
 
 
+def _letter(plan, name: str) -> str:
+    """The plan point's letter as the note writes it: the pole's for a fixed point, which
+    lies at the pole (the acceleration plan has no point b apart from π)."""
+    p = plan.points.get(name)
+    return plan.pole if p is not None and p.source.kind == "pole" else name
+
+
 def warnings(sol: Solution, lang: str = "en") -> list[str]:
     """The solution's near-singular groups in ``lang``: ``sol.warnings`` in English, written
     again from the groups' own figures in Russian."""
@@ -262,15 +269,16 @@ def _plan_section(sol: Solution, plan, lang: str, number: int) -> list[str]:
                 s = p.source
                 X = _mech_name(sol, p.name)
                 B0, B1 = _mech_name(sol, s.base), _mech_name(sol, s.other)
+                b0, b1 = _letter(plan, s.base), _letter(plan, s.other)  # a fixed point is the pole
                 if abs(s.ratio.imag) < 1e-12:
                     l_bx = abs(sol.positions[X] - sol.positions[B0]) / sol.mu_l
                     l_bb = abs(sol.positions[B1] - sol.positions[B0]) / sol.mu_l
                     seg = plan.mm(s.base, s.other)
-                    out.append(Step(f"{s.base}{p.name} = {s.base}{s.other}·{B0}{X} / {B0}{B1}",
+                    out.append(Step(f"{b0}{p.name} = {b0}{b1}·{B0}{X} / {B0}{B1}",
                                     f"{n(seg)}·{n(l_bx)} / {n(l_bb)}", n(plan.mm(s.base, p.name)),
                                     u["mm"]).markdown())
                 else:
-                    out.append(f"- `{s.equation}`: {s.base}{p.name} = {n(plan.mm(s.base, p.name))} {u['mm']}")
+                    out.append(f"- `{s.equation}`: {b0}{p.name} = {n(plan.mm(s.base, p.name))} {u['mm']}")
             out.append("")
         out += [t["avalues" if acc else "values"], ""]
         names = [px] + [p.name for p in sims]

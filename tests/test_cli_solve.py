@@ -124,7 +124,9 @@ def test_report_russian_uses_decimal_comma(capsys):
     assert code == 0
     assert "`a^k_A3A = 2·ω3·V_A3A = 2·4,822·1,148 = 11,07 м/с²`" in out
     assert "`μv = V_A / pa = 3 / 60 = 0,05 (м/с)/мм`" in out
-    assert "`bc = ba3·BC / BA3 = 55,43·75 / 57,48 = 72,33 мм`" in out
+    assert "`pc = pa3·BC / BA3 = 55,43·75 / 57,48 = 72,33 мм`" in out
+    assert "`πc = πa3·BC / BA3 = 17,89·75 / 57,48 = 23,34 мм`" in out  # b is π: no point b
+    assert "bc =" not in out
 
 
 @pytest.mark.parametrize("path", ["samples/press.toml", "samples/fourbar.toml"])

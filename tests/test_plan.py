@@ -68,7 +68,8 @@ def test_constructions_are_recorded(press):
     assert [ln.through for ln in acc_a3.lines] == ["k", "n1"]
     c = press.velocity.points["c"].source
     assert c.kind == "similarity" and (c.base, c.other) == ("b", "a3")
-    assert c.equation == "bc = ba3·BC/BA3"
+    assert c.equation == "pc = pa3·BC/BA3"  # B is fixed: b lies at the pole p
+    assert press.acceleration.points["c"].source.equation == "πc = πa3·BC/BA3"
     d = press.velocity.points["d"].source
     assert [ln.through for ln in d.lines] == ["c", "p"]
 
