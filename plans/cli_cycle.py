@@ -387,7 +387,7 @@ def to_text(t: CycleTable) -> str:
     )
     from .cycle import summary
 
-    lines += summary(c, d.file_angle)
+    lines += summary(c, d.file_angle, d.link)
     moving = [p for p in t.points if p not in mech.frame]
     fixed = [p for p in t.points if p in mech.frame]
     if fixed:

@@ -120,7 +120,7 @@ def to_text(sol, cycle=None) -> str:
         from .cycle import summary
 
         out.append("Cycle")
-        out += [f"  {line}" for line in summary(cycle)]
+        out += [f"  {line}" for line in summary(cycle, link=mech.driver.link)]
     for w in sol.warnings:
         out.append(f"warning: {w}")
     return "\n".join(out) + "\n"

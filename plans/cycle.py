@@ -81,7 +81,7 @@ class Cycle:
     crank_range: tuple[float, float] | None = None  # rad: where it assembles, if not a full turn
 
 
-def summary(c: Cycle, deg=None) -> list[str]:
+def summary(c: Cycle, deg=None, link: int = 1) -> list[str]:
     """The cycle in a few lines, as ``plans solve`` and ``plans cycle`` print it: the
     four-bar's Grashof class, the crank range where it cannot make a full turn, the notes,
     the stroke H or swing ψ, the extreme positions, θ and K.
@@ -94,7 +94,7 @@ def summary(c: Cycle, deg=None) -> list[str]:
     deg = deg or from_x
     lines = [f"four-bar: {c.grashof}"] if c.grashof else []
     if not c.full_turn:
-        lines.append(no_full_turn(c, "en", deg))
+        lines.append(no_full_turn(c, "en", deg, link))
     lines += c.notes
     if c.stroke is not None and c.output is not None:
         if c.output.kind == "linear":

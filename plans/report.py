@@ -20,7 +20,7 @@ T = {
         "structure": "Structural analysis",
         "cheb": "Degrees of freedom by Chebyshev's formula:",
         "n": "moving links", "p5": "one-DOF pairs (revolute and prismatic)", "p4": "two-DOF pairs",
-        "groups": "Taking the crank {d} with the frame away, the chain splits into class-II groups:",
+        "groups": "Detaching the input link {d} and the frame, the chain splits into class-II groups:",
         "group": "links {a} and {b}: kind {k} ({name})",
         "class": "The mechanism is of class {c}; structural formula {f}.",
         "positions": "Plan of positions",
@@ -28,10 +28,10 @@ T = {
         "seg": "Segments of the links on the drawing:",
         "stroke": "Stroke of the output point {p}:",
         "swing": "Swing of the output link {l}:",
-        "kth": "Crank angle between the extreme positions θ and time ratio K:",
-        "noturn": "The crank cannot make a full turn: it assembles only for φ1 from {lo}° to {hi}° ({span}° of crank travel).",
+        "kth": "Crank angle between the extreme positions, θ, and the time ratio K:",
+        "noturn": "The input link {d} cannot make a full turn (it rocks, it is not a crank): the mechanism assembles only for φ1 from {lo}° to {hi}°, a swing of {span}°.",
         "velocities": "Velocity plan",
-        "va": "Velocity of point {t} of the crank, ⊥ {p}{t} in the sense of ω1:",
+        "va": "Velocity of point {t} of the input link, ⊥ {p}{t} in the sense of ω1:",
         "muv": "Scale factor of the velocity plan, with p{t} = {mm} mm:",
         "eqs": "Vector equations for point {x}:",
         "known": "known", "dir": "direction",
@@ -64,10 +64,10 @@ T = {
         "seg": "Длины отрезков, изображающих звенья на чертеже:",
         "stroke": "Ход выходной точки {p}:",
         "swing": "Угол размаха выходного звена {l}:",
-        "kth": "Угол между крайними положениями кривошипа θ и коэффициент изменения средней скорости K:",
-        "noturn": "Кривошип не может сделать полный оборот: механизм собирается только при φ1 от {lo}° до {hi}° (ход кривошипа {span}°).",
+        "kth": "Угол между положениями кривошипа в крайних положениях механизма θ и коэффициент изменения средней скорости K:",
+        "noturn": "Начальное звено {d} не может сделать полный оборот (это коромысло, а не кривошип): механизм собирается только при φ1 от {lo}° до {hi}°, угол качания {span}°.",
         "velocities": "План скоростей механизма",
-        "va": "Скорость точки {t} кривошипа, ⊥ {p}{t} в сторону вращения ω1:",
+        "va": "Скорость точки {t} начального звена, ⊥ {p}{t} в сторону вращения ω1:",
         "muv": "Масштабный коэффициент плана скоростей при p{t} = {mm} мм:",
         "eqs": "Векторные уравнения для точки {x}:",
         "known": "известна", "dir": "направление",
@@ -80,7 +80,7 @@ T = {
         "accelerations": "План ускорений механизма",
         "aa": "Ускорение точки {t} направлено от {t} к {p} (ω1 = const):",
         "mua": "Масштабный коэффициент плана ускорений при π{t} = {mm} мм:",
-        "normal": "Нормальное ускорение, направлено от {x} к {y}:",
+        "normal": "Нормальное ускорение направлено от {x} к {y}:",
         "coriolis": "Ускорение Кориолиса: вектор V_{x}{y}, повёрнутый на 90° в сторону ω{i}:",
         "ontheplan": "на плане",
         "eps": "Угловое ускорение звена {i}:",
@@ -108,7 +108,8 @@ class Step:
 
     def markdown(self) -> str:
         mid = f" = {self.substitution}" if self.substitution else ""
-        return f"- `{self.formula}{mid} = {self.result} {self.unit}`".rstrip()
+        unit = "" if not self.unit else self.unit if self.unit == "°" else f" {self.unit}"
+        return f"- `{self.formula}{mid} = {self.result}{unit}`"
 
 
 def note(sol: Solution, lang: str = "en", cycle=None) -> str:
@@ -124,7 +125,8 @@ def note(sol: Solution, lang: str = "en", cycle=None) -> str:
     # structure ----------------------------------------------------------------------
     out += [f"## 1. {t['structure']}", "", t["cheb"], ""]
     out.append(f"- `{st.chebyshev()}`")
-    out.append(f"  (n = {st.n} {t['n']}, p5 = {st.p5} {t['p5']}, p4 = 0 {t['p4']})")
+    dash = " —" if lang == "ru" else ""  # «n = 5 — число подвижных звеньев»
+    out.append(f"  (n = {st.n}{dash} {t['n']}, p5 = {st.p5}{dash} {t['p5']}, p4 = 0{dash} {t['p4']})")
     out += ["", t["groups"].format(d=d.link), ""]
     for g in st.groups:
         out.append("- " + t["group"].format(a=g.links[0], b=g.links[1], k=g.kind.value,
@@ -138,25 +140,28 @@ def note(sol: Solution, lang: str = "en", cycle=None) -> str:
                     n(mu_l), u["mu_l"]).markdown())
     out += ["", t["seg"], ""]
     for k, v in sol.lengths.items():
-        if k == d.pivot + d.tip:
+        if k == d.pivot + d.tip or v == 0:  # the crank is above; a point on another: no segment
             continue
         out.append(Step(f"{k} = l_{k} / μl", f"{n(v)} / {n(mu_l)}", n(v / mu_l), u["mm"]).markdown())
     if cycle is not None:
         out.append("")
         if not cycle.full_turn:
-            out.append(no_full_turn(cycle, lang, mech.driver.file_angle))
+            out.append(no_full_turn(cycle, lang, mech.driver.file_angle, d.link))
         elif cycle.stroke is not None:
             if cycle.output.kind == "linear":
                 out.append(t["stroke"].format(p=cycle.output.point))
                 out.append("")
-                out.append(Step("h = H·μl", f"{n(cycle.stroke / mu_l)}·{n(mu_l)}", n(cycle.stroke), u["m"]).markdown())
+                p = cycle.output.point  # H on the drawing: from one extreme position to the other
+                out.append(Step(f"H = {p}′{p}″·μl", f"{n(cycle.stroke / mu_l)}·{n(mu_l)}", n(cycle.stroke),
+                                u["m"]).markdown())
             else:
                 out.append(t["swing"].format(l=cycle.output.link))
                 out.append("")
                 out.append(Step("ψ", "", n(math.degrees(cycle.stroke)), u["deg"]).markdown())
             out += ["", t["kth"], ""]
             th = math.degrees(cycle.theta)
-            out.append(Step("K = (180° + θ) / (180° − θ)", f"(180 + {n(th)}) / (180 − {n(th)})",
+            out.append(Step("θ", "", n(th), u["deg"]).markdown())
+            out.append(Step("K = (180° + θ) / (180° − θ)", f"(180° + {n(th)}°) / (180° − {n(th)}°)",
                             n(cycle.K), "").markdown())
     out.append("")
     out += _plan_section(sol, sol.velocity, lang, 3)
@@ -182,13 +187,14 @@ def warnings(sol: Solution, lang: str = "en") -> list[str]:
     return [w for g in sol.scalar.groups if (w := g.near_parallel(None, at, lang)) is not None]
 
 
-def no_full_turn(cycle, lang: str = "en", deg=None) -> str:
+def no_full_turn(cycle, lang: str = "en", deg=None, link: int = 1) -> str:
     """The sentence for a crank that cannot make a full turn, with its range: from the
     cycle's first position to its last, in degrees by ``deg`` (a crank angle in rad →
     degrees in the convention wanted; default counter-clockwise from +x)."""
     lo, hi = cycle.crank_range
     deg = deg or math.degrees
     return T[lang]["noturn"].format(
+        d=link,
         lo=angle(deg(lo), 4, lang), hi=angle(deg(hi), 4, lang),
         span=num(math.degrees(abs(hi - lo)), 4, lang),
     )

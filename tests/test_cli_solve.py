@@ -1,6 +1,7 @@
 """The solve and report commands, run in-process as a user would run them."""
 
 import json
+import re
 
 import pytest
 from support import run
@@ -152,8 +153,9 @@ def test_report_english(capsys):
 def test_russian_note_says_the_crank_range_in_russian(capsys):
     code, out, _ = run(capsys, "report", "samples/fourbar.toml", "--lang", "ru")
     assert code == 0
-    assert ("Кривошип не может сделать полный оборот: механизм собирается только при "
-            "φ1 от 231,2° до 128,8° (ход кривошипа 257,6°).") in out
+    assert ("Начальное звено 1 не может сделать полный оборот (это коромысло, а не кривошип): "
+            "механизм собирается только при φ1 от 231,2° до 128,8°, угол качания 257,6°.") in out
+    assert "кривошипа" not in out.split("## 3.")[1]  # the input link is not called a crank
     assert "cannot" not in out
 
 
@@ -161,3 +163,23 @@ def test_an_angle_that_rounds_to_360_is_written_0(capsys):
     code, out, _ = run(capsys, "solve", "--variant", "1", "--angle", "359.99")
     assert code == 0
     assert "φ1 = 0° from +x" in out and "360°" not in out
+
+
+def test_the_russian_note_reads_as_a_teacher_wants(capsys):
+    """θ is given before K, with degree signs in K's substitution; the stroke is the
+    segment between the extreme positions times μl; no step ends in a space inside its
+    code span; the Chebyshev line's quantities take a dash."""
+    code, out, _ = run(capsys, "report", "samples/press.toml", "--lang", "ru")
+    assert code == 0
+    assert "- `θ = 39,86°`\n- `K = (180° + θ) / (180° − θ) = (180° + 39,86°) / (180° − 39,86°) = 1,569`" in out
+    assert "- `H = D′D″·μl = 51,14·0,01 = 0,5114 м`" in out
+    assert "(n = 5 — число подвижных звеньев, p5 = 7 — число одноподвижных пар" in out
+    assert not re.search(r" `$", out, re.M)  # no "= 1,569 `" at a line's end
+    code, out, _ = run(capsys, "report", "--variant", "1", "--lang", "ru")
+    assert "- `ψ = " in out and "° `" not in out and " °`" not in out
+
+
+def test_a_point_on_another_point_gets_no_segment_of_zero_length(capsys):
+    """The slider's centre of mass S3 is at C: 'CS3 = 0 / 0,002 = 0 мм' said nothing."""
+    code, out, _ = run(capsys, "report", "--variant", "0", "--lang", "ru")
+    assert code == 0 and "CS3" not in out and "= 0 мм" not in out

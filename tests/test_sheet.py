@@ -200,7 +200,7 @@ def test_only_a_sheet_left_empty_by_the_files_own_scales_gets_a_note():
 def test_russian_fourbar_sheet_explains_the_missing_diagrams_in_russian():
     _, scene, _, _, _ = _sheet("fourbar")  # Russian by default: the sheet built already
     texts = " ".join(t.text for t in scene.items() if hasattr(t, "text"))
-    assert "кривошип не может сделать полный оборот" in texts
+    assert "начальное звено 1 не может сделать полный оборот (это коромысло" in texts
     assert "cannot" not in texts
 
 
