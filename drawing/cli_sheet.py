@@ -13,7 +13,6 @@ the engine's segment length.
 from __future__ import annotations
 
 import copy
-import math
 import sys
 from pathlib import Path
 from typing import NamedTuple
@@ -86,15 +85,6 @@ def _parse_plans(text: str | None, n: int) -> list[int] | None:
     return nums
 
 
-def trajectory_angles(cycle, n: int = 361):
-    """The crank angles the trajectories are drawn over: the whole turn, or the range the
-    cycle's positions span when the crank cannot make a full turn."""
-    import numpy as np
-
-    lo, hi = (0.0, 2 * math.pi) if cycle.full_turn else cycle.crank_range
-    return np.linspace(lo, hi, n)
-
-
 def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
                 plans: list[int] | None = None, title: list[str] = ()):
     """(scene, sheet, info) for ``mech``; info holds the solutions drawn."""
@@ -112,7 +102,7 @@ def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
     first = solve_position(mech, solver=solver)
     chosen = _parse_plans(None if plans is None else ",".join(map(str, plans)), len(cycle.positions))
     fixed = _views_of_any_size(mech, solver, cycle, lang)
-    extent = fixed.shown.extent(mech, fixed.motion_all)
+    extent = fixed.shown.extent
     # the largest views that fit: scales the file leaves free are chosen for the sheet
     error, tried = None, []
     for size in SIZES:
@@ -132,25 +122,24 @@ def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
 class _AnySize(NamedTuple):
     """What the sheet draws whatever the scale factors, worked out once, not per size."""
 
-    motion_all: object  # the trajectories' motion (trajectory_angles)
-    shown: object  # the positions the plan of positions draws (views.Drawn)
+    shown: object  # the positions the plan of positions draws (plans.positions.Drawn)
     diagrams: list  # the kinematic diagrams, or none …
     notes: list  # … and the note that says why
 
 
 def _views_of_any_size(mech, solver, cycle, lang) -> _AnySize:
     from drawing import views as V
+    from plans.positions import drawn
 
-    motion_all = solver.solve(trajectory_angles(cycle))
-    shown = V.drawn(mech, solver, cycle, motion_all)
+    shown = drawn(solver, cycle)
     diag = V.diagrams_view(mech, cycle, lang, solver=solver)
     if diag is not None:
-        return _AnySize(motion_all, shown, [diag], [])
+        return _AnySize(shown, [diag], [])
     from plans.report import no_full_turn
 
     why = (no_full_turn(cycle, lang, mech.driver.file_angle, mech.driver.link) if not cycle.full_turn else
            "no stroke of the output" if lang == "en" else "нет хода выходного звена")
-    return _AnySize(motion_all, shown, [], [V.WORDS[lang]["no_diagrams"] + why[0].lower() + why[1:]])
+    return _AnySize(shown, [], [V.WORDS[lang]["no_diagrams"] + why[0].lower() + why[1:]])
 
 
 #: view sizes tried, as multiples of the engine's default drawing sizes (largest first)
@@ -192,7 +181,7 @@ def _compose(mech, sheet, solver, cycle, chosen, mu, lang, title, fixed):
             deg = mech.driver.file_angle(cycle.positions[k])
             label = f"{V.WORDS[lang]['position']} {k}, φ_1 = {angle(deg, 4, lang)}°"
             sols.append((str(k), label, solve_position(mech, cycle.positions[k], solver=solver, mu=mu)))
-    views = [V.positions_view(given, cycle, fixed.motion_all, lang, fixed.shown)]
+    views = [V.positions_view(given, cycle, lang)]
     for tag, label, sol in sols:
         views.append(V.plan_view(sol, "velocity", tag, lang, label))
         views.append(V.plan_view(sol, "acceleration", tag, lang, label))

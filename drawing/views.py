@@ -43,6 +43,7 @@ from drawing.scene import (
 )
 from drawing.styles import LineType
 from plans.fmt import num
+from plans.positions import drawn
 
 __all__ = [
     "View",
@@ -440,93 +441,19 @@ def _support(xy: tuple[float, float]) -> list[Item]:
     ]
 
 
-#: a position is left off the plan of positions where one of its points lies farther than
-#: this many times the given position's own size from it (a slider near a dead point at
-#: infinity, as the tangent mechanism's at the ends of its crank range)
-FAR = 20.0
-
-
-def _positions_at(solver, phis) -> list[dict[str, complex] | None]:
-    """Every point's position at each angle; None where the mechanism does not close."""
-    with np.errstate(all="ignore"):
-        m = solver.solve(np.asarray(phis, dtype=float))
-    ok = np.asarray(m.valid, dtype=bool)
-    return [{n: complex(np.asarray(a)[i]) for n, a in m.position.items()} if ok[i] else None
-            for i in range(len(phis))]
-
-
-@dataclass(frozen=True)
-class Drawn:
-    """What the plan of positions draws, whatever its scale, worked out once per sheet:
-    the given position, the cycle's positions and the extreme ones (None where the
-    mechanism does not close there, or where a point runs farther than ``limit`` from the
-    given position: those cycle positions are ``left_off``), and which samples of the
-    trajectories are drawn."""
-
-    given: dict[str, complex]
-    cycle: list[dict[str, complex] | None]
-    extremes: list[dict[str, complex] | None]
-    left_off: tuple[int, ...]
-    limit: float
-    trajectory: np.ndarray  # bool per sample of the trajectories' angles
-
-    @property
-    def positions(self) -> list[dict[str, complex]]:
-        return [p for p in (*self.cycle, *self.extremes, self.given) if p is not None]
-
-    def extent(self, mech, motion_all) -> float:
-        """The larger side (m) of the box round it all: the sheet's μl is chosen from
-        this, so a point that runs far out between the positions drawn (a cross-slide
-        near its dead point) does not shrink the drawing, nor do the positions left off."""
-        pts = [np.array(list(p.values())) for p in self.positions]
-        pts += [np.asarray(motion_all.position[n])[self.trajectory]
-                for n in (*mech.trace, mech.driver.tip) if n in motion_all.position]
-        z = np.concatenate(pts)
-        return float(max(np.ptp(z.real), np.ptp(z.imag), 1e-9))
-
-
-def drawn(mech, solver, cycle, motion_all) -> Drawn:
-    """The positions the plan of positions draws (:class:`Drawn`); a position is left off
-    where one of its points lies more than :data:`FAR` times the given position's size
-    from it."""
-    given = _positions_at(solver, [mech.driver.phi])[0]
-    pts = np.array(list(given.values()))
-    centre = pts.mean()
-    limit = FAR * max(float(np.abs(pts - centre).max()), 1e-6)
-
-    def far(z) -> np.ndarray:
-        return np.abs(np.asarray(z) - centre) > limit
-
-    def near(positions):
-        return [p if p is not None and not far(list(p.values())).any() else None
-                for p in positions]
-
-    everywhere = _positions_at(solver, cycle.positions)
-    kept = near(everywhere)
-    left_off = tuple(k for k, (p, q) in enumerate(zip(everywhere, kept, strict=True))
-                     if p is not None and q is None)
-    trajectory = np.asarray(motion_all.valid, dtype=bool).copy()
-    for n in (*mech.trace, mech.driver.tip):
-        if n in motion_all.position:
-            trajectory &= ~far(motion_all.position[n])
-    return Drawn(given, kept, near(_positions_at(solver, cycle.extremes)), left_off, limit,
-                 trajectory)
-
-
-def positions_view(sol, cycle, motion_all, lang: str = "ru", shown: Drawn | None = None) -> View:
+def positions_view(sol, cycle, lang: str = "ru") -> View:
     """Plan of positions at μl: the given position heavy, the cycle's positions
-    and the two extreme ones thin, trajectories, pivots, sliders, stroke H.
-    ``shown``: the positions drawn, if worked out already (:func:`drawn`)."""
+    and the two extreme ones thin, trajectories, pivots, sliders, stroke H; the positions
+    drawn are the engine's (:func:`plans.positions.drawn`, worked out once per solver)."""
     mech, mu_l = sol.mechanism, sol.mu_l
-    shown = shown or drawn(mech, sol.solver, cycle, motion_all)
+    shown = drawn(sol.solver, cycle)
+    motion_all = shown.motion_all
     items: list[Item] = []
     labels: list[LabelRequest] = []
 
     # trajectories, where they stay near the mechanism
     valid = shown.trajectory
-    for name in (*mech.trace, mech.driver.tip):
-        if name not in motion_all.position:
-            continue
+    for name in shown.traced:
         z = np.asarray(motion_all.position[name])
         run: list[tuple[float, float]] = []
         for ok, zz in zip(valid, z, strict=True):

@@ -110,7 +110,18 @@ def summary(c: Cycle, deg=None, link: int = 1) -> list[str]:
 
 def analyse_cycle(mech: Mechanism, n_positions: int = 12, solver: Solver | None = None,
                   samples: int = 3600) -> Cycle:
-    solver = solver or Solver(mech)
+    """The cycle of ``mech`` (see :class:`Cycle`); kept by the solver, which solves one
+    mechanism only, so that solve, its μl and its summary share one analysis."""
+    if solver is not None and solver.mech is mech:
+        key = ("cycle", n_positions, samples)
+        got = solver.cache.get(key)
+        if got is None:
+            got = solver.cache[key] = _analyse_cycle(mech, n_positions, solver, samples)
+        return got
+    return _analyse_cycle(mech, n_positions, solver or Solver(mech), samples)
+
+
+def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: int) -> Cycle:
     w1 = mech.driver.omega
     sense = 1.0 if w1 > 0 else -1.0
     phi0 = mech.driver.phi

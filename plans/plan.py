@@ -186,22 +186,13 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     )
 
 
-def cycle_extent(solver: Solver, n: int = 72) -> float:
-    """The larger side (m) of the box that holds every point over the crank's travel."""
-    key = ("cycle extent", n)
-    if key not in solver.cache:
-        solver.cache[key] = _cycle_extent(solver, n)
-    return solver.cache[key]
+def cycle_extent(solver: Solver, n_positions: int = 12) -> float:
+    """The larger side (m) of what the plan of positions draws with ``n_positions``
+    positions (:attr:`plans.positions.Drawn.extent`): the sheet sizes it the same way."""
+    from .cycle import analyse_cycle
+    from .positions import drawn
 
-
-def _cycle_extent(solver: Solver, n: int) -> float:
-    phi = solver.mech.driver.phi + np.linspace(0, 2 * np.pi, n, endpoint=False)
-    with np.errstate(all="ignore"):
-        m = solver.solve(phi)
-    pts = np.concatenate([v[m.valid] for v in m.position.values()])
-    if pts.size == 0:
-        return 1.0
-    return float(max(np.ptp(pts.real), np.ptp(pts.imag), 1e-9))
+    return drawn(solver, analyse_cycle(solver.mech, n_positions, solver=solver)).extent
 
 
 def _position_segments(solver: Solver, motion: Motion, pos: dict[str, complex]) -> dict[str, float]:

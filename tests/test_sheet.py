@@ -316,9 +316,9 @@ def test_trajectories_span_the_positions_drawn_when_the_crank_cannot_turn():
     trajectories must cover every position drawn, not stop at the file's angle."""
     import numpy as np
 
-    from drawing.cli_sheet import trajectory_angles
     from plans.cycle import analyse_cycle
     from plans.kinematics import Solver
+    from plans.positions import trajectory_angles
 
     mech = _mech("fourbar")
     solver = Solver(mech)
@@ -435,27 +435,41 @@ def test_positions_where_a_slider_runs_off_to_infinity_are_left_off_and_said_so(
 @pytest.mark.parametrize(("name", "low", "high"), [("press", 0.95, 1.01), ("crank_rocker", 0.95, 1.01),
                                                    ("prp_two_moving", 0.0, 0.5)])
 def test_the_plan_of_positions_is_sized_by_what_it_draws(name, low, high):
-    """μl of a sheet comes from the positions drawn (the cycle's, the extreme ones, the
-    given one, the trajectories): the same as the whole cycle's extent for an ordinary
-    linkage, but a cross-slide's point that runs far out between the positions drawn
-    does not shrink the drawing."""
+    """μl of a sheet and of solve comes from the positions drawn (the cycle's, the
+    extreme ones, the given one, the trajectories): the same as the whole turn's extent
+    for an ordinary linkage, but a cross-slide's point that runs far out between the
+    positions drawn does not shrink the drawing. solve and the sheet use one rule."""
     import numpy as np
 
-    from drawing import views as V
-    from drawing.cli_sheet import trajectory_angles
     from plans.cycle import analyse_cycle
     from plans.kinematics import Solver
-    from plans.plan import cycle_extent
+    from plans.plan import cycle_extent, solve_position
+    from plans.positions import drawn
+    from plans.scales import choose_mu_l
     from plans.scenes import SCENES
 
     mech = SCENES[name].mechanism()
     solver = Solver(mech)
-    cycle = analyse_cycle(mech, 12, solver=solver)
-    motion_all = solver.solve(trajectory_angles(cycle))
-    drawn = V.drawn(mech, solver, cycle, motion_all).extent(mech, motion_all)
-    whole = cycle_extent(solver)
-    assert low * whole <= drawn <= high * whole  # 72 samples of the cycle, 361 drawn
-    assert np.isfinite(drawn) and drawn > 0
+    extent = drawn(solver, analyse_cycle(mech, 12, solver=solver)).extent
+    m = solver.solve(mech.driver.phi + np.linspace(0, 2 * np.pi, 720))
+    z = np.concatenate([np.asarray(v)[m.valid] for v in m.position.values()])
+    whole = max(np.ptp(z.real), np.ptp(z.imag))
+    assert low * whole <= extent <= high * whole
+    assert np.isfinite(extent) and extent > 0
+    assert cycle_extent(solver) == extent
+    assert solve_position(mech).mu_l == mech.scales.get("mu_l", choose_mu_l(extent))
+
+
+def test_solve_sizes_the_tangent_mechanism_as_the_sheet_does(capsys):
+    """The tangent mechanism's slider runs off towards infinity near φ1 = ±90°: solve
+    and report chose μl = 0.04 m/mm from every angle of the turn, a crank of 2.5 mm. They
+    now leave those positions off as the sheet does."""
+    from plans.plan import solve_position
+    from plans.scenes import SCENES
+
+    sol = solve_position(SCENES["tangent"].mechanism())
+    crank_mm = sol.mechanism.driver.length / sol.mu_l
+    assert sol.mu_l <= 0.01 and crank_mm >= 10
 
 
 def _drawn_at(name_or_mech, angles=None):
