@@ -50,6 +50,10 @@ def configure(p) -> None:
                         "default: the position given in the file")
     p.add_argument("--title-block", nargs="*", default=[], metavar="KEY=VALUE",
                    help="title-block fields: " + ", ".join(sorted(FIELDS)))
+    p.add_argument("--note", metavar="NOTE.md",
+                   help="also write the explanatory note (Markdown) of the positions the sheet "
+                        "draws plans for, at the sheet's scale factors and in its language "
+                        "(with --variant all: a note beside each sheet)")
     p.add_argument("--png", metavar="FILE", help="also write a PNG (needs cairosvg)")
     p.add_argument("--pdf", metavar="FILE", help="also write a PDF (needs cairosvg)")
     p.add_argument("--dpi", type=number(10, 600), default=100.0,
@@ -198,7 +202,8 @@ def _compose(mech, sheet, solver, cycle, chosen, mu, lang, title, fixed):
     return scene, sheet, {"solutions": sols, "cycle": cycle, "placed": placed}
 
 
-def render(mech, args) -> str:
+def render(mech, args) -> tuple[str, str | None]:
+    """(the sheet's SVG, its explanatory note or None when --note is not asked for)."""
     from drawing.svg import to_svg
 
     plans = None
@@ -219,7 +224,15 @@ def render(mech, args) -> str:
     for _, _, sol in info["solutions"]:  # a plan drawn near a dead point is said so
         for w in sol.warnings:
             print(f"plans sheet: warning: {mech.source}: {w}", file=sys.stderr)
-    return to_svg(scene, sheet, title=mech.name_in(args.lang))
+    text = None
+    if getattr(args, "note", None):
+        from plans.report import note
+
+        sols = info["solutions"]
+        titles = [(label.replace("φ_1", "φ1"), sol) for tag, label, sol in sols]
+        text = note(sols[0][2], args.lang, info["cycle"], titles if len(sols) > 1 or
+                    sols[0][0] != "g" else ())
+    return to_svg(scene, sheet, title=mech.name_in(args.lang)), text
 
 
 #: below this share of the sheet's field, views drawn at scales the file fixes are noted
@@ -241,10 +254,13 @@ def sparse_note(mech, sheet, placed) -> str | None:
             "choose them, or take a smaller --format")
 
 
-def _write(svg: str, args) -> None:
-    """The SVG and any PNG and PDF asked for: all rendered before the first is written, so
-    that a failed export leaves every existing output as it was."""
+def _write(rendered: tuple[str, str | None], args) -> None:
+    """The SVG, and the note, PNG and PDF asked for: all rendered before the first is
+    written, so that a failed export leaves every existing output as it was."""
+    svg, text = rendered
     files: list[tuple[str | None, str | bytes]] = [(args.output, svg)]
+    if text is not None:
+        files.append((args.note, text))
     if args.png or args.pdf:
         from drawing import export
 
@@ -288,6 +304,7 @@ def _batch(args) -> int:
         a.output = str(out / f"variant-{n}.svg")
         a.png = str(out / f"variant-{n}.png") if args.png else None
         a.pdf = str(out / f"variant-{n}.pdf") if args.pdf else None
+        a.note = str(out / f"variant-{n}.md") if args.note else None
         try:
             mech = mechanism_from(a)
             _write(render(mech, a), a)

@@ -92,8 +92,8 @@ _INPUTS: list[str] = []
 
 #: the output options of the commands: (option, attribute); ``-o`` alone is stdout when
 #: absent, the others are then not written at all
-OUTPUTS = (("-o", "output"), ("--svg", "svg"), ("--png", "png"), ("--pdf", "pdf"),
-           ("--chart", "chart"))
+OUTPUTS = (("-o", "output"), ("--svg", "svg"), ("--note", "note"), ("--png", "png"),
+           ("--pdf", "pdf"), ("--chart", "chart"))
 
 
 def claim_inputs(args, paths, outputs=OUTPUTS) -> None:

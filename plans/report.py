@@ -9,6 +9,7 @@ beyond products and quotients of values the plans already hold.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 from .fmt import angle, num
@@ -112,8 +113,12 @@ class Step:
         return f"- `{self.formula}{mid} = {self.result}{unit}`"
 
 
-def note(sol: Solution, lang: str = "en", cycle=None) -> str:
-    """The whole explanatory note for one crank position, in Markdown."""
+def note(sol: Solution, lang: str = "en", cycle=None,
+         plans: Sequence[tuple[str, Solution]] = ()) -> str:
+    """The whole explanatory note, in Markdown: the structure and the plan of positions,
+    then the velocity and acceleration plans of ``sol``'s crank position, or of each of
+    ``plans`` instead ((title, solution): the positions a sheet draws plans for, at the
+    sheet's scale factors), each titled."""
     t, u = T[lang], UNITS[lang]
 
     def n(x, d=4):
@@ -164,10 +169,13 @@ def note(sol: Solution, lang: str = "en", cycle=None) -> str:
             out.append(Step("K = (180° + θ) / (180° − θ)", f"(180° + {n(th)}°) / (180° − {n(th)}°)",
                             n(cycle.K), "").markdown())
     out.append("")
-    out += _plan_section(sol, sol.velocity, lang, 3)
-    out += _plan_section(sol, sol.acceleration, lang, 4)
-    for w in warnings(sol, lang):
-        out += [f"> {t['warn']}: {w}", ""]
+    number = 3
+    for title, s in plans or [("", sol)]:
+        for plan in (s.velocity, s.acceleration):
+            out += _plan_section(s, plan, lang, number, title)
+            number += 1
+        for w in warnings(s, lang):
+            out += [f"> {t['warn']}: {w}", ""]
     return "\n".join(out).rstrip() + "\n"
 
 
@@ -200,7 +208,7 @@ def no_full_turn(cycle, lang: str = "en", deg=None, link: int = 1) -> str:
     )
 
 
-def _plan_section(sol: Solution, plan, lang: str, number: int) -> list[str]:
+def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") -> list[str]:
     t, u = T[lang], UNITS[lang]
 
     def n(x, d=4):
@@ -214,7 +222,8 @@ def _plan_section(sol: Solution, plan, lang: str, number: int) -> list[str]:
     sym = "a" if acc else "V"
     mus = "μa" if acc else "μv"
     pole = plan.pole
-    out = [f"## {number}. {t['accelerations'] if acc else t['velocities']}", ""]
+    head = t["accelerations"] if acc else t["velocities"]
+    out = [f"## {number}. {head}" + (f" ({title})" if title else ""), ""]
     tip = plan_name(d.tip)
     w1 = abs(d.omega)
     val = abs(plan.value(tip))

@@ -471,6 +471,8 @@ def _main_exit(capsys, *argv) -> tuple[int, str]:
     ["--png", "{d}/o.png", "--dpi", "-1"],            # a resolution cairo cannot render
     ["--png", "{d}/o.png", "--pdf", "{d}/nodir/o.pdf"],  # the last of three outputs is bad
     ["--png", "{d}/o.svg"],                            # the PNG would replace the SVG
+    ["--note", "{d}/nodir/o.md"],                      # the note's folder is missing
+    ["--note", "{d}/o.svg"],                           # the note would replace the SVG
 ])
 def test_a_sheet_whose_png_or_pdf_would_fail_writes_nothing(capsys, tmp_path, extra):
     """The SVG used to be written first and then the PNG or PDF failed: the old SVG was

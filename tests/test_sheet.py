@@ -569,3 +569,39 @@ def test_a_gost_scale_has_a_decimal_comma_on_a_russian_sheet():
     _, texts = _texts(to_svg(scene, sheet, embed_font=False))
     assert info["solutions"][0][2].mu_l == 0.0025
     assert "1:2,5" in texts and "1:2.5" not in texts
+
+
+def _mu_lines(text: str) -> list[str]:
+    """The scale factors a note (its 'μl = l_AB / AB = … = 0,001 м/мм' steps) or a
+    sheet (its captions' 'μl = 0,001 м/мм') states, as 'μl = 0,001' strings."""
+    steps = re.findall(r"^- `(μ[lva]) = .* = ([\d,]+) ", text, re.M)
+    captions = re.findall(r"(μ[lva]) = ([\d,]+) ", text) if not steps else []
+    return sorted({f"{k} = {v}" for k, v in steps + captions})
+
+
+def test_the_sheets_note_states_the_sheets_scales_for_each_plan(capsys, tmp_path):
+    """plans sheet --note writes the explanatory note of the positions the sheet draws
+    plans for, at the sheet's own scale factors: the note and the sheet a student hands in
+    cannot disagree. plans report alone chooses μ for a 150 mm drawing and may differ."""
+    from plans.cli import main
+
+    svg, md = tmp_path / "v3.svg", tmp_path / "v3.md"
+    assert main(["sheet", "--variant", "3", "-o", str(svg), "--note", str(md), "--plans", "1,4"]) == 0
+    note, (_, texts) = md.read_text("utf-8"), _texts(svg.read_text("utf-8"))
+    heads = [ln for ln in note.splitlines() if ln.startswith("## ")]
+    assert [h.split(" (")[0] for h in heads[2:]] == [
+        "## 3. План скоростей механизма", "## 4. План ускорений механизма",
+        "## 5. План скоростей механизма", "## 6. План ускорений механизма"]
+    assert heads[2].endswith("(положение 1, φ1 = 296,2°)") and heads[4].startswith("## 5. План скоростей механизма (положение 4,")
+    sheet_mu = _mu_lines(" ".join(t for t in texts if t.startswith("План ")))
+    assert len(sheet_mu) == 3 and _mu_lines(note) == sheet_mu
+    # the given position, in English: the same rule
+    svg, md = tmp_path / "f.svg", tmp_path / "f.md"
+    assert main(["sheet", str(ROOT / "samples" / "fourbar.toml"), "--lang", "en", "-o", str(svg),
+                 "--note", str(md)]) == 0
+    _, texts = _texts(svg.read_text("utf-8"))
+    sheet_mu = _mu_lines(" ".join(t for t in texts if "plan" in t.lower()).replace(".", ","))
+    assert _mu_lines(md.read_text("utf-8").replace(".", ",")) == sheet_mu
+    main(["report", str(ROOT / "samples" / "fourbar.toml")])
+    alone = capsys.readouterr().out
+    assert _mu_lines(alone.replace(".", ",")) != sheet_mu  # the sheet draws larger than 150 mm
