@@ -240,6 +240,12 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
         out += ["", t["muv"].format(mm=n(val / mu), t=tip), ""]
         out.append(Step(f"μv = V_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu), u["mu_v"]).markdown())
     out.append("")
+    # the input link's other points (its centre of mass, a point a guide slides past)
+    sims = [p for p in plan.points.values() if p.source.kind == "similarity"
+            and _belongs(m, p.name, (d.link,))]
+    if sims:
+        out += _similar(sol, plan, sims, lang)
+        out += _values(sol, plan, [p.name for p in sims], lang) + [""]
     vplan = sol.velocity
     for g in m.groups:
         cons = g.acceleration if acc else g.velocity
@@ -277,30 +283,10 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
                                       l1=lines[1].through, r1=lines[1].relation, x=px), ""]
         # similarity points of the group's links, then values
         sims = [p for p in plan.points.values() if p.source.kind == "similarity"
-                and _belongs(m, p.name, g.group)]
-        if sims:
-            out += [t["sim"], ""]
-            for p in sims:
-                s = p.source
-                X = _mech_name(sol, p.name)
-                B0, B1 = _mech_name(sol, s.base), _mech_name(sol, s.other)
-                b0, b1 = _letter(plan, s.base), _letter(plan, s.other)  # a fixed point is the pole
-                if abs(s.ratio.imag) < 1e-12:
-                    l_bx = abs(sol.positions[X] - sol.positions[B0]) / sol.mu_l
-                    l_bb = abs(sol.positions[B1] - sol.positions[B0]) / sol.mu_l
-                    seg = plan.mm(s.base, s.other)
-                    out.append(Step(f"{b0}{p.name} = {b0}{b1}·{B0}{X} / {B0}{B1}",
-                                    f"{n(seg)}·{n(l_bx)} / {n(l_bb)}", n(plan.mm(s.base, p.name)),
-                                    u["mm"]).markdown())
-                else:
-                    out.append(f"- `{s.equation}`: {b0}{p.name} = {n(plan.mm(s.base, p.name))} {u['mm']}")
-            out.append("")
+                and _belongs(m, p.name, (g.group.a, g.group.b))]
+        out += _similar(sol, plan, sims, lang)
         out += [t["avalues" if acc else "values"], ""]
-        names = [px] + [p.name for p in sims]
-        for name in names:
-            mm = plan.mm(pole, name)
-            out.append(Step(f"{sym}_{_mech_name(sol, name)} = {pole}{name}·{mus}", f"{n(mm)}·{n(mu)}",
-                            n(mm * mu), unit).markdown())
+        out += _values(sol, plan, [px] + [p.name for p in sims], lang)
         for r in cons.routes:
             if r.unknown_kind in ("relative", "tangential"):
                 start = r.base and plan_name(r.base)
@@ -344,11 +330,49 @@ def _component_segment(plan, label):
     return None
 
 
-def _belongs(m, plan_point: str, group) -> bool:
+def _belongs(m, plan_point: str, links) -> bool:
     for name, owner in m.point_link.items():
         if plan_name(name) == plan_point:
-            return owner in (group.a, group.b)
+            return owner in links
     return False
+
+
+def _similar(sol: Solution, plan, sims, lang: str) -> list[str]:
+    """The similarity theorem's steps for the plan points ``sims``: a point on the line
+    of two known ones by the ratio of lengths, any other by its similar triangle."""
+    if not sims:
+        return []
+    t, u = T[lang], UNITS[lang]
+    out = [t["sim"], ""]
+    for p in sims:
+        s = p.source
+        X = _mech_name(sol, p.name)
+        B0, B1 = _mech_name(sol, s.base), _mech_name(sol, s.other)
+        b0, b1 = _letter(plan, s.base), _letter(plan, s.other)  # a fixed point is the pole
+        mm = num(plan.mm(s.base, p.name), 4, lang)
+        if abs(s.ratio.imag) < 1e-12:
+            l_bx = abs(sol.positions[X] - sol.positions[B0]) / sol.mu_l
+            l_bb = abs(sol.positions[B1] - sol.positions[B0]) / sol.mu_l
+            sub = "·".join(num(v, 4, lang) for v in (plan.mm(s.base, s.other), l_bx)) + f" / {num(l_bb, 4, lang)}"
+            out.append(Step(f"{b0}{p.name} = {b0}{b1}·{B0}{X} / {B0}{B1}", sub, mm, u["mm"]).markdown())
+        else:
+            out.append(f"- `{s.equation}`: {b0}{p.name} = {mm} {u['mm']}")
+    return out + [""]
+
+
+def _values(sol: Solution, plan, names, lang: str) -> list[str]:
+    """V_X = pX·μv (a_X = πX·μa) for the plan points ``names``."""
+    u = UNITS[lang]
+    acc = plan.kind == "acceleration"
+    sym, mus, pole = ("a" if acc else "V"), ("μa" if acc else "μv"), plan.pole
+    unit = u["m/s²"] if acc else u["m/s"]
+    out = []
+    for name in names:
+        mm = plan.mm(pole, name)
+        out.append(Step(f"{sym}_{_mech_name(sol, name)} = {pole}{name}·{mus}",
+                        f"{num(mm, 4, lang)}·{num(plan.mu, 4, lang)}", num(mm * plan.mu, 4, lang),
+                        unit).markdown())
+    return out
 
 
 def _mech_name(sol: Solution, plan_point: str) -> str:

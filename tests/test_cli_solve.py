@@ -183,3 +183,24 @@ def test_a_point_on_another_point_gets_no_segment_of_zero_length(capsys):
     """The slider's centre of mass S3 is at C: 'CS3 = 0 / 0,002 = 0 мм' said nothing."""
     code, out, _ = run(capsys, "report", "--variant", "0", "--lang", "ru")
     assert code == 0 and "CS3" not in out and "= 0 мм" not in out
+
+
+def test_the_note_finds_every_point_of_the_input_link_it_uses(capsys, tmp_path):
+    """The tangent mechanism's line through c1 and the four-bar's centre of mass S1 were
+    used or listed but never found in the note. Now the similarity theorem finds them on
+    the input link: V_S1 = ω1·l_AS1 exactly, a_S1 = ω1²·l_AS1 (ω1 constant)."""
+    import math
+
+    from plans.scenes import SCENES
+
+    code, out, _ = run(capsys, "report", "samples/fourbar.toml", "--lang", "ru")
+    w1 = 149.2 * math.pi / 30
+    v, a = w1 * 0.03125, w1 * w1 * 0.03125
+    assert f"- `V_S1 = ps1·μv = 24,41·0,02 = {v:.4f} м/с`".replace(".", ",") in out
+    assert "a_S1 = πs1·μa = " in out and f"= {a:.3f} м/с²`".replace(".", ",") in out
+    path = tmp_path / "tangent.toml"
+    path.write_text(SCENES["tangent"].toml, "utf-8")
+    code, out, _ = run(capsys, "report", path, "--lang", "ru")
+    velocity = out.split("## 3.")[1].split("## 4.")[0]
+    assert velocity.index("- `pc1 = pa·OC1 / OA = ") < velocity.index("Через точку c1")
+    assert "- `V_C1 = pc1·μv = " in velocity
