@@ -51,6 +51,11 @@ T = {
         "eps": "Angular acceleration of link {i}:",
         "fixed": "fixed point: at the pole",
         "warn": "Warning",
+        "translates": "Link {i} translates (ω{i} = 0): all its points have one {what}, {eq}:",
+        "vel": "velocity", "acc": "acceleration",
+        "nocor": "no Coriolis term: the guide's link {k} translates (ω{k} = 0)",
+        "same_w": "ω{i} = ω{k}: link {i} slides along a guide of link {k}, so it turns with it",
+        "xk": "{x}: the axis of the guide (slot) on link {k}",
     },
     "ru": {
         "title": "Кинематический анализ",
@@ -87,6 +92,11 @@ T = {
         "eps": "Угловое ускорение звена {i}:",
         "fixed": "неподвижная точка: в полюсе",
         "warn": "Предупреждение",
+        "translates": "Звено {i} движется поступательно (ω{i} = 0): {what} всех его точек равны, {eq}:",
+        "vel": "скорости", "acc": "ускорения",
+        "nocor": "ускорение Кориолиса равно нулю: звено {k}, несущее направляющую, движется поступательно (ω{k} = 0)",
+        "same_w": "ω{i} = ω{k}: звено {i} движется по направляющей звена {k} и поворачивается вместе с ним",
+        "xk": "{x} — ось направляющей (паза) на звене {k}",
     },
 }
 
@@ -253,6 +263,13 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
         px = plan_name(x)
         pt = plan.points[px]
         out += [t["eqs"].format(x=x), "", f"- `{cons.equation}`"]
+        for sl in (g.group.s1, g.group.s2):  # a guide named x3-x3 by the tool: say what it is
+            if sl is not None and sl.guide.label == f"x{sl.guide.link}-x{sl.guide.link}":
+                out.append(f"- {t['xk'].format(x=sl.guide.label, k=sl.guide.link)}")
+        if acc:  # a block on a guide whose link translates: no Coriolis term, and why
+            for sl in (g.group.s1, g.group.s2):
+                if sl is not None and sl.guide.link and sl.guide.link in sol.solver.translating:
+                    out.append(f"- {t['nocor'].format(k=sl.guide.link)}")
         for r in cons.routes:
             parts = []
             if r.base is not None and r.base in mech.frame:
@@ -269,6 +286,10 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
                     owner = m.point_link.get(a_) if a_ in m.coincident else m.point_link.get(b_)
                     w = abs(sol.omega[owner])
                     out.append(f"- {t['coriolis'].format(x=a_, y=b_, i=owner)}")
+                    carrier = next((sl.guide.link for sl in mech.sliders if sl.link == owner
+                                    and sl.guide.link not in (0, owner)), None)
+                    if carrier is not None:  # ω of a link that slides on a turning one
+                        out.append(f"  {t['same_w'].format(i=owner, k=carrier)}")
                     out.append("  " + Step(f"{term.label} = 2·ω{owner}·V_{a_}{b_}",
                                            f"2·{n(w)}·{n(rel)}", n(2 * w * rel), unit).markdown()[2:])
                 seg = _component_segment(plan, term.label)
@@ -281,12 +302,26 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
         lines = pt.source.lines
         out += ["", t["build"].format(l0=lines[0].through, r0=lines[0].relation,
                                       l1=lines[1].through, r1=lines[1].relation, x=px), ""]
-        # similarity points of the group's links, then values
+        # similarity points of the group's links, then values; a link that translates
+        # has one velocity and one acceleration for all its points
+        moving = tuple(k for k in (g.group.a, g.group.b) if k not in sol.solver.translating)
         sims = [p for p in plan.points.values() if p.source.kind == "similarity"
-                and _belongs(m, p.name, (g.group.a, g.group.b))]
+                and _belongs(m, p.name, moving)]
         out += _similar(sol, plan, sims, lang)
         out += [t["avalues" if acc else "values"], ""]
         out += _values(sol, plan, [px] + [p.name for p in sims], lang)
+        for k in (g.group.a, g.group.b):
+            if k in moving:
+                continue
+            same = [nm for nm in (plan_name(q) for q, o in m.point_link.items() if o == k)
+                    if nm in plan.points and nm != px and plan.points[nm].source.kind != "pole"]
+            if same:
+                names = [_mech_name(sol, nm) for nm in same]
+                if m.point_link.get(x) == k:  # the group's own point is one of them
+                    names.append(x)
+                eq = " = ".join(f"{sym}_{q}" for q in names)
+                out += ["", t["translates"].format(i=k, eq=eq, what=t["acc" if acc else "vel"]), ""]
+                out += _values(sol, plan, same, lang)
         for r in cons.routes:
             if r.unknown_kind in ("relative", "tangential"):
                 start = r.base and plan_name(r.base)

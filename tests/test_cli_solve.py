@@ -6,6 +6,8 @@ import re
 import pytest
 from support import run
 
+from plans.fmt import num
+
 
 @pytest.mark.parametrize("n", range(10))
 def test_solve_variant_json_shape(capsys, n):
@@ -204,3 +206,40 @@ def test_the_note_finds_every_point_of_the_input_link_it_uses(capsys, tmp_path):
     velocity = out.split("## 3.")[1].split("## 4.")[0]
     assert velocity.index("- `pc1 = pa·OC1 / OA = ") < velocity.index("Через точку c1")
     assert "- `V_C1 = pc1·μv = " in velocity
+
+
+@pytest.mark.parametrize("lang", ["ru", "en"])
+def test_the_note_explains_translating_links_sliding_links_and_its_own_guide_names(capsys, tmp_path, lang):
+    """A Scotch yoke's link 3 translates: one velocity for all its points (the output D
+    was never given, and a degenerate 'triangle a3de' stood for it), and no Coriolis term,
+    with the reason. A link sliding on a turning one turns with it (ω5 = ω3 was used,
+    never said). A guide the tool names x3-x3 is said to be link 3's slot."""
+    from plans.plan import solve_position
+    from plans.scenes import SCENES
+
+    def note_of(name):
+        path = tmp_path / f"{name}.toml"
+        path.write_text(SCENES[name].toml, "utf-8")
+        code, out, _ = run(capsys, "report", path, "--lang", lang)
+        assert code == 0
+        return out
+
+    out = note_of("scotch_yoke")
+    sol = solve_position(SCENES["scotch_yoke"].mechanism())
+    v_d = abs(sol.velocity.value("d"))
+    assert v_d == pytest.approx(abs(sol.velocity.value("a3")), rel=1e-12)  # one velocity
+    assert "△a3de" not in out
+    if lang == "ru":
+        assert "Звено 3 движется поступательно (ω3 = 0): скорости всех его точек равны, V_D = V_E = V_S3 = V_A3:" in out
+        assert "- ускорение Кориолиса равно нулю: звено 3, несущее направляющую, движется поступательно (ω3 = 0)" in out
+        assert f"- `V_D = pd·μv = 28,68·0,02 = {num(v_d, 4, 'ru')} м/с`" in out
+    else:
+        assert "Link 3 translates (ω3 = 0): all its points have one velocity, V_D = V_E = V_S3 = V_A3:" in out
+        assert "- no Coriolis term: the guide's link 3 translates (ω3 = 0)" in out
+    out = note_of("yoke_on_rocker")
+    said = ("ω5 = ω3: звено 5 движется по направляющей звена 3" if lang == "ru"
+            else "ω5 = ω3: link 5 slides along a guide of link 3")
+    assert said in out and out.index(said) < out.index("2·ω5·V_A5A")
+    out = note_of("yoke_inclined")
+    assert ("x3-x3 — ось направляющей (паза) на звене 3" if lang == "ru"
+            else "x3-x3: the axis of the guide (slot) on link 3") in out
