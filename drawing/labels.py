@@ -330,6 +330,11 @@ def _directions(prefer: str) -> list[str]:
     return [_COMPASS[(i + k) % 8] for k in order]
 
 
+#: mm an optional label (a position's number) keeps clear of the labels placed before it,
+#: so that "11" and "O" do not read as "11O"
+GAP = 1.0
+
+
 def place_labels(
     requests: Sequence[LabelRequest],
     obstacles: Sequence[BaseGeometry] = (),
@@ -348,10 +353,12 @@ def place_labels(
     (if given) and meets no obstacle, no box in ``taken`` and no label placed
     before it wins.  ``soft`` obstacles (thin lines: other positions, trajectories)
     are avoided too, but a letter within ``near`` mm of its point that crosses only
-    soft lines (at most ``max_soft`` of them, the fewest) beats a clear one further
-    away: a letter far from its point is read as another point's.  If none is free, the candidate with the least overlap area
-    is taken and reported with ``clear=False`` (an ``optional`` one is then meant to be
-    left out, and later labels may take its place).
+    soft lines (at most ``max_soft`` of them, any number for a ``blank`` one, the fewest)
+    beats a clear one further away: a letter far from its point is read as another
+    point's.  An ``optional`` label keeps :data:`GAP` mm from the labels before it.  If
+    none is free, the candidate with the least overlap area is taken and reported with
+    ``clear=False`` (an ``optional`` one is then meant to be left out, and later labels
+    may take its place).
 
     Args:
         obstacles: drawn geometry to avoid, already widened; see
@@ -380,8 +387,10 @@ def place_labels(
                     box = text_box(text)
                     hits = [] if hard_tree is None else [
                         hard[i] for i in hard_tree.query(box, predicate="intersects")]
-                    if placed:
-                        mask = shapely.intersects(box, np.asarray(placed, dtype=object))
+                    if placed:  # a position's number keeps its distance from the letters
+                        near_box = box if not req.optional else shapely.box(
+                            *(a + d for a, d in zip(box.bounds, (-GAP, -GAP, GAP, GAP), strict=True)))
+                        mask = shapely.intersects(near_box, np.asarray(placed, dtype=object))
                         hits += [p for p, m in zip(placed, mask, strict=True) if m]
                     outside = 0.0 if region is None else box.difference(region).area
                     if hits or outside > 1e-9:
@@ -396,7 +405,8 @@ def place_labels(
                     if n_soft == 0:
                         chosen = (text, box)
                         break
-                    if n_soft <= max_soft and (relaxed is None or n_soft < relaxed[0]):
+                    # a letter on a break in the thin lines may cross any number of them
+                    if (n_soft <= max_soft or req.blank) and (relaxed is None or n_soft < relaxed[0]):
                         relaxed = (n_soft, text, box)
                 if chosen:
                     break

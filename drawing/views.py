@@ -27,6 +27,7 @@ from drawing.labels import (
     obstacles_of,
     place_labels,
     text_box,
+    text_width,
 )
 from drawing.scene import (
     Arrow,
@@ -514,7 +515,8 @@ def positions_view(sol, cycle, lang: str = "ru") -> View:
         items.append(Circle(_sheet(pos[n], mu_l), JOINT_R, LineType.MAIN, fill="white"))
     for n in mech.point_names():
         if n in pos:
-            labels.insert(0, LabelRequest(_sheet(pos[n], mu_l), _markup(n), LETTER, "nw"))
+            # close to its point even among the other positions' lines, which break for it
+            labels.insert(0, LabelRequest(_sheet(pos[n], mu_l), _markup(n), LETTER, "nw", blank=True))
     # stroke H of a linear output
     out = cycle.output
     w = WORDS[lang]
@@ -526,8 +528,14 @@ def positions_view(sol, cycle, lang: str = "ru") -> View:
         items += [Segment(p1, (p1[0], dy + 2), LineType.THIN), Segment(p2, (p2[0], dy + 2), LineType.THIN)]
         items += [Arrow((p1[0] + (p2[0] - p1[0]) / 2, dy), (p1[0], dy), LineType.THIN, 3.0, 1.0),
                   Arrow((p1[0] + (p2[0] - p1[0]) / 2, dy), (p2[0], dy), LineType.THIN, 3.0, 1.0)]
-        items.append(Text(((p1[0] + p2[0]) / 2, dy - 1.0), f"H = {num(cycle.stroke, 4, lang)} {w['m']}",
-                          size=3.5, anchor="middle"))
+        value = f"H = {num(cycle.stroke, 4, lang)} {w['m']}"
+        right = max(p1[0], p2[0])
+        if text_width(value, 3.5) + 2.0 <= abs(p2[0] - p1[0]):
+            items.append(Text(((p1[0] + p2[0]) / 2, dy - 1.0), value, size=3.5, anchor="middle"))
+        else:  # no room between the extension lines: on a shelf beyond the right one (GOST 2.307)
+            width = text_width(value, 3.5)
+            items.append(Segment((right, dy), (right + width + 3.0, dy), LineType.THIN))
+            items.append(Text((right + 1.5, dy - 1.0), value, size=3.5))
     # swing ψ of a rocker: an arc between its two extreme positions, about its pivot
     if out is not None and cycle.stroke and out.kind == "angular" and ends:
         arm = _rocker_arm(mech, out)
