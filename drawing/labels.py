@@ -330,8 +330,8 @@ def _directions(prefer: str) -> list[str]:
     return [_COMPASS[(i + k) % 8] for k in order]
 
 
-#: mm an optional label (a position's number) keeps clear of the labels placed before it,
-#: so that "11" and "O" do not read as "11O"
+#: mm a label keeps clear of the labels of other points placed before it, so that "11"
+#: and "O" do not read as "11O", nor "g₁" and "g₃" as "g₁g₃"
 GAP = 1.0
 
 
@@ -355,7 +355,7 @@ def place_labels(
     are avoided too, but a letter within ``near`` mm of its point that crosses only
     soft lines (at most ``max_soft`` of them, any number for a ``blank`` one, the fewest)
     beats a clear one further away: a letter far from its point is read as another
-    point's.  An ``optional`` label keeps :data:`GAP` mm from the labels before it.  If
+    point's.  A label keeps :data:`GAP` mm from the labels of other points.  If
     none is free, the candidate with the least overlap area is taken and reported with
     ``clear=False`` (an ``optional`` one is then meant to be left out, and later labels
     may take its place).
@@ -372,6 +372,7 @@ def place_labels(
     close = [d for d in distances if d <= near] or list(distances[:1])
     rings = [close, [d for d in distances if d not in close]] if soft else [list(distances)]
     placed: list[Polygon] = []
+    placed_at: list[Point] = []  # the anchor of each box placed
     out: list[Placement] = []
     for req in requests:
         chosen: tuple[Text, Polygon] | None = None
@@ -387,10 +388,12 @@ def place_labels(
                     box = text_box(text)
                     hits = [] if hard_tree is None else [
                         hard[i] for i in hard_tree.query(box, predicate="intersects")]
-                    if placed:  # a position's number keeps its distance from the letters
-                        near_box = box if not req.optional else shapely.box(
+                    if placed:  # a label keeps GAP from the labels of other points
+                        near_box = shapely.box(
                             *(a + d for a, d in zip(box.bounds, (-GAP, -GAP, GAP, GAP), strict=True)))
                         mask = shapely.intersects(near_box, np.asarray(placed, dtype=object))
+                        mask &= shapely.intersects(box, np.asarray(placed, dtype=object)) | (
+                            np.asarray([a != req.anchor for a in placed_at], dtype=bool))
                         hits += [p for p, m in zip(placed, mask, strict=True) if m]
                     outside = 0.0 if region is None else box.difference(region).area
                     if hits or outside > 1e-9:
@@ -423,6 +426,7 @@ def place_labels(
             clear = False
         if clear or not req.optional:  # an optional label left out takes no room
             placed.append(box)
+            placed_at.append(req.anchor)
         out.append(Placement(text, box, clear=clear))
     return out
 

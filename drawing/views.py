@@ -61,6 +61,9 @@ CAPTION = 5.0  # caption size, mm
 LETTER = 3.5  # letters of points, mm
 JOINT_R = 1.0
 BLANK_PAD = 0.5  # the break in thin lines around a dimension's value, mm
+#: mm: plan points closer than this share one label ("g₁,g₃"); two labels side by side
+#: would read as one word ("g₁g₃")
+SHARED = 2.0
 HEAD = dict(head_len=3.5, head_width=1.0)
 
 WORDS = {
@@ -281,7 +284,7 @@ def plan_view(sol, kind: str, tag: str, lang: str = "ru", label: str | None = No
     for name in [plan.pole, *[n for n in plan.points if n != plan.pole]]:
         xy = pts[name]
         for g in groups:
-            if math.dist(g[0], xy) < 0.8:
+            if math.dist(g[0], xy) < SHARED:
                 g[1].append(name)
                 break
         else:
