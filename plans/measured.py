@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from .errors import PlansError
+from .errors import InputError, PlansError
 from .fileformat import Problems, check_keys, key_text, quote, read_number, read_toml
 from .mechanism import Mechanism
 from .plan import Plan, Solution, plan_name, solve_position
@@ -249,8 +249,11 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
         if angle is not None:
             m = m.at_file_angle(angle)
         sol = solve_position(m, mu=dict(mu))
-    except PlansError:
+    except PlansError as exc:
         problems.raise_if_any()  # these first; the mechanism's own problems once they are fixed
+        if angle is not None and not isinstance(exc, InputError):  # the file's own angle
+            problems.add("angle_deg", f"{angle:g}°: {exc}")
+            problems.raise_if_any()
         raise
     names = _Names(sol)
     items: list[Item] = []
@@ -262,11 +265,18 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
         item = names.value(f"values.{key}", f"values.{key_text(key)}", key, value, problems)
         if item is not None:
             items.append(item)
+    first: dict[tuple, Item] = {}
+    for it in items:  # one thing measured twice with two values ([segments] and [segments.velocity])
+        same = (it.kind, it.plan, *sorted((it.start, it.end)), it.link)
+        was = first.setdefault(same, it)
+        if was is not it and (was.measured, was.sense) != (it.measured, it.sense):
+            problems.add(it.key, f"measures what {was.key} does, as {it.measured:g} against "
+                         f"{was.measured:g}: give each once")
     need = {it.plan for it in items if it.kind in ("segment", "value")}
     need |= {"velocity" for it in items if it.kind == "omega"}
     need |= {"acceleration" for it in items if it.kind == "epsilon"}
     for plan in PLANS:
-        if plan in need and MU_KEY[plan] not in mu:
+        if plan in need and MU_KEY[plan] not in scales:  # given but bad: said above
             what = {"positions": "the plan of positions", "velocity": "the velocity plan",
                     "acceleration": "the acceleration plan"}[plan]
             problems.add(f"scales.{MU_KEY[plan]}", f"missing: the scale factor the student "
@@ -326,7 +336,7 @@ class _Names:
             if len({c[0] for c in rec}) == 1:
                 cands = rec
         if not cands:
-            problems.add(where, f"unknown segment \"{name}\"; known: {self.known()} "
+            problems.add(where, f"unknown segment \"{name}\"{_cyrillic(name)}; known: {self.known()} "
                             "(or any two points of one plan; write π as pi)")
             return None
         if len(cands) > 1:
@@ -400,6 +410,17 @@ class _Names:
         return None
 
 
+#: Cyrillic letters that look like Latin ones on a plan (р as p, а as a …)
+_LOOKALIKES = dict(zip("аеорсхукАВЕКМНОРСТХ", "aeopcxykABEKMHOPCTX", strict=True))
+
+
+def _cyrillic(name: str) -> str:
+    """', with the Cyrillic letters р, а: type them in Latin' where ``name`` has some."""
+    found = [c for c in dict.fromkeys(name) if c in _LOOKALIKES]
+    return f", with the Cyrillic letter{'s' if len(found) > 1 else ''} {', '.join(found)}: type " \
+           f"{'them' if len(found) > 1 else 'it'} in Latin" if found else ""
+
+
 def _magnitude_sense(value, key, problems, *, allow_sense):
     sense = 0
     if isinstance(value, str) and allow_sense:
@@ -415,6 +436,8 @@ def _magnitude_sense(value, key, problems, *, allow_sense):
             return None, 0
         sense = SENSE_WORDS.get(word, 0)
         value = mag
+    elif allow_sense and isinstance(value, int | float) and not isinstance(value, bool) and value < 0:
+        sense, value = -1, -value  # ω3 = -4.82: clockwise, as the engine signs it
     x = _num(value, key, problems, nonneg=True)
     if x is None:
         return None, 0

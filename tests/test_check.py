@@ -636,3 +636,44 @@ def test_measurement_problems_are_located_and_hinted_like_a_mechanism_files(tmp_
         f'plans check: {path}: line 8: segments.pb3: must be a number, got "55": '
         "write 55 without quotes",
     ]
+
+
+@pytest.mark.parametrize(("text", "expect"), [
+    # a bad scale is one problem, not also "missing"
+    ('mechanism = "M"\n[scales]\nmu_v = 0\n[segments]\npa = 60\n', ["scales.mu_v: must be positive"]),
+    # one segment twice, under two tables
+    ('mechanism = "M"\n[scales]\nmu_v = 0.05\n[segments]\npa3 = 55\n[segments.velocity]\npa3 = 1\n',
+     ["segments.velocity.pa3: measures what segments.pa3 does, as 1 against 55: give each once"]),
+    # Cyrillic р and а that look like Latin p and a
+    ('mechanism = "M"\n[scales]\nmu_v = 0.05\n[segments]\n"ра3" = 55\n',
+     ['segments."ра3": unknown segment "ра3", with the Cyrillic letters р, а: type them in Latin']),
+])
+def test_measurement_mistakes_are_named_once_and_plainly(tmp_path, capsys, text, expect):
+    path = tmp_path / "bad.toml"
+    path.write_text(text.replace('"M"', json.dumps(str(PRESS))), encoding="utf-8")
+    code, out, err = run(capsys, "check", path)
+    lines = err.strip().splitlines()
+    assert code == 2 and out == "" and len(lines) == len(expect), err
+    for line, want in zip(lines, expect, strict=True):
+        assert line.startswith(f"plans check: {path}: ") and want in line, line
+
+
+def test_a_negative_omega_is_clockwise(tmp_path, press):
+    """omega3 = -4.82: the student means clockwise, as the engine signs ω."""
+    path = tmp_path / "w.toml"
+    path.write_text(f'mechanism = {json.dumps(str(PRESS))}\n[scales]\nmu_v = 0.05\n'
+                    "[segments]\npa = 60\n[values]\nomega3 = -4.82\n", encoding="utf-8")
+    (item,) = [it for it in ck.load(path).items if it.kind == "omega"]
+    assert (item.measured, item.sense) == (4.82, -1)
+
+
+def test_an_angle_where_the_mechanism_does_not_close_is_the_measurement_files(tmp_path, capsys):
+    """Seed 001's four-bar at 180°: the measurement file's angle_deg is at fault, not the
+    mechanism file."""
+    path = tmp_path / "a.toml"
+    path.write_text(f'mechanism = {json.dumps(str(FOURBAR))}\nangle_deg = 180\n[scales]\n'
+                    "mu_v = 0.02\n[segments]\npb = 1\n", encoding="utf-8")
+    code, _, err = run(capsys, "check", path)
+    (line,) = err.strip().splitlines()
+    assert code == 2 and line.startswith(f"plans check: {path}: line 2: angle_deg: 180°: group 2–3 (RRR) "
+                                         "cannot be assembled at φ1 = 180°")
