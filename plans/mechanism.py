@@ -523,7 +523,7 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
 
     pr.raise_if_any()
     assert driver is not None
-    return Mechanism(
+    mech = Mechanism(
         name=name,
         frame=frame,
         links=links,
@@ -537,6 +537,16 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
         source=source,
         names=names,
     )
+    if output is not None:  # a point with no stroke was silently replaced by another
+        from .cycle import find_output, output_of
+
+        if output_of(mech, output) is None:
+            other = find_output(replace(mech, output=None))
+            pr.add("output", f"{quote(output)} has no stroke or swing: the output is the point of a "
+                   "slider on a fixed guide, or a point of a link hinged to the frame other than "
+                   "the crank" + (f', e.g. "{other.point}"' if other else ""))
+            pr.raise_if_any()
+    return mech
 
 
 def _link(lid: int, lname: str, body: dict, where: str, pr: Problems, named: set[str],

@@ -338,7 +338,6 @@ guide = { link = 0, through = [0.0, -0.05], angle_deg = 20 }
 # yoke's 60° slot; Coriolis terms in both routes of the RPP group ----------------------
 YOKE_ON_ROCKER = """
 name = "Yoke sliding on a slotted link"
-output = "D"
 [frame]
 O = [0.0, 0.0]
 B = [0.0, -0.44]
@@ -378,7 +377,6 @@ guide = { link = 3, offset = 0.1, angle_deg = 15 }
 # guides turn parallel near φ = 200° and 340°: the range is 0°…180° -----------------------
 PRP_TWO_MOVING = """
 name = "Cross-slide on the crank and the slotted link"
-output = "G"
 [frame]
 O = [0.0, 0.0]
 B = [0.0, -0.3]

@@ -546,3 +546,19 @@ def test_near_a_dead_point_every_command_warns_in_its_language(capsys, tmp_path)
     assert code == 0 and len(err.splitlines()) == 1
     assert err.startswith(f"plans sheet: warning: {fourbar}: group 2–3 (RRR) at φ1 = 128.805°: "
                           "near-singular, the lines ⊥ CB and ⊥ CD meet at 0.0")
+
+
+@pytest.mark.parametrize("point", ["O", "A", "C"])
+def test_an_output_with_no_stroke_is_refused_not_replaced(capsys, tmp_path, point):
+    """The press's output set to the fixed pivot O or the crank pin A has no stroke: solve,
+    report, cycle and the sheet silently used D instead. The rocker's end C is a fine
+    output (its swing)."""
+    text = PRESS.read_text("utf-8").replace('output = "D"', f'output = "{point}"')
+    path = tmp_path / "p.toml"
+    path.write_text(text, "utf-8")
+    code, out, err = run(capsys, "solve", path)
+    if point == "C":  # C is a point of the rocker 3, hinged to the frame at B: its swing
+        assert code == 0 and "swing of link 3" in out
+        return
+    (line,) = assert_clean_failure(err)
+    assert code == 2 and f'output: "{point}" has no stroke or swing' in line and 'e.g. "D"' in line
