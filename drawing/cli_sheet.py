@@ -292,6 +292,9 @@ def _batch(args) -> int:
     out = Path(args.output)
     if out.exists() and not out.is_dir():
         raise InputError("-o", f"{args.output} is not a folder")
+    if not out.exists() and out.suffix and not args.output.endswith(("/", "\\")):
+        raise InputError("-o", f"{args.output} looks like a file name: with --variant all give a "
+                         "folder, e.g. -o sheets/")
     out.mkdir(parents=True, exist_ok=True)
     numbers = list(variant_numbers(args.table))
     tty = sys.stderr.isatty()
@@ -309,11 +312,14 @@ def _batch(args) -> int:
             mech = mechanism_from(a)
             _write(render(mech, a), a)
         except (PlansError, ValueError, ArithmeticError) as exc:
-            failed.append((n, str(exc)))
+            source = getattr(exc, "source", "")  # an input error names its source itself
+            failed.append((n, str(exc) if isinstance(exc, InputError) or not source
+                           else f"{source}: {exc}"))
     if tty:
         print(file=sys.stderr)
-    for n, msg in failed:
-        print(f"variant {n}: {msg}", file=sys.stderr)
+    for _, msg in failed:
+        for line in msg.splitlines():
+            print(f"plans sheet: {line}", file=sys.stderr)
     if failed:
         print(f"{len(failed)} of {len(numbers)} sheets failed", file=sys.stderr)
         return EXIT_INPUT

@@ -210,6 +210,13 @@ def main(argv: list[str] | None = None) -> int:
         return 130
     except BrokenPipeError:
         return EXIT_OK
+    except OSError as exc:  # stdout on a full disk or a dead device: bad output, not a bug
+        import errno
+
+        if exc.errno not in (errno.ENOSPC, errno.EIO, errno.EDQUOT, errno.EROFS):
+            raise
+        print(f"plans {args.command}: cannot write the output: {exc.strerror}", file=sys.stderr)
+        return EXIT_INPUT
     except Exception as exc:  # an internal error: short message, traceback on --debug
         if args.debug:
             raise

@@ -11,6 +11,7 @@ file of a hand-drawn plan are all read with these.
 from __future__ import annotations
 
 import ast
+import datetime
 import difflib
 import json
 import math
@@ -142,6 +143,10 @@ def quote(value: Any, limit: int = 40) -> str:
         return f"a list of {len(value)}"
     if isinstance(value, int) and not isinstance(value, bool) and abs(value) > 10**15:
         return f"{'-' if value < 0 else ''}an integer of {len(str(abs(value))) if abs(value) < 10**4000 else 'thousands of'} digits"
+    if isinstance(value, bool):
+        return "true" if value else "false"  # as the file spells it
+    if isinstance(value, datetime.date | datetime.time):
+        return f"the date or time {value.isoformat()}"  # 1979-05-27, not datetime.date(…)
     return one_line(repr(value), limit)
 
 

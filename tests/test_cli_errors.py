@@ -562,3 +562,27 @@ def test_an_output_with_no_stroke_is_refused_not_replaced(capsys, tmp_path, poin
         return
     (line,) = assert_clean_failure(err)
     assert code == 2 and f'output: "{point}" has no stroke or swing' in line and 'e.g. "D"' in line
+
+
+def test_batch_output_that_looks_like_a_file_is_refused(capsys, tmp_path):
+    code, _, err = run(capsys, "sheet", "--variant", "all", "-o", tmp_path / "b.svg")
+    assert code == 2 and not (tmp_path / "b.svg").exists()
+    assert err == f"plans sheet: -o: {tmp_path / 'b.svg'} looks like a file name: with --variant all give a folder, e.g. -o sheets/\n"
+
+
+def test_a_date_in_place_of_a_number_is_quoted_as_the_file_wrote_it(capsys, tmp_path):
+    path = tmp_path / "d.toml"
+    path.write_text(PRESS.read_text("utf-8").replace("angle_deg = 30 ", "angle_deg = 1979-05-27 "), "utf-8")
+    code, _, err = run(capsys, "solve", path)
+    (line,) = assert_clean_failure(err)
+    assert code == 2 and "the date or time 1979-05-27" in line and "datetime" not in line
+
+
+@pytest.mark.skipif(not Path("/dev/full").exists(), reason="needs /dev/full (Linux)")
+def test_stdout_on_a_full_disk_is_bad_output_not_a_crash():
+    with open("/dev/full", "w") as full:
+        r = subprocess.run([sys.executable, "-m", "plans", "solve", str(PRESS)], cwd=ROOT,
+                           env={**os.environ, "PYTHONPATH": str(ROOT)}, stdout=full,
+                           stderr=subprocess.PIPE, text=True)
+    assert r.returncode == 2
+    assert r.stderr == "plans solve: cannot write the output: No space left on device\n"
