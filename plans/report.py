@@ -157,7 +157,7 @@ def note(sol: Solution, lang: str = "en", cycle=None,
     for k, v in sol.lengths.items():
         if k == d.pivot + d.tip or v == 0:  # the crank is above; a point on another: no segment
             continue
-        out.append(Step(f"{k} = l_{k} / μl", f"{n(v)} / {n(mu_l)}", n(v / mu_l), u["mm"]).markdown())
+        out.append(Step(f"{k} = l_{k} / μl", f"{n(v, 5)} / {n(mu_l)}", n(v / mu_l), u["mm"]).markdown())
     if cycle is not None:
         out.append("")
         if not cycle.full_turn:
@@ -167,7 +167,7 @@ def note(sol: Solution, lang: str = "en", cycle=None,
                 out.append(t["stroke"].format(p=cycle.output.point))
                 out.append("")
                 p = cycle.output.point  # H on the drawing: from one extreme position to the other
-                out.append(Step(f"H = {p}′{p}″·μl", f"{n(cycle.stroke / mu_l)}·{n(mu_l)}", n(cycle.stroke),
+                out.append(Step(f"H = {p}′{p}″·μl", f"{n(cycle.stroke / mu_l, 5)}·{n(mu_l)}", n(cycle.stroke),
                                 u["m"]).markdown())
             else:
                 out.append(t["swing"].format(l=cycle.output.link))
@@ -239,14 +239,14 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
     val = abs(plan.value(tip))
     if acc:
         out += [t["aa"].format(t=d.tip, p=d.pivot), ""]
-        out.append(Step(f"a_{d.tip} = ω1²·l_{d.pivot}{d.tip}", f"{n(w1)}²·{n(d.length)}", n(val), unit).markdown())
+        out.append(Step(f"a_{d.tip} = ω1²·l_{d.pivot}{d.tip}", f"{n(w1, 5)}²·{n(d.length, 5)}", n(val), unit).markdown())
         out += ["", t["mua"].format(mm=n(val / mu), t=tip), ""]
         out.append(Step(f"μa = a_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu), u["mu_a"]).markdown())
     else:
         out += [t["va"].format(t=d.tip, p=d.pivot), ""]
         if d.rpm:
             out.append(Step("ω1 = π·n1 / 30", f"{n(math.pi, 5)}·{n(d.rpm)} / 30", n(w1), u["rad/s"]).markdown())
-        out.append(Step(f"V_{d.tip} = ω1·l_{d.pivot}{d.tip}", f"{n(w1)}·{n(d.length)}", n(val), unit).markdown())
+        out.append(Step(f"V_{d.tip} = ω1·l_{d.pivot}{d.tip}", f"{n(w1, 5)}·{n(d.length, 5)}", n(val), unit).markdown())
         out += ["", t["muv"].format(mm=n(val / mu), t=tip), ""]
         out.append(Step(f"μv = V_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu), u["mu_v"]).markdown())
     out.append("")
@@ -281,7 +281,7 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
                     l = abs(sol.positions[a_] - sol.positions[b_])
                     out.append(f"- {t['normal'].format(x=a_, y=b_)}")
                     out.append("  " + Step(f"{term.label} = V_{a_}{b_}² / l_{a_}{b_}",
-                                           f"{n(rel)}² / {n(l)}", n(rel**2 / l), unit).markdown()[2:])
+                                           f"{n(rel, 5)}² / {n(l, 5)}", n(rel**2 / l), unit).markdown()[2:])
                 else:
                     owner = m.point_link.get(a_) if a_ in m.coincident else m.point_link.get(b_)
                     w = abs(sol.omega[owner])
@@ -291,12 +291,12 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
                     if carrier is not None:  # ω of a link that slides on a turning one
                         out.append(f"  {t['same_w'].format(i=owner, k=carrier)}")
                     out.append("  " + Step(f"{term.label} = 2·ω{owner}·V_{a_}{b_}",
-                                           f"2·{n(w)}·{n(rel)}", n(2 * w * rel), unit).markdown()[2:])
+                                           f"2·{n(w, 5)}·{n(rel, 5)}", n(2 * w * rel), unit).markdown()[2:])
                 seg = _component_segment(plan, term.label)
                 if seg:
                     s0, s1 = seg
                     mm = plan.mm(s0, s1)
-                    out.append("  " + Step(f"{s0}{s1} = {term.label} / {mus}", f"{n(mm * mu)} / {n(mu)}",
+                    out.append("  " + Step(f"{s0}{s1} = {term.label} / {mus}", f"{n(mm * mu, 5)} / {n(mu)}",
                                            n(mm), u["mm"]).markdown()[2:])
             out.append(f"- {r.unknown}: {t['dir']} {r.relation}" + (f"; {', '.join(parts)}" if parts else ""))
         lines = pt.source.lines
@@ -329,11 +329,11 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
                     if ln.unknown == r.unknown:
                         start = ln.through
                 mm = plan.mm(start, px)
-                out.append(Step(f"{r.unknown} = {start}{px}·{mus}", f"{n(mm)}·{n(mu)}", n(mm * mu), unit).markdown())
+                out.append(Step(f"{r.unknown} = {start}{px}·{mus}", f"{n(mm, 5)}·{n(mu)}", n(mm * mu), unit).markdown())
             elif r.unknown_kind == "sliding" and r.base is not None:
                 start = next((ln.through for ln in pt.source.lines if ln.unknown == r.unknown), plan_name(r.base))
                 mm = plan.mm(start, px)
-                out.append(Step(f"{r.unknown} = {start}{px}·{mus}", f"{n(mm)}·{n(mu)}", n(mm * mu), unit).markdown())
+                out.append(Step(f"{r.unknown} = {start}{px}·{mus}", f"{n(mm, 5)}·{n(mu)}", n(mm * mu), unit).markdown())
         out.append("")
         # ω or ε of the group's links that turn
         for r in cons.routes:
@@ -352,7 +352,7 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
             key = "eps" if acc else "omega"
             out += [t[key].format(i=link), ""]
             w = "ε" if acc else "ω"
-            out.append(Step(f"{w}{link} = {r.unknown} / l_{A}{B}", f"{n(mag)} / {n(l)}",
+            out.append(Step(f"{w}{link} = {r.unknown} / l_{A}{B}", f"{n(mag, 5)} / {n(l, 5)}",
                             n(mag / l), (u["rad/s²"] if acc else u["rad/s"]) + (f", {sense}" if sense else "")).markdown())
             out.append("")
     return out
@@ -388,7 +388,7 @@ def _similar(sol: Solution, plan, sims, lang: str) -> list[str]:
         if abs(s.ratio.imag) < 1e-12:
             l_bx = abs(sol.positions[X] - sol.positions[B0]) / sol.mu_l
             l_bb = abs(sol.positions[B1] - sol.positions[B0]) / sol.mu_l
-            sub = "·".join(num(v, 4, lang) for v in (plan.mm(s.base, s.other), l_bx)) + f" / {num(l_bb, 4, lang)}"
+            sub = "·".join(num(v, 5, lang) for v in (plan.mm(s.base, s.other), l_bx)) + f" / {num(l_bb, 5, lang)}"
             out.append(Step(f"{b0}{p.name} = {b0}{b1}·{B0}{X} / {B0}{B1}", sub, mm, u["mm"]).markdown())
         else:
             out.append(f"- `{s.equation}`: {b0}{p.name} = {mm} {u['mm']}")
@@ -405,7 +405,7 @@ def _values(sol: Solution, plan, names, lang: str) -> list[str]:
     for name in names:
         mm = plan.mm(pole, name)
         out.append(Step(f"{sym}_{_mech_name(sol, name)} = {pole}{name}·{mus}",
-                        f"{num(mm, 4, lang)}·{num(plan.mu, 4, lang)}", num(mm * plan.mu, 4, lang),
+                        f"{num(mm, 5, lang)}·{num(plan.mu, 4, lang)}", num(mm * plan.mu, 4, lang),
                         unit).markdown())
     return out
 
