@@ -216,7 +216,9 @@ def overlay_svg(result: CheckResult, lang: str = "en") -> str:
             dwg.add(dwg.text(line, insert=(x0, top + 12 + PANEL + 16 + 14 * j), font_size=SMALL,
                              font_family="sans-serif", fill=RED))
     y = top + 12 + PANEL + 14 * below + 32
-    y = _legend(dwg, MARGIN, y, w) + 22
+    first = next((d for d in result.failed if d.item.kind == "segment"), None)
+    mark = _mark(first.item.name, first.deviation, lang) if first else _mark("ab", -4.2, lang)
+    y = _legend(dwg, MARGIN, y, w, mark) + 22
     for line, color in foot:
         dwg.add(dwg.text(line, insert=(MARGIN, y), font_size=FONT, font_family="sans-serif",
                          fill=color))
@@ -230,9 +232,7 @@ def _deviation_list(result: CheckResult, kind: str, lang: str) -> list[str]:
     for d in result.failed:
         it = d.item
         if it.kind == "segment" and it.plan == kind:
-            dev = f"{abs(d.deviation):.1f}"
-            dev = dev.replace(".", ",") if lang == "ru" else dev
-            parts.append(f"{it.name} {'+' if d.deviation > 0 else '−'}{dev}")
+            parts.append(_mark(it.name, d.deviation, lang))
     if not parts:
         return []
     head = "вне допуска, мм: " if lang == "ru" else "beyond tolerance, mm: "
@@ -279,14 +279,22 @@ def _wrap(text: str, width: int) -> list[str]:
     return lines
 
 
-def _legend(dwg, x, y, w) -> float:
+def _mark(name: str, deviation: float, lang: str) -> str:
+    """A segment's deviation as the sheet marks it: "πa3 +18,6" (mm)."""
+    dev = f"{abs(deviation):.1f}"
+    return f"{name} {'+' if deviation > 0 else '−'}{dev.replace('.', ',') if lang == 'ru' else dev}"
+
+
+def _legend(dwg, x, y, w, mark: str) -> float:
+    """The legend; ``mark`` is the deviation shown as its sample (the first one beyond
+    tolerance, so the legend names a segment of this sheet)."""
     """The legend from (x, y), wrapped to the picture's width; returns the y after it."""
     g = dwg.g(font_family="sans-serif")
     right = x + 2 * PANEL + MARGIN
     entries = [("computed", w["legend_c"]), ("student", w["legend_s"]), ("deviation", w["legend_d"])]
     at = x
     for kind, label in entries:
-        sample = 24.0 if kind != "deviation" else 1.2 * text_width("pd −4.2", SMALL)
+        sample = 24.0 if kind != "deviation" else 1.2 * text_width(mark, SMALL)
         need = sample + 6 + text_width(label, SMALL)
         if at > x and at + need > right:
             at, y = x, y + 16
@@ -297,7 +305,7 @@ def _legend(dwg, x, y, w) -> float:
                            stroke_dasharray="5,3"))
             g.add(dwg.circle((at + 12, y - 3), 2.6, fill="none", stroke=RED, stroke_width=1))
         else:
-            g.add(dwg.text("pd −4.2", insert=(at, y), fill=RED, font_size=SMALL, font_weight="bold"))
+            g.add(dwg.text(mark, insert=(at, y), fill=RED, font_size=SMALL, font_weight="bold"))
         g.add(dwg.text(label, insert=(at + sample + 6, y), fill=BLACK if kind == "computed" else RED,
                        font_size=SMALL))
         at += need + 16
@@ -374,11 +382,7 @@ def _panel(dwg, origin, plan, mu, student, items, failed, lang, w):
             continue
         p, q = sc(src[it.start]), sc(src[it.end])
         mx, my = (p[0] + q[0]) / 2, (p[1] + q[1]) / 2
-        sign = "+" if d.deviation > 0 else "−"
-        dev = f"{abs(d.deviation):.1f}"
-        if lang == "ru":
-            dev = dev.replace(".", ",")
-        text = f"{it.name} {sign}{dev}"
+        text = _mark(it.name, d.deviation, lang)
         normal = math.atan2(-(q[0] - p[0]), -(q[1] - p[1]))  # perpendicular to the segment
         spot = labels.place(mx, my, text, SMALL, prefer=normal, must=False, bold=True)
         if spot is None:

@@ -577,6 +577,13 @@ def test_svg_overlay(tmp_path, capsys, press, case, lang):
     assert root.tag.endswith("svg")
     texts = [t for t, _ in _boxes(svg)]
     assert any(("beyond tolerance" if lang == "en" else "вне допуска") in (t or "") for t in texts)
+    # the legend's sample is the sheet's first deviation beyond tolerance, in the language
+    first = next(d for d in ck.check(ck.load(meas_path)).failed if d.item.kind == "segment")
+    dev = f"{abs(first.deviation):.1f}"
+    sample = f"{first.item.name} {'+' if first.deviation > 0 else '−'}{dev.replace('.', ',') if lang == 'ru' else dev}"
+    assert sample in texts  # the legend's sample (it was always "pd −4.2", on every sheet)
+    if case == "coriolis":  # a sheet with no segment pd beyond tolerance
+        assert not any("pd −4" in (t or "") or "pd −4,2" in (t or "") for t in texts)
     if case == "coriolis":
         assert any(("Coriolis" if lang == "en" else "Кориолиса") in (t or "") for t in texts)
         assert "k′" in texts  # the student's k, on the other side of a
