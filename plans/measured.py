@@ -56,6 +56,9 @@ def parse_tolerance(text: str, base: Tolerance | None = None) -> Tolerance:
     Tolerance(percent=3.0, mm=1.0)
     >>> parse_tolerance("0.5 mm, 2 %")
     Tolerance(percent=2.0, mm=0.5)
+    >>> parse_tolerance("5%,1mm,2mm")
+    Traceback (most recent call last):
+    ValueError: "5%,1mm,2mm" gives the mm part twice: give a percentage and a length at most once each, e.g. "5%,1mm"
     """
     base = base or Tolerance()
     pct, mm = base.percent, base.mm
@@ -63,11 +66,17 @@ def parse_tolerance(text: str, base: Tolerance | None = None) -> Tolerance:
     text = str(text).strip()
     if not re.fullmatch(rf"{token}(?:\s*[,;]?\s*{token})*", text):
         raise ValueError(f'"{text[:40]}" is not a tolerance (e.g. "5%", "1mm" or "5%,1mm")')
+    seen: set[str] = set()
     for number, unit in re.findall(token, text):
         x = float(number.replace(",", "."))
         if not math.isfinite(x) or x > 1000:
             raise ValueError(f'"{number}" is out of range')
-        if unit in ("mm", "мм"):
+        part = "mm" if unit in ("mm", "мм") else "%"
+        if part in seen:  # "5%,1mm,2mm": which one was meant?
+            raise ValueError(f'"{text[:40]}" gives the {part} part twice: give a percentage and '
+                             'a length at most once each, e.g. "5%,1mm"')
+        seen.add(part)
+        if part == "mm":
             mm = x
         else:
             pct = x
