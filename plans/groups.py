@@ -97,7 +97,25 @@ def setup(sv: Solver, g: Group) -> dict:
     got = sv.cache.get(key)
     if got is None:
         got = sv.cache[key] = _SETUPS[g.kind](sv, g)
+        got["veq"], got["aeq"] = _statement(got["veq"]), _statement(got["aeq"])
     return got
+
+
+def _statement(eq: str) -> str:
+    """An equation as written on paper: a side that only says the direction of a fixed
+    guide becomes a separate statement, "V_D = V_C + V_DC; V_D ∥ x-x", not the circular
+    "V_D = V_C + V_DC = V_D(∥ x-x)".
+
+    >>> _statement("V_D = V_C + V_DC = V_D(∥ x-x)"), _statement("V_C = V_B + V_CB = V_D + V_CD")
+    ('V_D = V_C + V_DC; V_D ∥ x-x', 'V_C = V_B + V_CB = V_D + V_CD')
+    """
+    lhs, *sides = eq.split(" = ")
+    fixed = [s for s in sides if s.startswith(f"{lhs}(") and s.endswith(")")]
+    if not fixed:
+        return eq
+    sums = [s for s in sides if s not in fixed]
+    dirs = "; ".join(f"{lhs} {s[len(lhs) + 1:-1]}" for s in fixed)
+    return f"{lhs} = {' = '.join(sums)}; {dirs}" if sums else dirs
 
 
 def _base_name(point: str, guide: Guide) -> str | None:

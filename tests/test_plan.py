@@ -133,16 +133,17 @@ def test_variant_plans_solve(n):
 
 
 @pytest.mark.parametrize(("name", "velocity", "acceleration"), [
-    ("scotch_yoke", "V_A3 = V_A + V_A3A = V_A3(∥ x-x)", "a_A3 = a_A + a^r_A3A = a_A3(∥ x-x)"),
+    ("scotch_yoke", "V_A3 = V_A + V_A3A; V_A3 ∥ x-x", "a_A3 = a_A + a^r_A3A; a_A3 ∥ x-x"),
     ("yoke_on_rocker", "V_A5 = V_A + V_A5A = V_A3 + V_A5A3",
      "a_A5 = a_A + a^k_A5A + a^r_A5A = a_A3 + a^k_A5A3 + a^r_A5A3"),
-    ("tangent", "V_C = V_C1 + V_CC1 = V_C(∥ y-y)", "a_C = a_C1 + a^k_CC1 + a^r_CC1 = a_C(∥ y-y)"),
+    ("tangent", "V_C = V_C1 + V_CC1; V_C ∥ y-y", "a_C = a_C1 + a^k_CC1 + a^r_CC1; a_C ∥ y-y"),
 ])
 def test_sliding_groups_write_each_side_of_their_equations_as_on_paper(name, velocity,
                                                                          acceleration):
-    """A side along a fixed guide is the point's own vector along it; a side along a
-    turning link's guide starts at the coincident point and carries the Coriolis term; a
-    block in a yoke that only translates has none."""
+    """Along a fixed guide the point's own vector only has a direction, said apart
+    ("; V_C ∥ y-y", not the circular "= V_C(∥ y-y)"); a side along a turning link's guide
+    starts at the coincident point and carries the Coriolis term; a block in a yoke that
+    only translates has none."""
     from plans.scenes import SCENES
 
     sol = solve_position(SCENES[name].mechanism())
