@@ -199,7 +199,7 @@ def _compose(mech, sheet, solver, cycle, chosen, mu, lang, title, fixed):
     tb = TitleBlock(**_title_fields(mech, title, gost_scale(given.mu_l, lang), lang))
     scene = frame_scene(sheet, tb, lang=lang)
     scene = scene + Scene((Layer("views", tuple(p.group() for p in placed)),))
-    return scene, sheet, {"solutions": sols, "cycle": cycle, "placed": placed}
+    return scene, sheet, {"solutions": sols, "given": given, "cycle": cycle, "placed": placed}
 
 
 def render(mech, args) -> tuple[str, str | None]:
@@ -230,7 +230,8 @@ def render(mech, args) -> tuple[str, str | None]:
 
         sols = info["solutions"]
         titles = [(label.replace("φ_1", "φ1"), sol) for tag, label, sol in sols]
-        text = note(sols[0][2], args.lang, info["cycle"], titles if len(sols) > 1 or
+        # the structure and the plan of positions of the given position, drawn heavy
+        text = note(info["given"], args.lang, info["cycle"], titles if len(sols) > 1 or
                     sols[0][0] != "g" else ())
     return to_svg(scene, sheet, title=mech.name_in(args.lang)), text
 

@@ -129,7 +129,8 @@ def check_outputs(args, outputs=OUTPUTS) -> None:
         target = "-" if out in (None, "-") else str(out)
         for other_opt, other in seen:
             if (target == "-" and other == "-") or (target != "-" and other != "-"
-                                                    and _same_file(target, other)):
+                                                    and _same_file(target, other)
+                                                    and not _device(target)):
                 what = "stdout" if target == "-" else _arg(target)
                 raise InputError("command line", f"{other_opt} and {opt} are both {what}: "
                                  "give each output its own file")
@@ -277,24 +278,40 @@ def write_output(path: str | None, text: str | bytes) -> None:
         raise
 
 
+def _device(path: str) -> bool:
+    """A character device or a pipe (/dev/null): written into, never replaced."""
+    import os
+    import stat
+
+    try:
+        return not stat.S_ISREG(os.stat(path).st_mode) and not stat.S_ISDIR(os.stat(path).st_mode)
+    except OSError:
+        return False
+
+
 def _target(path: str):
     """(name for messages, Path, its stat or None, its folder) of an output file that can
     be written; InputError where it cannot (an input, a folder, no such folder)."""
+    import os
     import stat
 
+    if not str(path):
+        raise InputError("command line", "an output option was given an empty file name")
     where = _arg(path)[1:-1]
     for inp in _INPUTS:
         if _same_file(path, inp):
             raise InputError(where, f"is the input file {_arg(inp)}: the tool never writes into its inputs")
     target = Path(path)
     try:
-        st = target.stat()
+        st = target.stat()  # through a symbolic link, of what it names
     except FileNotFoundError:
         st = None
     except OSError as exc:
         raise InputError(where, f"cannot write: {exc.strerror}") from None
     if st is not None and stat.S_ISDIR(st.st_mode):
         raise InputError(where, "is a folder: give a file name")
+    if st is not None and stat.S_ISREG(st.st_mode) and os.path.islink(path):
+        target = Path(os.path.realpath(path))  # written through the link, never replacing it
     folder = target.parent if str(target.parent) else Path(".")
     if st is None or stat.S_ISREG(st.st_mode):
         if not folder.is_dir():

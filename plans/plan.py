@@ -78,7 +78,7 @@ class Plan(NamedTuple):
 
     A NamedTuple, built in a fifth of a frozen dataclass's time: a changed copy is
     ``plan._replace(mu=…)`` (not ``dataclasses.replace``), and it unpacks and compares
-    as the tuple of its eight fields."""
+    as the tuple of its nine fields."""
 
     kind: str  # "velocity" or "acceleration"
     pole: str  # "p" or "π"
@@ -90,16 +90,17 @@ class Plan(NamedTuple):
     segments: Mapping[str, float] = MappingProxyType({})
     #: the same segments' ends: name → (from, to), plan point names or the pole
     ends: Mapping[str, tuple[str, str]] = MappingProxyType({})
+    #: mm: a segment no longer than this is 0 (:data:`NOISE` of the plan's longest vector)
+    tiny: float = 0.0
 
     def value(self, name: str) -> complex:
         return 0j if name == self.pole else self.points[name].value
 
     def mm(self, start: str, end: str) -> float:
-        """Length of the segment start→end on the drawing, in mm; 0 below :data:`NOISE`
-        of the plan's longest vector, as in ``segments``."""
+        """Length of the segment start→end on the drawing, in mm; 0 up to ``tiny``, as in
+        ``segments``."""
         mm = abs(self.value(end) - self.value(start)) / self.mu
-        big = max((abs(p.value) for p in self.points.values()), default=0.0)
-        return mm if mm > NOISE * big / self.mu else 0.0
+        return mm if mm > self.tiny else 0.0
 
 
 @dataclass(frozen=True)
@@ -235,9 +236,10 @@ _POLE, _VALUE, _TERM, _CROSS, _SIMILAR, _FIGURE = range(6)
 _POLE_SOURCE = Source("pole")
 
 #: a plan's segment shorter than this share of its longest vector is 0: rounding left by
-#: two vectors that are equal (a sliding velocity at a dead point, a translating link's
-#: points), 1e-15 of the drawing, never a length to draw, measure or print as 4e-16
-NOISE = 1e-12
+#: two equal vectors subtracted (a relative acceleration that is 0, a translating link's
+#: points) is a few 1e-16 of them, never a length to draw, measure or print as 4e-16. A
+#: real small value (a^n = V²/l near an extreme position, 1e-12 of the plan) stays.
+NOISE = 1e-14
 
 
 class _Recipe(NamedTuple):
@@ -498,7 +500,7 @@ def _compile(kind: str, pole: str, tip: str, steps, ends):
         f"        ({''.join(v + ', ' for v in vectors)}),",
         f"        mu, {unit!r},",
         "        {key: mm if mm > tiny else 0.0 for key, mm in {" + segments + "}.items()},",
-        f"        {k(ends)}))",
+        f"        {k(ends)}, tiny))",
     ])
     scope = {"record": record, "Plan": Plan, "PlanPoint": PlanPoint, "Source": Source,
              "PlanLine": PlanLine, "choose_mu": choose_mu, "NOISE": NOISE}

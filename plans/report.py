@@ -310,18 +310,6 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
         out += _similar(sol, plan, sims, lang)
         out += [t["avalues" if acc else "values"], ""]
         out += _values(sol, plan, [px] + [p.name for p in sims], lang)
-        for k in (g.group.a, g.group.b):
-            if k in moving:
-                continue
-            same = [nm for nm in (plan_name(q) for q, o in m.point_link.items() if o == k)
-                    if nm in plan.points and nm != px and plan.points[nm].source.kind != "pole"]
-            if same:
-                names = [_mech_name(sol, nm) for nm in same]
-                if m.point_link.get(x) == k:  # the group's own point is one of them
-                    names.append(x)
-                eq = " = ".join(f"{sym}_{q}" for q in names)
-                out += ["", t["translates"].format(i=k, eq=eq, what=t["acc" if acc else "vel"]), ""]
-                out += _values(sol, plan, same, lang)
         for r in cons.routes:
             if r.unknown_kind in ("relative", "tangential"):
                 start = r.base and plan_name(r.base)
@@ -334,6 +322,20 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
                 start = next((ln.through for ln in pt.source.lines if ln.unknown == r.unknown), plan_name(r.base))
                 mm = plan.mm(start, px)
                 out.append(Step(f"{r.unknown} = {start}{px}·{mus}", f"{n(mm, 5)}·{n(mu)}", n(mm * mu), unit).markdown())
+        for k in (g.group.a, g.group.b):  # after the values above, as a list of its own
+            if k in moving:
+                continue
+            own = list(dict.fromkeys([*mech.links[k].points,
+                                      *(q for q, o in m.point_link.items() if o == k)]))
+            same = [nm for nm in dict.fromkeys(plan_name(q) for q in own)
+                    if nm in plan.points and nm != px and plan.points[nm].source.kind != "pole"]
+            if same:
+                names = [_mech_name(sol, nm) for nm in same]
+                if x in own:  # the group's own point is one of them
+                    names.append(x)
+                eq = " = ".join(f"{sym}_{q}" for q in names)
+                out += ["", t["translates"].format(i=k, eq=eq, what=t["acc" if acc else "vel"]), ""]
+                out += _values(sol, plan, same, lang)
         out.append("")
         # ω or ε of the group's links that turn
         for r in cons.routes:

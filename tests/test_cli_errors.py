@@ -586,3 +586,19 @@ def test_stdout_on_a_full_disk_is_bad_output_not_a_crash():
                            stderr=subprocess.PIPE, text=True)
     assert r.returncode == 2
     assert r.stderr == "plans solve: cannot write the output: No space left on device\n"
+
+
+def test_outputs_through_links_and_devices(capsys, tmp_path):
+    """A symbolic link is written through (it stayed a link and its file was left old;
+    as root, -o /dev/stdout replaced the /dev/stdout link with a file); /dev/null may
+    take several outputs; an empty file name is refused plainly."""
+    real, link = tmp_path / "real.txt", tmp_path / "link.txt"
+    real.write_text("old")
+    link.symlink_to(real)
+    code, _, _ = run(capsys, "solve", "--variant", "3", "-o", link)
+    assert code == 0 and link.is_symlink() and real.read_text().startswith("Four-bar linkage, variant 3")
+    code, _, err = run(capsys, "sheet", "--variant", "3", "-o", "/dev/null", "--png", "/dev/null",
+                       "--note", "/dev/null")
+    assert code == 0, err
+    code, _, err = run(capsys, "solve", "--variant", "3", "-o", "")
+    assert code == 2 and err == "plans solve: command line: an output option was given an empty file name\n"

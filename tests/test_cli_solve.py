@@ -286,3 +286,19 @@ def test_every_substitution_in_the_note_gives_its_result_by_hand(capsys, tmp_pat
             assert abs(got - float(res)) <= 0.6 * 10 ** -decimals, (name, line, got)
             checked += 1
     assert checked > 200
+
+
+def test_every_point_of_a_yoke_is_an_output_and_a_slider_link_says_so(capsys, tmp_path):
+    """A Scotch yoke's E travels as D does: output = "E" was refused. A crank-slider's
+    slider translates: the note says V_M = V_B (it said 'V_M:' alone)."""
+    from plans.scenes import SCENES
+
+    path = tmp_path / "y.toml"
+    path.write_text(SCENES["scotch_yoke"].toml.replace('output = "D"', 'output = "E"'), "utf-8")
+    code, out, err = run(capsys, "solve", path)
+    assert code == 0, err
+    assert "stroke of E: H = 0.2 m" in out
+    path = tmp_path / "cs.toml"
+    path.write_text(SCENES["crank_slider_offset"].toml, "utf-8")
+    code, out, _ = run(capsys, "report", path)
+    assert "Link 3 translates (ω3 = 0): all its points have one velocity, V_M = V_B:" in out

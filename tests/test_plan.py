@@ -248,3 +248,17 @@ def test_a_segment_that_is_zero_reads_zero_not_rounding(deg):
     assert "e-1" not in text
     if deg == 200.0:
         assert "a^r_A3A = aa3·μa = 0·0,2 = 0 м/с²" in text
+
+
+def test_a_real_small_segment_is_not_taken_for_rounding():
+    """1e-4° from the press's extreme position V_A3B is 5e-6 m/s and a^n_A3B = V²/l is
+    6.6e-11 m/s²: tiny but real, not two equal vectors subtracted. The plan keeps it, so
+    the note's a^n and its segment bn1 agree."""
+    from plans.mechanism import load
+
+    mech = load("samples/press.toml").at_file_angle(250.06763)
+    sol = solve_position(mech)
+    v = abs(sol.velocity.value("a3") - sol.velocity.value("b"))
+    l_ab = abs(sol.positions["A3"] - sol.positions["B"])
+    assert 0 < v < 1e-5
+    assert sol.acceleration.segments["bn1"] == pytest.approx(v * v / l_ab / sol.acceleration.mu, rel=1e-6)

@@ -640,3 +640,15 @@ def test_the_stroke_stands_beside_its_extension_lines_when_it_has_no_room_betwee
     thin = [LineString([s.p1, s.p2]) for s in items
             if isinstance(s, Segment) and s.line == LineType.THIN and s.p1[0] == s.p2[0]]
     assert thin and not any(h.intersects(ln) for ln in thin)
+
+
+def test_the_notes_plan_of_positions_is_the_given_position_whatever_the_plans(tmp_path):
+    """With --plans 1,4 the note's section 2 described position 1 (BA3 = 48,91 mm) while
+    the sheet draws the file's own position heavy (BA3 = 57,48 mm)."""
+    from plans.cli import main
+
+    md = tmp_path / "p.md"
+    assert main(["sheet", str(ROOT / "samples" / "press.toml"), "--plans", "1,4", "-o",
+                 str(tmp_path / "p.svg"), "--note", str(md)]) == 0
+    section2 = md.read_text("utf-8").split("## 2.")[1].split("## 3.")[0]
+    assert "- `BA3 = l_BA3 / μl = 0,57482 / 0,01 = 57,48 мм`" in section2
