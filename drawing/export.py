@@ -6,8 +6,8 @@ sees half a sheet and a failed export leaves the old file in place.
 
 cairosvg is an optional dependency (``pip install 'vector-plans[export]'``),
 imported only when a PNG or PDF is asked for.  It does not read the embedded
-``@font-face``: it renders with the fonts installed on the machine (the
-Debian package ``fonts-osifont`` gives the same family).
+``@font-face``; it renders with the project's own osifont all the same (see
+:func:`_own_font`), so a PNG looks as the SVG does on any machine.
 """
 
 from __future__ import annotations
@@ -42,11 +42,49 @@ def require() -> None:
 
 
 def _cairosvg() -> ModuleType:
+    _own_font()
     try:
         import cairosvg
     except (ImportError, OSError) as exc:  # OSError: the cairo C library is absent
         raise ExportUnavailableError(f"{_HINT} ({exc})") from exc
     return cairosvg
+
+
+_FONTS_CONF = """<?xml version="1.0"?>
+<!DOCTYPE fontconfig SYSTEM "fonts.dtd">
+<fontconfig>
+  <include ignore_missing="yes">/etc/fonts/fonts.conf</include>
+  <dir>{fonts}</dir>
+  <selectfont>
+    <acceptfont><glob>{fonts}/*</glob></acceptfont>
+    <rejectfont><glob>*osifont*</glob></rejectfont>
+  </selectfont>
+</fontconfig>
+"""
+
+
+def _own_font() -> None:
+    """Let cairo draw with the project's osifont, as the SVG embeds it.
+
+    cairosvg ignores the SVG's embedded @font-face and asks fontconfig for "osifont": the
+    Debian package's copy prints Ё, ё, Э, э as black boxes («четыр█хзвенник»), and a
+    machine without it falls back to another face. A fontconfig file is written that
+    adds ``drawing/fonts`` and accepts only its osifont, the system's fonts staying for
+    everything else. It takes effect when fontconfig starts, so only if the process has
+    not set FONTCONFIG_FILE itself.
+    """
+    import hashlib
+    import tempfile
+
+    if "FONTCONFIG_FILE" in os.environ:
+        return
+    from drawing.svg import FONT_FILE
+
+    text = _FONTS_CONF.format(fonts=FONT_FILE.parent.resolve())
+    conf = Path(tempfile.gettempdir()) / f"vector-plans-fonts-{hashlib.sha1(text.encode()).hexdigest()[:12]}.conf"
+    if not conf.is_file():
+        write_bytes_atomic(text.encode("utf-8"), conf)
+    os.environ["FONTCONFIG_FILE"] = str(conf)
 
 
 def write_bytes_atomic(data: bytes, path: str | os.PathLike[str]) -> Path:

@@ -4,6 +4,7 @@ import base64
 import re
 import sys
 import xml.etree.ElementTree as ET
+from pathlib import Path
 
 import pytest
 
@@ -427,3 +428,35 @@ def test_markup_writes_indices_as_shifted_tspans():
     plain = Text((10, 20), "a_1", markup=False)
     root = parse(to_svg(Scene((Layer("n", (plain,)),)), Sheet("A4"), embed_font=False))
     assert layer(root, "n").find("svg:text", NS).text == "a_1"
+
+
+def test_png_export_draws_yo_and_e_with_the_projects_font(tmp_path):
+    """cairosvg asks fontconfig for "osifont"; Debian's copy has Ё, ё, Э, э as black
+    boxes («Шарнирный четыр█хзвенник» in a title block). The export now draws with the
+    project's patched copy. Run in a fresh process: fontconfig reads its setup once."""
+    import json
+    import os
+    import subprocess
+
+    pytest.importorskip("cairosvg")
+    code = (
+        "import io, json, sys\n"
+        "from PIL import Image\n"
+        "from drawing import export\n"
+        "def dark(ch):\n"
+        "    svg = ('<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"60mm\" height=\"60mm\" '\n"
+        "           'viewBox=\"0 0 60 60\"><rect width=\"60\" height=\"60\" fill=\"white\"/>'\n"
+        "           '<text x=\"5\" y=\"45\" font-family=\"osifont\" font-size=\"40\">' + ch + '</text></svg>')\n"
+        "    im = Image.open(io.BytesIO(export.png_bytes(svg, dpi=72))).convert('L')\n"
+        "    return sum(1 for v in im.getdata() if v < 128)\n"
+        "print(json.dumps({c: dark(c) for c in 'еёЭэС'}))\n"
+    )
+    env = {k: v for k, v in os.environ.items() if k != "FONTCONFIG_FILE"}
+    env["PYTHONPATH"] = str(Path(__file__).resolve().parent.parent)
+    r = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True)
+    if r.returncode and "PIL" in r.stderr:
+        pytest.skip("needs Pillow to read the PNG")
+    assert r.returncode == 0, r.stderr
+    dark = json.loads(r.stdout)
+    # a black box fills its cell: three times the ink of the letter it stands for
+    assert dark["ё"] < 1.5 * dark["е"] and dark["э"] < 1.5 * dark["е"] and dark["Э"] < 1.5 * dark["С"]
