@@ -177,23 +177,26 @@ def _shift(items: list[Item], dx: float, dy: float) -> list[Item]:
     ]
 
 
-def _bbox(items: list[Item]) -> tuple[float, float, float, float]:
-    xs: list[float] = []
-    ys: list[float] = []
+def _coords(items: list[Item]) -> list[tuple[float, float]]:
+    """The corners of everything drawn: line ends, polyline vertices, circles' and texts'
+    boxes."""
+    out: list[tuple[float, float]] = []
     for it in flatten(items):
         if isinstance(it, Text):
             b = text_box(it).bounds
-            xs += [b[0], b[2]]
-            ys += [b[1], b[3]]
+            out += [(b[0], b[1]), (b[2], b[3]), (b[0], b[3]), (b[2], b[1])]
         elif isinstance(it, Circle):
-            xs += [it.center[0] - it.r, it.center[0] + it.r]
-            ys += [it.center[1] - it.r, it.center[1] + it.r]
+            (x, y), r = it.center, it.r
+            out += [(x - r, y - r), (x + r, y + r)]
         elif isinstance(it, Polyline):
-            xs += [p[0] for p in it.points]
-            ys += [p[1] for p in it.points]
+            out += list(it.points)
         else:
-            xs += [it.p1[0], it.p2[0]]
-            ys += [it.p1[1], it.p2[1]]
+            out += [it.p1, it.p2]
+    return out
+
+
+def _bbox(items: list[Item]) -> tuple[float, float, float, float]:
+    xs, ys = zip(*_coords(items), strict=True)
     return min(xs), min(ys), max(xs), max(ys)
 
 
@@ -526,19 +529,8 @@ def positions_view(sol, cycle, lang: str = "ru") -> View:
     ends = len(extremes) == 2 and all(e is not None for e in extremes)
     if out is not None and cycle.stroke and out.kind == "linear" and ends:
         p1, p2 = (_sheet(e[out.point], mu_l) for e in extremes)
-        x0, y0, x1, y1 = _bbox(items)
-        dy = y1 + 8.0
-        items += [Segment(p1, (p1[0], dy + 2), LineType.THIN), Segment(p2, (p2[0], dy + 2), LineType.THIN)]
-        items += [Arrow((p1[0] + (p2[0] - p1[0]) / 2, dy), (p1[0], dy), LineType.THIN, 3.0, 1.0),
-                  Arrow((p1[0] + (p2[0] - p1[0]) / 2, dy), (p2[0], dy), LineType.THIN, 3.0, 1.0)]
-        value = f"H = {num(cycle.stroke, 4, lang)} {w['m']}"
-        right = max(p1[0], p2[0])
-        if text_width(value, 3.5) + 2.0 <= abs(p2[0] - p1[0]):
-            items.append(Text(((p1[0] + p2[0]) / 2, dy - 1.0), value, size=3.5, anchor="middle"))
-        else:  # no room between the extension lines: on a shelf beyond the right one (GOST 2.307)
-            width = text_width(value, 3.5)
-            items.append(Segment((right, dy), (right + width + 3.0, dy), LineType.THIN))
-            items.append(Text((right + 1.5, dy - 1.0), value, size=3.5))
+        items += _stroke_dimension(items, p1, p2, mech.slider_of(out.link).guide.direction,
+                                   f"H = {num(cycle.stroke, 4, lang)} {w['m']}")
     # swing ψ of a rocker: an arc between its two extreme positions, about its pivot
     if out is not None and cycle.stroke and out.kind == "angular" and ends:
         arm = _rocker_arm(mech, out)
@@ -555,6 +547,37 @@ def positions_view(sol, cycle, lang: str = "ru") -> View:
     under = [w["left_off"].format(k=", ".join(map(str, shown.left_off)),
                                   d=num(shown.limit, 2, lang))] if shown.left_off else []
     return _finish("positions", items, labels, caption, under, pad=8.0)
+
+
+def _stroke_dimension(items, p1, p2, direction: complex, value: str) -> list[Item]:
+    """The stroke H between the output's extreme positions ``p1``, ``p2`` (sheet mm), a
+    dimension parallel to its guide (``direction``, in the world) and clear of the drawing
+    ``items``: extension lines, a dimension line with two arrows, the value above it,
+    or on a shelf beyond its end where it has no room between the extension lines."""
+    ux, uy = direction.real, -direction.imag  # the sheet's y points down
+    if ux < -1e-12 or (abs(ux) <= 1e-12 and uy > 0):
+        ux, uy = -ux, -uy  # read from left to right, or from the bottom up
+    nx, ny = -uy, ux  # the side the dimension stands on: below a horizontal guide
+    reach = max((cx - p1[0]) * nx + (cy - p1[1]) * ny for cx, cy in _coords(items)) + 8.0
+
+    def at(p, t, s=0.0):  # the point t along the normal from the dimension line, s along it
+        k = reach - ((p[0] - p1[0]) * nx + (p[1] - p1[1]) * ny)
+        return (p[0] + nx * (k + t) + ux * s, p[1] + ny * (k + t) + uy * s)
+
+    d1, d2 = at(p1, 0.0), at(p2, 0.0)
+    mid = ((d1[0] + d2[0]) / 2, (d1[1] + d2[1]) / 2)
+    out: list[Item] = [Segment(p1, at(p1, 2.0), LineType.THIN), Segment(p2, at(p2, 2.0), LineType.THIN),
+                       Arrow(mid, d1, LineType.THIN, 3.0, 1.0), Arrow(mid, d2, LineType.THIN, 3.0, 1.0)]
+    turn = math.degrees(math.atan2(uy, ux))  # clockwise on the sheet, as Text takes it
+    width = text_width(value, 3.5)
+    if width + 2.0 <= math.dist(d1, d2):
+        out.append(Text((mid[0] - nx, mid[1] - ny), value, size=3.5, anchor="middle", rotate_deg=turn))
+    else:  # no room between the extension lines: on a shelf beyond the far one (GOST 2.307)
+        end = d2 if (d2[0] - d1[0]) * ux + (d2[1] - d1[1]) * uy > 0 else d1
+        out.append(Segment(end, (end[0] + ux * (width + 3.0), end[1] + uy * (width + 3.0)), LineType.THIN))
+        out.append(Text((end[0] + ux * 1.5 - nx, end[1] + uy * 1.5 - ny), value, size=3.5,
+                        rotate_deg=turn))
+    return out
 
 
 def _rocker_arm(mech, out) -> tuple[str, str] | None:

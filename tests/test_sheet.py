@@ -652,3 +652,33 @@ def test_the_notes_plan_of_positions_is_the_given_position_whatever_the_plans(tm
                  str(tmp_path / "p.svg"), "--note", str(md)]) == 0
     section2 = md.read_text("utf-8").split("## 2.")[1].split("## 3.")[0]
     assert "- `BA3 = l_BA3 / μl = 0,57482 / 0,01 = 57,48 мм`" in section2
+
+
+@pytest.mark.parametrize("scene", ["yoke_inclined", "crank_slider_offset"])
+def test_the_stroke_is_dimensioned_along_its_guide_at_its_true_length(scene):
+    """The inclined yoke's guide is at 20°: H was drawn horizontally, the horizontal
+    projection (0.217 m) labelled 0,2309 м. The dimension line now runs along the guide,
+    its arrows' tips as far apart as the stroke at μl."""
+    import shapely
+
+    from drawing.labels import text_box
+    from drawing.scene import Arrow, flatten
+    from plans.cycle import analyse_cycle
+    from plans.scenes import SCENES
+
+    mech = SCENES[scene].mechanism()
+    scene_, _, info = build_sheet(mech, "A1", "ru")
+    mu_l = info["solutions"][0][2].mu_l
+    view = next(g for g in scene_.layer("views").items if g.name == "view positions")
+    items = flatten([view])
+    (h,) = [t for t in items if isinstance(t, Text) and t.text.startswith("H = ")]
+    heads = [a for a in items if isinstance(a, Arrow) and a.line.name == "THIN"]
+    tips = [a.p2 for a in heads if sum(b.p1 == a.p1 for b in heads) == 2 and
+            text_box(h).distance(shapely.Point(a.p1)) < 3.0]
+    assert len(tips) == 2
+    stroke = analyse_cycle(mech).stroke
+    assert math.dist(*tips) * mu_l == pytest.approx(stroke, rel=1e-9)
+    d = mech.slider_of(analyse_cycle(mech).output.link).guide.direction
+    along = ((tips[1][0] - tips[0][0]) * d.real - (tips[1][1] - tips[0][1]) * d.imag) / math.dist(*tips)
+    assert abs(along) == pytest.approx(1.0, abs=1e-9)  # parallel to the guide
+    assert d.real > 0 and h.rotate_deg == pytest.approx(-math.degrees(math.atan2(d.imag, d.real)))
