@@ -203,11 +203,14 @@ def run(args) -> int:
             print(f"plans bench: note: {n}", file=sys.stderr)
     else:
         text = to_text(rows, notes)
-    write_output(args.output, text)
-    if args.chart:
+    chart = None
+    if args.chart:  # built before the table is written: both or neither
         from drawing.bench_chart import svg_chart  # drawing alone writes SVG
 
-        write_output(args.chart, svg_chart(rows, machine()))
+        chart = svg_chart(rows, machine())
+    write_output(args.output, text)
+    if chart is not None:
+        write_output(args.chart, chart)
         if not args.json:
             print(f"plans bench: chart written to {args.chart}", file=sys.stderr)
     return 0

@@ -51,7 +51,8 @@ def number(lo: float, hi: float, integer: bool = False):
             value = None
         if value is None or not math.isfinite(value) or not lo <= value <= hi:
             kind = "a whole number" if integer else "a number"
-            raise argparse.ArgumentTypeError(f"{_arg(text, 30)} is not {kind} from {lo:g} to {hi:g}")
+            span = f"{int(lo)} to {int(hi)}" if integer else f"{lo:g} to {hi:g}"
+            raise argparse.ArgumentTypeError(f"{_arg(text, 30)} is not {kind} from {span}")
         return value
 
     return parse

@@ -42,15 +42,17 @@ def run(args) -> int:
         except ValueError as exc:
             raise InputError("command line", f"--tolerance: {exc}") from None
     result = ck.check(meas, tol)
+    files = []  # both built before either is written
     if args.svg:
         from drawing.check_overlay import overlay_svg
 
-        write_output(args.svg, overlay_svg(result, lang=args.lang))
+        files.append((args.svg, overlay_svg(result, lang=args.lang)))
     if args.json:
         text = json.dumps(to_json(result, args.lang), ensure_ascii=False, indent=2) + "\n"
     else:
         text = to_text(result, args.lang)
-    write_output(args.output, text)
+    for path, data in [(args.output, text), *files]:
+        write_output(path, data)
     return EXIT_OK if result.ok else EXIT_DEVIATIONS
 
 
@@ -181,7 +183,7 @@ def to_text(result, lang: str = "en") -> str:
     out = [f"{w['head']}: {meas.source}"]
     if meas.title:
         out.append(f"  {meas.title}")
-    out.append(f"{w['mech']}: {mech.name} ({mech.source}), "
+    out.append(f"{w['mech']}: {mech.name_in(lang)} ({mech.source}), "
                f"φ1 = {angle(math.degrees(sol.phi), 4, lang)}° {w['from_x']}")
     mu = meas.mu
     out.append(f"{w['scales']}: μl = {num(mu['mu_l'], 4, lang)} {_u('m/mm', lang)}, "

@@ -35,9 +35,12 @@ def from_x(phi: float) -> float:
 def angle(deg: float, digits: int = 4, lang: str = "en") -> str:
     """A crank angle in degrees, in [0, 360) as written: one that rounds to 360 is 0.
 
-    >>> angle(359.99), angle(-30.0), angle(40.0, 4, "ru"), angle(12.345, 3)
-    ('0', '330', '40', '12.3')
+    >>> angle(359.99), angle(-30.0), angle(40.0, 4, "ru"), angle(12.345, 3), angle(1.1e-13, 6)
+    ('0', '330', '40', '12.3', '0')
     """
-    s = num(deg % 360.0, digits, lang)
+    x = deg % 360.0
+    if x < 1e-9 or 360.0 - x < 1e-9:  # a rounding's worth from a full turn: 0
+        return "0"
+    s = num(x, digits, lang)
     return "0" if s == "360" else s
 

@@ -140,12 +140,12 @@ def load(path: str | Path) -> Measurement:
 
 
 def _num(value: Any, where: str, problems: Problems, *, positive=False, nonneg=False,
-         unit: str = "mm") -> float | None:
-    """A number of the file (``fileformat.read_number``); a length on the drawing is not
-    negative."""
+         unit: str = "mm", what: str = "a length on the drawing") -> float | None:
+    """A number of the file (``fileformat.read_number``); ``what`` (a length on the
+    drawing, a magnitude) is not negative."""
     x = read_number(value, where, problems, positive=positive, unit=unit)
     if x is not None and nonneg and x < 0:
-        problems.add(where, f"a length on the drawing cannot be negative, got {x:g}")
+        problems.add(where, f"{what} cannot be negative, got {x:g}")
         return None
     return x
 
@@ -445,9 +445,12 @@ def _magnitude_sense(value, key, problems, *, allow_sense):
             return None, 0
         sense = SENSE_WORDS.get(word, 0)
         value = mag
+        if mag < 0 and not word:
+            sense, value = -1, -mag  # "-4.82": clockwise, as a number would be
     elif allow_sense and isinstance(value, int | float) and not isinstance(value, bool) and value < 0:
         sense, value = -1, -value  # ω3 = -4.82: clockwise, as the engine signs it
-    x = _num(value, key, problems, nonneg=True)
+    x = _num(value, key, problems, nonneg=True, unit="",
+             what="a magnitude with a sense word" if allow_sense else "a magnitude")
     if x is None:
         return None, 0
     return x, sense

@@ -684,3 +684,19 @@ def test_an_angle_where_the_mechanism_does_not_close_is_the_measurement_files(tm
     (line,) = err.strip().splitlines()
     assert code == 2 and line.startswith(f"plans check: {path}: line 2: angle_deg: 180°: group 2–3 (RRR) "
                                          "cannot be assembled at φ1 = 180°")
+
+
+def test_signs_and_names_in_a_measurement_file(tmp_path, capsys):
+    """'-4.82' written as text is clockwise too; a negative velocity is 'a magnitude',
+    not 'a length on the drawing'; the Russian report names the mechanism in Russian."""
+    path = tmp_path / "w.toml"
+    path.write_text(f'mechanism = {json.dumps(str(PRESS))}\n[scales]\nmu_v = 0.05\n'
+                    '[segments]\npa = 60\n[values]\nomega3 = "-4.82"\n', encoding="utf-8")
+    (item,) = [it for it in ck.load(path).items if it.kind == "omega"]
+    assert (item.measured, item.sense) == (4.82, -1)
+    code, out, _ = run(capsys, "check", path, "--lang", "ru")
+    assert "Кулисный механизм пресса для брикетирования" in out
+    path.write_text(f'mechanism = {json.dumps(str(PRESS))}\n[scales]\nmu_v = 0.05\n'
+                    '[segments]\npa = 60\n[values]\nV_A3 = -2.77\n', encoding="utf-8")
+    code, _, err = run(capsys, "check", path)
+    assert code == 2 and "values.V_A3: a magnitude cannot be negative, got -2.77" in err
