@@ -207,13 +207,18 @@ def _finish(
     caption: str,
     under: list[str] = (),
     pad: float = PAD,
+    over: list[Item] = (),
 ) -> View:
     """Frame ``drawing`` with room for its labels, letter it, caption on top,
-    ``under`` (equations) below; shift everything to the box (0, 0)–(w, h)."""
-    x0, y0, x1, y1 = _bbox(drawing)
+    ``under`` (equations) below; shift everything to the box (0, 0)–(w, h). ``over``:
+    thin lines that no break cuts (a dimension's own arc), drawn after the breaks."""
+    drawing = list(drawing)
+    x0, y0, x1, y1 = _bbox(drawing + list(over))
     region = shp_box(x0 - pad, y0 - pad, x1 + pad, y1 + pad)
     thin = (LineType.THIN, LineType.DASHED, LineType.DASH_DOUBLE_DOT_THIN)
     is_soft = [isinstance(it, Segment | Polyline) and it.line in thin for it in drawing]
+    drawing += over
+    is_soft += [False] * len(over)
     placed = place_labels(labels,
                           obstacles_of([it for it, s in zip(drawing, is_soft, strict=True) if not s]),
                           region=region, distances=(1.0, 2.0, 3.0, 4.5, 6.0, 8.0),
@@ -456,6 +461,7 @@ def positions_view(sol, cycle, lang: str = "ru") -> View:
     shown = drawn(sol.solver, cycle)
     motion_all = shown.motion_all
     items: list[Item] = []
+    over: list[Item] = []  # drawn over the breaks under labels
     labels: list[LabelRequest] = []
 
     # trajectories, where they stay near the mechanism
@@ -519,10 +525,19 @@ def positions_view(sol, cycle, lang: str = "ru") -> View:
                 joints.add(n)
     for n in sorted(joints):
         items.append(Circle(_sheet(pos[n], mu_l), JOINT_R, LineType.MAIN, fill="white"))
+    shared: list[tuple[tuple[float, float], list[str]]] = []  # points at one place: one label
     for n in mech.point_names():
         if n in pos:
-            # close to its point even among the other positions' lines, which break for it
-            labels.insert(0, LabelRequest(_sheet(pos[n], mu_l), _markup(n), LETTER, "nw", blank=True))
+            xy = _sheet(pos[n], mu_l)
+            same = next((g for g in shared if math.dist(g[0], xy) < SHARED), None)
+            if same is None:
+                shared.append((xy, [n]))
+            else:
+                same[1].append(n)
+    for xy, names in reversed(shared):
+        # close to its point even among the other positions' lines, which break for it
+        labels.insert(0, LabelRequest(xy, ",".join(_markup(n) for n in names), LETTER, "nw",
+                                      blank=True))
     # stroke H of a linear output
     out = cycle.output
     w = WORDS[lang]
@@ -537,7 +552,7 @@ def positions_view(sol, cycle, lang: str = "ru") -> View:
         if arm is not None:
             pivot, tip = arm
             a, b = extremes[0][tip], extremes[1][tip]
-            items += _swing_arc(pos[pivot], a, b, mu_l)
+            over += _swing_arc(pos[pivot], a, b, mu_l)  # its value's break must not cut it
             along = [_sheet(_swing_point(pos[pivot], a, b, t), mu_l) for t in _SWING_AT]
             deg = math.degrees(cycle.stroke)
             labels.append(LabelRequest(along[0], f"{w['swing']} = {num(deg, 4, lang)}°",
@@ -546,7 +561,7 @@ def positions_view(sol, cycle, lang: str = "ru") -> View:
     caption = f"{w['positions']}, μ_l = {num(mu_l, 4, lang)} {w['m']}/{w['mm']}"
     under = [w["left_off"].format(k=", ".join(map(str, shown.left_off)),
                                   d=num(shown.limit, 2, lang))] if shown.left_off else []
-    return _finish("positions", items, labels, caption, under, pad=8.0)
+    return _finish("positions", items, labels, caption, under, pad=8.0, over=over)
 
 
 def _stroke_dimension(items, p1, p2, direction: complex, value: str) -> list[Item]:

@@ -279,11 +279,14 @@ def test_the_value_of_the_swing_breaks_the_thin_lines_under_it(scene):
             continue
         soft = isinstance(it, Segment | Polyline) and it.line in thin
         hit = any(g.intersects(label) for g in obstacles_of([it], clearance=0.0))
-        if soft:
-            assert i < at  # broken by the blank
-            crossing += hit
+        if soft and i > at:  # the dimension's own arc, drawn over the break: clear of it
+            assert not hit, it
+        elif soft:
+            crossing += hit  # broken by the blank
         else:
             assert i > at and not hit, it  # drawn over the blank, and clear of the value
+    # the dimension's own arc is drawn over the break, not cut by it
+    assert any(isinstance(it, Polyline) and it.line == LineType.THIN for it in items[at + 1:])
     others = [text_box(t) for t in items if isinstance(t, Text) and t is not psi[0]]
     assert not any(label.intersects(o) for o in others)
     if scene == "slotted_offset":
@@ -682,3 +685,13 @@ def test_the_stroke_is_dimensioned_along_its_guide_at_its_true_length(scene):
     along = ((tips[1][0] - tips[0][0]) * d.real - (tips[1][1] - tips[0][1]) * d.imag) / math.dist(*tips)
     assert abs(along) == pytest.approx(1.0, abs=1e-9)  # parallel to the guide
     assert d.real > 0 and h.rotate_deg == pytest.approx(-math.degrees(math.atan2(d.imag, d.real)))
+
+
+def test_points_at_one_place_on_the_plan_of_positions_share_a_label():
+    """The slider's centre of mass S3 is at C: two labels read 'S₃ C'."""
+    from drawing.scene import flatten
+
+    _, scene, *_ = _sheet(0)
+    view = next(g for g in scene.layer("views").items if g.name == "view positions")
+    texts = [t.text for t in flatten([view]) if isinstance(t, Text)]
+    assert "C,S_{3}" in texts and "C" not in texts and "S_{3}" not in texts
