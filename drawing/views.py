@@ -305,7 +305,7 @@ def plan_view(sol, kind: str, tag: str, lang: str = "ru", label: str | None = No
     for xy, names in groups:
         ang = math.degrees(math.atan2(-(xy[1] - cy), xy[0] - cx)) % 360
         prefer = ("e", "ne", "n", "nw", "w", "sw", "s", "se")[int(((ang + 22.5) % 360) // 45)]
-        reqs.append(LabelRequest(xy, ",".join(_markup(n) for n in names), LETTER, prefer))
+        reqs.append(LabelRequest(xy, ",".join(_markup(n) for n in names), LETTER, prefer, blank=True))
     title = WORDS[lang][kind]
     unit = "(м/с)/мм" if lang == "ru" and kind == "velocity" else (
         "(м/с²)/мм" if lang == "ru" else ("(m/s)/mm" if kind == "velocity" else "(m/s²)/mm"))
