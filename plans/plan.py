@@ -190,10 +190,15 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
 def cycle_extent(solver: Solver, n_positions: int = 12) -> float:
     """The larger side (m) of what the plan of positions draws with ``n_positions``
     positions (:attr:`plans.positions.Drawn.extent`): the sheet sizes it the same way."""
-    from .cycle import analyse_cycle
-    from .positions import drawn
+    key = ("cycle extent", n_positions)
+    got = solver.cache.get(key)
+    if got is None:  # once per solver: solve_position asks at every angle
+        from .cycle import analyse_cycle
+        from .positions import drawn
 
-    return drawn(solver, analyse_cycle(solver.mech, n_positions, solver=solver)).extent
+        got = solver.cache[key] = drawn(solver, analyse_cycle(solver.mech, n_positions,
+                                                              solver=solver)).extent
+    return got
 
 
 def _position_segments(solver: Solver, motion: Motion, pos: dict[str, complex]) -> dict[str, float]:
@@ -484,8 +489,10 @@ def _compile(kind: str, pole: str, tip: str, steps, ends):
         points.append((pn, v, rec))
         absolute(v, vec)
     values = ", ".join(dict((pn, v) for pn, v, _ in points).values())  # as the plan keeps them
-    segments = ", ".join(f"{key!r}: abs({var[b]} - {var[a]}) / mu" if var[a] != "0j"
-                         else f"{key!r}: abs({var[b]}) / mu" for key, (a, b) in ends.items())
+    # each length 0 up to ``tiny`` (see NOISE), in the one dict display
+    segments = ", ".join(
+        f"{key!r}: (m_ if (m_ := abs({var[b]} - {var[a]}) / mu) > tiny else 0.0)" if var[a] != "0j"
+        else f"{key!r}: (m_ if (m_ := abs({var[b]}) / mu) > tiny else 0.0)" for key, (a, b) in ends.items())
     unit = "m/s²" if kind == "acceleration" else "m/s"
     source = "\n".join([
         "def follow(store, cons, pos, mu):",
@@ -499,7 +506,7 @@ def _compile(kind: str, pole: str, tip: str, steps, ends):
         "        {" + ", ".join(f"{pn!r}: {rec}" for pn, _, rec in points) + "},",
         f"        ({''.join(v + ', ' for v in vectors)}),",
         f"        mu, {unit!r},",
-        "        {key: mm if mm > tiny else 0.0 for key, mm in {" + segments + "}.items()},",
+        "        {" + segments + "},",
         f"        {k(ends)}, tiny))",
     ])
     scope = {"record": record, "Plan": Plan, "PlanPoint": PlanPoint, "Source": Source,

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -70,7 +71,7 @@ class Drawn:
     def positions(self) -> list[dict[str, complex]]:
         return [p for p in (*self.cycle, *self.extremes, self.given) if p is not None]
 
-    @property
+    @cached_property
     def extent(self) -> float:
         """The larger side (m) of the box round it all: μl is chosen from this, so a
         point that runs far out between the positions drawn (a cross-slide near its dead
