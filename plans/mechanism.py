@@ -426,9 +426,10 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
             pr.add(f"links.{lid}.points.{point}", "the sliding point of a link without an axis is its origin: 0")
             continue
         sliders.append(Slider(lid, guide, point))
-        if guide.link == 0 and "label" not in body["guide"]:
+        if "label" not in body["guide"]:
             unnamed.add(len(sliders) - 1)
     sliders = _name_fixed_guides(sliders, unnamed)
+    sliders = _name_slots(sliders, unnamed)
     # what follows is derived from the links and sliders as a whole: only when they are
     # valid, so that one typo does not come back as a second, misleading message
     whole = not any(w.split(".")[0].split("[")[0] in ("frame", "links", "sliders") for w, _ in pr.items)
@@ -735,7 +736,8 @@ def _name_fixed_guides(sliders: list[Slider], unnamed: set[int]) -> list[Slider]
     def crosses(a: complex, b: complex) -> bool:
         return abs((a.conjugate() * b).imag) > 1e-12
 
-    renamed = [i for i in sorted(unnamed) if inclined(sliders[i].guide.direction)]
+    renamed = [i for i in sorted(unnamed)
+               if sliders[i].guide.link == 0 and inclined(sliders[i].guide.direction)]
     names = {s.guide.label: s.guide.direction for i, s in enumerate(sliders)
              if s.guide.link == 0 and i not in renamed}
     out = list(sliders)
@@ -750,6 +752,27 @@ def _name_fixed_guides(sliders: list[Slider], unnamed: set[int]) -> list[Slider]
 
 #: the languages a name may be given in
 LANGS = ("en", "ru")
+
+
+def _name_slots(sliders: list[Slider], unnamed: set[int]) -> list[Slider]:
+    """Two unlabelled slots of one link in different directions would both be x3-x3:
+    the second is x3′-x3′, the third x3″-x3″."""
+    out = list(sliders)
+    seen: dict[str, list[complex]] = {}
+    for i in sorted(unnamed):
+        g = out[i].guide
+        if g.link == 0 or g.label != f"x{g.link}-x{g.link}":
+            continue
+        dirs = seen.setdefault(g.label, [])
+        k = next((j for j, d in enumerate(dirs) if abs((d.conjugate() * g.direction).imag) <= 1e-12),
+                 None)
+        if k is None:
+            k = len(dirs)
+            dirs.append(g.direction)
+        if k:
+            mark = "′" * k if k < 3 else f"({k})"
+            out[i] = replace(out[i], guide=replace(g, label=f"x{g.link}{mark}-x{g.link}{mark}"))
+    return out
 
 
 def _title_names(value, pr: Problems, default: str) -> tuple[str, dict[str, str]]:

@@ -9,6 +9,7 @@ beyond products and quotients of values the plans already hold.
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -264,7 +265,8 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
         pt = plan.points[px]
         out += [t["eqs"].format(x=x), "", f"- `{cons.equation}`"]
         for sl in (g.group.s1, g.group.s2):  # a guide named x3-x3 by the tool: say what it is
-            if sl is not None and sl.guide.label == f"x{sl.guide.link}-x{sl.guide.link}":
+            k = sl.guide.link if sl is not None else 0
+            if k and re.fullmatch(rf"x{k}(′*)-x{k}\1", sl.guide.label):
                 out.append(f"- {t['xk'].format(x=sl.guide.label, k=sl.guide.link)}")
         if acc:  # a block on a guide whose link translates: no Coriolis term, and why
             for sl in (g.group.s1, g.group.s2):
@@ -300,8 +302,9 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
                                            n(mm), u["mm"]).markdown()[2:])
             out.append(f"- {r.unknown}: {t['dir']} {r.relation}" + (f"; {', '.join(parts)}" if parts else ""))
         lines = pt.source.lines
-        out += ["", t["build"].format(l0=lines[0].through, r0=lines[0].relation,
-                                      l1=lines[1].through, r1=lines[1].relation, x=px), ""]
+        out += ["", t["build"].format(l0=_letter(plan, lines[0].through), r0=lines[0].relation,
+                                      l1=_letter(plan, lines[1].through), r1=lines[1].relation,
+                                      x=px), ""]
         # similarity points of the group's links, then values; a link that translates
         # has one velocity and one acceleration for all its points
         moving = tuple(k for k in (g.group.a, g.group.b) if k not in sol.solver.translating)
@@ -317,11 +320,11 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
                     if ln.unknown == r.unknown:
                         start = ln.through
                 mm = plan.mm(start, px)
-                out.append(Step(f"{r.unknown} = {start}{px}·{mus}", f"{n(mm, 5)}·{n(mu)}", n(mm * mu), unit).markdown())
+                out.append(Step(f"{r.unknown} = {_letter(plan, start)}{px}·{mus}", f"{n(mm, 5)}·{n(mu)}", n(mm * mu), unit).markdown())
             elif r.unknown_kind == "sliding" and r.base is not None:
                 start = next((ln.through for ln in pt.source.lines if ln.unknown == r.unknown), plan_name(r.base))
                 mm = plan.mm(start, px)
-                out.append(Step(f"{r.unknown} = {start}{px}·{mus}", f"{n(mm, 5)}·{n(mu)}", n(mm * mu), unit).markdown())
+                out.append(Step(f"{r.unknown} = {_letter(plan, start)}{px}·{mus}", f"{n(mm, 5)}·{n(mu)}", n(mm * mu), unit).markdown())
         for k in (g.group.a, g.group.b):  # after the values above, as a list of its own
             if k in moving:
                 continue

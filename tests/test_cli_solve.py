@@ -302,3 +302,12 @@ def test_every_point_of_a_yoke_is_an_output_and_a_slider_link_says_so(capsys, tm
     path.write_text(SCENES["crank_slider_offset"].toml, "utf-8")
     code, out, _ = run(capsys, "report", path)
     assert "Link 3 translates (ω3 = 0): all its points have one velocity, V_M = V_B:" in out
+
+
+def test_a_fixed_point_is_the_pole_everywhere_in_the_note(capsys):
+    """B is fixed, so b lies at the pole: the note drew 'through b' and read 'ba3' next to
+    'pc = pa3·BC/BA3'. Every step now writes p (π)."""
+    code, out, _ = run(capsys, "report", "samples/press.toml")
+    assert "Through a draw a line ∥ BC, through p a line ⊥ BA3; they meet at a3." in out
+    assert "- `V_A3B = pa3·μv = 55.432·0.05 = 2.772 m/s`" in out
+    assert "through b " not in out and "ba3·μ" not in out

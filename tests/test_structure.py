@@ -150,3 +150,17 @@ def test_the_variants_are_named_in_the_language_of_the_note():
     assert variant(5).name_in("ru") == "Шарнирный четырёхзвенник, вариант 5"
     assert variant(5).name_in("en") == "Four-bar linkage, variant 5"
     assert variant(4).name_in("ru") == "Кривошипно-ползунный механизм, вариант 4"
+
+
+def test_two_slots_of_one_link_in_two_directions_get_two_names():
+    """yoke_on_rocker with link 2's guide on link 3 turned to 5°: both slots of link 3
+    were 'x3-x3' in two directions; the second is now x3′-x3′."""
+    import tomllib
+
+    from plans.scenes import SCENES
+
+    text = SCENES["yoke_on_rocker"].toml.replace("guide = { link = 3 }",
+                                                  "guide = { link = 3, offset = 0.02, angle_deg = 5 }")
+    mech = from_dict(tomllib.loads(text), "y.toml")
+    labels = {s.link: s.guide.label for s in mech.sliders}
+    assert (labels[2], labels[5]) == ("x3-x3", "x3′-x3′")
