@@ -137,7 +137,8 @@ def text_box(t: Text) -> Polygon:
     a = math.radians(t.rotate_deg)
     ca, sa = math.cos(a), math.sin(a)
     px, py = t.pos
-    local = ((x0, top), (x0 + w, top), (x0 + w, bottom), (x0, bottom))
+    lean = SLANT * (base - top) if t.italic else 0.0
+    local = ((x0, top), (x0 + w + lean, top), (x0 + w + lean, bottom), (x0, bottom))
     return Polygon([(px + x * ca - y * sa, py + x * sa + y * ca) for x, y in local])
 
 

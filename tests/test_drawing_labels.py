@@ -38,29 +38,38 @@ def test_text_width_follows_the_fixed_rule():
 
 
 def test_text_box_honours_anchor_and_baseline():
-    t = Text((100, 50), "ДД", size=10)  # 14 wide, 10 above the baseline, 3 below
+    t = Text((100, 50), "ДД", size=10, italic=False)  # 14 wide, 10 above the baseline, 3 below
     assert text_box(t).bounds == pytest.approx((100, 40, 114, 53))
     assert text_box(
-        Text((100, 50), "ДД", size=10, anchor="middle")
+        Text((100, 50), "ДД", size=10, anchor="middle", italic=False)
     ).bounds == pytest.approx((93, 40, 107, 53))
     assert text_box(
-        Text((100, 50), "ДД", size=10, anchor="end")
+        Text((100, 50), "ДД", size=10, anchor="end", italic=False)
     ).bounds == pytest.approx((86, 40, 100, 53))
     assert text_box(
-        Text((100, 50), "ДД", size=10, baseline="middle")
+        Text((100, 50), "ДД", size=10, baseline="middle", italic=False)
     ).bounds == pytest.approx((100, 45, 114, 58))
     assert text_box(
-        Text((100, 50), "ДД", size=10, baseline="hanging")
+        Text((100, 50), "ДД", size=10, baseline="hanging", italic=False)
     ).bounds == pytest.approx((100, 50, 114, 63))
 
 
 def test_text_box_honours_rotation():
     # 90° clockwise on the sheet: the text runs downwards from pos
-    b = text_box(Text((0, 0), "ДД", size=10, rotate_deg=90)).bounds
+    b = text_box(Text((0, 0), "ДД", size=10, rotate_deg=90, italic=False)).bounds
     assert b == pytest.approx((-3, 0, 10, 14))
     # 180°: upside down about pos
-    b = text_box(Text((0, 0), "ДД", size=10, rotate_deg=180)).bounds
+    b = text_box(Text((0, 0), "ДД", size=10, rotate_deg=180, italic=False)).bounds
     assert b == pytest.approx((-14, -3, 0, 10))
+
+
+def test_a_slanted_texts_box_takes_in_the_lean_of_its_letters():
+    """GOST type B leans 75°: the top of the last letter stands h·tan 15° right of its
+    advance; a label placed by the upright box touched the line beside it."""
+    upright = text_box(Text((100, 50), "ДД", size=10, italic=False)).bounds
+    slanted = text_box(Text((100, 50), "ДД", size=10)).bounds
+    assert slanted[:2] == upright[:2] and slanted[3] == upright[3]
+    assert slanted[2] - upright[2] == pytest.approx(10 * math.tan(math.radians(15)))
 
 
 def test_fit_text_takes_the_largest_size_that_fits():
@@ -141,7 +150,7 @@ def test_labels_avoid_each_other_and_the_taken_boxes():
     reqs = [
         LabelRequest(anchor, name, 3.5, prefer="ne") for name in ("a", "b", "c", "d")
     ]
-    placed = place_labels(reqs, obstacles=[], taken=taken)
+    placed = place_labels(reqs, obstacles=[], taken=taken, distances=(1.0, 2.0, 3.0, 4.5))
     assert all(p.clear for p in placed)
     assert overlaps([p.text for p in placed]) == []
     assert not any(p.box.intersects(taken[0]) for p in placed)
@@ -181,9 +190,9 @@ def test_obstacles_of_widens_lines_by_half_the_width_and_clearance():
 
 
 def test_overlaps_ignores_boxes_that_only_touch():
-    a = Text((0, 0), "ДД", size=10)  # x 0…14
-    b = Text((14, 0), "ББ", size=10)  # x 14…28: shares an edge
-    c = Text((27, 0), "ГГ", size=10)  # overlaps b
+    a = Text((0, 0), "ДД", size=10, italic=False)  # x 0…14
+    b = Text((14, 0), "ББ", size=10, italic=False)  # x 14…28: shares an edge
+    c = Text((27, 0), "ГГ", size=10, italic=False)  # overlaps b
     assert overlaps([a, b, c]) == [(1, 2)]
 
 
@@ -214,13 +223,13 @@ def test_labels_placed_clear_never_overlap(points):
 
 
 def test_markup_indices_are_smaller_and_widen_the_box():
-    plain = text_box(Text((0, 0), "V", size=10)).bounds
-    indexed = text_box(Text((0, 0), "V_{BA}", size=10, markup=True)).bounds
+    plain = text_box(Text((0, 0), "V", size=10, italic=False)).bounds
+    indexed = text_box(Text((0, 0), "V_{BA}", size=10, markup=True, italic=False)).bounds
     # V at 10 mm (0.7 h), then "BA" at 7 mm after a spacing of its own size
     assert indexed[2] == pytest.approx(10 * 0.7 + 7 * 0.2 + 7 * (0.7 + 0.2 + 0.7))
     assert indexed[3] == pytest.approx(10 * (0.3 + 0.3 * 0.7))  # subscript hangs lower
     assert plain[1] == indexed[1] == -10
-    sup = text_box(Text((0, 0), "a^n", size=10, markup=True)).bounds
+    sup = text_box(Text((0, 0), "a^n", size=10, markup=True, italic=False)).bounds
     assert sup[1] == pytest.approx(-10 * (0.45 + 0.7))  # superscript reaches higher
 
 

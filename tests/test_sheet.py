@@ -135,7 +135,7 @@ def test_cli_stdout_and_batch(tmp_path):
     assert "Иванов" in texts and "1:10" in texts
     # the press file fixes its scales, small for A1: the command says so, and how to mend it
     assert r.stderr.decode() == (
-        "plans sheet: note: samples/press.toml: the views take 21% of the A1 sheet's field "
+        "plans sheet: note: samples/press.toml: the views take 22% of the A1 sheet's field "
         "at the scale factors the file fixes (μl, μv, μa); leave them out of [scales] for "
         "the sheet to choose them, or take a smaller --format\n")
     r = subprocess.run([sys.executable, "-m", "plans", "sheet", "--variant", "all", "-o", str(tmp_path)],
@@ -188,7 +188,7 @@ def test_only_a_sheet_left_empty_by_the_files_own_scales_gets_a_note():
 
     mech, _, sheet, info, _ = _sheet("press")
     assert 0.15 < share_used(sheet, info["placed"]) < SPARSE
-    assert "21% of the A1 sheet's field" in sparse_note(mech, sheet, info["placed"])
+    assert "22% of the A1 sheet's field" in sparse_note(mech, sheet, info["placed"])
     mech, _, sheet, info, _ = _sheet("press", "A2")
     assert share_used(sheet, info["placed"]) > 0.45
     assert sparse_note(mech, sheet, info["placed"]) is None
