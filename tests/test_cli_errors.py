@@ -507,7 +507,7 @@ def test_outputs_that_would_collide_or_fail_are_refused_first(capsys, tmp_path, 
     (["bench", "--budget", "inf"], "plans bench: command line: argument --budget: 'inf' is not a number from 0 to 600"),
     (["bench", "--plan-max", "0"], "argument --plan-max: '0' is not a whole number from 1 to 10000000"),
     (["bench", "--methods", ","], "plans bench: command line: --methods: give at least one of"),
-    (["solve", "{p}", "{p}"], "plans: command line: unrecognized arguments"),
+    (["solve", "{p}", "{p}"], "plans solve: command line: unrecognized arguments"),
 ])
 def test_command_line_mistakes_are_one_line_and_exit_2(capsys, argv, message):
     code, err = _main_exit(capsys, *(a.format(p=PRESS) for a in argv))
