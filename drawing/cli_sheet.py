@@ -43,7 +43,7 @@ def configure(p) -> None:
     p.add_argument("--format", default="A1", choices=["A0", "A1", "A2", "A3", "A4"],
                    help="sheet format (default A1)")
     p.add_argument("--lang", default="ru", choices=["ru", "en"], help="language of the sheet (default ru)")
-    p.add_argument("--positions", type=int, default=12, metavar="N",
+    p.add_argument("--positions", type=number(3, 72, integer=True), default=12, metavar="N",
                    help="crank positions on the plan of positions (default 12)")
     p.add_argument("--plans", metavar="1,4",
                    help="position numbers (from an extreme position) to draw the plans for; "

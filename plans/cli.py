@@ -194,10 +194,13 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
-    args, extra = parser.parse_known_args(argv)
-    if extra:  # blamed on the command, which lists what it takes in its --help
-        command = parser.commands.get(getattr(args, "command", None) or "", parser)
-        command.error(f"unrecognized arguments: {' '.join(extra)}")
+    try:  # argparse ends --help and its own errors with SystemExit: main returns the code
+        args, extra = parser.parse_known_args(argv)
+        if extra:  # blamed on the command, which lists what it takes in its --help
+            command = parser.commands.get(getattr(args, "command", None) or "", parser)
+            command.error(f"unrecognized arguments: {' '.join(extra)}")
+    except SystemExit as exc:
+        return exc.code if isinstance(exc.code, int) else EXIT_INPUT
     if not getattr(args, "run", None):
         parser.print_help()
         return EXIT_INPUT

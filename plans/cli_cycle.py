@@ -20,7 +20,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .cli import EXIT_INPUT, EXIT_OK, add_source, mechanism_from, write_output
+from .cli import EXIT_INPUT, EXIT_OK, add_source, mechanism_from, number, write_output
 from .fmt import from_x, num
 
 MAX_POSITIONS = 1_000_000
@@ -30,7 +30,7 @@ def configure(p) -> None:
     add_source(p)
     p.add_argument(
         "--positions",
-        type=int,
+        type=number(1, MAX_POSITIONS, integer=True),
         default=12,
         metavar="N",
         help="number of crank positions (default 12), numbered from an extreme position",
@@ -76,13 +76,8 @@ class CycleTable:
 def run(args) -> int:
     import sys
 
-    from .errors import InputError
 
     n = args.positions
-    if not 1 <= n <= MAX_POSITIONS:
-        raise InputError(
-            "command line", f"--positions: {n} is not within 1…{MAX_POSITIONS}"
-        )
     mech = mechanism_from(args)
     table = compute(mech, n)
     if args.json:
