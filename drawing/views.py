@@ -642,12 +642,16 @@ def _swing_arc(pivot: complex, a: complex, b: complex, mu_l: float) -> list[Item
 
 def diagrams_view(mech, cycle, lang: str = "ru", width: float = 180.0, height: float = 40.0,
                   solver=None) -> View | None:
-    """s(φ), v(φ), a(φ) of the output over one turn from the first position."""
+    """s(φ), v(φ), a(φ) of the output over one turn from the first position; ψ(φ), ω(φ),
+    ε(φ) of an output link that rocks, or that turns all the way round (a rotating slotted
+    link: ψ then grows by a full turn)."""
     from plans.kinematics import Solver
 
     solver = solver or Solver(mech)
     out = cycle.output
-    if out is None or not cycle.stroke or not cycle.full_turn or not cycle.positions:
+    if out is None or not cycle.full_turn or not cycle.positions:
+        return None
+    if not cycle.stroke and out.kind != "angular":
         return None
     sense = 1.0 if mech.driver.omega >= 0 else -1.0
     phi0 = cycle.positions[0]
@@ -656,6 +660,8 @@ def diagrams_view(mech, cycle, lang: str = "ru", width: float = 180.0, height: f
     if not np.asarray(m.valid).all():
         return None
     s = np.asarray(out.value(m, mech), dtype=float)
+    if out.kind == "angular":
+        s = np.unwrap(s)  # an angle in (−π, π]: continuous across ±π, and past a full turn
     s = s - s[0]
     flip = -1.0 if abs(s.min()) > abs(s.max()) else 1.0  # s from the starting extreme, ≥ 0
     s = flip * s

@@ -699,3 +699,27 @@ def test_points_at_one_place_on_the_plan_of_positions_share_a_label():
     view = next(g for g in scene.layer("views").items if g.name == "view positions")
     texts = [t.text for t in flatten([view]) if isinstance(t, Text)]
     assert "C,S_{3}" in texts and "C" not in texts and "S_{3}" not in texts
+
+
+def test_an_output_link_that_turns_all_the_way_gets_its_diagrams():
+    """The rotating slotted link has no stroke, and its sheet said «Диаграммы не строятся:
+    нет хода выходного звена». ψ(φ), ω(φ), ε(φ) are drawn; ψ grows by one full turn."""
+    from drawing.scene import Polyline, Segment
+    from drawing.views import diagrams_view
+    from plans.cycle import analyse_cycle
+    from plans.scenes import SCENES
+
+    mech = SCENES["slotted_rotating"].mechanism()
+    cycle = analyse_cycle(mech)
+    assert cycle.output.kind == "angular" and not cycle.stroke
+    view = diagrams_view(mech, cycle, "ru")
+    assert view is not None
+    texts = [t.text for t in view.items if isinstance(t, Text)]
+    assert "ψ, рад" in texts and "ω, рад/с" in texts
+    (mu_text,) = [t for t in texts if t.startswith("μ_{ψ} = ")]
+    mu = float(mu_text.split("= ")[1].split()[0].replace(",", "."))
+    axis = next(it for it in view.items if isinstance(it, Segment))
+    curve = next(it for it in view.items if isinstance(it, Polyline))
+    rise = (curve.points[0][1] - curve.points[-1][1]) * mu  # the sheet's y points down
+    assert abs(rise) == pytest.approx(2 * math.pi, rel=1e-6)
+    assert curve.points[0][1] == pytest.approx(axis.p1[1])  # ψ starts at 0
