@@ -58,7 +58,7 @@ class Scene:
 # --- RRR: Grashof crank-rocker a = 0.05, b = 0.2, c = 0.15, d = 0.2 ----------------------
 # extreme positions: AD = b ± a = 0.25 / 0.15 ⇒ θ = 11.320°, ψ = 41.810°, K = 1.1342
 CRANK_ROCKER = """
-name = "Crank-rocker four-bar"
+name = { en = "Crank-rocker four-bar", ru = "Кривошипно-коромысловый механизм" }
 output = "B"
 [frame]
 O = [0.0, 0.0]
@@ -85,7 +85,7 @@ B = "above OD"
 # --- RRP: offset crank-slider r = 0.1, l = 0.4, e = 0.05 ---------------------------------
 # θ = arcsin(e/(l−r)) − arcsin(e/(l+r)) = 3.855°, H = √((l+r)²−e²) − √((l−r)²−e²) = 0.20169 m
 CRANK_SLIDER_OFFSET = """
-name = "Offset crank-slider"
+name = { en = "Offset crank-slider", ru = "Дезаксиальный кривошипно-ползунный механизм" }
 output = "B"
 [frame]
 O = [0.0, 0.0]
@@ -113,7 +113,7 @@ B = "right of O"
 
 # --- RRP: central crank-slider (closed form x = r cosφ + √(l² − r² sin²φ)) -----------------
 CRANK_SLIDER_CENTRAL = """
-name = "Central crank-slider"
+name = { en = "Central crank-slider", ru = "Центральный кривошипно-ползунный механизм" }
 output = "B"
 [frame]
 O = [0.0, 0.0]
@@ -139,7 +139,7 @@ B = "right of O"
 # --- RPR + RRP on a moving guide: the slotted link drives a link hinged at a fixed pivot E
 # whose end F carries a block sliding along the rocker (Coriolis term in the RRP group) ----
 SLOT_RRP_MOVING = """
-name = "Slotted link with a block on the rocker"
+name = { en = "Slotted link with a block on the rocker", ru = "Кулисный механизм с камнем на коромысле" }
 output = "F"
 [frame]
 O = [0.0, 0.0]
@@ -178,7 +178,7 @@ F = "above E"
 
 # --- RPR: oscillating slotted link r = 0.1 < L = 0.3: θ = ψ = 2·arcsin(r/L) = 38.942° -----
 SLOTTED_OSCILLATING = """
-name = "Oscillating slotted link"
+name = { en = "Oscillating slotted link", ru = "Механизм с качающейся кулисой" }
 output = "C"
 [frame]
 O = [0.0, 0.0]
@@ -202,7 +202,7 @@ guide = { link = 3 }
 
 # --- RPR with the guide offset from the rocker pivot by 0.02 m ---------------------------
 SLOTTED_OFFSET = """
-name = "Slotted link, offset guide"
+name = { en = "Slotted link, offset guide", ru = "Кулисный механизм со смещённой направляющей" }
 output = "C"
 [frame]
 O = [0.0, 0.0]
@@ -227,7 +227,7 @@ guide = { link = 3, offset = 0.02 }
 
 # --- RPR: rotating slotted link r = 0.2 > L = 0.1 ----------------------------------------
 SLOTTED_ROTATING = """
-name = "Rotating slotted link"
+name = { en = "Rotating slotted link", ru = "Механизм с вращающейся кулисой" }
 output = "C"
 [frame]
 O = [0.0, 0.0]
@@ -252,7 +252,7 @@ guide = { link = 3 }
 # --- PRP: tangent mechanism, block on the crank's guide, hinged to a slider on x = 0.2 ----
 # closed form: y_C = d·tanφ, v = dω/cos²φ, a = 2dω² tanφ/cos²φ
 TANGENT = """
-name = "Tangent mechanism"
+name = { en = "Tangent mechanism", ru = "Тангенсный механизм" }
 output = "C"
 [frame]
 O = [0.0, 0.0]
@@ -279,7 +279,7 @@ guide = { link = 0, through = [0.2, 0.0], angle_deg = 90 }
 
 # --- RPP: Scotch yoke, x_D = r cos φ ------------------------------------------------------
 SCOTCH_YOKE = """
-name = "Scotch yoke"
+name = { en = "Scotch yoke", ru = "Синусный механизм" }
 output = "D"
 [frame]
 O = [0.0, 0.0]
@@ -308,7 +308,7 @@ guide = { link = 0, through = [0.0, 0.0], angle_deg = 0 }
 
 # --- RPP with an inclined slot (60° to the yoke) on a guide inclined at 20° --------------
 YOKE_INCLINED = """
-name = "Inclined Scotch yoke"
+name = { en = "Inclined Scotch yoke", ru = "Синусный механизм с наклонной направляющей" }
 output = "D"
 [frame]
 O = [0.0, 0.0]
@@ -337,7 +337,7 @@ guide = { link = 0, through = [0.0, -0.05], angle_deg = 20 }
 # slotted link (at 15° to it, offset 0.1), the block on the crank pin A moves in the
 # yoke's 60° slot; Coriolis terms in both routes of the RPP group ----------------------
 YOKE_ON_ROCKER = """
-name = "Yoke sliding on a slotted link"
+name = { en = "Yoke sliding on a slotted link", ru = "Синусный механизм на кулисе" }
 [frame]
 O = [0.0, 0.0]
 B = [0.0, -0.44]
@@ -376,7 +376,7 @@ guide = { link = 3, offset = 0.1, angle_deg = 15 }
 # 0.05 from O) and is hinged to a block sliding on the slotted link's offset guide. The
 # guides turn parallel near φ = 200° and 340°: the range is 0°…180° -----------------------
 PRP_TWO_MOVING = """
-name = "Cross-slide on the crank and the slotted link"
+name = { en = "Cross-slide on the crank and the slotted link", ru = "Крестовый ползун на кривошипе и кулисе" }
 [frame]
 O = [0.0, 0.0]
 B = [0.0, -0.3]
@@ -412,7 +412,7 @@ guide = { link = 3, offset = 0.03 }
 # --- RPR, general: the rocker's pivot B off its axis, the guide through [0.05, −0.02] at
 # 75° to the axis, extra points on every link ----------------------------------------------
 SLOTTED_GENERAL = """
-name = "Slotted link, general guide"
+name = { en = "Slotted link, general guide", ru = "Кулисный механизм с направляющей общего положения" }
 [frame]
 O = [0.0, 0.0]
 B = [0.05, -0.3]
