@@ -7,7 +7,7 @@ sees half a sheet and a failed export leaves the old file in place.
 cairosvg is an optional dependency (``pip install 'vector-plans[export]'``),
 imported only when a PNG or PDF is asked for.  It does not read the embedded
 ``@font-face``; it renders with the project's own osifont all the same (see
-:func:`_own_font`), so a PNG looks as the SVG does on any machine.
+:func:`_render`), so a PNG looks as the SVG does on any machine.
 """
 
 from __future__ import annotations
@@ -42,7 +42,6 @@ def require() -> None:
 
 
 def _cairosvg() -> ModuleType:
-    _own_font()
     try:
         import cairosvg
     except (ImportError, OSError) as exc:  # OSError: the cairo C library is absent
@@ -54,6 +53,8 @@ _FONTS_CONF = """<?xml version="1.0"?>
 <!DOCTYPE fontconfig SYSTEM "fonts.dtd">
 <fontconfig>
   <include ignore_missing="yes">/etc/fonts/fonts.conf</include>
+  <include ignore_missing="yes">/usr/local/etc/fonts/fonts.conf</include>
+  <include ignore_missing="yes">/opt/homebrew/etc/fonts/fonts.conf</include>
   <dir>{fonts}</dir>
   <selectfont>
     <acceptfont><glob>{fonts}/*</glob></acceptfont>
@@ -62,29 +63,37 @@ _FONTS_CONF = """<?xml version="1.0"?>
 </fontconfig>
 """
 
+_fonts_ready = False
 
-def _own_font() -> None:
-    """Let cairo draw with the project's osifont, as the SVG embeds it.
+
+def _render(call, svg: str, **options) -> bytes:
+    """``call`` (cairosvg's svg2png or svg2pdf) on ``svg``, drawn with the project's
+    osifont as the SVG embeds it.
 
     cairosvg ignores the SVG's embedded @font-face and asks fontconfig for "osifont": the
     Debian package's copy prints Ё, ё, Э, э as black boxes («четыр█хзвенник»), and a
-    machine without it falls back to another face. A fontconfig file is written that
-    adds ``drawing/fonts`` and accepts only its osifont, the system's fonts staying for
-    everything else. It takes effect when fontconfig starts, so only if the process has
-    not set FONTCONFIG_FILE itself.
+    machine without it falls back to another face. For the process's first render (when
+    fontconfig reads its setup) FONTCONFIG_FILE points at a private file that adds
+    ``drawing/fonts`` and accepts only its osifont, the system's fonts staying for
+    everything else; the variable is put back at once, so child processes never see it.
+    A process that sets FONTCONFIG_FILE itself keeps its own.
     """
-    import hashlib
+    global _fonts_ready
+    if _fonts_ready or "FONTCONFIG_FILE" in os.environ:
+        return call(bytestring=svg.encode("utf-8"), **options)
     import tempfile
 
-    if "FONTCONFIG_FILE" in os.environ:
-        return
     from drawing.svg import FONT_FILE
 
-    text = _FONTS_CONF.format(fonts=FONT_FILE.parent.resolve())
-    conf = Path(tempfile.gettempdir()) / f"vector-plans-fonts-{hashlib.sha1(text.encode()).hexdigest()[:12]}.conf"
-    if not conf.is_file():
-        write_bytes_atomic(text.encode("utf-8"), conf)
+    folder = tempfile.mkdtemp(prefix="vector-plans-fonts-")  # private: mode 0700
+    conf = Path(folder) / "fonts.conf"
+    conf.write_text(_FONTS_CONF.format(fonts=FONT_FILE.parent.resolve()), encoding="utf-8")
     os.environ["FONTCONFIG_FILE"] = str(conf)
+    try:
+        return call(bytestring=svg.encode("utf-8"), **options)
+    finally:
+        del os.environ["FONTCONFIG_FILE"]
+        _fonts_ready = True
 
 
 def write_bytes_atomic(data: bytes, path: str | os.PathLike[str]) -> Path:
@@ -104,12 +113,12 @@ def write_svg(svg: str, path: str | os.PathLike[str]) -> Path:
 
 def png_bytes(svg: str, dpi: float = 150) -> bytes:
     """The SVG rendered to a PNG at ``dpi`` (an A1 sheet at 150 dpi is 4967 × 3508 px)."""
-    return _cairosvg().svg2png(bytestring=svg.encode("utf-8"), dpi=dpi)
+    return _render(_cairosvg().svg2png, svg, dpi=dpi)
 
 
 def pdf_bytes(svg: str) -> bytes:
     """The SVG rendered to a one-page PDF of the sheet's real size."""
-    return _cairosvg().svg2pdf(bytestring=svg.encode("utf-8"))
+    return _render(_cairosvg().svg2pdf, svg)
 
 
 def write_png(svg: str, path: str | os.PathLike[str], dpi: float = 150) -> Path:

@@ -127,7 +127,7 @@ def check_outputs(args, outputs=OUTPUTS) -> None:
         out = getattr(args, attr)
         if out in (None, "") and attr != "output":  # not asked for ('' is bench's "no chart")
             continue
-        target = "-" if out in (None, "-") else str(out)
+        target = "-" if out in (None, "-") or _is_stdout(str(out)) else str(out)
         for other_opt, other in seen:
             if (target == "-" and other == "-") or (target != "-" and other != "-"
                                                     and _same_file(target, other)
@@ -288,14 +288,24 @@ def write_output(path: str | None, text: str | bytes) -> None:
 
 
 def _device(path: str) -> bool:
-    """A character device or a pipe (/dev/null): written into, never replaced."""
+    """The null device, which any number of outputs may share."""
     import os
-    import stat
 
     try:
-        return not stat.S_ISREG(os.stat(path).st_mode) and not stat.S_ISDIR(os.stat(path).st_mode)
+        return os.path.samefile(path, os.devnull)
     except OSError:
         return False
+
+
+def _is_stdout(path: str) -> bool:
+    """/dev/stdout, /dev/fd/1 or anything else that is this process's standard output."""
+    import os
+
+    try:
+        a, b = os.stat(path), os.fstat(sys.stdout.fileno())
+    except (OSError, ValueError, AttributeError):
+        return False
+    return (a.st_dev, a.st_ino) == (b.st_dev, b.st_ino) and not _device(path)
 
 
 def _target(path: str):

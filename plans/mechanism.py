@@ -755,23 +755,29 @@ LANGS = ("en", "ru")
 
 
 def _name_slots(sliders: list[Slider], unnamed: set[int]) -> list[Slider]:
-    """Two unlabelled slots of one link in different directions would both be x3-x3:
-    the second is x3′-x3′, the third x3″-x3″."""
+    """Two slots of one link in different directions would both be x3-x3: the second is
+    x3′-x3′, the third x3′′-x3′′, whatever names the file gave the others."""
     out = list(sliders)
-    seen: dict[str, list[complex]] = {}
+
+    def parallel(a: complex, b: complex) -> bool:
+        return abs((a.conjugate() * b).imag) <= 1e-12
+
+    taken = {(s.guide.link, s.guide.label): s.guide.direction for i, s in enumerate(out)
+             if i not in unnamed and s.guide.link}  # the file's own labels first
     for i in sorted(unnamed):
         g = out[i].guide
         if g.link == 0 or g.label != f"x{g.link}-x{g.link}":
             continue
-        dirs = seen.setdefault(g.label, [])
-        k = next((j for j, d in enumerate(dirs) if abs((d.conjugate() * g.direction).imag) <= 1e-12),
-                 None)
-        if k is None:
-            k = len(dirs)
-            dirs.append(g.direction)
+        k = 0
+        while True:
+            mark = "′" * k
+            name = f"x{g.link}{mark}-x{g.link}{mark}"
+            d = taken.setdefault((g.link, name), g.direction)
+            if parallel(d, g.direction):
+                break
+            k += 1
         if k:
-            mark = "′" * k if k < 3 else f"({k})"
-            out[i] = replace(out[i], guide=replace(g, label=f"x{g.link}{mark}-x{g.link}{mark}"))
+            out[i] = replace(out[i], guide=replace(g, label=name))
     return out
 
 

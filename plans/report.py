@@ -332,10 +332,8 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
                                       *(q for q, o in m.point_link.items() if o == k)]))
             same = [nm for nm in dict.fromkeys(plan_name(q) for q in own)
                     if nm in plan.points and nm != px and plan.points[nm].source.kind != "pole"]
-            if same:
-                names = [_mech_name(sol, nm) for nm in same]
-                if x in own:  # the group's own point is one of them
-                    names.append(x)
+            names = [_mech_name(sol, nm) for nm in same] + ([x] if x in own else [])
+            if len(names) >= 2:  # a block with one point has nothing to equate
                 eq = " = ".join(f"{sym}_{q}" for q in names)
                 out += ["", t["translates"].format(i=k, eq=eq, what=t["acc" if acc else "vel"]), ""]
                 out += _values(sol, plan, same, lang)

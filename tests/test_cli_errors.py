@@ -600,3 +600,15 @@ def test_outputs_through_links_and_devices(capsys, tmp_path):
     assert code == 0, err
     code, _, err = run(capsys, "solve", "--variant", "3", "-o", "")
     assert code == 2 and err == "plans solve: command line: an output option was given an empty file name\n"
+
+
+@pytest.mark.parametrize("argv", [["-o", "/dev/stdout", "--png", "/dev/stdout"],
+                                  ["--png", "/dev/stdout"]])
+def test_two_outputs_into_one_pipe_are_refused(tmp_path, argv):
+    """/dev/stdout is standard output whatever it is called: an SVG and a PNG mixed in
+    one pipe were written with exit 0."""
+    r = subprocess.run([sys.executable, "-m", "plans", "sheet", "--variant", "3", *argv],
+                       cwd=ROOT, env={**os.environ, "PYTHONPATH": str(ROOT)},
+                       stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    assert r.returncode == 2 and r.stdout == b""
+    assert b"are both stdout" in r.stderr

@@ -449,7 +449,8 @@ def test_png_export_draws_yo_and_e_with_the_projects_font(tmp_path):
         "           '<text x=\"5\" y=\"45\" font-family=\"osifont\" font-size=\"40\">' + ch + '</text></svg>')\n"
         "    im = Image.open(io.BytesIO(export.png_bytes(svg, dpi=72))).convert('L')\n"
         "    return sum(1 for v in im.getdata() if v < 128)\n"
-        "print(json.dumps({c: dark(c) for c in 'еёЭэС'}))\n"
+        "import os\n"
+        "print(json.dumps({c: dark(c) for c in 'еёЭэС'} | {'env': os.environ.get('FONTCONFIG_FILE')}))\n"
     )
     env = {k: v for k, v in os.environ.items() if k != "FONTCONFIG_FILE"}
     env["PYTHONPATH"] = str(Path(__file__).resolve().parent.parent)
@@ -460,3 +461,4 @@ def test_png_export_draws_yo_and_e_with_the_projects_font(tmp_path):
     dark = json.loads(r.stdout)
     # a black box fills its cell: three times the ink of the letter it stands for
     assert dark["ё"] < 1.5 * dark["е"] and dark["э"] < 1.5 * dark["е"] and dark["Э"] < 1.5 * dark["С"]
+    assert dark["env"] is None  # set for the first render only: child processes never see it

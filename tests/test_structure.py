@@ -164,3 +164,14 @@ def test_two_slots_of_one_link_in_two_directions_get_two_names():
     mech = from_dict(tomllib.loads(text), "y.toml")
     labels = {s.link: s.guide.label for s in mech.sliders}
     assert (labels[2], labels[5]) == ("x3-x3", "x3′-x3′")
+
+
+def test_an_unlabelled_slot_does_not_take_the_name_the_file_gave_another():
+    import tomllib
+
+    from plans.scenes import SCENES
+
+    text = SCENES["yoke_on_rocker"].toml.replace(
+        "guide = { link = 3 }", 'guide = { link = 3, offset = 0.02, angle_deg = 5, label = "x3-x3" }')
+    labels = {s.link: s.guide.label for s in from_dict(tomllib.loads(text), "y.toml").sliders}
+    assert (labels[2], labels[5]) == ("x3-x3", "x3′-x3′")
