@@ -74,7 +74,8 @@ def to_json(sol) -> dict:
 
 
 def _sense(w: float) -> str:
-    return "ccw" if w > 0 else "cw" if w < 0 else "—"
+    """' ccw' or ' cw' after a value; nothing after a zero, which has no sense."""
+    return " ccw" if w > 0 else " cw" if w < 0 else ""
 
 
 def to_text(sol, cycle=None) -> str:
@@ -86,7 +87,7 @@ def to_text(sol, cycle=None) -> str:
     d = mech.driver
     out.append(
         f"Crank: link {d.link}, l_{d.pivot}{d.tip} = {num(d.length)} m, "
-        f"φ1 = {angle(math.degrees(sol.phi))}° from +x, ω1 = {num(abs(d.omega))} rad/s {_sense(d.omega)}"
+        f"φ1 = {angle(math.degrees(sol.phi))}° from +x, ω1 = {num(abs(d.omega))} rad/s{_sense(d.omega)}"
     )
     out.append(
         f"Scales: μl = {num(sol.mu_l)} m/mm, μv = {num(sol.mu_v)} (m/s)/mm, μa = {num(sol.mu_a)} (m/s²)/mm"
@@ -112,8 +113,8 @@ def to_text(sol, cycle=None) -> str:
     for i in sorted(sol.omega):
         w, e = sol.omega[i], sol.epsilon[i]
         out.append(
-            f"  link {i} ({mech.links[i].name}): ω{i} = {num(abs(w))} rad/s {_sense(w)}, "
-            f"ε{i} = {num(abs(e))} rad/s² {_sense(e)}"
+            f"  link {i} ({mech.links[i].name}): ω{i} = {num(abs(w))} rad/s{_sense(w)}, "
+            f"ε{i} = {num(abs(e))} rad/s²{_sense(e)}"
         )
     if cycle is not None:
         out.append("")

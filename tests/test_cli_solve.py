@@ -312,3 +312,10 @@ def test_a_fixed_point_is_the_pole_everywhere_in_the_note(capsys):
     assert "Through a draw a line ∥ BC, through p a line ⊥ BA3; they meet at a3." in out
     assert "- `V_A3B = pa3·μv = 55.432·0.05 = 2.772 m/s`" in out
     assert "through b " not in out and "ba3·μ" not in out
+
+
+def test_a_zero_omega_has_no_sense_word(capsys):
+    """The press's slider: 'ω5 = 0 rad/s —' printed a dash where a sense would stand."""
+    code, out, _ = run(capsys, "solve", "samples/press.toml")
+    assert "  link 5 (slider): ω5 = 0 rad/s, ε5 = 0 rad/s²\n" in out
+    assert "  link 1 (crank): ω1 = 20 rad/s ccw, ε1 = 0 rad/s²\n" in out
