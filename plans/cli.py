@@ -248,7 +248,7 @@ def write_output(path: str | None, text: str | bytes) -> None:
     import stat
     import tempfile
 
-    if path in (None, "-"):
+    if path in (None, "-") or _is_stdout(path):  # /dev/stdout too: never replaced by a file
         if isinstance(text, bytes):
             sys.stdout.buffer.write(text)
         else:

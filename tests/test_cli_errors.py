@@ -612,3 +612,17 @@ def test_two_outputs_into_one_pipe_are_refused(tmp_path, argv):
                        stdout=subprocess.PIPE, stderr=subprocess.PIPE)
     assert r.returncode == 2 and r.stdout == b""
     assert b"are both stdout" in r.stderr
+
+
+def test_output_to_dev_stdout_appends_to_what_stdout_is(tmp_path):
+    """-o /dev/stdout with stdout appended to a file: the file was replaced by a new
+    one through the link, and what it held was lost."""
+    log = tmp_path / "log"
+    log.write_text("BEFORE\n")
+    with open(log, "a") as out:
+        r = subprocess.run([sys.executable, "-m", "plans", "solve", "--variant", "1", "-o",
+                            "/dev/stdout"], cwd=ROOT, env={**os.environ, "PYTHONPATH": str(ROOT)},
+                           stdout=out, stderr=subprocess.PIPE, text=True)
+    assert r.returncode == 0, r.stderr
+    text = log.read_text()
+    assert text.startswith("BEFORE\nFour-bar linkage, variant 1\n")
