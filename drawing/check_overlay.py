@@ -281,14 +281,15 @@ def _wrap(text: str, width: int) -> list[str]:
 
 def _mark(name: str, deviation: float, lang: str) -> str:
     """A segment's deviation as the sheet marks it: "πa3 +18,6" (mm)."""
-    dev = f"{abs(deviation):.1f}"
-    return f"{name} {'+' if deviation > 0 else '−'}{dev.replace('.', ',') if lang == 'ru' else dev}"
+    from plans.fmt import signed
+
+    return f"{name} {signed(deviation, lang, 1)}"
 
 
 def _legend(dwg, x, y, w, mark: str) -> float:
-    """The legend; ``mark`` is the deviation shown as its sample (the first one beyond
-    tolerance, so the legend names a segment of this sheet)."""
-    """The legend from (x, y), wrapped to the picture's width; returns the y after it."""
+    """The legend from (x, y), wrapped to the picture's width; returns the y after it.
+    ``mark`` is the deviation shown as its sample: the first one beyond tolerance, so the
+    legend names a segment of this sheet."""
     g = dwg.g(font_family="sans-serif")
     right = x + 2 * PANEL + MARGIN
     entries = [("computed", w["legend_c"]), ("student", w["legend_s"]), ("deviation", w["legend_d"])]

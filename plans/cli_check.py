@@ -10,7 +10,7 @@ import math
 
 from .cli import EXIT_DEVIATIONS, EXIT_OK, write_output
 from .errors import InputError
-from .fmt import angle, num
+from .fmt import angle, num, signed
 
 
 def configure(p) -> None:
@@ -122,19 +122,8 @@ WORDS = {
 }
 
 
-def _signed(x: float, lang: str, decimals: int | None = None) -> str:
-    """+0.43 / −4.23: a deviation with its sign (a true minus sign)."""
-    if not math.isfinite(x):
-        return "—"
-    s = f"{abs(x):.{decimals}f}" if decimals is not None else num(abs(x), 3)
-    if float(s) == 0:
-        return s.replace(".", ",") if lang == "ru" else s
-    s = ("+" if x > 0 else "−") + s
-    return s.replace(".", ",") if lang == "ru" else s
-
-
 def _pct(x: float, lang: str) -> str:
-    return _signed(x, lang, 1)
+    return signed(x, lang, 1)
 
 
 def _u(unit: str, lang: str) -> str:
@@ -162,7 +151,7 @@ def _row(d, lang, w) -> list[str]:
     if d.sense_ok is False:
         verdict += f" ({w['sense']})"
     name = it.name + ("" if it.kind == "segment" else f", {_u(it.unit, lang)}")
-    dev = _signed(d.deviation, lang, 2 if it.kind == "segment" else None)
+    dev = signed(d.deviation, lang, 2 if it.kind == "segment" else None)
     return [name, meas, comp, dev, _pct(d.percent, lang), verdict]
 
 

@@ -44,3 +44,18 @@ def angle(deg: float, digits: int = 4, lang: str = "en") -> str:
     s = num(x, digits, lang)
     return "0" if s == "360" else s
 
+
+
+def signed(x: float, lang: str = "en", decimals: int | None = None) -> str:
+    """A deviation with its sign, a true minus sign: ``decimals`` places, else ``num``'s
+    three figures; no sign on a zero, "—" for no number.
+
+    >>> signed(0.4321, "en", 2), signed(-4.23, "ru", 1), signed(0.0, "en", 1)
+    ('+0.43', '−4,2', '0.0')
+    """
+    if not math.isfinite(x):
+        return "—"
+    s = f"{abs(x):.{decimals}f}" if decimals is not None else num(abs(x), 3)
+    if float(s) != 0:
+        s = ("+" if x > 0 else "−") + s
+    return s.replace(".", ",") if lang == "ru" else s
