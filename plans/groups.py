@@ -97,42 +97,44 @@ def setup(sv: Solver, g: Group) -> dict:
     got = sv.cache.get(key)
     if got is None:
         got = sv.cache[key] = _SETUPS[g.kind](sv, g)
-        got["veq"], got["aeq"] = _statement(got["veq"]), _statement(got["aeq"])
     return got
 
 
-def _statement(eq: str) -> str:
-    """An equation as written on paper: a side that only says the direction of a fixed
-    guide becomes a separate statement, "V_D = V_C + V_DC; V_D ∥ x-x", not the circular
-    "V_D = V_C + V_DC = V_D(∥ x-x)".
+def _equation(lhs: str, *sides) -> str:
+    """A vector equation as written on paper: "V_C = V_B + V_CB = V_D + V_CD". A side is
+    a sum, or a (sum, direction) pair from :func:`_slide`; a fixed guide's side is no sum,
+    only a direction, said apart: "V_D = V_C + V_DC; V_D ∥ x-x".
 
-    >>> _statement("V_D = V_C + V_DC = V_D(∥ x-x)"), _statement("V_C = V_B + V_CB = V_D + V_CD")
-    ('V_D = V_C + V_DC; V_D ∥ x-x', 'V_C = V_B + V_CB = V_D + V_CD')
+    >>> _equation("V_D", "V_C + V_DC", (None, "V_D ∥ x-x"))
+    'V_D = V_C + V_DC; V_D ∥ x-x'
     """
-    lhs, *sides = eq.split(" = ")
-    fixed = [s for s in sides if s.startswith(f"{lhs}(") and s.endswith(")")]
-    if not fixed:
-        return eq
-    sums = [s for s in sides if s not in fixed]
-    dirs = "; ".join(f"{lhs} {s[len(lhs) + 1:-1]}" for s in fixed)
-    return f"{lhs} = {' = '.join(sums)}; {dirs}" if sums else dirs
+    sums, dirs = [], []
+    for side in sides:
+        total, direction = side if isinstance(side, tuple) else (side, None)
+        sums += [total] if total else []
+        dirs += [direction] if direction else []
+    return "; ".join(([f"{lhs} = {' = '.join(sums)}"] if sums else []) + dirs)
+
+
+def _coriolis(sv: Solver, link: int, term: str) -> str:
+    """" + a^k_…" where the guide's ``link`` turns; nothing on one that translates."""
+    return "" if link in sv.translating else f" + {term}"
 
 
 def _base_name(point: str, guide: Guide) -> str | None:
     return None if guide.link == 0 else coincident_name(point, guide.link)
 
 
-def _slide(sv: Solver, sym: str, C: str, base: str | None, guide: Guide) -> str:
-    """One side of an equation for C sliding along ``guide``: from the coincident point
-    ``base`` of the guide's link, with the Coriolis term where that link turns, or
-    straight along a fixed guide: "V_C4 + V_CC4", "a_C4 + a^k_CC4 + a^r_CC4",
-    "V_C(∥ x-x)"."""
+def _slide(sv: Solver, sym: str, C: str, base: str | None, guide: Guide) -> tuple:
+    """One side of an equation for C sliding along ``guide``, as (sum, direction): from
+    the coincident point ``base`` of the guide's link, with the Coriolis term where that
+    link turns ("V_C4 + V_CC4", "a_C4 + a^k_CC4 + a^r_CC4"), or along a fixed guide only
+    a direction ("V_C ∥ x-x")."""
     if base is None:
-        return f"{sym}_{C}({guide.along})"
+        return None, f"{sym}_{C} {guide.along}"
     if sym == "V":
-        return f"V_{base} + V_{C}{base}"
-    k = "" if guide.link in sv.translating else f" + a^k_{C}{base}"
-    return f"a_{base}{k} + a^r_{C}{base}"
+        return f"V_{base} + V_{C}{base}", None
+    return f"a_{base}{_coriolis(sv, guide.link, f'a^k_{C}{base}')} + a^r_{C}{base}", None
 
 
 # ---------------------------------------------------------------------------------------
@@ -198,8 +200,8 @@ def _rrp_setup(sv: Solver, g: Group) -> dict:
         "Vs": f"V_{C}{base}" if base else f"V_{C}", "k": f"a^k_{C}{base}",
         "nP": f"a^n_{C}{P}", "tP": f"a^t_{C}{P}",
         "as": f"a^r_{C}{base}" if base else f"a_{C}",
-        "veq": f"V_{C} = V_{P} + V_{C}{P} = {second}",
-        "aeq": f"a_{C} = a_{P} + a^n_{C}{P} + a^t_{C}{P} = {asecond}",
+        "veq": _equation(f"V_{C}", f"V_{P} + V_{C}{P}", second),
+        "aeq": _equation(f"a_{C}", f"a_{P} + a^n_{C}{P} + a^t_{C}{P}", asecond),
         "admissible": f"distance from {P} to the guide {gl} ≤ {l2:.6g} m",
         "singular": f"{P}{C} is perpendicular to the guide {gl}",
     }
@@ -293,8 +295,8 @@ def _prp_setup(sv: Solver, g: Group) -> dict:
         "∥1": sa.guide.along, "∥2": sb.guide.along, "V1": f"V_{C}{b1 or ''}", "V2": f"V_{C}{b2 or ''}",
         "k1": f"a^k_{C}{b1}", "k2": f"a^k_{C}{b2}",
         "r1": f"a^r_{C}{b1}" if b1 else f"a_{C}", "r2": f"a^r_{C}{b2}" if b2 else f"a_{C}",
-        "veq": f"V_{C} = {_slide(sv, 'V', C, b1, sa.guide)} = {_slide(sv, 'V', C, b2, sb.guide)}",
-        "aeq": f"a_{C} = {_slide(sv, 'a', C, b1, sa.guide)} = {_slide(sv, 'a', C, b2, sb.guide)}",
+        "veq": _equation(f"V_{C}", _slide(sv, "V", C, b1, sa.guide), _slide(sv, "V", C, b2, sb.guide)),
+        "aeq": _equation(f"a_{C}", _slide(sv, "a", C, b1, sa.guide), _slide(sv, "a", C, b2, sb.guide)),
         "admissible": "the two guides not parallel",
         "singular": f"the guides {l1} and {l2} are parallel: the hinge {C} is not fixed",
     }
@@ -336,7 +338,6 @@ def _rpp_setup(sv: Solver, g: Group) -> dict:
     name = coincident_name(P, B)
     bk = _base_name(P, s_out.guide)
     li, lo = s_in.guide.label, s_out.guide.label
-    still = s_out.guide.link in sv.translating  # the yoke never turns
     return {
         "locD": sv.local(B, s_out.point), "g0": s_in.guide.point, "gd": s_in.guide.direction,
         "pa": sv.local(g.a, P), "name": name, "bk": bk,
@@ -344,9 +345,10 @@ def _rpp_setup(sv: Solver, g: Group) -> dict:
         "kP": f"a^k_{name}{P}", "kk": f"a^k_{name}{bk}",
         "rP": f"a^r_{name}{P}", "rk": f"a^r_{name}{bk}" if bk else f"a_{name}",
         # the block slides in the yoke, which turns only if its own guide does
-        "veq": f"V_{name} = V_{P} + V_{name}{P} = {_slide(sv, 'V', name, bk, s_out.guide)}",
-        "aeq": f"a_{name} = a_{P}{'' if still else f' + a^k_{name}{P}'} + a^r_{name}{P} = "
-               f"{_slide(sv, 'a', name, bk, s_out.guide)}",
+        "veq": _equation(f"V_{name}", f"V_{P} + V_{name}{P}", _slide(sv, "V", name, bk, s_out.guide)),
+        "aeq": _equation(f"a_{name}",
+                         f"a_{P}{_coriolis(sv, s_out.guide.link, f'a^k_{name}{P}')} + a^r_{name}{P}",
+                         _slide(sv, "a", name, bk, s_out.guide)),
         "admissible": "the two guides not parallel",
         "singular": f"the guide {li} of link {B} is parallel to the guide {lo}: the yoke's "
                     "position is not fixed",
