@@ -66,11 +66,12 @@ def output_of(mech: Mechanism, name: str) -> Output | None:
     of a link that only translates along one (its travel), or a point of a link hinged to
     the frame other than the crank (its swing); None for any other point (a fixed one,
     the crank's, a coupler's), which has no stroke."""
+    still = mech.translating()
     for lid in mech.links_of(name):
         if lid == 0 or lid == mech.driver.link:
             continue
         s = mech.slider_of(lid)
-        if s is not None and s.guide.link == 0 and (s.point == name or lid in mech.translating()):
+        if s is not None and s.guide.link == 0 and (s.point == name or lid in still):
             return Output(name, "linear", lid)  # a yoke's every point travels as its slider does
         if any(p in mech.frame for p in mech.links[lid].points):
             return Output(name, "angular", lid)

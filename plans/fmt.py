@@ -27,6 +27,13 @@ def num(x: float, digits: int = 4, lang: str = "en") -> str:
     return s.replace(".", ",") if lang == "ru" else s
 
 
+#: the senses of a turn in words, by sign (+1 counter-clockwise)
+SENSE = {
+    "en": {1: "counter-clockwise", -1: "clockwise"},
+    "ru": {1: "против часовой стрелки", -1: "по часовой стрелке"},
+}
+
+
 def from_x(phi: float) -> float:
     """A crank angle (rad) in degrees counter-clockwise from +x, in [0, 360)."""
     return math.degrees(phi) % 360.0

@@ -17,6 +17,7 @@ Lengths are metres, angles degrees in the file and radians inside, time seconds.
 from __future__ import annotations
 
 import difflib
+import itertools
 import math
 import re
 from dataclasses import dataclass, field, replace
@@ -38,6 +39,7 @@ from .fileformat import (
     read_text,
     read_toml,
 )
+from .geometry import cross
 
 #: names the plans reserve for their own construction points (n1, k, p, π)
 RESERVED = re.compile(r"^(P|N\d*|K\d*)$")
@@ -113,16 +115,14 @@ class Driver:
         >>> d.at(math.radians(-240)), d.at(math.radians(-240.5), "ru")
         ('φ1 = 330° (from +y, cw)', 'φ1 = 330,5° (от +y, по часовой стрелке)')
         """
-        from .fmt import angle
+        from .fmt import SENSE, angle
 
         text = f"φ1 = {angle(self.file_angle(phi), 6, lang)}°"
         if (self.reference, self.measured) != ("+x", "ccw"):
-            sense = self.measured if lang == "en" else _SENSE_RU[self.measured]
+            sense = self.measured if lang == "en" else SENSE["ru"][int(SENSES[self.measured])]
             text += f" ({'from' if lang == 'en' else 'от'} {self.reference}, {sense})"
         return text
 
-
-_SENSE_RU = {"ccw": "против часовой стрелки", "cw": "по часовой стрелке"}
 
 
 def phi_of(angle_deg: float, reference: str, measured: str) -> float:
@@ -542,7 +542,7 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
         from .cycle import find_output, output_of
 
         if output_of(mech, output) is None:
-            other = find_output(replace(mech, output=None))
+            other = find_output(mech)  # it passes over the file's point, having no stroke
             pr.add("output", f"{quote(output)} has no stroke or swing: the output is the point of a "
                    "slider on a fixed guide, or a point of a link hinged to the frame other than "
                    "the crank" + (f', e.g. "{other.point}"' if other else ""))
@@ -725,27 +725,33 @@ def _hint_problem(key: str, hint: str, names: list[str]) -> str | None:
 FIXED_NAMES = ("x-x", "y-y", "z-z", "u-u", "w-w")
 
 
+def _parallel(a: complex, b: complex) -> bool:
+    return abs(cross(a, b)) <= 1e-12
+
+
+def _free_name(candidates, taken: dict[str, complex], direction: complex) -> str:
+    """The first of ``candidates`` not ``taken`` by a guide of another direction (parallel
+    guides may share a name: a plan's line only says "∥ x-x"); it is then taken."""
+    name = next(n for n in candidates if n not in taken or _parallel(taken[n], direction))
+    taken.setdefault(name, direction)
+    return name
+
+
 def _name_fixed_guides(sliders: list[Slider], unnamed: set[int]) -> list[Slider]:
     """An unlabelled inclined fixed guide is x-x, the slider's axis, unless a fixed guide
     of another direction is already called so: then the first free of
-    :data:`FIXED_NAMES`. Parallel guides may share a name: a plan's line only says
-    "∥ x-x"."""
+    :data:`FIXED_NAMES`."""
     def inclined(d: complex) -> bool:
         return abs(d.real) > 1e-12 and abs(d.imag) > 1e-12
 
-    def crosses(a: complex, b: complex) -> bool:
-        return abs((a.conjugate() * b).imag) > 1e-12
-
     renamed = [i for i in sorted(unnamed)
                if sliders[i].guide.link == 0 and inclined(sliders[i].guide.direction)]
-    names = {s.guide.label: s.guide.direction for i, s in enumerate(sliders)
+    taken = {s.guide.label: s.guide.direction for i, s in enumerate(sliders)
              if s.guide.link == 0 and i not in renamed}
     out = list(sliders)
     for i in renamed:
         g = out[i].guide
-        name = next((n for n in FIXED_NAMES if n not in names or not crosses(names[n], g.direction)),
-                    g.label)
-        names.setdefault(name, g.direction)
+        name = _free_name((*FIXED_NAMES, g.label), taken, g.direction)
         out[i] = replace(out[i], guide=replace(g, label=name))
     return out
 
@@ -758,26 +764,18 @@ def _name_slots(sliders: list[Slider], unnamed: set[int]) -> list[Slider]:
     """Two slots of one link in different directions would both be x3-x3: the second is
     x3′-x3′, the third x3′′-x3′′, whatever names the file gave the others."""
     out = list(sliders)
-
-    def parallel(a: complex, b: complex) -> bool:
-        return abs((a.conjugate() * b).imag) <= 1e-12
-
-    taken = {(s.guide.link, s.guide.label): s.guide.direction for i, s in enumerate(out)
-             if i not in unnamed and s.guide.link}  # the file's own labels first
+    taken: dict[int, dict[str, complex]] = {}  # link → name → direction, the file's first
+    for i, s in enumerate(out):
+        if i not in unnamed and s.guide.link:
+            taken.setdefault(s.guide.link, {})[s.guide.label] = s.guide.direction
     for i in sorted(unnamed):
         g = out[i].guide
         if g.link == 0 or g.label != f"x{g.link}-x{g.link}":
             continue
-        k = 0
-        while True:
-            mark = "′" * k
-            name = f"x{g.link}{mark}-x{g.link}{mark}"
-            d = taken.setdefault((g.link, name), g.direction)
-            if parallel(d, g.direction):
-                break
-            k += 1
-        if k:
-            out[i] = replace(out[i], guide=replace(g, label=name))
+        marks = ("′" * k for k in itertools.count())
+        name = _free_name((f"x{g.link}{m}-x{g.link}{m}" for m in marks),
+                          taken.setdefault(g.link, {}), g.direction)
+        out[i] = replace(out[i], guide=replace(g, label=name))
     return out
 
 

@@ -13,7 +13,7 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from .fmt import angle, num
+from .fmt import SENSE, angle, num
 from .plan import Solution, plan_name
 
 T = {
@@ -42,7 +42,7 @@ T = {
         "values": "Velocities read from the plan:",
         "avalues": "Accelerations read from the plan:",
         "omega": "Angular velocity of link {i}:",
-        "sense": {1: "counter-clockwise", -1: "clockwise", 0: ""},
+        "sense": {**SENSE["en"], 0: ""},
         "accelerations": "Acceleration plan",
         "aa": "Acceleration of point {t}, directed from {t} to {p} (ω1 = const):",
         "mua": "Scale factor of the acceleration plan, with π{t} = {mm} mm:",
@@ -83,7 +83,7 @@ T = {
         "values": "Скорости точек по плану:",
         "avalues": "Ускорения точек по плану:",
         "omega": "Угловая скорость звена {i}:",
-        "sense": {1: "против часовой стрелки", -1: "по часовой стрелке", 0: ""},
+        "sense": {**SENSE["ru"], 0: ""},
         "accelerations": "План ускорений механизма",
         "aa": "Ускорение точки {t} направлено от {t} к {p} (ω1 = const):",
         "mua": "Масштабный коэффициент плана ускорений при π{t} = {mm} мм:",
