@@ -10,7 +10,7 @@ import math
 
 from .cli import EXIT_DEVIATIONS, EXIT_OK, write_output
 from .errors import InputError
-from .fmt import angle, num, signed
+from .fmt import angle, from_x, num, signed
 
 
 def configure(p) -> None:
@@ -282,7 +282,7 @@ def to_json(result, lang: str = "en") -> dict:
     return {
         "file": meas.source,
         "mechanism": meas.mechanism.source,
-        "phi_deg": math.degrees(meas.solution.phi) % 360,
+        "phi_deg": from_x(meas.solution.phi),
         "scales": dict(meas.mu),
         "tolerance": {"percent": result.tolerance.percent, "mm": result.tolerance.mm},
         "items": items,

@@ -17,6 +17,7 @@ command exits with status 2 after writing everything else.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -161,7 +162,8 @@ def conditioning(mech, motion) -> tuple[Status, ...]:
         valid = np.broadcast_to(np.asarray(g.valid, dtype=bool), (n,))
         q = None if pivot is None else np.where(np.isfinite(pivot), pivot, 0.0).tolist()
         cols.append((g, g.group.label, valid.tolist(), s.tolist(), (s < WARN_SINE).tolist(), q))
-    phis = np.asarray(motion.phi, dtype=float).tolist()  # messages: mech.driver.at(phis[k])
+    phis = np.asarray(motion.phi, dtype=float).tolist()
+    at = functools.cache(lambda k: mech.driver.at(phis[k]))  # words only where flagged, once
     out = []
     for k in range(n):
         figures: dict[str, float] = {}
@@ -169,14 +171,14 @@ def conditioning(mech, motion) -> tuple[Status, ...]:
         errors: list[str] = []
         for g, label, valid, sine, low, pivot in cols:
             if not valid[k]:
-                errors.append(str(g.failure(k, mech.driver.at(phis[k]))))
+                errors.append(str(g.failure(k, at(k))))
                 figures[label] = math.nan
                 continue
             figures[label] = sine[k]
             if low[k]:
-                if (err := g.parallel(k, mech.driver.at(phis[k]))) is not None:
+                if (err := g.parallel(k, at(k))) is not None:
                     errors.append(str(err))
-                elif (warning := g.near_parallel(k, mech.driver.at(phis[k]))) is not None:
+                elif (warning := g.near_parallel(k, at(k))) is not None:
                     warnings.append(warning)
             if pivot is not None:
                 q = pivot[k]
@@ -184,12 +186,12 @@ def conditioning(mech, motion) -> tuple[Status, ...]:
                 P, Q = g.group.P, g.group.Q
                 if q < SINGULAR_SINE:
                     errors.append(
-                        f"{label} at {mech.driver.at(phis[k])}: the block {P} is on the rocker's pivot "
+                        f"{label} at {at(k)}: the block {P} is on the rocker's pivot "
                         f"{Q} (|{Q}{P}| ratio {q:.3g}): the rocker's ω is undefined"
                     )
                 elif q < WARN_SINE:
                     warnings.append(
-                        f"{label} at {mech.driver.at(phis[k])}: the block {P} passes close to the "
+                        f"{label} at {at(k)}: the block {P} passes close to the "
                         f"rocker's pivot {Q} (|{Q}{P}| / (|O{Q}| + |O{P}|) = {q:.3g}): the "
                         "rocker's ω and ε lose digits"
                     )

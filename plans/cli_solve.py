@@ -7,7 +7,7 @@ import math
 import sys
 
 from .cli import add_source, mechanism_from, write_output
-from .fmt import angle, num
+from .fmt import angle, from_x, num
 
 
 def configure(p) -> None:
@@ -68,7 +68,7 @@ def to_json(sol) -> dict:
             "class": st.mechanism_class,
             "groups": [{"links": list(g.links), "kind": g.kind.name} for g in st.groups],
         },
-        "phi_deg": math.degrees(sol.phi) % 360,
+        "phi_deg": from_x(sol.phi),
         "warnings": list(sol.warnings),
     }
 

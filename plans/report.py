@@ -13,7 +13,7 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from .fmt import SENSE, angle, num
+from .fmt import SENSE, angle, from_x, num
 from .plan import Solution, plan_name
 
 T = {
@@ -211,7 +211,7 @@ def no_full_turn(cycle, lang: str = "en", deg=None, link: int = 1) -> str:
     cycle's first position to its last, in degrees by ``deg`` (a crank angle in rad →
     degrees in the convention wanted; default counter-clockwise from +x)."""
     lo, hi = cycle.crank_range
-    deg = deg or math.degrees
+    deg = deg or from_x
     return T[lang]["noturn"].format(
         d=link,
         lo=angle(deg(lo), 4, lang), hi=angle(deg(hi), 4, lang),
