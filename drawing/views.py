@@ -200,6 +200,25 @@ def _bbox(items: list[Item]) -> tuple[float, float, float, float]:
     return min(xs), min(ys), max(xs), max(ys)
 
 
+def _shared(points) -> list[tuple[tuple[float, float], list[str]]]:
+    """(sheet point, name) pairs grouped into one label each where closer than
+    :data:`SHARED` to the group's first point ("c,n₂"), in order."""
+    groups: list[tuple[tuple[float, float], list[str]]] = []
+    for xy, name in points:
+        same = next((g for g in groups if math.dist(g[0], xy) < SHARED), None)
+        if same is None:
+            groups.append((xy, [name]))
+        else:
+            same[1].append(name)
+    return groups
+
+
+def _per_mm(unit: str, lang: str) -> str:
+    """A scale factor's unit: "(м/с)/мм", "рад/мм"."""
+    mm = WORDS[lang]["mm"]
+    return f"({unit})/{mm}" if "/" in unit else f"{unit}/{mm}"
+
+
 def _finish(
     name: str,
     drawing: list[Item],
@@ -288,15 +307,8 @@ def plan_view(sol, kind: str, tag: str, lang: str = "ru", label: str | None = No
         arrow = Arrow(p1, p2, LineType.MAIN, **HEAD)
         items.append(Group((arrow,), name=f"vec {letter}-{v.start}{v.end}-{tag}"))
     # the points: pole dot, joints of the letters; coincident points share a label
-    groups: list[tuple[tuple[float, float], list[str]]] = []
-    for name in [plan.pole, *[n for n in plan.points if n != plan.pole]]:
-        xy = pts[name]
-        for g in groups:
-            if math.dist(g[0], xy) < SHARED:
-                g[1].append(name)
-                break
-        else:
-            groups.append((xy, [name]))
+    groups = _shared(
+        (pts[name], name) for name in [plan.pole, *[n for n in plan.points if n != plan.pole]])
     items.append(Circle(pts[plan.pole], 0.6, LineType.MAIN, fill="black"))
     # prefer the side away from the pole
     cx = sum(x for x, _ in pts.values()) / len(pts)
@@ -307,8 +319,7 @@ def plan_view(sol, kind: str, tag: str, lang: str = "ru", label: str | None = No
         prefer = ("e", "ne", "n", "nw", "w", "sw", "s", "se")[int(((ang + 22.5) % 360) // 45)]
         reqs.append(LabelRequest(xy, ",".join(_markup(n) for n in names), LETTER, prefer, blank=True))
     title = WORDS[lang][kind]
-    unit = "(м/с)/мм" if lang == "ru" and kind == "velocity" else (
-        "(м/с²)/мм" if lang == "ru" else ("(m/s)/mm" if kind == "velocity" else "(m/s²)/mm"))
+    unit = _per_mm(WORDS[lang]["ms" if kind == "velocity" else "ms2"], lang)
     mu_name = "μ_v" if kind == "velocity" else "μ_a"
     caption = f"{title} ({label or tag}), {mu_name} = {num(mu, 4, lang)} {unit}"
     eqs: list[str] = []
@@ -525,15 +536,7 @@ def positions_view(sol, cycle, lang: str = "ru") -> View:
                 joints.add(n)
     for n in sorted(joints):
         items.append(Circle(_sheet(pos[n], mu_l), JOINT_R, LineType.MAIN, fill="white"))
-    shared: list[tuple[tuple[float, float], list[str]]] = []  # points at one place: one label
-    for n in mech.point_names():
-        if n in pos:
-            xy = _sheet(pos[n], mu_l)
-            same = next((g for g in shared if math.dist(g[0], xy) < SHARED), None)
-            if same is None:
-                shared.append((xy, [n]))
-            else:
-                same[1].append(n)
+    shared = _shared((_sheet(pos[n], mu_l), n) for n in mech.point_names() if n in pos)
     for xy, names in reversed(shared):
         # close to its point even among the other positions' lines, which break for it
         labels.insert(0, LabelRequest(xy, ",".join(_markup(n) for n in names), LETTER, "nw",
@@ -692,8 +695,7 @@ def diagrams_view(mech, cycle, lang: str = "ru", width: float = 180.0, height: f
                                   size=2.5, anchor="middle", baseline="hanging", italic=True))
         items.append(Text((2, y - 6), f"{name}, {unit}", size=3.5, baseline="hanging"))
         items.append(Text((width + 6, y_zero - 1.5), "φ", size=3.5, anchor="end"))
-        per_mm = f"({unit})/{w['mm']}" if "/" in unit else f"{unit}/{w['mm']}"  # (м/с)/мм
-        items.append(_start_anchored(Text((width - 2, y - 6), f"μ_{{{name}}} = {num(mu, 3, lang)} {per_mm}",
+        items.append(_start_anchored(Text((width - 2, y - 6), f"μ_{{{name}}} = {num(mu, 3, lang)} {_per_mm(unit, lang)}",
                           size=2.5, anchor="end", baseline="hanging", markup=True)))
         y += h + 16.0
     mu_phi = 2 * math.pi / width
