@@ -97,16 +97,18 @@ def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
     from plans.cycle import analyse_cycle
     from plans.kinematics import Solver
     from plans.plan import solve_position
+    from plans.scales import choose_mu_l
 
     if not 3 <= n_positions <= 72:
         raise InputError("--positions", f"give 3 to 72 positions, got {n_positions}")
     sheet = Sheet(fmt)
     solver = Solver(mech)
     cycle = analyse_cycle(mech, n_positions, solver=solver)
-    first = solve_position(mech, solver=solver)
     chosen = _parse_plans(None if plans is None else ",".join(map(str, plans)), len(cycle.positions))
     fixed = _views_of_any_size(mech, solver, cycle, lang)
     extent = fixed.shown.extent
+    # the plans' values, at a μl of this sheet's own positions (not solve's twelve)
+    first = solve_position(mech, solver=solver, mu={"mu_l": mech.scales.get("mu_l") or choose_mu_l(extent)})
     # the largest views that fit: scales the file leaves free are chosen for the sheet
     error, tried = None, []
     for size in SIZES:
