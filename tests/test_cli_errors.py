@@ -455,15 +455,6 @@ def test_subprocess_internal_error_exit_3_without_traceback(press):
 # ---------------------------------------------------------------------------------------
 
 
-def _main_exit(capsys, *argv) -> tuple[int, str]:
-    """(exit status, stderr) of a run that argparse may end with SystemExit."""
-    try:
-        code = main([str(a) for a in argv])
-    except SystemExit as exc:
-        code = exc.code
-    return code, capsys.readouterr().err
-
-
 @pytest.mark.parametrize("extra", [
     ["--png", "{d}/nodir/o.png"],                      # the PNG's folder is missing
     ["--png", "{d}/o.png", "--dpi", "-1"],            # a resolution cairo cannot render
@@ -478,7 +469,7 @@ def test_a_sheet_whose_png_or_pdf_would_fail_writes_nothing(capsys, tmp_path, ex
     svg, png = tmp_path / "o.svg", tmp_path / "o.png"
     svg.write_text("KEEP")
     png.write_bytes(b"KEEP")
-    code, err = _main_exit(capsys, "sheet", PRESS, "-o", svg, *(a.format(d=tmp_path) for a in extra))
+    code, _, err = run(capsys, "sheet", PRESS, "-o", svg, *(a.format(d=tmp_path) for a in extra))
     assert code == 2 and len(err.splitlines()) == 1 and "Traceback" not in err, err
     assert err.startswith("plans sheet: ")
     assert svg.read_text() == "KEEP" and png.read_bytes() == b"KEEP"
@@ -493,7 +484,7 @@ def test_a_sheet_whose_png_or_pdf_would_fail_writes_nothing(capsys, tmp_path, ex
 ])
 def test_outputs_that_would_collide_or_fail_are_refused_first(capsys, tmp_path, argv, message):
     meas = ROOT / "samples" / "check_press.toml"
-    code, err = _main_exit(capsys, *(a.format(m=meas, d=tmp_path) for a in argv))
+    code, _, err = run(capsys, *(a.format(m=meas, d=tmp_path) for a in argv))
     assert code == 2 and len(err.splitlines()) == 1 and message in err, err
     assert list(tmp_path.iterdir()) == []  # bench stopped before minutes of timing
 
@@ -508,7 +499,7 @@ def test_outputs_that_would_collide_or_fail_are_refused_first(capsys, tmp_path, 
     (["solve", "{p}", "{p}"], "plans solve: command line: unrecognized arguments"),
 ])
 def test_command_line_mistakes_are_one_line_and_exit_2(capsys, argv, message):
-    code, err = _main_exit(capsys, *(a.format(p=PRESS) for a in argv))
+    code, _, err = run(capsys, *(a.format(p=PRESS) for a in argv))
     assert code == 2 and len(err.splitlines()) == 1 and message in err, err
     assert "usage:" not in err and "Traceback" not in err
 
