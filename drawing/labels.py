@@ -374,6 +374,7 @@ def place_labels(
     rings = [close, [d for d in distances if d not in close]] if soft else [list(distances)]
     placed: list[Polygon] = []
     placed_at: list[Point] = []  # the anchor of each box placed
+    region_box = region is not None and _is_box(region)
     out: list[Placement] = []
     for req in requests:
         chosen: tuple[Text, Polygon] | None = None
@@ -383,6 +384,8 @@ def place_labels(
             relaxed: tuple[int, Text, Polygon] | None = None
             spots = [(anchor, direction) for anchor in (req.anchor, *req.also)
                      for direction in _directions(req.prefer)]
+            boxes = np.asarray(placed, dtype=object)  # the labels before this one, once
+            others = np.asarray([a != req.anchor for a in placed_at], dtype=bool)
             for gap in ring:
                 for anchor, direction in spots:
                     text = _candidate(req, direction, gap, anchor)
@@ -392,11 +395,10 @@ def place_labels(
                     if placed:  # a label keeps GAP from the labels of other points
                         near_box = shapely.box(
                             *(a + d for a, d in zip(box.bounds, (-GAP, -GAP, GAP, GAP), strict=True)))
-                        mask = shapely.intersects(near_box, np.asarray(placed, dtype=object))
-                        mask &= shapely.intersects(box, np.asarray(placed, dtype=object)) | (
-                            np.asarray([a != req.anchor for a in placed_at], dtype=bool))
+                        mask = shapely.intersects(near_box, boxes)
+                        mask &= shapely.intersects(box, boxes) | others
                         hits += [p for p, m in zip(placed, mask, strict=True) if m]
-                    outside = 0.0 if region is None else box.difference(region).area
+                    outside = 0.0 if region is None else _outside(box, region, region_box)
                     if hits or outside > 1e-9:
                         cost = sum(box.intersection(g).area for g in hits) + outside + 1e-6 * len(hits)
                         if fallback is None or cost < fallback[0]:
@@ -430,6 +432,23 @@ def place_labels(
             placed_at.append(req.anchor)
         out.append(Placement(text, box, clear=clear))
     return out
+
+
+def _is_box(g: BaseGeometry) -> bool:
+    """An axis-parallel rectangle: its area is its bounds'."""
+    x0, y0, x1, y1 = g.bounds
+    return abs(g.area - (x1 - x0) * (y1 - y0)) <= 1e-9 * max(g.area, 1.0)
+
+
+def _outside(box: Polygon, region: BaseGeometry, region_box: bool) -> float:
+    """The area of ``box`` outside ``region``: by bounds where both are axis-parallel
+    rectangles (a label and a view's frame, some thousand times a sheet)."""
+    if not (region_box and _is_box(box)):
+        return box.difference(region).area
+    a0, b0, a1, b1 = box.bounds
+    r0, s0, r1, s1 = region.bounds
+    inside = max(0.0, min(a1, r1) - max(a0, r0)) * max(0.0, min(b1, s1) - max(b0, s0))
+    return (a1 - a0) * (b1 - b0) - inside
 
 
 def obstacles_of(

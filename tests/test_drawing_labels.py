@@ -270,3 +270,16 @@ def test_a_label_among_more_thin_lines_than_allowed_everywhere_still_gets_a_plac
     (p,) = place_labels([LabelRequest((50, 50), "A", 3.5)], obstacles=[], soft=rings)
     assert not p.clear
     assert sum(1 for g in rings if g.intersects(p.box)) > 2
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.tuples(*[st.floats(-50, 50)] * 2, st.floats(0.1, 30), st.floats(0.1, 30)),
+       st.tuples(*[st.floats(-50, 50)] * 2, st.floats(0.1, 60), st.floats(0.1, 60)))
+def test_the_area_outside_a_region_by_bounds_is_shapelys(b, r):
+    """The label placer measures how far a box sticks out of its view by bounds (both are
+    axis-parallel rectangles); it must be what shapely's difference gives."""
+    from drawing.labels import _outside
+
+    lab = box(b[0], b[1], b[0] + b[2], b[1] + b[3])
+    reg = box(r[0], r[1], r[0] + r[2], r[1] + r[3])
+    assert _outside(lab, reg, True) == pytest.approx(lab.difference(reg).area, abs=1e-9)
