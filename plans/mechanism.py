@@ -58,6 +58,7 @@ class Guide:
     point: complex
     direction: complex  # unit
     label: str
+    named_by_tool: bool = False  # the file gave no label: x-x, DA, x3-x3 … by notation
 
     @property
     def along(self) -> str:
@@ -378,7 +379,6 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
         pr.add("sliders", f"{len(raw_sliders)} sliders: at most {MAX_ITEMS}")
         raw_sliders = []
     sliding: dict[int, int] = {}  # link → index of its [[sliders]] entry
-    unnamed: set[int] = set()  # sliders on a fixed guide the file gives no label
     pairs: list[tuple[int, int | None]] = []  # (link, guide's link) of every entry, valid or not
     for i, body in enumerate(raw_sliders):
         where = f"sliders[{i}]"
@@ -426,10 +426,7 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
             pr.add(f"links.{lid}.points.{point}", "the sliding point of a link without an axis is its origin: 0")
             continue
         sliders.append(Slider(lid, guide, point))
-        if "label" not in body["guide"]:
-            unnamed.add(len(sliders) - 1)
-    sliders = _name_fixed_guides(sliders, unnamed)
-    sliders = _name_slots(sliders, unnamed)
+    sliders = _name_slots(_name_fixed_guides(sliders))
     # what follows is derived from the links and sliders as a whole: only when they are
     # valid, so that one typo does not come back as a second, misleading message
     whole = not any(w.split(".")[0].split("[")[0] in ("frame", "links", "sliders") for w, _ in pr.items)
@@ -737,15 +734,15 @@ def _free_name(candidates, taken: dict[str, complex], direction: complex) -> str
     return name
 
 
-def _name_fixed_guides(sliders: list[Slider], unnamed: set[int]) -> list[Slider]:
+def _name_fixed_guides(sliders: list[Slider]) -> list[Slider]:
     """An unlabelled inclined fixed guide is x-x, the slider's axis, unless a fixed guide
     of another direction is already called so: then the first free of
     :data:`FIXED_NAMES`."""
     def inclined(d: complex) -> bool:
         return abs(d.real) > 1e-12 and abs(d.imag) > 1e-12
 
-    renamed = [i for i in sorted(unnamed)
-               if sliders[i].guide.link == 0 and inclined(sliders[i].guide.direction)]
+    renamed = [i for i, s in enumerate(sliders)
+               if s.guide.named_by_tool and s.guide.link == 0 and inclined(s.guide.direction)]
     taken = {s.guide.label: s.guide.direction for i, s in enumerate(sliders)
              if s.guide.link == 0 and i not in renamed}
     out = list(sliders)
@@ -760,17 +757,17 @@ def _name_fixed_guides(sliders: list[Slider], unnamed: set[int]) -> list[Slider]
 LANGS = ("en", "ru")
 
 
-def _name_slots(sliders: list[Slider], unnamed: set[int]) -> list[Slider]:
+def _name_slots(sliders: list[Slider]) -> list[Slider]:
     """Two slots of one link in different directions would both be x3-x3: the second is
     x3′-x3′, the third x3′′-x3′′, whatever names the file gave the others."""
     out = list(sliders)
     taken: dict[int, dict[str, complex]] = {}  # link → name → direction, the file's first
-    for i, s in enumerate(out):
-        if i not in unnamed and s.guide.link:
+    for s in out:
+        if not s.guide.named_by_tool and s.guide.link:
             taken.setdefault(s.guide.link, {})[s.guide.label] = s.guide.direction
-    for i in sorted(unnamed):
-        g = out[i].guide
-        if g.link == 0 or g.label != f"x{g.link}-x{g.link}":
+    for i, s in enumerate(out):
+        g = s.guide
+        if not g.named_by_tool or g.link == 0 or g.label != f"x{g.link}-x{g.link}":
             continue
         marks = ("′" * k for k in itertools.count())
         name = _free_name((f"x{g.link}{m}-x{g.link}{m}" for m in marks),
@@ -879,7 +876,7 @@ def _guide(body, where, pr: Problems, links, frame, bad_links, slides: str | Non
     if label is not None and (not isinstance(label, str) or len(label) > 20):
         pr.add(where + ".label", f'must be a short text (at most 20 characters), e.g. "x-x", got {quote(label)}')
         label = None
-    return Guide(gl, point, direction, label or default_label)
+    return Guide(gl, point, direction, label or default_label, named_by_tool=not label)
 
 
 def _driver(body, pr: Problems, links, frame, bad_links, frame_names) -> Driver | None:

@@ -9,7 +9,6 @@ beyond products and quotients of values the plans already hold.
 from __future__ import annotations
 
 import math
-import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -264,9 +263,9 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
         px = plan_name(x)
         pt = plan.points[px]
         out += [t["eqs"].format(x=x), "", f"- `{cons.equation}`"]
-        for sl in (g.group.s1, g.group.s2):  # a guide named x3-x3 by the tool: say what it is
-            k = sl.guide.link if sl is not None else 0
-            if k and re.fullmatch(rf"x{k}(′*)-x{k}\1", sl.guide.label):
+        for sl in (g.group.s1, g.group.s2):  # a slot the tool named x3-x3: say what it is
+            if (sl is not None and sl.guide.named_by_tool and sl.guide.link
+                    and sl.guide.label.startswith(f"x{sl.guide.link}")):
                 out.append(f"- {t['xk'].format(x=sl.guide.label, k=sl.guide.link)}")
         if acc:  # a block on a guide whose link translates: no Coriolis term, and why
             for sl in (g.group.s1, g.group.s2):
