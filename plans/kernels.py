@@ -188,7 +188,7 @@ def rrr(xp, sigma, l2, l3, P, vP, aP, Q, vQ, aQ):
 
 def _guide_motion(C, G, vG, aG, wk, ek):
     """Velocity and acceleration of the point of the guide's link under C."""
-    if wk is None:  # the frame
+    if wk is None:  # a guide on a link that never turns: all its points move as G does
         return vG, aG
     r = C - G
     return vG + r * (1j * wk), aG + r * (1j * ek - wk * wk)
@@ -196,7 +196,8 @@ def _guide_motion(C, G, vG, aG, wk, ek):
 
 def rrp(xp, sigma, l2, P, vP, aP, G, u, vG, aG, wk, ek):
     """C on link 2 (|PC| = l2) and on the guide G + t·u, ``sigma`` along u from the
-    foot of P. ``wk`` is None for a guide on the frame.
+    foot of P. ``wk`` is None for a guide on a link that never turns (the frame, a yoke
+    on a fixed guide).
 
     V_C = V_P + V_CP (⊥ CP) = V_Ck + V_CCk (∥ guide);
     a_C = a_P + a^n_CP + a^t_CP = a_Ck + a^k_CCk + a^r_CCk.
@@ -256,7 +257,7 @@ def rpr(xp, sigma, e, gd, P, vP, aP, Q, vQ, aQ):
 
 
 def prp(xp, G1, u1, vG1, aG1, w1, e1, G2, u2, vG2, aG2, w2, e2):
-    """C slides on two guides, each carried by a link (``w`` None for the frame).
+    """C slides on two guides, each carried by a link (``w`` None where it never turns).
 
     V_C = V_C1 + V_CC1 (∥ guide 1) = V_C2 + V_CC2 (∥ guide 2).
     """
@@ -288,7 +289,7 @@ def rpp(xp, P, vP, aP, G, u, vG, aG, wk, ek, locD, g0, gd):
     sine = cross(us, u)
     inv = 1.0 / sine
     vk, ak = _guide_motion(P, G, vG, aG, wk, ek)
-    # the block slides in the yoke, which turns with link k: both slides see ω_k
+    # the block slides in the yoke, which turns as link k does (ω_k None: not at all)
     vP3, aP3, (c1, c2, t1, t2, s1, s2) = _two_slides(vP, aP, us, wk, vk, ak, u, wk, inv)
     return record(RPP, (oB, us, vP3, aP3, vk, ak, c1, c2, t1, t2, s1, s2, sine, True))
 

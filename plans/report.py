@@ -313,17 +313,14 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
         out += [t["avalues" if acc else "values"], ""]
         out += _values(sol, plan, [px] + [p.name for p in sims], lang)
         for r in cons.routes:
-            if r.unknown_kind in ("relative", "tangential"):
-                start = r.base and plan_name(r.base)
-                for ln in pt.source.lines:
-                    if ln.unknown == r.unknown:
-                        start = ln.through
+            # the unknown read off the plan: from where its line was drawn to the point found
+            if r.unknown_kind in ("relative", "tangential") or (
+                    r.unknown_kind == "sliding" and r.base is not None):
+                start = next((ln.through for ln in pt.source.lines if ln.unknown == r.unknown),
+                             r.base and plan_name(r.base))
                 mm = plan.mm(start, px)
-                out.append(Step(f"{r.unknown} = {_letter(plan, start)}{px}·{mus}", f"{n(mm, 5)}·{n(mu)}", n(mm * mu), unit).markdown())
-            elif r.unknown_kind == "sliding" and r.base is not None:
-                start = next((ln.through for ln in pt.source.lines if ln.unknown == r.unknown), plan_name(r.base))
-                mm = plan.mm(start, px)
-                out.append(Step(f"{r.unknown} = {_letter(plan, start)}{px}·{mus}", f"{n(mm, 5)}·{n(mu)}", n(mm * mu), unit).markdown())
+                out.append(Step(f"{r.unknown} = {_letter(plan, start)}{px}·{mus}",
+                                f"{n(mm, 5)}·{n(mu)}", n(mm * mu), unit).markdown())
         for k in (g.group.a, g.group.b):  # after the values above, as a list of its own
             if k in moving:
                 continue
