@@ -12,9 +12,10 @@ the sine between the two lines). Three callers share them, so they cannot drift 
 * :func:`plans.sweep.sweep` runs them in cache-sized blocks for bulk work, keeping
   only the results.
 
-``xp`` supplies the few non-arithmetic functions (square root, maximum, where) for
-numpy arrays (``ARRAY``) or Python scalars (``SCALAR``); everything else is operator
-arithmetic and ``.conjugate()``, ``.real``, ``.imag``, which both kinds of value share.
+``xp`` supplies the few non-arithmetic functions (square root, maximum, where, a complex
+number from its two parts) for numpy arrays (``ARRAY``) or Python scalars (``SCALAR``);
+everything else is operator arithmetic and ``.conjugate()``, ``.real``, ``.imag``, which
+both kinds of value share.
 
 A guide's link ``k`` enters as ``G, vG, aG, wk, ek``: a world point of the guide line,
 that point's velocity and acceleration, and ω, ε of link k (zeros for the frame).
@@ -48,6 +49,14 @@ class _Array:
     maximum = staticmethod(np.maximum)
     where = staticmethod(np.where)
 
+    @staticmethod
+    def cplx(re, im):
+        """re + i·im without numpy's two casts of a real array to complex."""
+        out = np.empty(np.broadcast(re, im).shape, dtype=complex)
+        out.real = re
+        out.imag = im
+        return out
+
 
 class _Scalar:
     scalar = True
@@ -57,6 +66,8 @@ class _Scalar:
     @staticmethod
     def where(cond, a, b):
         return a if cond else b
+
+    cplx = staticmethod(complex)
 
 
 ARRAY = _Array()
@@ -167,13 +178,16 @@ def rrr(xp, sigma, l2, l3, P, vP, aP, Q, vQ, aQ):
     w = Q - P
     d = abs(w)
     disc = heron(l2, l3, d)
-    inv = 1.0 / d
-    along = (l2 * l2 - l3 * l3 + d * d) * (0.5 * inv)
-    h = xp.sqrt(xp.maximum(disc, 0.0)) * (0.5 * sigma * inv)
-    C = P + (along + 1j * h) * (w * inv)
+    dd = d * d
+    k = 0.5 / dd
+    root = xp.sqrt(xp.maximum(disc, 0.0))  # 2·d·h, h the height of C over PQ
+    # C = P + (along + i·σ·h)·w/d: along/d and σ·h/d formed as one complex number
+    C = P + xp.cplx((l2 * l2 - l3 * l3 + dd) * k, root * (sigma * k)) * w
     rP, rQ = C - P, C - Q
     d1, d2 = rP * (1j / l2), rQ * (1j / l3)
-    sine = cross(d1, d2)
+    # the sine of the angle at C from the triangle (d·h = l2·l3·|sin|), not from a
+    # product of the two directions: two fewer passes over a block
+    sine = root * (sigma / (2.0 * l2 * l3))
     inv = 1.0 / sine
     t1, t2 = meet(vQ - vP, d1, d2, inv)
     vC = vP + t1 * d1
