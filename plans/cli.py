@@ -35,7 +35,9 @@ def add_source(p: argparse.ArgumentParser, *, allow_all: bool = False) -> None:
     p.add_argument("--variant", metavar="N" if not allow_all else "N|all",
                    help="a row of the variant table instead of a file")
     p.add_argument("--table", metavar="FILE", help="a course's variant table (default: the built-in Table 2)")
-    p.add_argument("--angle", type=float, metavar="DEG",
+    from .fileformat import MAX_ABS
+
+    p.add_argument("--angle", type=number(-MAX_ABS, MAX_ABS), metavar="DEG",
                    help="crank angle, in the convention of the file (default: the file's)")
 
 
@@ -64,7 +66,6 @@ def mechanism_from(args):
     Refuses, before anything is computed, an output (``-o``) that is one of the inputs, and
     remembers the inputs so that :func:`write_output` refuses them too.
     """
-    import math
     import re
 
     from . import mechanism, variants
@@ -72,11 +73,7 @@ def mechanism_from(args):
     if (args.file is None) == (args.variant is None):
         raise InputError("command line", "give a mechanism FILE or --variant N (one of them)")
     claim_inputs(args, [p for p in (args.file, getattr(args, "table", None)) if p])
-    angle = getattr(args, "angle", None)
-    if angle is not None and not (math.isfinite(angle) and abs(angle) <= mechanism.MAX_ABS):
-        raise InputError(
-            "command line", f"--angle {angle:g} is out of range: a crank angle in degrees, |angle| ≤ 1e6"
-        )
+    angle = getattr(args, "angle", None)  # a finite number within ±MAX_ABS: argparse checked
     if args.variant is not None:
         text = str(args.variant).strip()
         if not re.fullmatch(r"[+-]?\d{1,9}", text):
@@ -102,17 +99,6 @@ def claim_inputs(args, paths, outputs=OUTPUTS) -> None:
     them, and refuse at once (before anything is computed) an output given as one, or
     any output that could not be written (:func:`check_outputs`)."""
     _INPUTS.extend(str(p) for p in paths)
-    for opt, attr in outputs:
-        out = getattr(args, attr, None)
-        if out in (None, "-"):
-            continue
-        for inp in paths:
-            if _same_file(out, inp):
-                raise InputError(
-                    "command line",
-                    f"{opt} {_arg(out)} is the input file {_arg(inp)}: the tool never writes "
-                    "into its inputs; choose another output name",
-                )
     check_outputs(args, outputs)
 
 
@@ -137,7 +123,7 @@ def check_outputs(args, outputs=OUTPUTS) -> None:
                                  "give each output its own file")
         seen.append((opt, target))
         if target != "-":
-            _target(target)
+            _target(target, opt)
 
 
 
@@ -308,9 +294,10 @@ def _is_stdout(path: str) -> bool:
     return (a.st_dev, a.st_ino) == (b.st_dev, b.st_ino) and not _device(path)
 
 
-def _target(path: str):
+def _target(path: str, opt: str | None = None):
     """(name for messages, Path, its stat or None, its folder) of an output file that can
-    be written; InputError where it cannot (an input, a folder, no such folder)."""
+    be written; InputError where it cannot (an input, a folder, no such folder). ``opt``:
+    the option that named it, for the message about an input."""
     import os
     import stat
 
@@ -319,7 +306,12 @@ def _target(path: str):
     where = _arg(path)[1:-1]
     for inp in _INPUTS:
         if _same_file(path, inp):
-            raise InputError(where, f"is the input file {_arg(inp)}: the tool never writes into its inputs")
+            if opt is None:
+                raise InputError(where, f"is the input file {_arg(inp)}: the tool never "
+                                 "writes into its inputs")
+            raise InputError("command line", f"{opt} {_arg(path)} is the input file "
+                             f"{_arg(inp)}: the tool never writes into its inputs; choose "
+                             "another output name")
     target = Path(path)
     try:
         st = target.stat()  # through a symbolic link, of what it names

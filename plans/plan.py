@@ -187,17 +187,16 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     )
 
 
-def cycle_extent(solver: Solver, n_positions: int = 12) -> float:
-    """The larger side (m) of what the plan of positions draws with ``n_positions``
-    positions (:attr:`plans.positions.Drawn.extent`): the sheet sizes it the same way."""
-    key = ("cycle extent", n_positions)
-    got = solver.cache.get(key)
+def cycle_extent(solver: Solver) -> float:
+    """The larger side (m) of what the plan of positions draws with its twelve positions
+    (:attr:`plans.positions.Drawn.extent`): the sheet sizes it the same way."""
+    got = solver.cache.get("cycle extent")
     if got is None:  # once per solver: solve_position asks at every angle
         from .cycle import analyse_cycle
         from .positions import drawn
 
-        got = solver.cache[key] = drawn(solver, analyse_cycle(solver.mech, n_positions,
-                                                              solver=solver)).extent
+        got = solver.cache["cycle extent"] = drawn(solver, analyse_cycle(solver.mech,
+                                                                         solver=solver)).extent
     return got
 
 

@@ -24,15 +24,12 @@ from .kinematics import Motion, Solver
 FAR = 20.0
 
 
-def reach(solver: Solver) -> tuple[complex, float]:
+def reach(given: dict[str, complex]) -> tuple[complex, float]:
     """(centre, limit): the given position's centre, and how far from it a point of a
     position drawn may lie (:data:`FAR` times the given position's size)."""
-    got = solver.cache.get("reach")
-    if got is None:
-        pts = np.array(list(solver.solve_one(solver.mech.driver.phi).position.values()))
-        centre = complex(pts.mean())
-        got = solver.cache["reach"] = (centre, FAR * max(float(np.abs(pts - centre).max()), 1e-6))
-    return got
+    pts = np.array(list(given.values()))
+    centre = complex(pts.mean())
+    return centre, FAR * max(float(np.abs(pts - centre).max()), 1e-6)
 
 
 def trajectory_angles(cycle, n: int = 361) -> np.ndarray:
@@ -90,7 +87,9 @@ def drawn(solver: Solver, cycle) -> Drawn:
         return solver.cache[key]
     mech = solver.mech
     given = positions_at(solver, [mech.driver.phi])[0]
-    centre, limit = reach(solver)
+    if given is None:  # the given position does not close: say why, as solve would
+        solver.solve_one(mech.driver.phi)
+    centre, limit = reach(given)
 
     def far(z) -> np.ndarray:
         return np.abs(np.asarray(z) - centre) > limit
