@@ -76,16 +76,21 @@ def _render(call, svg: str, **options) -> bytes:
     fontconfig reads its setup) FONTCONFIG_FILE points at a private file that adds
     ``drawing/fonts`` and accepts only its osifont, the system's fonts staying for
     everything else; the variable is put back at once, so child processes never see it.
-    A process that sets FONTCONFIG_FILE itself keeps its own.
+    The file stays while the process runs (fontconfig may check it again when it looks
+    for changes) and goes when it exits. A process that sets FONTCONFIG_FILE itself keeps
+    its own.
     """
     global _fonts_ready
     if _fonts_ready or "FONTCONFIG_FILE" in os.environ:
         return call(bytestring=svg.encode("utf-8"), **options)
+    import atexit
+    import shutil
     import tempfile
 
     from drawing.svg import FONT_FILE
 
     folder = tempfile.mkdtemp(prefix="vector-plans-fonts-")  # private: mode 0700
+    atexit.register(shutil.rmtree, folder, ignore_errors=True)
     conf = Path(folder) / "fonts.conf"
     conf.write_text(_FONTS_CONF.format(fonts=FONT_FILE.parent.resolve()), encoding="utf-8")
     os.environ["FONTCONFIG_FILE"] = str(conf)

@@ -454,6 +454,7 @@ def test_png_export_draws_yo_and_e_with_the_projects_font(tmp_path):
     )
     env = {k: v for k, v in os.environ.items() if k != "FONTCONFIG_FILE"}
     env["PYTHONPATH"] = str(Path(__file__).resolve().parent.parent)
+    env["TMPDIR"] = str(tmp_path)
     r = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True)
     if r.returncode and "PIL" in r.stderr:
         pytest.skip("needs Pillow to read the PNG")
@@ -462,3 +463,4 @@ def test_png_export_draws_yo_and_e_with_the_projects_font(tmp_path):
     # a black box fills its cell: three times the ink of the letter it stands for
     assert dark["ё"] < 1.5 * dark["е"] and dark["э"] < 1.5 * dark["е"] and dark["Э"] < 1.5 * dark["С"]
     assert dark["env"] is None  # set for the first render only: child processes never see it
+    assert list(tmp_path.iterdir()) == []  # the private font setup is gone with the process
