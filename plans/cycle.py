@@ -153,8 +153,7 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
     stroke = theta = K = None
     start = phi0
     if out is not None:
-        rate = out.rate(m, mech)
-        sgn = np.sign(rate)
+        sgn = _signs(out.rate(m, mech))
         idx = np.nonzero(sgn != np.roll(sgn, -1))[0]
         for i in idx:
             a, b = grid[i], grid[(i + 1) % samples] if i + 1 < samples else grid[0] + sense * TWO_PI
@@ -179,6 +178,20 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
             notes.append(f"the output {out.point} has {len(extremes)} turning points per turn")
     pos = tuple(start + sense * TWO_PI * i / n_positions for i in range(n_positions))
     return Cycle(out, True, tuple(extremes), stroke, theta, K, pos, grashof, tuple(notes))
+
+
+def _signs(rate: np.ndarray) -> np.ndarray:
+    """The sign of the output's velocity at each sample, a sample where it is exactly 0
+    taking the sign of the next one that is not (round the turn): an extreme that falls on
+    a sample (the central crank-slider at φ1 = 0) is then one change of sign, between the
+    sample before and the zero, and a velocity that touches 0 without turning back is
+    none."""
+    sgn = np.sign(rate)
+    nz = np.flatnonzero(sgn)
+    if 0 < nz.size < sgn.size:
+        after = np.searchsorted(nz, np.arange(sgn.size)) % nz.size
+        sgn = sgn[nz[after]]
+    return sgn
 
 
 def _refine(solver: Solver, out: Output, mech: Mechanism, a: float, b: float) -> float:

@@ -243,3 +243,30 @@ def test_cycle_text_gives_every_crank_angle_in_the_files_convention(capsys):
     assert shown == pytest.approx([250.1, 109.9], abs=0.05)  # 199.9° and 340.1° from +x
     row0 = next(ln for ln in out.splitlines() if re.match(r"\s+0\s", ln))
     assert float(row0.split()[1]) == pytest.approx(shown[1], abs=0.05)
+
+
+@pytest.mark.parametrize("angle", [0, 180])
+def test_an_extreme_on_the_given_angle_is_one_turning_point(angle):
+    """The central crank-slider drawn at φ1 = 0 (the textbook's first position): the
+    slider's velocity is exactly 0 on the first sample of the cycle's grid. That sample
+    counted as two changes of sign, so the cycle had "3 turning points" and no H, θ, K."""
+    from plans.scenes import SCENES
+
+    text = SCENES["crank_slider_central"].toml.replace("angle_deg = 45", f"angle_deg = {angle}")
+    mech = mechanism.from_dict(__import__("tomllib").loads(text), "<central>")
+    cyc = analyse_cycle(mech)
+    assert not cyc.notes
+    assert cyc.stroke == pytest.approx(0.2, abs=1e-12)  # H = 2R
+    assert cyc.theta == 0.0 and cyc.K == 1.0
+    # at the dead points, 0° and 180° (to the bisection's 1e-13 rad)
+    ends = sorted(round(math.degrees(x) / 180) % 2 for x in cyc.extremes)
+    assert ends == [0, 1]
+    assert all(abs(math.sin(x)) < 1e-12 for x in cyc.extremes)
+
+
+def test_a_velocity_that_touches_zero_is_no_turning_point():
+    from plans.cycle import _signs
+
+    assert _signs(np.array([1.0, 0.0, 1.0, -1.0, 0.0, 0.0, -1.0, 0.0])).tolist() == [
+        1, 1, 1, -1, -1, -1, -1, 1]
+    assert _signs(np.zeros(4)).tolist() == [0, 0, 0, 0]
