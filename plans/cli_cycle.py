@@ -138,22 +138,11 @@ def conditioning(mech, motion) -> tuple[Status, ...]:
     """Per position: the figures of every group, warnings and errors (see the module doc)."""
     import numpy as np
 
-    from .records import SINGULAR_SINE, WARN_SINE
-    from .structure import DyadKind
+    from .records import WARN_SINE, near_pivot, on_pivot, pivot_figure
 
     n = len(motion.phi)
     crank_pivot = mech.frame[mech.driver.pivot]
-    per_group = []
-    for g in motion.groups:
-        pivot = None
-        if g.group.kind == DyadKind.RPR:
-            P, Q = motion.position[g.group.P], motion.position[g.group.Q]
-            loop = np.abs(Q - crank_pivot) + np.abs(P - crank_pivot)
-            with np.errstate(all="ignore"):
-                pivot = np.where(
-                    loop > 0, np.abs(P - Q) / np.where(loop > 0, loop, 1.0), 0.0
-                )
-        per_group.append((g, pivot))
+    per_group = [(g, pivot_figure(g, motion.position, crank_pivot)) for g in motion.groups]
     # each group's figures as Python lists, once; words only where a position is flagged
     cols = []
     for g, pivot in per_group:
@@ -183,18 +172,10 @@ def conditioning(mech, motion) -> tuple[Status, ...]:
             if pivot is not None:
                 q = pivot[k]
                 figures[f"{label} pivot"] = q
-                P, Q = g.group.P, g.group.Q
-                if q < SINGULAR_SINE:
-                    errors.append(
-                        f"{label} at {at(k)}: the block {P} is on the rocker's pivot "
-                        f"{Q} (|{Q}{P}| ratio {q:.3g}): the rocker's ω is undefined"
-                    )
-                elif q < WARN_SINE:
-                    warnings.append(
-                        f"{label} at {at(k)}: the block {P} passes close to the "
-                        f"rocker's pivot {Q} (|{Q}{P}| / (|O{Q}| + |O{P}|) = {q:.3g}): the "
-                        "rocker's ω and ε lose digits"
-                    )
+                if (err := on_pivot(g, q, at(k))) is not None:
+                    errors.append(str(err))
+                elif (warning := near_pivot(g, q, at(k))) is not None:
+                    warnings.append(warning)
         sines = [v for key, v in figures.items() if not key.endswith(" pivot")]
         if not sines:
             min_sine = 1.0

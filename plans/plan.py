@@ -23,7 +23,7 @@ import numpy as np
 from .kernels import record
 from .kinematics import Motion, Solver
 from .mechanism import Mechanism
-from .records import WARN_SINE, frozen
+from .records import WARN_SINE, frozen, near_pivot, on_pivot, pivot_figure
 from .scales import choose_mu, choose_mu_l
 from .structure import Structure
 
@@ -155,12 +155,19 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     phi = mech.driver.phi if phi is None else float(phi)
     motion = solver.solve_one(phi)
     warnings = []
+    crank_pivot = mech.frame[mech.driver.pivot]
     for g in motion.groups:
         if not WARN_SINE <= abs(g.velocity.sine) < math.inf:  # NaN, inf: parallel() refuses them
             at = mech.driver.at(phi)
             if (err := g.parallel(None, at, mech.source)) is not None:
                 raise err
             warnings.append(g.near_parallel(None, at))
+        q = pivot_figure(g, motion.position, crank_pivot)
+        if q is not None and q < WARN_SINE:  # a slotted link's block near its pivot
+            at = mech.driver.at(phi)
+            if (err := on_pivot(g, q, at, mech.source)) is not None:
+                raise err
+            warnings.append(near_pivot(g, q, at))
     scales = mech.scales
     if mu or "mu_l" not in scales:
         scales = dict(scales, **(mu or {}))

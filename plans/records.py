@@ -159,6 +159,50 @@ class GroupSolution(NamedTuple):
                 f"{r0.relation} and {r1.relation} meet at {_degrees(s):.3g}° (sin = {s:.3g})")
 
 
+def pivot_figure(g: GroupSolution, position: dict, crank_pivot: complex):
+    """For a slotted link (RPR): how far the block P is from the rocker's pivot Q, relative
+    to the loop, |QP| / (|OQ| + |OP|) with O the crank's pivot (arrays or Python numbers,
+    as ``position`` holds them); None for the other kinds. Near 0 the rocker's
+    ω = V / |QP| loses its digits, though the two lines of the plans stay perpendicular."""
+    if g.group.kind.name != "RPR":
+        return None
+    P, Q = position[g.group.P], position[g.group.Q]
+    loop = abs(Q - crank_pivot) + abs(P - crank_pivot)
+    if isinstance(loop, float):  # the one-angle path, on Python numbers
+        return abs(P - Q) / loop if loop > 0 else 0.0
+    with np.errstate(all="ignore"):
+        return np.where(loop > 0, np.abs(P - Q) / np.where(loop > 0, loop, 1.0), 0.0)
+
+
+def on_pivot(g: GroupSolution, q: float, at: str, source: str = "") -> SingularPlanError | None:
+    """The error where the block is on the rocker's pivot (``q`` from :func:`pivot_figure`
+    below :data:`SINGULAR_SINE`): the rocker's direction, ω and ε are undefined. None
+    elsewhere."""
+    if not q < SINGULAR_SINE:
+        return None
+    P, Q = g.group.P, g.group.Q
+    return SingularPlanError(
+        f"{g.group.label} at {at}: the block {P} is on the rocker's pivot {Q} (|{Q}{P}| "
+        f"ratio {q:.3g}): the rocker's ω is undefined, a singular position (dead point)",
+        sine=q, source=source)
+
+
+def near_pivot(g: GroupSolution, q: float, at: str, lang: str = "en") -> str | None:
+    """The warning where the block passes close to the rocker's pivot (``q`` under
+    :data:`WARN_SINE`, not on it). None elsewhere."""
+    if not SINGULAR_SINE <= q < WARN_SINE:
+        return None
+    P, Q = g.group.P, g.group.Q
+    if lang == "ru":
+        from .fmt import num
+
+        return (f"группа {g.group.label.removeprefix('group ')} при {at}: камень {P} проходит "
+                f"близко к оси кулисы {Q} (|{Q}{P}| / (|O{Q}| + |O{P}|) = {num(q, 3, 'ru')}): "
+                "ω и ε кулисы теряют точность")
+    return (f"{g.group.label} at {at}: the block {P} passes close to the rocker's pivot {Q} "
+            f"(|{Q}{P}| / (|O{Q}| + |O{P}|) = {q:.3g}): the rocker's ω and ε lose digits")
+
+
 def _degrees(sine: float) -> float:
     return math.degrees(math.asin(min(sine, 1.0)))
 

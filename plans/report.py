@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 from .fmt import SENSE, angle, from_x, num
 from .plan import Solution, plan_name
+from .records import near_pivot, pivot_figure
 
 T = {
     "en": {
@@ -201,8 +202,14 @@ def warnings(sol: Solution, lang: str = "en") -> list[str]:
     again from the groups' own figures in Russian."""
     if lang == "en":
         return list(sol.warnings)
-    at = sol.mechanism.driver.at(sol.phi, lang)
-    return [w for g in sol.scalar.groups if (w := g.near_parallel(None, at, lang)) is not None]
+    mech, m = sol.mechanism, sol.scalar
+    at = mech.driver.at(sol.phi, lang)
+    out = []
+    for g in m.groups:
+        q = pivot_figure(g, m.position, mech.frame[mech.driver.pivot])
+        out += [w for w in (g.near_parallel(None, at, lang),
+                            None if q is None else near_pivot(g, q, at, lang)) if w is not None]
+    return out
 
 
 def no_full_turn(cycle, lang: str = "en", deg=None, link: int = 1) -> str:

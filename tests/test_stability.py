@@ -258,6 +258,30 @@ def test_slotted_link_with_its_pivot_almost_on_the_crank_circle():
     assert motion.min_sine.min() > 0.99
 
 
+def test_one_position_with_the_block_on_the_pivot_is_refused_and_near_it_warned():
+    """The rocker's pivot exactly on the crank circle: at φ1 = 270° the block is on the
+    pivot. ``plans cycle`` said so, but one position (solve, report, sheet) printed
+    ε3 = 5.4e17 rad/s² with exit 0: the lines of its plans stay perpendicular, so only the
+    pivot figure sees it. Now that position is an error and the ones near it warn, in
+    the note's language too."""
+    from plans.errors import SingularPlanError
+    from plans.plan import solve_position
+    from plans.report import warnings as note_warnings
+
+    R = 0.1
+    mech = mech_of(slotted(R, R))
+    with pytest.raises(SingularPlanError, match="the block A is on the rocker's pivot B"):
+        solve_position(mech, math.radians(-90))
+    sol = solve_position(mech, math.radians(-90.1))
+    (w,) = sol.warnings
+    assert "the block A passes close to the rocker's pivot B" in w and "= 0.000873" in w
+    (ru,) = note_warnings(sol, "ru")
+    assert "камень A проходит близко к оси кулисы B" in ru and "= 0,000873" in ru
+    assert not solve_position(mech, math.radians(-60)).warnings
+    # the cycle's table words it the same way
+    assert any(w in x for x in warnings_at(mech, np.radians([-90.1])))
+
+
 @pytest.mark.parametrize(
     "text",
     [
