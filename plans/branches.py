@@ -6,7 +6,7 @@ and then kept over the whole cycle, so the branch stays continuous.
 
 from __future__ import annotations
 
-from .errors import InputError
+from .errors import AssemblyError, InputError, SingularPlanError
 from .geometry import cross
 from .mechanism import Mechanism
 from .records import coincident_name
@@ -53,11 +53,25 @@ def hint_holds(rel: str, X: complex, refs: list[complex]) -> bool:
 
 
 def choose_branches(mech: Mechanism, structure: Structure) -> tuple[int, ...]:
-    """Turn the file's hints into a sign per group, evaluated at the given crank angle.
+    """Turn the file's hints into a sign per group, evaluated at the file's crank angle
+    (``mech.hints_at`` when the crank was turned from it, :meth:`Mechanism.at_file_angle`).
 
     The sign (which side of the line of centres, which way along the guide) is then kept
-    over the whole cycle, so the branch stays continuous.
+    over the whole cycle, so the branch stays continuous: ``--angle 180`` gives the
+    position the cycle passes through at 180°, not whichever assembly the hint's words
+    would pick there. Where the mechanism does not close at the file's angle, the hints
+    are read at the angle asked for instead.
     """
+    at = mech.hints_at
+    if at is not None and at != mech.driver.phi:
+        try:
+            return _choose(mech.with_phi(at), structure)
+        except (AssemblyError, SingularPlanError):
+            pass
+    return _choose(mech, structure)
+
+
+def _choose(mech: Mechanism, structure: Structure) -> tuple[int, ...]:
     from .kinematics import Solver  # it calls back here: imported when first needed
 
     names = mech.point_names()

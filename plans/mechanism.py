@@ -147,6 +147,9 @@ class Mechanism:
     source: str = "<mechanism>"
     #: the name in other languages ("ru": …), from ``name = { en = "…", ru = "…" }``
     names: dict[str, str] = field(default_factory=dict)
+    #: the crank angle (rad from +x) the assembly hints are read at: the file's own, kept
+    #: by :meth:`at_file_angle`; None: the driver's
+    hints_at: float | None = None
 
     def name_in(self, lang: str) -> str:
         """The name for a note or sheet in ``lang``: the file's name in that language if
@@ -197,9 +200,12 @@ class Mechanism:
 
     def at_file_angle(self, angle_deg: float) -> Mechanism:
         """The same mechanism with the crank at ``angle_deg`` in the file's convention
-        (as ``--angle`` and a measurement file's ``angle_deg`` give it)."""
+        (as ``--angle`` and a measurement file's ``angle_deg`` give it), assembled as the
+        file's hints ask at the file's own angle: the crank turned there, on the same
+        branch, as the cycle and the sheet draw it."""
         d = self.driver
-        return replace(self, driver=replace(d, phi=d.phi_of(angle_deg), angle_deg=angle_deg))
+        return replace(self, driver=replace(d, phi=d.phi_of(angle_deg), angle_deg=angle_deg),
+                       hints_at=d.phi if self.hints_at is None else self.hints_at)
 
     def with_phi(self, phi: float) -> Mechanism:
         """The same mechanism with the crank at ``phi`` (rad, from +x)."""

@@ -742,3 +742,53 @@ def test_random_slotted_links(mech):
     _random_checks(mech)
     phi = np.radians(np.linspace(0, 360, 8, endpoint=False) + 11.0)
     assert check_coriolis(solve(mech, phi)) == 1
+
+
+ABOVE_AD = """
+[frame]
+O = [0.0, 0.0]
+D = [0.0, 0.3]
+[driver]
+link = 1
+angle_deg = 0
+omega = 10
+[links.1]
+axis = ["O", "A"]
+points = { A = 0.1 }
+[links.2]
+axis = ["A", "B"]
+points = { B = 0.35 }
+[links.3]
+axis = ["D", "B"]
+points = { B = 0.3 }
+[assembly]
+B = "above AD"
+"""
+
+
+def test_a_turned_crank_keeps_the_branch_the_hints_chose_at_the_files_angle():
+    """--angle 180 (and a measurement file's angle_deg) turn the crank of the mechanism the
+    file assembles: the hint "above AD" is read at the file's 0°, and B at 180° is where
+    the cycle passes. It had been read again at 180°, where it picks the other branch."""
+    mech = from_dict(tomllib.loads(ABOVE_AD), "<above AD>")
+    turned = mech.at_file_angle(180)
+    B = Solver(turned).solve_one(math.pi).position["B"]
+    assert B == pytest.approx(Solver(mech).solve_one(math.pi).position["B"], abs=1e-15)
+    assert B == pytest.approx(0.23223578439458 + 0.11008807186847j, abs=1e-12)
+    # read at 180° the hint gives the other assembly: the test tells the two apart
+    there = from_dict(tomllib.loads(ABOVE_AD.replace("angle_deg = 0", "angle_deg = 180")), "<at 180>")
+    assert abs(Solver(there).solve_one(math.pi).position["B"] - B) > 0.1
+    assert turned.at_file_angle(90).hints_at == mech.driver.phi  # turned twice: still 0°
+
+
+def test_a_file_angle_that_does_not_close_leaves_the_hints_to_the_angle_asked_for():
+    from plans.scenes import SAMPLES
+
+    text = (SAMPLES / "fourbar.toml").read_text("utf-8").replace("angle_deg = 40", "angle_deg = 180")
+    mech = from_dict(tomllib.loads(text), "<fourbar at 180>")
+    with pytest.raises(Exception, match="cannot be assembled"):
+        Solver(mech)
+    at40 = mech.at_file_angle(40)
+    ref = from_dict(tomllib.loads((SAMPLES / "fourbar.toml").read_text("utf-8")), "<fourbar>")
+    phi = ref.driver.phi
+    assert Solver(at40).solve_one(phi).position["C"] == Solver(ref).solve_one(phi).position["C"]
