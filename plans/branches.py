@@ -95,11 +95,18 @@ def _choose(mech: Mechanism, structure: Structure) -> tuple[int, ...]:
             trial = Solver(mech, structure, tuple(sigmas) + (sigma,) + (1,) * (len(structure.groups) - i - 1))
             motion = trial._solve_upto(i + 1)
             positions[sigma] = motion
+            for k, (_, refs) in mine.items():
+                if later := [r for r in refs if r not in motion.position]:
+                    raise InputError(
+                        mech.source,
+                        f"assembly.{k}: {mech.assembly[k]!r} names {later[0]}, a point found "
+                        f"after {g.label}, the group of {k}: name fixed points or points found "
+                        "before it")
             if not motion.valid[0]:
                 continue
             if all(
                 hint_holds(rel, complex(motion.position[k][0]),
-                           [complex(motion.position[r][0]) for r in refs if r in motion.position])
+                           [complex(motion.position[r][0]) for r in refs])
                 for k, (rel, refs) in mine.items()
             ):
                 ok.append(sigma)

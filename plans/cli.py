@@ -173,6 +173,10 @@ def build_parser() -> argparse.ArgumentParser:
         p = sub.add_parser(name, help=help_text, description=help_text, epilog=EPILOG,
                            formatter_class=argparse.RawDescriptionHelpFormatter)
         mod.configure(p)
+        # also after the command (plans solve F --debug), as its message says; SUPPRESS:
+        # absent there, it leaves the value given before the command alone
+        p.add_argument("--debug", action="store_true", default=argparse.SUPPRESS,
+                       help="show the traceback of an internal error")
         p.set_defaults(run=mod.run)
         parser.commands[name] = p
     return parser

@@ -617,3 +617,13 @@ def test_output_to_dev_stdout_appends_to_what_stdout_is(tmp_path):
     assert r.returncode == 0, r.stderr
     text = log.read_text()
     assert text.startswith("BEFORE\nFour-bar linkage, variant 1\n")
+
+
+@pytest.mark.parametrize(("argv", "debug"), [
+    (["--debug", "solve", "F"], True),
+    (["solve", "F", "--debug"], True),  # where the internal error's message asks for it
+    (["solve", "F"], False),
+])
+def test_debug_is_taken_before_or_after_the_command(argv, debug):
+    args = cli.build_parser().parse_args(argv)
+    assert args.debug is debug

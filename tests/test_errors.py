@@ -569,3 +569,14 @@ def test_rpr_pivot_on_the_pin_is_explained():
 def test_a_hint_that_makes_a_later_group_fail_is_named():
     msg = str(engine_error(PRESS.replace('D = "right of C"', 'D = "right of C"\nS3 = "right of C"')))
     assert "S3" in msg
+
+
+@pytest.mark.parametrize("hint", ["above S4", "above OS4"])
+def test_a_hint_naming_a_point_of_a_later_group_is_an_input_error(hint):
+    """The press's A3 (group 2–3) placed relative to S4, which group 4–5 finds later: the
+    hint had crashed the engine (exit 3), or with a second point "above OS4" been read
+    as "above O" without a word."""
+    text = PRESS.replace('D = "right of C"', f'D = "right of C"\nC = "{hint}"')
+    err = engine_error(text)
+    assert isinstance(err, InputError)
+    assert f"assembly.C: '{hint}' names S4, a point found after group 2–3 (RPR)" in str(err)
