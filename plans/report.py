@@ -213,14 +213,25 @@ def warnings(sol: Solution, lang: str = "en") -> list[str]:
 
 
 def no_full_turn(cycle, lang: str = "en", deg=None, link: int = 1) -> str:
-    """The sentence for a crank that cannot make a full turn, with its range: from the
-    cycle's first position to its last, in degrees by ``deg`` (a crank angle in rad →
-    degrees in the convention wanted; default counter-clockwise from +x)."""
+    """The sentence for a crank that cannot make a full turn, with its range in degrees by
+    ``deg`` (a crank angle in rad → degrees in the convention wanted; default
+    counter-clockwise from +x).
+
+    The range reads as the convention counts, from the smaller angle to the larger, the
+    first one negative where it runs through 0°: "from −128.8° to 128.8°". The cycle's
+    own order follows the crank's sense; read in a convention that counts the other way,
+    "from 128.8° to 231.2°" named the very angles where it does not assemble.
+    """
     lo, hi = cycle.crank_range
     deg = deg or from_x
+    a, b, mid = deg(lo), deg(hi), deg(0.5 * (lo + hi))
+    if (mid - a) % 360.0 > (b - a) % 360.0:  # counted upwards, the range runs from b to a
+        a, b = b, a
+    b = float(angle(b, 12))  # 359.99999999999 is 0, as it is written
+    a = a - 360.0 if a > b else a
     return T[lang]["noturn"].format(
         d=link,
-        lo=angle(deg(lo), 4, lang), hi=angle(deg(hi), 4, lang),
+        lo=num(a, 4, lang).replace("-", "−"), hi=angle(b, 4, lang),
         span=num(math.degrees(abs(hi - lo)), 4, lang),
     )
 

@@ -159,9 +159,30 @@ def test_russian_note_says_the_crank_range_in_russian(capsys):
     code, out, _ = run(capsys, "report", "samples/fourbar.toml", "--lang", "ru")
     assert code == 0
     assert ("Начальное звено 1 не может сделать полный оборот (это коромысло, а не кривошип): "
-            "механизм собирается только при φ1 от 231,2° до 128,8°, угол качания 257,6°.") in out
+            "механизм собирается только при φ1 от −128,8° до 128,8°, угол качания 257,6°.") in out
     assert "кривошипа" not in out.split("## 3.")[1]  # the input link is not called a crank
     assert "cannot" not in out
+
+
+@pytest.mark.parametrize(("edit", "words"), [
+    ({}, "from −128.8° to 128.8°"),
+    ({'sense = "ccw"': 'sense = "cw"'}, "from −128.8° to 128.8°"),
+    ({"angle_deg = 40": 'angle_deg = 50\nfrom = "+y"\nmeasured = "cw"'}, "from −38.8° to 218.8°"),
+    ({"angle_deg = 40": 'angle_deg = 50\nfrom = "+y"\nmeasured = "cw"',
+      'sense = "ccw"': 'sense = "cw"'}, "from −38.8° to 218.8°"),
+])
+def test_the_crank_range_reads_upwards_in_the_files_convention(capsys, tmp_path, edit, words):
+    """Seed 001's four-bar assembles over −128.8°…128.8° from +x. With the crank turning
+    clockwise the range had been worded in the crank's order, "from 128.8° to 231.2°":
+    read as the convention counts, exactly the angles where it does not assemble."""
+    text = Path("samples/fourbar.toml").read_text("utf-8")
+    for a, b in edit.items():
+        assert a in text
+        text = text.replace(a, b)
+    path = tmp_path / "f.toml"
+    path.write_text(text, "utf-8")
+    code, out, _ = run(capsys, "report", path)
+    assert code == 0 and f"assembles only for φ1 {words}, a swing of 257.6°" in out
 
 
 def test_an_angle_that_rounds_to_360_is_written_0(capsys):

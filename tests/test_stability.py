@@ -331,7 +331,7 @@ def test_linkage_that_cannot_make_a_full_turn():
     lo, hi = (math.degrees(x) % 360 for x in cyc.crank_range)
     assert lo == pytest.approx(180 + gamma, abs=0.1) and hi == pytest.approx(180 - gamma, abs=0.1)
     assert summary(cyc)[1] == (f"The input link 1 cannot make a full turn (it rocks, it is not a "
-                               f"crank): the mechanism assembles only for φ1 from {lo:.1f}° to "
+                               f"crank): the mechanism assembles only for φ1 from −{hi:.1f}° to "
                                f"{hi:.1f}°, a swing of {360 - 2 * gamma:.1f}°.")
     phi = worst_angles(mech, solver)
     _, _, kappa = check(mech, phi)
