@@ -34,6 +34,15 @@ def parse_hint(hint: str, names: list[str]) -> tuple[str, list[str]]:
     raise ValueError('a hint reads "above BD", "below BD", "left of C" or "right of C"')
 
 
+#: above and below a line within this sine of vertical (left and right of one within it of
+#: horizontal) are not defined: the hint is refused (about 1°)
+UPRIGHT = 0.0175
+
+
+class Ambiguous(ValueError):
+    """A hint whose line stands across the sides it names ("above" a vertical line)."""
+
+
 def hint_holds(rel: str, X: complex, refs: list[complex]) -> bool:
     if len(refs) == 1:
         Q = refs[0]
@@ -41,6 +50,9 @@ def hint_holds(rel: str, X: complex, refs: list[complex]) -> bool:
                 "left of": X.real < Q.real, "right of": X.real > Q.real}[rel]
     Q, R = refs
     d = R - Q
+    across = d.real if rel in ("above", "below") else d.imag
+    if abs(across) < UPRIGHT * abs(d):
+        raise Ambiguous("vertical" if rel in ("above", "below") else "horizontal")
     if rel in ("above", "below"):
         if d.real < 0:
             d = -d
@@ -104,11 +116,21 @@ def _choose(mech: Mechanism, structure: Structure) -> tuple[int, ...]:
                         "before it")
             if not motion.valid[0]:
                 continue
-            if all(
-                hint_holds(rel, complex(motion.position[k][0]),
-                           [complex(motion.position[r][0]) for r in refs])
-                for k, (rel, refs) in mine.items()
-            ):
+            holds = True
+            for k, (rel, refs) in mine.items():
+                try:
+                    holds &= hint_holds(rel, complex(motion.position[k][0]),
+                                        [complex(motion.position[r][0]) for r in refs])
+                except Ambiguous as exc:
+                    line = "".join(refs)
+                    other = ('"left of {0}" or "right of {0}"' if str(exc) == "vertical"
+                             else '"above {0}" or "below {0}"').format(line)
+                    raise InputError(
+                        mech.source,
+                        f"assembly.{k}: {mech.assembly[k]!r}: the line {line} is {exc} (within "
+                        f"1°) at {mech.driver.at(mech.driver.phi)}, so {rel} it names no side: "
+                        f"write {other}") from None
+            if holds:
                 ok.append(sigma)
         used |= set(mine)
         if len(ok) == 1:

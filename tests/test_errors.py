@@ -580,3 +580,37 @@ def test_a_hint_naming_a_point_of_a_later_group_is_an_input_error(hint):
     err = engine_error(text)
     assert isinstance(err, InputError)
     assert f"assembly.C: '{hint}' names S4, a point found after group 2–3 (RPR)" in str(err)
+
+
+def test_above_a_vertical_line_is_refused_and_left_of_it_does_not_depend_on_the_order():
+    """A four-bar standing upright (D above O): "above OD" and "above DO" had picked the
+    two different assemblies, neither of them above anything."""
+    text = """
+[frame]
+O = [0.0, 0.0]
+D = [0.0, 0.2]
+[driver]
+link = 1
+angle_deg = 0
+omega = 10
+[links.1]
+axis = ["O", "A"]
+points = { A = 0.05 }
+[links.2]
+axis = ["A", "B"]
+points = { B = 0.2 }
+[links.3]
+axis = ["D", "B"]
+points = { B = 0.15 }
+[assembly]
+B = "HINT"
+"""
+    for hint in ("above OD", "below DO"):
+        err = engine_error(text.replace("HINT", hint))
+        assert isinstance(err, InputError)
+        assert (f"assembly.B: '{hint}': the line {hint[-2:]} is vertical (within 1°) at "
+                f"φ1 = 0°, so {hint.split()[0]} it names no side: write \"left of") in str(err)
+    spots = {h: Solver(mechanism.from_dict(tomllib.loads(text.replace("HINT", h)), "<t>"))
+             .solve_one(0.0).position["B"] for h in ("left of OD", "left of DO", "right of OD")}
+    assert spots["left of OD"] == spots["left of DO"] and spots["left of OD"].real < 0
+    assert spots["right of OD"].real > 0
