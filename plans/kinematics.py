@@ -97,6 +97,8 @@ class Solver:
         :meth:`solve` would report for that angle.
         """
         phi = float(phi)
+        if not math.isfinite(phi):
+            raise ValueError(f"the crank angle must be a finite number of radians, not {phi}")
         try:
             return self._solve(kernels.SCALAR, phi, 0.0, complex(math.cos(phi), math.sin(phi)))
         except (ScalarFallback, ArithmeticError, ValueError):

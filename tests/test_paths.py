@@ -5,6 +5,8 @@ does not close or a plan is singular."""
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -315,3 +317,11 @@ def test_choose_mu_is_the_first_standard_value_that_fits(value, ratio):
     got = choose_mu(value, largest)
     assert got == next(series(need, need * 20))
     assert value / got <= 80.0 * (1 + 1e-12) and largest / got <= 150.0 * (1 + 1e-12)
+
+
+@pytest.mark.parametrize("phi", [math.nan, math.inf, -math.inf])
+def test_one_angle_that_is_no_number_is_a_value_error(phi):
+    """solve_one(nan) had raised "cannot be assembled at φ1 = —°, misses by nan m"."""
+    sv = Solver(SCENES["press"].mechanism())
+    with pytest.raises(ValueError, match="the crank angle must be a finite number"):
+        sv.solve_one(phi)
