@@ -145,6 +145,8 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
     full = bool(valid.all())
     out = find_output(mech)
     if not full:  # the range is worded where it is shown (report.no_full_turn)
+        if not valid[0]:  # the given angle itself does not close: say why, as solve does
+            solver.solve_one(phi0)
         lo, hi = _interval_around(grid, valid)
         span = np.linspace(lo, hi, n_positions) if n_positions > 1 else np.array([lo])
         return Cycle(out, False, (), None, None, None, tuple(span), grashof, tuple(notes),

@@ -270,3 +270,17 @@ def test_a_velocity_that_touches_zero_is_no_turning_point():
     assert _signs(np.array([1.0, 0.0, 1.0, -1.0, 0.0, 0.0, -1.0, 0.0])).tolist() == [
         1, 1, 1, -1, -1, -1, -1, 1]
     assert _signs(np.zeros(4)).tolist() == [0, 0, 0, 0]
+
+
+def test_a_cycle_from_an_angle_that_does_not_close_says_why(capsys, tmp_path):
+    """The tangent mechanism given at φ1 = 90°, its dead point: the cycle had printed
+    "assembles only for φ1 from 90° to 90°, a swing of 0°" and N empty positions."""
+    from plans.scenes import SCENES
+
+    path = tmp_path / "t.toml"
+    path.write_text(SCENES["tangent"].toml.replace("angle_deg = 25", "angle_deg = 90", 1), "utf-8")
+    code, out, err = run(capsys, "cycle", path, "--positions", "4")
+    assert code == 2 and out == ""
+    assert err == (f"plans cycle: {path}: group 2–3 (PRP) at φ1 = 90°: the guides OA and y-y "
+                   "are parallel: the hinge C is not fixed: a singular position (dead point), "
+                   "the plan has no unique solution\n")
