@@ -228,28 +228,37 @@ def main(argv: list[str] | None = None) -> int:
         return EXIT_INTERNAL
 
 
-def write_output(path: str | None, text: str | bytes) -> None:
+def write_output(path: str | None, text) -> None:
     """Write to stdout ('-' or None) or atomically to a file: a temporary file in the
     target folder, renamed over the target only when complete, so an existing output is
     replaced only by a complete new one. Refuses the command's input files, a folder,
     and a folder that does not exist; a file that cannot be written is bad input (exit 2),
-    not an internal error."""
+    not an internal error.
+
+    ``text``: a str, bytes, or an iterable of str chunks, written as they come (a table
+    of 10⁵ rows never stands in memory as one string)."""
     import os
     import stat
     import tempfile
 
+    chunks = [text] if isinstance(text, (str, bytes)) else text
     if path in (None, "-") or _is_stdout(path):  # /dev/stdout too: never replaced by a file
-        if isinstance(text, bytes):
-            sys.stdout.buffer.write(text)
-        else:
-            sys.stdout.write(text)
+        for chunk in chunks:
+            if isinstance(chunk, bytes):
+                sys.stdout.buffer.write(chunk)
+            else:
+                sys.stdout.write(chunk)
         return
     where, target, st, folder = _target(path)
-    data = text.encode("utf-8") if isinstance(text, str) else text
+
+    def fill(fh) -> None:
+        for chunk in chunks:
+            fh.write(chunk.encode("utf-8") if isinstance(chunk, str) else chunk)
+
     if st is not None and not stat.S_ISREG(st.st_mode):  # /dev/null, a pipe: no rename
         try:
             with open(target, "wb") as fh:
-                fh.write(data)
+                fill(fh)
         except OSError as exc:
             raise InputError(where, f"cannot write: {exc.strerror}") from None
         return
@@ -265,7 +274,7 @@ def write_output(path: str | None, text: str | bytes) -> None:
         raise InputError(where, f"cannot write in the folder {_arg(folder)}: {exc.strerror}") from None
     try:
         with os.fdopen(fd, "wb") as fh:
-            fh.write(data)
+            fill(fh)
             fh.flush()
             os.fsync(fh.fileno())
         os.chmod(tmp, mode)

@@ -24,7 +24,9 @@ from dataclasses import dataclass
 from .cli import EXIT_INPUT, EXIT_OK, add_source, mechanism_from, number, write_output
 from .fmt import from_x, num
 
-MAX_POSITIONS = 1_000_000
+#: a table for reading or a file for a spreadsheet: 10⁵ rows of the press are 270 MB of
+#: JSON; for more angles, Solver.sweep works on arrays (README, "Whole cycle")
+MAX_POSITIONS = 100_000
 
 
 def configure(p) -> None:
@@ -82,14 +84,9 @@ def run(args) -> int:
     mech = mechanism_from(args)
     table = compute(mech, n)
     if args.json:
-        import json
-
-        text = (
-            json.dumps(to_json(table), ensure_ascii=False, indent=1, allow_nan=False)
-            + "\n"
-        )
+        text = json_chunks(table)
     elif args.csv:
-        text = to_csv(table)
+        text = csv_chunks(table)
     else:
         text = to_text(table)
     write_output(args.output, text)
@@ -232,8 +229,42 @@ def _numbering(t: CycleTable) -> str:
 
 
 def to_json(t: CycleTable) -> dict:
+    """The whole table as one JSON object (``--json`` writes the same text row by row)."""
+    return dict(_json_head(t), rows=list(_json_rows(t)))
+
+
+def json_chunks(t: CycleTable):
+    """The JSON text of :func:`to_json` in pieces: the head, then one row per line, so
+    that 10⁵ rows are written as they are made."""
+    import json
+
+    def dumps(x) -> str:
+        return json.dumps(x, ensure_ascii=False, allow_nan=False)
+
+    head = _json_head(t)
+    yield "{\n" + "".join(f" {dumps(k)}: {dumps(v)},\n" for k, v in head.items()) + ' "rows": ['
+    sep = "\n  "
+    for row in _json_rows(t):
+        yield sep + dumps(row)
+        sep = ",\n  "
+    yield "\n ]\n}\n"
+
+
+def _json_head(t: CycleTable) -> dict:
+    mech = t.mechanism
+    return {
+        "mechanism": mech.name,
+        "positions": len(t.status),
+        "numbering": _numbering(t),
+        "omega1": mech.driver.omega,
+        "cycle": _cycle_summary(t),
+        "point_names": list(t.points),
+        "link_ids": list(t.links),
+    }
+
+
+def _json_rows(t: CycleTable):
     m, mech = t.motion, t.mechanism
-    rows = []
     for k, st in enumerate(t.status):
         phi = float(m.phi[k])
         good = st.ok
@@ -269,17 +300,7 @@ def to_json(t: CycleTable) -> dict:
             }
             for i in t.links
         }
-        rows.append(row)
-    return {
-        "mechanism": mech.name,
-        "positions": len(rows),
-        "numbering": _numbering(t),
-        "omega1": mech.driver.omega,
-        "cycle": _cycle_summary(t),
-        "point_names": list(t.points),
-        "link_ids": list(t.links),
-        "rows": rows,
-    }
+        yield row
 
 
 def _csv_header(t: CycleTable) -> list[str]:
@@ -301,6 +322,11 @@ def _csv_header(t: CycleTable) -> list[str]:
 
 
 def to_csv(t: CycleTable) -> str:
+    return "".join(csv_chunks(t))
+
+
+def csv_chunks(t: CycleTable, rows: int = 1000):
+    """The CSV text, ``rows`` rows at a time."""
     import csv
     import io
 
@@ -335,7 +361,11 @@ def to_csv(t: CycleTable) -> str:
         row += [f(c[k]) for c in cols] if good else blank
         row += ["; ".join(st.warnings), "; ".join(st.errors)]
         w.writerow(row)
-    return buf.getvalue()
+        if k % rows == rows - 1:
+            yield buf.getvalue()
+            buf.seek(0)
+            buf.truncate()
+    yield buf.getvalue()
 
 
 def _table(title: str, head: list[str], rows: list[list[str]]) -> list[str]:

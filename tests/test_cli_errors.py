@@ -627,3 +627,20 @@ def test_output_to_dev_stdout_appends_to_what_stdout_is(tmp_path):
 def test_debug_is_taken_before_or_after_the_command(argv, debug):
     args = cli.build_parser().parse_args(argv)
     assert args.debug is debug
+
+
+def test_output_written_in_pieces_is_all_or_nothing(tmp_path):
+    """A table written as it is made (cycle --json): a failure half way leaves the old
+    file as it was, and no temporary file behind."""
+    out = tmp_path / "t.json"
+    out.write_text("KEEP")
+
+    def pieces():
+        yield "{"
+        raise RuntimeError("half way")
+
+    with pytest.raises(RuntimeError):
+        cli.write_output(str(out), pieces())
+    assert out.read_text() == "KEEP" and [p.name for p in tmp_path.iterdir()] == ["t.json"]
+    cli.write_output(str(out), iter(["a", "b", "c"]))
+    assert out.read_text() == "abc"

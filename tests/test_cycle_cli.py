@@ -184,11 +184,21 @@ def test_table_marks_warnings(capsys):
     assert "position 4: warning: group 2–3 (RRR)" in out
 
 
-@pytest.mark.parametrize("n", ["0", "-3", "2000000"])
+@pytest.mark.parametrize("n", ["0", "-3", "100001", "1000000"])
 def test_positions_out_of_range(capsys, n):
+    """Up to 10⁵: a million rows of JSON had needed 24 GB and been killed."""
     code, _, err = run(capsys, "cycle", PRESS, "--positions", n)
     assert code == 2
-    assert "--positions" in err
+    assert f"argument --positions: '{n}' is not a whole number from 1 to 100000" in err
+
+
+def test_json_is_written_row_by_row_as_the_one_object_it_stands_for():
+    from plans.cli_cycle import compute, json_chunks, to_json
+
+    t = compute(mechanism.load(PRESS), 7)
+    chunks = list(json_chunks(t))
+    assert len(chunks) == 7 + 2  # the head, a row each, the tail
+    assert json.loads("".join(chunks)) == json.loads(json.dumps(to_json(t)))
 
 
 def test_one_position_and_json_is_strict(capsys):
