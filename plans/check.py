@@ -34,6 +34,7 @@ from dataclasses import dataclass, field
 
 from .errors import PlansError
 from .geometry import circle_circle, cross
+from .scales import series
 from .measured import (  # noqa: F401  (the public names of the check live here)
     MU_KEY,
     PLANS,
@@ -136,7 +137,7 @@ def diagnose(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance) -> 
     plans = {it.plan for it in items}
     findings: list[Finding] = []
     tried = 0
-    for mk in hypotheses(meas.solution, plans):
+    for mk in [*hypotheses(meas.solution, plans), *_fitted_scales(meas, devs)]:
         try:
             st = simulate(meas.solution, mk, meas.mu)
             sim = [compare(it, expected(it, st, meas.mu), tol) for it in items]
@@ -164,6 +165,32 @@ def diagnose(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance) -> 
     near = [f for f in findings if not f.broken]
     near.sort(key=lambda f: (-len(f.explained), f.score))
     return Diagnosis(None, (), near[0] if near else None, tried)
+
+
+def _fitted_scales(meas: Measurement, devs: tuple[Deviation, ...]) -> list[Mistake]:
+    """A plan drawn at a scale factor other than the one written down, by any factor: the
+    ratio of its measured segments to the exact ones, where two or more segments of it are
+    measured and the ratio is not near 1 (10 and 0.1 are among the common mistakes).
+    Whether it explains them, and spoils none that was right, is judged as for any other
+    mistake."""
+    out = []
+    for plan in PLANS:
+        pairs = [(d.item.measured, abs(d.computed)) for d in devs
+                 if d.item.kind == "segment" and d.item.plan == plan and d.computed]
+        if len(pairs) < 2:
+            continue  # one segment could be anything
+        # the ratio of the sums: the long segments, measured to the same ±mm, weigh most
+        r = sum(m for m, _ in pairs) / sum(c for _, c in pairs)
+        if r > 0 and not any(abs(r / f - 1) < 0.05 for f in (1.0, 10.0, 0.1)):
+            stated = meas.mu[MU_KEY[plan]]
+            fits = stated / r
+            # a round factor that close is the one drawn at: the segments' own scatter
+            # made the ratio 0.0999 where the student drew at 0.1
+            near = min(series(fits / 1.2, fits * 1.2), key=lambda m: abs(m / fits - 1), default=fits)
+            if abs(near / fits - 1) < 0.015:
+                fits, r = near, stated / near
+            out.append(Mistake("scale", plan, plan, r, info=((plan, repr(r)), ("fits", repr(fits)))))
+    return out
 
 
 # ---------------------------------------------------------------------------------------

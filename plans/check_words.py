@@ -104,6 +104,7 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
                 "on the other side), then redraw the plans")
     if k in ("scale", "scale-swapped"):
         facs = dict(mk.info)
+        fits = facs.pop("fits", None)
         parts = []
         for plan, f in facs.items():
             f = float(f)
@@ -119,8 +120,24 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
                              f"the {PLAN_WORDS[lang][plan]} is drawn {_fnum(1 / f, lang)} times too "
                              f"small for the stated {mu}")
         what = "; ".join(parts)
+        if fits is not None:
+            (plan,) = facs
+            mu, unit = {"velocity": ("μv", "(m/s)/mm" if not ru else "(м/с)/мм"),
+                        "acceleration": ("μa", "(m/s²)/mm" if not ru else "(м/с²)/мм"),
+                        "positions": ("μl", "m/mm" if not ru else "м/мм")}[plan]
+            what += (f": его отрезки соответствуют {mu} = {_fnum(float(fits), lang)} {unit}" if ru
+                     else f": its segments fit {mu} = {_fnum(float(fits), lang)} {unit}")
+            if float(fits) == 1.0 and plan != "positions":  # values in SI written as lengths
+                what += (", то есть записаны величины в единицах СИ, а не отрезки в мм" if ru
+                         else ", that is, the values in SI units are written, not the lengths in mm")
         if k == "scale-swapped":
             what = ("μv и μa перепутаны: " if ru else "μv and μa swapped: ") + what
+        if fits is not None:
+            if ru:
+                return (what, f"постройте план при записанном {mu} (отрезок = величина / {mu}) "
+                              f"или запишите тот {mu}, при котором он построен")
+            return (what, f"draw the plan at the {mu} written down (segment = value / {mu}), or "
+                          f"write down the {mu} it was drawn at")
         if ru:
             return (what, "длина отрезка = величина / масштабный коэффициент: pa = V_A/μv, "
                           "πa = a_A/μa, в мм; проверьте степень 10 и какой μ к какому плану")

@@ -74,13 +74,13 @@ WORDS = {
         "ok": "ok",
         "bad": "BEYOND",
         "sense": "wrong sense",
-        "all_ok": "Overall: all {n} items within tolerance.",
+        "all_ok": "Overall: all {n} {items} within tolerance.",
         "some": "Overall: {k} of {n} items beyond tolerance: {names}.",
         "diag": "Diagnosis",
         "none": "no single mistake explains this.",
         "closest": "closest: {what}; it explains {ex} but not {un}",
         "explains": "explains",
-        "all_of": "all {k} items beyond tolerance",
+        "all_of": "all {k} {items} beyond tolerance",
         "k_of": "{e} of the {k} items beyond tolerance; not {un}",
         "correction": "correction",
         "also": "equally consistent with",
@@ -104,13 +104,13 @@ WORDS = {
         "ok": "в допуске",
         "bad": "ВНЕ ДОПУСКА",
         "sense": "не то направление",
-        "all_ok": "Итог: все {n} величин в допуске.",
+        "all_ok": "Итог: все {n} {items} в допуске.",
         "some": "Итог: {k} из {n} вне допуска: {names}.",
         "diag": "Диагноз",
         "none": "ни одна отдельная ошибка этого не объясняет.",
         "closest": "ближе всего: {what}; объясняет {ex}, но не {un}",
         "explains": "объясняет",
-        "all_of": "все {k} величин вне допуска",
+        "all_of": "все {k} {items} вне допуска",
         "k_of": "{e} из {k} величин вне допуска; не объясняет {un}",
         "correction": "исправление",
         "also": "столь же хорошо объясняет",
@@ -120,6 +120,22 @@ WORDS = {
         "cw": "по ч.с.",
     },
 }
+
+
+def _items(n: int, lang: str) -> str:
+    """The noun after "all n": "items" / "item"; in Russian it agrees with the number
+    (все 21 величина, все 2 величины, все 5 величин).
+
+    >>> _items(1, "en"), _items(2, "ru"), _items(5, "ru"), _items(21, "ru"), _items(12, "ru")
+    ('item', 'величины', 'величин', 'величина', 'величин')
+    """
+    if lang != "ru":
+        return "item" if n == 1 else "items"
+    if n % 10 == 1 and n % 100 != 11:
+        return "величина"
+    if n % 10 in (2, 3, 4) and n % 100 not in (12, 13, 14):
+        return "величины"
+    return "величин"
 
 
 def _pct(x: float, lang: str) -> str:
@@ -194,7 +210,7 @@ def to_text(result, lang: str = "en") -> str:
     n = len(result.deviations)
     failed = result.failed
     if not failed:
-        out.append(w["all_ok"].format(n=n))
+        out.append(w["all_ok"].format(n=n, items=_items(n, lang)))
     else:
         out.append(w["some"].format(k=len(failed), n=n, names=", ".join(d.item.name for d in failed)))
         out += diagnosis_lines(result, lang)
@@ -222,7 +238,7 @@ def diagnosis_lines(result, lang: str = "en") -> list[str]:
     if b.unexplained:
         ex = w["k_of"].format(e=len(b.explained), k=k, un=", ".join(b.unexplained))
     else:
-        ex = w["all_of"].format(k=k)
+        ex = w["all_of"].format(k=k, items=_items(k, lang))
     lines.append(f"  {w['explains']}: {', '.join(b.explained)} ({ex})")
     lines.append(f"  {w['correction']}: {b.mistake.correction(lang)}")
     reported = {it.link for it in result.measurement.items if it.kind == "omega" and it.sense}

@@ -260,7 +260,8 @@ def simulate(sol: Solution, mk: Mistake | None, mu: dict[str, float] | None = No
         st = _Replayer(sol).exact()
         factor = dict.fromkeys(PLANS, 1.0)
         for plan, f in mk.info:
-            factor[plan] = float(f)
+            if plan in factor:  # ("fits", μ): words only
+                factor[plan] = float(f)
         return State(st.positions, st.velocity, st.acceleration, st.omega, st.epsilon, factor)
     return _Replayer(sol).run(mk)
 

@@ -260,6 +260,33 @@ def test_scale_factor_of_ten_is_named(tmp_path, press, plan, factor):
     assert f"the {plan} plan is drawn" in got.describe()  # names the plan it is on
 
 
+@pytest.mark.parametrize(("plan", "drawn_at", "words"), [
+    ("velocity", 0.04, "the velocity plan is drawn 1.25 times too large for the stated μv: "
+                       "its segments fit μv = 0.04 (m/s)/mm"),
+    ("velocity", 0.1, "the velocity plan is drawn 2 times too small for the stated μv: its "
+                      "segments fit μv = 0.1 (m/s)/mm"),
+    ("acceleration", 2.5, "the acceleration plan is drawn 2.5 times too small for the stated "
+                          "μa: its segments fit μa = 2.5 (m/s²)/mm"),
+])
+def test_a_plan_drawn_at_another_scale_factor_is_named_with_the_one_it_fits(
+        tmp_path, press, plan, drawn_at, words):
+    """The file says μv = 0.05 but the plan was drawn at 0.04: every segment of it is off
+    by the same ratio. Only 10 and 0.1 had been tried, so this got "no single mistake", or
+    a wrong "closest" (a normal component reversed)."""
+    mu_key = {"velocity": "mu_v", "acceleration": "mu_a"}[plan]
+    factor = MU_PRESS[mu_key] / drawn_at
+    rng = np.random.default_rng(6)
+    segs = {}
+    for it in plan_segments(press):
+        L = press.segments[it.name] * (factor if it.plan == plan else 1.0)
+        segs[it.name] = L + rng.uniform(-0.3, 0.3)
+    res = diagnose(tmp_path, PRESS, segs, MU_PRESS)
+    got = named(res)
+    assert (got.kind, got.plan) == ("scale", plan)
+    assert got.describe() == words
+    assert not res.diagnosis.best.unexplained
+
+
 def test_swapped_scale_factors_are_named(tmp_path, press):
     swapped = solve_position(press.mechanism, mu={"mu_l": 0.01, "mu_v": 1.0, "mu_a": 0.05})
     rng = np.random.default_rng(5)
