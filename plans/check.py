@@ -30,11 +30,11 @@ both are then named.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+import re
+from dataclasses import dataclass, field, replace
 
 from .errors import PlansError
 from .geometry import circle_circle, cross
-from .scales import series
 from .measured import (  # noqa: F401  (the public names of the check live here)
     MU_KEY,
     PLANS,
@@ -57,6 +57,7 @@ from .replay import (  # noqa: F401
     hypotheses,
     simulate,
 )
+from .scales import series
 
 
 @dataclass(frozen=True, slots=True)
@@ -95,11 +96,25 @@ class Finding:
 
 
 @dataclass(frozen=True)
+class Lookalike:
+    """A measurement beyond tolerance that is, within tolerance, something else: another
+    segment from one of its ends (measured from the wrong point), the segment of another
+    item (two measurements swapped), its own value in SI units written as a length, or a
+    value written as its segment's length in mm."""
+
+    item: str  # the item's name, "pc"
+    kind: str  # "segment", "swapped", "value", or "length" (a value written as its mm)
+    other: str  # "ac", the other item's name, the value's symbol "V_C", or a segment "pc"
+    exact: float  # the other segment's length (mm) or the value (m/s, m/s²)
+
+
+@dataclass(frozen=True)
 class Diagnosis:
     best: Finding | None  # the mistake that explains the measurements, if one does
     alternatives: tuple[Finding, ...] = ()  # mistakes that explain them as well
     closest: Finding | None = None  # when none does: the one that came nearest
     tried: int = 0
+    lookalikes: tuple[Lookalike, ...] = ()  # for the items no mistake explains
 
 
 @dataclass(frozen=True)
@@ -124,7 +139,65 @@ def check(meas: Measurement, tol: Tolerance | None = None, *, diagnose_: bool = 
     st = _Replayer(meas.solution).exact()
     devs = tuple(compare(it, expected(it, st, meas.mu), tol) for it in meas.items)
     diag = diagnose(meas, devs, tol) if diagnose_ else Diagnosis(None)
+    if diagnose_ and not all(d.ok for d in devs):
+        left = set(diag.best.unexplained) if diag.best else {d.item.name for d in devs if not d.ok}
+        diag = replace(diag, lookalikes=lookalikes(meas, devs, st, tol, left))
     return CheckResult(meas, tol, devs, diag)
+
+
+def lookalikes(meas: Measurement, devs: tuple[Deviation, ...], st: State, tol: Tolerance,
+               names: set[str]) -> tuple[Lookalike, ...]:
+    """What each of the items ``names`` (segments of the velocity and acceleration plans,
+    beyond tolerance) matches instead, within tolerance: two items swapped; the item's
+    value in m/s or m/s² written as a length (where μ is not 1); another segment from one
+    of its ends, the nearest. Only segments that share an end are tried, so that a chance
+    length among all the plan's pairs is not offered as a cause."""
+    out: list[Lookalike] = []
+    for d in devs:  # a value in m/s written as its segment's length in mm
+        it = d.item
+        if it.name in names and it.kind == "value" and it.plan in MU_KEY:
+            mu = meas.mu.get(MU_KEY[it.plan], 1.0)
+            if abs(mu - 1.0) > 1e-9 and _near(it.measured, abs(d.computed) / mu, tol):
+                out.append(Lookalike(it.name, "length", f"{it.start}{it.end}", abs(d.computed) / mu))
+    bad = [d for d in devs if d.item.name in names and d.item.kind == "segment"
+           and d.item.plan in ("velocity", "acceleration")]
+    swapped: set[str] = set()
+    for i, d in enumerate(bad):
+        for e in bad[i + 1:]:
+            if e.item.plan == d.item.plan and _near(d.item.measured, abs(e.computed), tol) \
+                    and _near(e.item.measured, abs(d.computed), tol):
+                out += [Lookalike(d.item.name, "swapped", e.item.name, abs(e.computed)),
+                        Lookalike(e.item.name, "swapped", d.item.name, abs(d.computed))]
+                swapped |= {d.item.name, e.item.name}
+    for d in bad:
+        it = d.item
+        if it.name in swapped:
+            continue
+        mu = meas.mu[MU_KEY[it.plan]]
+        value = abs(d.computed) * mu
+        component = any(re.fullmatch(r"[kn]\d*", x) for x in (it.start, it.end))
+        if abs(mu - 1.0) > 1e-9 and not component and _near(it.measured, value, tol):
+            sym = "V" if it.plan == "velocity" else "a"
+            end = it.end.upper() if it.start in ("p", "π") else f"{it.end}{it.start}".upper()
+            out.append(Lookalike(it.name, "value", f"{sym}_{end}", value))
+            continue
+        vals = st.values(it.plan)
+        best = None
+        for a, b in [(x, it.end) for x in vals] + [(it.start, x) for x in vals]:
+            if {a, b} == {it.start, it.end} or a == b:
+                continue
+            length = abs(vals[b] - vals[a]) / mu
+            if _near(length, abs(d.computed), tol) or not _near(it.measured, length, tol):
+                continue  # as long as the item itself (a fixed point at the pole), or no match
+            if best is None or abs(it.measured - length) < abs(it.measured - best[1]):
+                best = (f"{a}{b}", length)
+        if best is not None:
+            out.append(Lookalike(it.name, "segment", *best))
+    return tuple(out)
+
+
+def _near(measured: float, exact: float, tol: Tolerance) -> bool:
+    return abs(measured - exact) <= tol.limit(exact)
 
 
 def diagnose(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance) -> Diagnosis:

@@ -81,6 +81,10 @@ WORDS = {
         "closest": "closest: {what}; it explains {ex} but not {un}",
         "explains": "explains",
         "all_of": "all {k} {items} beyond tolerance",
+        "like_segment": "{item} = {m} mm is the length of {other} ({exact} mm): measured from the wrong point?",
+        "like_swapped": "{item} = {m} mm is the length of {other} ({exact} mm): are {item} and {other} swapped?",
+        "like_value": "{item} = {m} is {other} in {unit} ({exact}): a segment is {other}/{mu}, in mm",
+        "like_length": "{item} = {m} is the length of {other} in mm ({exact} mm): the value is {other}·{mu}, in {unit}",
         "k_of": "{e} of the {k} items beyond tolerance; not {un}",
         "correction": "correction",
         "also": "equally consistent with",
@@ -116,6 +120,10 @@ WORDS = {
         "also": "столь же хорошо объясняет",
         "hint": ' (их различает направление ω{link}: укажите его в [values], например omega{link} = "4.8 ccw")',
         "warning": "предупреждение",
+        "like_segment": "{item} = {m} мм — это длина {other} ({exact} мм): отрезок отложен не от той точки?",
+        "like_swapped": "{item} = {m} мм — это длина {other} ({exact} мм): {item} и {other} перепутаны?",
+        "like_value": "{item} = {m} — это {other} в {unit} ({exact}): отрезок равен {other}/{mu}, в мм",
+        "like_length": "{item} = {m} — это длина {other} в мм ({exact} мм): величина равна {other}·{mu}, в {unit}",
         "ccw": "против ч.с.",
         "cw": "по ч.с.",
     },
@@ -232,7 +240,7 @@ def diagnosis_lines(result, lang: str = "en") -> list[str]:
             lines.append("  " + w["closest"].format(what=c.mistake.describe(lang),
                                                      ex=", ".join(c.explained),
                                                      un=", ".join(c.unexplained)))
-        return lines
+        return lines + lookalike_lines(result, lang)
     b = diag.best
     lines = [f"{w['diag']}: {b.mistake.describe(lang)}."]
     if b.unexplained:
@@ -248,7 +256,29 @@ def diagnosis_lines(result, lang: str = "en") -> list[str]:
         if ids and not ids & reported:
             line += w["hint"].format(link=min(ids))
         lines.append(line)
-    return lines
+    return lines + lookalike_lines(result, lang)
+
+
+def lookalike_lines(result, lang: str = "en") -> list[str]:
+    """One line per item beyond tolerance that no mistake explains but that matches
+    something else (:func:`plans.check.lookalikes`)."""
+    w = WORDS[lang]
+    measured = {d.item.name: d.item for d in result.deviations}
+    out = []
+    for lk in result.diagnosis.lookalikes:
+        it = measured[lk.item]
+        if lk.kind in ("value", "length"):
+            si = "m/s" if it.plan == "velocity" else "m/s²"
+            unit = {"m/s": "м/с", "m/s²": "м/с²"}[si] if lang == "ru" else si
+            exact = num(lk.exact, 4, lang) + (f" {unit}" if lk.kind == "value" else "")
+            text = w[f"like_{lk.kind}"].format(
+                item=lk.item, m=num(it.measured, 4, lang), other=lk.other, unit=unit,
+                exact=exact, mu="μv" if it.plan == "velocity" else "μa")
+        else:
+            text = w[f"like_{lk.kind}"].format(item=lk.item, m=num(it.measured, 4, lang),
+                                                other=lk.other, exact=num(lk.exact, 4, lang))
+        out.append(f"  {text}")
+    return out
 
 
 def _finding(f, lang: str):
@@ -309,6 +339,8 @@ def to_json(result, lang: str = "en") -> dict:
             "best": _finding(diag.best, lang),
             "alternatives": [_finding(f, lang) for f in diag.alternatives],
             "closest": _finding(diag.closest, lang),
+            "lookalikes": [{"item": lk.item, "kind": lk.kind, "other": lk.other,
+                            "exact": lk.exact} for lk in diag.lookalikes],
             "tried": diag.tried,
         },
     }

@@ -287,6 +287,31 @@ def test_a_plan_drawn_at_another_scale_factor_is_named_with_the_one_it_fits(
     assert not res.diagnosis.best.unexplained
 
 
+def test_a_segment_that_is_something_else_says_what(tmp_path, press, capsys):
+    """Mistakes of one item that no redrawn plan explains, each matched by what it is:
+    pc measured from a (it is ac), πc and πd swapped, a segment written as its value in
+    m/s, a value written as its segment's length in mm. They had all been "no single
+    mistake explains this", with nothing more."""
+    seg = {k: v for k, v in press.segments.items() if k in ("pa3", "aa3", "pc", "cd", "pd",
+                                                                "ak", "bn1", "πa3", "πc", "πd")}
+    v = press.velocity
+    ac = abs(v.value("c") - v.value("a")) / press.mu_v
+    seg["pc"] = ac
+    seg["πc"], seg["πd"] = seg["πd"], seg["πc"]
+    seg["pa3"] = abs(v.value("a3"))  # V_A3 in m/s
+    path = write_meas(tmp_path / "m.toml", PRESS, seg, MU_PRESS, {"V_C": round(press.segments["pc"], 2)})
+    res = ck.check(ck.load(path))
+    got = {(lk.item, lk.kind, lk.other) for lk in res.diagnosis.lookalikes}
+    assert got == {("pc", "segment", "ac"), ("πc", "swapped", "πd"), ("πd", "swapped", "πc"),
+                   ("pa3", "value", "V_A3"), ("V_C", "length", "pc")}
+    code, out, _ = run(capsys, "check", path)
+    assert code == 1
+    assert f"  pc = {ac:.4g} mm is the length of ac ({ac:.4g} mm): measured from the wrong point?" in out
+    assert "  πc = 20.82 mm is the length of πd (20.82 mm): are πc and πd swapped?" in out
+    assert "  pa3 = 2.77 is V_A3 in m/s (2.772 m/s): a segment is V_A3/μv, in mm" in out
+    assert "  V_C = 72.33 is the length of pc in mm (72.33 mm): the value is pc·μv, in m/s" in out
+
+
 def test_swapped_scale_factors_are_named(tmp_path, press):
     swapped = solve_position(press.mechanism, mu={"mu_l": 0.01, "mu_v": 1.0, "mu_a": 0.05})
     rng = np.random.default_rng(5)
