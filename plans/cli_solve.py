@@ -85,9 +85,13 @@ def to_text(sol, cycle=None) -> str:
     for g in st.groups:
         out.append(f"  {g.label}: kind {g.kind.value} ({g.kind.ru})")
     d = mech.driver
+    usual = (d.reference, d.measured) == ("+x", "ccw")
+    # the file's own convention too, the one --angle and the cycle's lines below use
+    own = "" if usual else (f" ({angle(d.file_angle(sol.phi))}° from {d.reference}, "
+                            f"{d.measured}, as the file gives it)")
     out.append(
         f"Crank: link {d.link}, l_{d.pivot}{d.tip} = {num(d.length)} m, "
-        f"φ1 = {angle(math.degrees(sol.phi))}° from +x, ω1 = {num(abs(d.omega))} rad/s{_sense(d.omega)}"
+        f"φ1 = {angle(math.degrees(sol.phi))}° from +x{own}, ω1 = {num(abs(d.omega))} rad/s{_sense(d.omega)}"
     )
     out.append(
         f"Scales: μl = {num(sol.mu_l)} m/mm, μv = {num(sol.mu_v)} (m/s)/mm, μa = {num(sol.mu_a)} (m/s²)/mm"
@@ -121,7 +125,8 @@ def to_text(sol, cycle=None) -> str:
         from .cycle import summary
 
         out.append("Cycle")
-        out += [f"  {line}" for line in summary(cycle, link=mech.driver.link)]
+        conv = "" if usual else f" (from {d.reference}, {d.measured})"
+        out += [f"  {line}" for line in summary(cycle, d.file_angle, d.link, conv)]
     for w in sol.warnings:
         out.append(f"warning: {w}")
     return "\n".join(out) + "\n"

@@ -92,13 +92,14 @@ class Cycle:
     crank_range: tuple[float, float] | None = None  # rad: where it assembles, if not a full turn
 
 
-def summary(c: Cycle, deg=None, link: int = 1) -> list[str]:
+def summary(c: Cycle, deg=None, link: int = 1, convention: str = "") -> list[str]:
     """The cycle in a few lines, as ``plans solve`` and ``plans cycle`` print it: the
     four-bar's Grashof class, the crank range where it cannot make a full turn, the notes,
     the stroke H or swing ψ, the extreme positions, θ and K.
 
     ``deg``: a crank angle (rad from +x) in degrees in the caller's convention (the file's
-    for ``plans cycle``); default counter-clockwise from +x."""
+    for ``plans cycle`` and ``plans solve``); default counter-clockwise from +x.
+    ``convention``: said after the extreme positions' angles (" (from +y, cw)")."""
     from .fmt import angle, num
     from .report import no_full_turn
 
@@ -114,7 +115,7 @@ def summary(c: Cycle, deg=None, link: int = 1) -> list[str]:
             lines.append(f"swing of link {c.output.link}: ψ = {num(math.degrees(c.stroke))}°")
         lines.append(
             "extreme positions at φ1 = "
-            + ", ".join(f"{angle(deg(x))}°" for x in c.extremes)
+            + ", ".join(f"{angle(deg(x))}°" for x in c.extremes) + convention
             + f"; θ = {num(math.degrees(c.theta))}°, K = {num(c.K)}")
     return lines
 

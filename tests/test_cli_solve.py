@@ -340,3 +340,19 @@ def test_a_zero_omega_has_no_sense_word(capsys):
     code, out, _ = run(capsys, "solve", "samples/press.toml")
     assert "  link 5 (slider): ω5 = 0 rad/s, ε5 = 0 rad/s²\n" in out
     assert "  link 1 (crank): ω1 = 20 rad/s ccw, ε1 = 0 rad/s²\n" in out
+
+
+def test_the_extreme_positions_are_given_as_angle_takes_them(capsys):
+    """The press measures φ1 from +y, clockwise. solve printed its extreme positions from
+    +x without saying so: --angle 199.9 landed where the slider runs at 6.5 m/s."""
+    code, out, _ = run(capsys, "solve", "samples/press.toml")
+    assert code == 0
+    assert "φ1 = 60° from +x (30° from +y, cw, as the file gives it)" in out
+    line = next(x for x in out.splitlines() if "extreme positions" in x)
+    assert "(from +y, cw)" in line
+    for text in re.findall(r"([\d.]+)°", line.split("θ")[0]):
+        _, js, _ = run(capsys, "solve", "samples/press.toml", "--json", "--angle", text)
+        vD = json.loads(js)["points"]["D"]["velocity"][0]
+        # the printed angle is within 0.05° of the extreme, where a_D is about 20 m/s²:
+        # |V_D| under 1e-3 m/s (at 199.9°, read from +y as the file does, 6.5 m/s)
+        assert abs(vD) < 1e-2
