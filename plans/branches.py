@@ -160,11 +160,21 @@ def _choose(mech: Mechanism, structure: Structure) -> tuple[int, ...]:
                 f"{cands[0]} or {cands[1]}: add a hint such as [assembly] {key} = "
                 f'"above {g.P or ""}{g.Q or ""}"',
             )
+        hints_ = ", ".join(f"{k} = {mech.assembly[k]!r}" for k in mine)
+        if ok:  # both: say where the two are, so that the hint can be chosen between them
+            spots = " and ".join(f"({X.real:.4g}, {X.imag:.4g})" for X in (
+                complex(positions[sigma].position[key][0]) for sigma in (1, -1)))
+            raise InputError(
+                mech.source,
+                f"assembly: the {'hint' if len(mine) == 1 else 'hints'} {hints_} "
+                f"{'fits' if len(mine) == 1 else 'fit'} both "
+                f"assemblies of {g.label} at {mech.driver.at(mech.driver.phi)}, with {key} at "
+                f"{spots}: name a point or line that parts them")
         raise InputError(
             mech.source,
-            f"assembly: the hints {', '.join(f'{k} = {mech.assembly[k]!r}' for k in mine)} "
-            f"{'fit neither' if not ok else 'fit both'} assembly of {g.label} "
-            f"at {mech.driver.at(mech.driver.phi)} (new point {new})",
+            f"assembly: the {'hint' if len(mine) == 1 else 'hints'} {hints_} "
+            f"{'fits' if len(mine) == 1 else 'fit'} neither "
+            f"assembly of {g.label} at {mech.driver.at(mech.driver.phi)} (new point {new})",
         )
     unused = set(hints) - used
     if unused:

@@ -14,7 +14,7 @@ import tomllib
 from pathlib import Path
 
 import pytest
-from support import expectations
+from support import expectations, run
 
 from plans import fileformat, mechanism
 from plans.errors import (
@@ -397,7 +397,20 @@ def test_unreachable_angle_names_group_range_and_gap():
 def test_hints_that_fit_neither_branch_are_input_errors():
     err = engine_error(PRESS.replace('D = "right of C"', 'D = "below C"'))
     assert isinstance(err, InputError)
-    assert "fit neither assembly of group 4–5 (RRP)" in str(err)
+    assert "the hint D = 'below C' fits neither assembly of group 4–5 (RRP)" in str(err)
+
+
+def test_a_hint_that_fits_both_assemblies_says_where_they_are(capsys, tmp_path):
+    """A crank-slider row whose rod is shorter than the crank: both places of C are right
+    of A. The message had read "fit both assembly", and said no more."""
+    table = tmp_path / "t.toml"
+    table.write_text('[[variant]]\nn = 2\nAB = 0.05\nBC = 0.03\nCD = 0.1\nAD = 0.1\n'
+                     'phi_deg = 15\nrpm = 100\n', "utf-8")
+    code, _, err = run(capsys, "solve", "--variant", "2", "--table", table)
+    assert code == 2
+    assert (f"plans solve: {table}, variant 2: assembly: the hint C = 'right of A' fits both "
+            "assemblies of group 2–3 (RRP) at φ1 = 15°, with C at (0.07536, ") in err
+    assert "and (0.02123, 0): name a point or line that parts them" in err
 
 
 def test_near_dead_point_is_a_warning():
