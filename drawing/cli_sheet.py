@@ -298,8 +298,8 @@ def _batch(args) -> int:
     if not out.exists() and out.suffix and not args.output.endswith(("/", "\\")):
         raise InputError("-o", f"{args.output} looks like a file name: with --variant all give a "
                          "folder, e.g. -o sheets/")
+    numbers = list(variant_numbers(args.table))  # a table that cannot be read: no folder made
     out.mkdir(parents=True, exist_ok=True)
-    numbers = list(variant_numbers(args.table))
     tty = sys.stderr.isatty()
     failed: list[tuple[int, str]] = []
     for i, n in enumerate(numbers, 1):
@@ -324,7 +324,7 @@ def _batch(args) -> int:
         for line in msg.splitlines():
             print(f"plans sheet: {line}", file=sys.stderr)
     if failed:
-        print(f"{len(failed)} of {len(numbers)} sheets failed", file=sys.stderr)
+        print(f"plans sheet: {len(failed)} of {len(numbers)} sheets failed", file=sys.stderr)
         return EXIT_INPUT
     return EXIT_OK
 

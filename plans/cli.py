@@ -72,7 +72,13 @@ def mechanism_from(args):
 
     if (args.file is None) == (args.variant is None):
         raise InputError("command line", "give a mechanism FILE or --variant N (one of them)")
-    claim_inputs(args, [p for p in (args.file, getattr(args, "table", None)) if p])
+    table = getattr(args, "table", None)
+    if table is not None and args.variant is None:
+        raise InputError("command line", "--table goes with --variant N: a mechanism FILE "
+                                         "is read as it is")
+    if table == "":
+        raise InputError("command line", "--table was given an empty file name")
+    claim_inputs(args, [p for p in (args.file, table) if p])
     angle = getattr(args, "angle", None)  # a finite number within ±MAX_ABS: argparse checked
     if args.variant is not None:
         text = str(args.variant).strip()

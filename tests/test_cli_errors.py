@@ -644,3 +644,21 @@ def test_output_written_in_pieces_is_all_or_nothing(tmp_path):
     assert out.read_text() == "KEEP" and [p.name for p in tmp_path.iterdir()] == ["t.json"]
     cli.write_output(str(out), iter(["a", "b", "c"]))
     assert out.read_text() == "abc"
+
+
+def test_a_table_goes_with_a_variant_only(capsys, tmp_path):
+    """--table beside a FILE had been ignored without a word, even a table that does not
+    exist; an empty --table read "plans solve: : cannot read the file"."""
+    code, out, err = run(capsys, "solve", PRESS, "--table", tmp_path / "none.toml")
+    assert code == 2 and out == ""
+    assert err == ("plans solve: command line: --table goes with --variant N: a mechanism "
+                   "FILE is read as it is\n")
+    code, _, err = run(capsys, "solve", "--variant", "3", "--table", "")
+    assert code == 2 and err == "plans solve: command line: --table was given an empty file name\n"
+
+
+def test_all_variants_of_a_table_that_cannot_be_read_make_no_folder(capsys, tmp_path):
+    code, _, err = run(capsys, "sheet", "--variant", "all", "--table", tmp_path / "none.toml",
+                       "-o", f"{tmp_path}/sheets/")
+    assert code == 2 and len(err.splitlines()) == 1
+    assert not (tmp_path / "sheets").exists()
