@@ -64,6 +64,7 @@ WORDS = {
         "mech": "Mechanism",
         "from_x": "from +x",
         "scales": "Student's scale factors",
+        "none_given": "none given",
         "tol": "Tolerance",
         "cols": ("segment", "measured", "computed", "deviation", "%", "verdict"),
         "vcols": ("value", "student", "computed", "deviation", "%", "verdict"),
@@ -98,6 +99,7 @@ WORDS = {
         "mech": "Механизм",
         "from_x": "от +x",
         "scales": "Масштабные коэффициенты студента",
+        "none_given": "не заданы",
         "tol": "Допуск",
         "cols": ("отрезок", "измерено", "расчёт", "отклонение", "%", "вывод"),
         "vcols": ("величина", "студент", "расчёт", "отклонение", "%", "вывод"),
@@ -199,9 +201,10 @@ def to_text(result, lang: str = "en") -> str:
     out.append(f"{w['mech']}: {mech.name_in(lang)} ({mech.source}), "
                f"φ1 = {angle(math.degrees(sol.phi), 4, lang)}° {w['from_x']}")
     mu = meas.mu
-    out.append(f"{w['scales']}: μl = {num(mu['mu_l'], 4, lang)} {_u('m/mm', lang)}, "
-               f"μv = {num(mu['mu_v'], 4, lang)} {_u('(m/s)/mm', lang)}, "
-               f"μa = {num(mu['mu_a'], 4, lang)} {_u('(m/s²)/mm', lang)}")
+    given = [f"{sym} = {num(mu[key], 4, lang)} {_u(unit, lang)}" for key, sym, unit in
+             (("mu_l", "μl", "m/mm"), ("mu_v", "μv", "(m/s)/mm"), ("mu_a", "μa", "(m/s²)/mm"))
+             if key in meas.given]
+    out.append(f"{w['scales']}: {', '.join(given) if given else w['none_given']}")
     out.append(f"{w['tol']}: {result.tolerance.describe(lang)}")
     groups = [("positions", lambda it: it.kind == "segment" and it.plan == "positions"),
               ("velocity", lambda it: it.kind == "segment" and it.plan == "velocity"),
@@ -329,7 +332,7 @@ def to_json(result, lang: str = "en") -> dict:
         "file": meas.source,
         "mechanism": meas.mechanism.source,
         "phi_deg": from_x(meas.solution.phi),
-        "scales": dict(meas.mu),
+        "scales": {k: v for k, v in meas.mu.items() if k in meas.given},
         "tolerance": {"percent": result.tolerance.percent, "mm": result.tolerance.mm},
         "items": items,
         "ok": result.ok,

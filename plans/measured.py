@@ -126,6 +126,8 @@ class Measurement:
     angle_deg: float | None = None
     #: the files read: the measurement file, then the mechanism file or the variants' table
     inputs: tuple[str, ...] = ()
+    #: the scale factors the file gives (the others in ``mu`` the tool chose)
+    given: frozenset[str] = frozenset()
 
 
 TOP_KEYS = {"title", "mechanism", "variant", "table", "angle_deg", "tolerance", "scales",
@@ -293,7 +295,7 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
     problems.raise_if_any()
     read = [source] + [str(p) for p in (mech if not isinstance(mech, int) else table,) if p]
     return Measurement(source, m, sol, sol.mu,
-                       tuple(items), tol, title, angle, tuple(read))
+                       tuple(items), tol, title, angle, tuple(read), frozenset(mu))
 
 
 def _splits(text: str, names) -> list[tuple[str, str]]:

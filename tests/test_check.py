@@ -752,3 +752,14 @@ def test_signs_and_names_in_a_measurement_file(tmp_path, capsys):
                     '[segments]\npa = 60\n[values]\nV_A3 = -2.77\n', encoding="utf-8")
     code, _, err = run(capsys, "check", path)
     assert code == 2 and "values.V_A3: a magnitude cannot be negative, got -2.77" in err
+
+
+def test_the_header_credits_the_student_only_with_the_scale_factors_given(tmp_path, capsys):
+    """Only μv given: the report said "Student's scale factors: μl = 0.004 m/mm, μv = 0.02,
+    μa = 200000 (m/s²)/mm", the other two being the tool's own choice."""
+    meas = tmp_path / "m.toml"
+    meas.write_text(f'mechanism = "{FOURBAR}"\n[scales]\nmu_v = 0.02\n[segments]\npc = 40\n', "utf-8")
+    code, out, _ = run(capsys, "check", meas)
+    assert "Student's scale factors: μv = 0.02 (m/s)/mm\n" in out
+    code, out, _ = run(capsys, "check", meas, "--json")
+    assert json.loads(out)["scales"] == {"mu_v": 0.02}
