@@ -206,7 +206,8 @@ def _cycle_summary(t: CycleTable) -> dict:
         "full_turn": c.full_turn,
         "output": None
         if c.output is None
-        else {"point": c.output.point, "kind": c.output.kind, "link": c.output.link},
+        else {"point": c.output.point, "kind": c.output.kind, "link": c.output.link,
+              "unit": "m" if c.output.kind == "linear" else "rad"},
         "extremes_phi_deg": [from_x(x) for x in c.extremes],
         "stroke": c.stroke,
         "theta_deg": None if c.theta is None else math.degrees(c.theta),
@@ -311,8 +312,9 @@ def _csv_header(t: CycleTable) -> list[str]:
             if label.endswith(" pivot")
             else f"sine {label}"
         )
-    if t.output_values is not None:
-        head.append(f"output {t.cycle.output.point}")
+    if t.output_values is not None:  # s in m along the guide, or ψ in rad
+        o = t.cycle.output
+        head.append(f"output {o.point} ({'m' if o.kind == 'linear' else 'rad'})")
     for name in t.points:
         head += [f"{name}.{q}" for q in ("x", "y", "vx", "vy", "ax", "ay")]
     for i in t.links:
@@ -388,7 +390,8 @@ def to_text(t: CycleTable) -> str:
     sense = "ccw" if d.omega > 0 else "cw"
     lines = [mech.name, ""]
     lines.append(
-        f"{n} crank positions, numbered {_numbering(t)}; ω1 = {num(abs(d.omega))} rad/s {sense}"
+        f"{n} crank position{'s' if n != 1 else ''}, numbered {_numbering(t)}; "
+        f"ω1 = {num(abs(d.omega))} rad/s {sense}"
     )
     lines.append(
         f"φ1: degrees from {d.reference}, measured {d.measured} (the file's convention)"
@@ -410,8 +413,19 @@ def to_text(t: CycleTable) -> str:
     def lead(k: int) -> list[str]:
         return [str(k), f"{mech.driver.file_angle(float(m.phi[k])):.2f}"]
 
-    def cell(k: int, value) -> str:
-        return num(float(value)) if t.status[k].ok else "—"
+    def cell(k: int, value, big: float = 0.0) -> str:
+        """A value of position k; rounding (below NOISE of its column's largest) is 0."""
+        if not t.status[k].ok:
+            return "—"
+        value = float(value)
+        return num(0.0 if abs(value) <= NOISE * big else value)
+
+    from .plan import NOISE
+
+    ok = [k for k in range(n) if t.status[k].ok]
+
+    def largest(values) -> float:
+        return max((abs(complex(values[k])) for k in ok), default=0.0)
 
     base = ["№", "φ1 °"]
     for title, key in (("x of points (m)", "x"), ("y of points (m)", "y")):
@@ -433,16 +447,19 @@ def to_text(t: CycleTable) -> str:
         ("|V| of points (m/s)", m.velocity),
         ("|a| of points (m/s²)", m.acceleration),
     ):
+        big = max((largest(store[p]) for p in moving), default=0.0)
         rows = [
-            lead(k) + [cell(k, abs(complex(store[p][k]))) for p in moving]
+            lead(k) + [cell(k, abs(complex(store[p][k])), big) for p in moving]
             for k in range(n)
         ]
         lines += _table(title, base + moving, rows)
     head = base + [f"ω{i}" for i in t.links] + [f"ε{i}" for i in t.links]
+    big_w = max((largest(m.links[i].omega) for i in t.links), default=0.0)
+    big_e = max((largest(m.links[i].epsilon) for i in t.links), default=0.0)
     rows = [
         lead(k)
-        + [cell(k, m.links[i].omega[k]) for i in t.links]
-        + [cell(k, m.links[i].epsilon[k]) for i in t.links]
+        + [cell(k, m.links[i].omega[k], big_w) for i in t.links]
+        + [cell(k, m.links[i].epsilon[k], big_e) for i in t.links]
         for k in range(n)
     ]
     lines += _table(
@@ -471,6 +488,9 @@ def to_text(t: CycleTable) -> str:
     lines += _table(
         "Conditioning (sine of the angle between the intersected lines)", head, rows
     )
+    if any(x.endswith(" pivot") for x in labels):
+        lines.append("  QP: how far a slotted link's block P is from the rocker's pivot Q, "
+                     "|QP| / (|OQ| + |OP|), O the crank's pivot")
     notes = [(k, "error", e) for k, st in enumerate(t.status) for e in st.errors]
     notes += [(k, "warning", w) for k, st in enumerate(t.status) for w in st.warnings]
     if notes:

@@ -356,3 +356,12 @@ def test_the_extreme_positions_are_given_as_angle_takes_them(capsys):
         # the printed angle is within 0.05° of the extreme, where a_D is about 20 m/s²:
         # |V_D| under 1e-3 m/s (at 199.9°, read from +y as the file does, 6.5 m/s)
         assert abs(vD) < 1e-2
+
+
+def test_rounding_at_an_extreme_prints_as_zero(capsys):
+    """At the press's extreme position the rocker is at rest: ω3 had printed as
+    "3.516e-14 rad/s cw"."""
+    code, out, _ = run(capsys, "solve", "samples/press.toml", "--angle", "109.93227047220137")
+    assert code == 0 and "ω3 = 0 rad/s, ε3 = 145.1 rad/s² ccw" in out
+    code, out, _ = run(capsys, "cycle", "samples/press.toml", "--csv", "--positions", "2")
+    assert "output D (m)" in out.splitlines()[0]

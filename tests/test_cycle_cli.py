@@ -34,8 +34,13 @@ def test_press_table_has_every_section_and_row(capsys):
     for s in sections:
         assert s in out
     cond = out.split("Conditioning")[1].splitlines()[2:]
-    rows = [line.split() for line in cond if line.strip()]
+    rows = [line.split() for line in cond if line.strip() and not line.strip().startswith("QP:")]
     assert [r[0] for r in rows] == [str(i) for i in range(12)]
+    assert "  QP: how far a slotted link's block P is from the rocker's pivot Q" in out
+    # position 0 is an extreme: the slider, the rocker and its points stand still, and
+    # the rounding left there prints as 0, not as 2.9e-14
+    v0 = out.split("|V| of points (m/s)")[1].splitlines()[2].split()
+    assert v0[:2] == ["0", "109.93"] and v0[3:] == ["0"] * 5
     assert all(r[-1] == "ok" for r in rows)
     assert "stroke of D: H = 0.5114 m" in out
     assert err == ""
