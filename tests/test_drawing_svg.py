@@ -464,3 +464,30 @@ def test_png_export_draws_yo_and_e_with_the_projects_font(tmp_path):
     assert dark["ё"] < 1.5 * dark["е"] and dark["э"] < 1.5 * dark["е"] and dark["Э"] < 1.5 * dark["С"]
     assert dark["env"] is None  # set for the first render only: child processes never see it
     assert list(tmp_path.iterdir()) == []  # the private font setup is gone with the process
+
+
+@pytest.mark.parametrize(("argv", "must"), [
+    (["sheet", "samples/fourbar.toml"], "−128,8°"),  # a crank range through 0°
+    (["sheet", "samples/press.toml", "--lang", "en"], ""),
+    (["check", "samples/check_press.toml", "--svg", "{out}", "-o", "/dev/null"], "−"),
+])
+def test_every_character_of_a_sheet_is_in_the_projects_font(tmp_path, capsys, argv, must):
+    """osifont has no minus sign: «от −128,8°» and a check's "−4,2" printed with a box in
+    the PNG and PDF. The font now maps it (and the primes of x3′-x3′) to GOST's glyphs."""
+    from support import run
+
+    ttlib = pytest.importorskip("fontTools.ttLib")
+    from drawing.svg import FONT_FILE
+
+    cmap = ttlib.TTFont(FONT_FILE).getBestCmap()
+    out = tmp_path / "s.svg"
+    args = [a.format(out=out) for a in argv]
+    if "{out}" not in " ".join(argv):
+        args += ["-o", str(out)]
+    code, _, err = run(capsys, *args)
+    assert code in (0, 1), err
+    root = ET.parse(out).getroot()
+    text = "".join("".join(el.itertext()) for el in root.iter("{http://www.w3.org/2000/svg}text"))
+    assert must in text
+    missing = sorted({c for c in text if not c.isspace() and ord(c) not in cmap})
+    assert missing == []

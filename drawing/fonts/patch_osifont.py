@@ -6,9 +6,10 @@ by hand, writes ``osifont.ttf`` beside it from the Debian file with those glyphs
 built from the font's own strokes:
 
 * Ё, ё: Е, е with the combining diaeresis (U+0308), placed as the font's Ë, ä;
-* Э, э: С, с mirrored, with the hyphen's stroke as the middle bar.
+* Э, э: С, с mirrored, with the hyphen's stroke as the middle bar;
 
-Nothing else changes.  Needs fontTools (``pip install fonttools``), which is not
+and maps the minus sign (U+2212) to the hyphen's glyph, the primes (U+2032, U+2033) to
+the straight quotes'.  Nothing else changes.  Needs fontTools (``pip install fonttools``), which is not
 a dependency of the project: the patched font is committed.
 
     python drawing/fonts/patch_osifont.py /usr/share/fonts/truetype/osifont/osifont.ttf
@@ -67,11 +68,17 @@ def main(source: str) -> None:
     dieresis("uni0451", "uni0435", 53, -275)  # ё = е + ¨ (as ä)
     mirrored_with_bar("uni042D", "uni0421", (330, 790, 757))  # Э = mirrored С + bar
     mirrored_with_bar("uni044D", "uni0441", (250, 600, 531))  # э = mirrored с + bar
+    # characters the font has no glyph for, drawn with the glyph GOST type B draws them
+    # with: the minus sign as the hyphen (a deviation "−4,2", a range "от −128,8°"), the
+    # primes of x3′-x3′ as the straight quotes
+    for table in font["cmap"].tables:
+        if table.isUnicode():
+            table.cmap.update({0x2212: "hyphen", 0x2032: "quotesingle", 0x2033: "quotedbl"})
     for rec in font["name"].names:
         if rec.nameID == 5:
             rec.string = (
                 rec.toUnicode().strip()
-                + "; vector-plans: U+0401 U+0451 U+042D U+044D drawn"
+                + "; vector-plans: U+0401 U+0451 U+042D U+044D drawn, U+2212 U+2032 U+2033 mapped"
             )
     font.save(Path(__file__).with_name("osifont.ttf"))
 
