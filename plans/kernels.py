@@ -185,9 +185,11 @@ def rrr(xp, sigma, l2, l3, P, vP, aP, Q, vQ, aQ):
     C = P + xp.cplx((l2 * l2 - l3 * l3 + dd) * k, root * (sigma * k)) * w
     rP, rQ = C - P, C - Q
     d1, d2 = rP * (1j / l2), rQ * (1j / l3)
-    # the sine of the angle at C from the triangle (d·h = l2·l3·|sin|), not from a
-    # product of the two directions: two fewer passes over a block
-    sine = root * (sigma / (2.0 * l2 * l3))
+    # the sine as the cross product of the two directions as rounded, not from the
+    # triangle (d·h = l2·l3·|sin|): Cramer's rule below then solves for the very lines it
+    # intersects, and the bench's largest error stays 2.6e-15, where the triangle's sine,
+    # two passes cheaper, made it 4.6e-15
+    sine = cross(d1, d2)
     inv = 1.0 / sine
     t1, t2 = meet(vQ - vP, d1, d2, inv)
     vC = vP + t1 * d1
