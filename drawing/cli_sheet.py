@@ -307,6 +307,7 @@ def _batch(args) -> int:
             print(f"\rsheet {i}/{len(numbers)}: variant {n} ", end="", file=sys.stderr, flush=True)
         a = copy.copy(args)
         a.variant = str(n)
+        a.quiet_table = True  # a row's problems fail that row's sheet, said once below
         a.output = str(out / f"variant-{n}.svg")
         a.png = str(out / f"variant-{n}.png") if args.png else None
         a.pdf = str(out / f"variant-{n}.pdf") if args.pdf else None

@@ -85,6 +85,9 @@ def mechanism_from(args):
         if not re.fullmatch(r"[+-]?\d{1,9}", text):
             raise InputError("command line", f"--variant: {_arg(args.variant, 30)} is not a variant number (0, 1, 2…)")
         mech = variants.variant(int(text), args.table)
+        if not getattr(args, "quiet_table", False):  # sheet --variant all reports each row
+            for line in variants.other_rows_problems(int(text), args.table):
+                print(f"plans {args.command}: warning: {line}", file=sys.stderr)
     else:
         mech = mechanism.load(args.file)
     return mech if angle is None else mech.at_file_angle(angle)

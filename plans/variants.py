@@ -16,6 +16,7 @@ from __future__ import annotations
 
 from importlib import resources
 from pathlib import Path
+from typing import NamedTuple
 
 from .errors import InputError
 from .fileformat import (
@@ -42,6 +43,24 @@ ROW_KEYS = {"n", "kind", *COLUMNS}
 def load_table(path: str | Path | None = None) -> tuple[str, dict[int, dict]]:
     """The rows of a variant table by their number ``n``; every problem is reported at
     once, each with its line."""
+    t = _read(path)
+    everything = Problems(t.source, t.text)
+    everything.items = [*t.problems.items, *(it for p in t.rows_problems.values() for it in p.items)]
+    everything.raise_if_any()
+    return t.source, t.rows
+
+
+class _Table(NamedTuple):
+    source: str
+    text: str
+    problems: Problems  # of the table as a whole: no row can be read while there are any
+    rows: dict[int, dict]  # the rows that can be read, by their number
+    rows_problems: dict[int, Problems]  # the problems of one numbered row, by its number
+
+
+def _read(path: str | Path | None) -> _Table:
+    """A table read row by row: a problem of one numbered row is that row's own, so that a
+    typo in variant 3 does not stop variant 5 (nor the sheets of the others)."""
     if path is None:
         text = resources.files("plans").joinpath("data/table2.toml").read_text("utf-8")
         source = BUILTIN
@@ -50,6 +69,8 @@ def load_table(path: str | Path | None = None) -> tuple[str, dict[int, dict]]:
         source = str(path)
         data, text = read_toml(path, "a variant table is a few KB")
     pr = Problems(source, text)
+    table: dict[int, dict] = {}
+    bad: dict[int, Problems] = {}
     for key in data:
         if key not in TABLE_KEYS:
             pr.add(key_text(key), "unknown key — a table has [[variant]] rows (and title, name, source, note)")
@@ -57,11 +78,10 @@ def load_table(path: str | Path | None = None) -> tuple[str, dict[int, dict]]:
     if not isinstance(rows, list) or not rows:
         got = "" if rows is None else f" (got {quote(rows)})"
         pr.add("variant", f"missing: the table needs [[variant]] rows with n, AB, BC, CD, AD, phi_deg, rpm{got}")
-        pr.raise_if_any()
+        return _Table(source, text, pr, table, bad)
     if len(rows) > MAX_ROWS:
         pr.add("variant", f"{len(rows)} rows: at most {MAX_ROWS}")
-        pr.raise_if_any()
-    table: dict[int, dict] = {}
+        return _Table(source, text, pr, table, bad)
     first: dict[int, int] = {}
     for i, row in enumerate(rows):
         where = f"variant[{i}]"
@@ -73,35 +93,36 @@ def load_table(path: str | Path | None = None) -> tuple[str, dict[int, dict]]:
             got = "missing" if n is None else f"got {quote(n, 20)}"
             pr.add(where + ".n", f"the variant number must be a whole number 0…999999, {got}")
             continue
+        rp = bad.setdefault(n, Problems(source, text))
         for key in row:
             if key not in ROW_KEYS:
-                pr.add(f"{where}.{key_text(key)}", f"unknown column (variant {n}) — {close_match(key, ROW_KEYS)}known: {', '.join(sorted(ROW_KEYS))}")
+                rp.add(f"{where}.{key_text(key)}", f"unknown column (variant {n}) — {close_match(key, ROW_KEYS)}known: {', '.join(sorted(ROW_KEYS))}")
         if n in first:
-            pr.add(where + ".n", f"variant {n} appears twice (first as variant[{first[n]}]): each number once")
+            rp.add(where + ".n", f"variant {n} appears twice (first as variant[{first[n]}]): each number once")
+            table.pop(n, None)
             continue
         first[n] = i
         kind = row.get("kind", "crank-slider" if n % 2 == 0 else "four-bar")
         if kind not in KINDS:
-            pr.add(where + ".kind", f'must be "crank-slider" or "four-bar", got {quote(kind, 30)} (variant {n})')
+            rp.add(where + ".kind", f'must be "crank-slider" or "four-bar", got {quote(kind, 30)} (variant {n})')
             continue
         need = COLUMNS if kind == "four-bar" else ("AB", "BC", "phi_deg", "rpm")
         values = {}
-        before = len(pr.items)
         for col in need:
             cw = f"{where}.{col}"
             if col not in row:
-                pr.add(cw, f"missing: {kind} variant {n} needs {', '.join(need)}")
+                rp.add(cw, f"missing: {kind} variant {n} needs {', '.join(need)}")
             elif col == "phi_deg":
-                values[col] = read_number(row[col], cw, pr, unit="°")
+                values[col] = read_number(row[col], cw, rp, unit="°")
             elif col == "rpm":
-                values[col] = read_number(row[col], cw, pr, positive=True, unit="rpm", low=SPEED[0],
+                values[col] = read_number(row[col], cw, rp, positive=True, unit="rpm", low=SPEED[0],
                                           high=SPEED[1])  # as a mechanism file's rpm
             else:
-                values[col] = read_number(row[col], cw, pr, positive=True, low=MIN_LINK, high=MAX_ABS)
-        if len(pr.items) == before:
+                values[col] = read_number(row[col], cw, rp, positive=True, low=MIN_LINK, high=MAX_ABS)
+        if not rp:
             table[n] = dict(row, kind=kind, **values)
-    pr.raise_if_any()
-    return source, table
+    bad = {n: p for n, p in bad.items() if p}
+    return _Table(source, text, pr, table, bad)
 
 
 def variant_dict(row: dict) -> dict:
@@ -147,13 +168,29 @@ def variant_dict(row: dict) -> dict:
 
 
 def variant(n: int, table: str | Path | None = None) -> Mechanism:
-    source, rows = load_table(table)
-    if n not in rows:
-        have = sorted(rows)
+    """Row ``n`` as a mechanism; the problems of that row, or of the table as a whole, are
+    an InputError, those of other rows are not (:func:`other_rows_problems`)."""
+    t = _read(table)
+    t.problems.raise_if_any()
+    if n in t.rows_problems:
+        t.rows_problems[n].raise_if_any()
+    if n not in t.rows:
+        have = sorted(t.rows.keys() | t.rows_problems.keys())
         listed = ", ".join(map(str, have)) if len(have) <= 30 else f"{have[0]}…{have[-1]}, {len(have)} rows"
-        raise InputError(source, f"variant {n} is not in the table (it has {listed})")
-    return from_dict(variant_dict(rows[n]), f"{source}, variant {n}")
+        raise InputError(t.source, [*(line for p in t.rows_problems.values() for line in p.lines()),
+                                    f"variant {n} is not in the table (it has {listed})"])
+    return from_dict(variant_dict(t.rows[n]), f"{t.source}, variant {n}")
+
+
+def other_rows_problems(n: int, table: str | Path | None = None) -> list[str]:
+    """The problems of the table's rows other than ``n``, located, for a warning."""
+    t = _read(table)
+    return [f"{t.source}: {line}" for m, p in sorted(t.rows_problems.items()) if m != n
+            for line in p.lines()]
 
 
 def variant_numbers(table: str | Path | None = None) -> list[int]:
-    return sorted(load_table(table)[1])
+    """Every numbered row, those with problems too: each fails on its own."""
+    t = _read(table)
+    t.problems.raise_if_any()
+    return sorted(t.rows.keys() | t.rows_problems.keys())

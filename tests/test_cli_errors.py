@@ -51,7 +51,12 @@ def test_corpus_through_the_cli(capsys, tmp_path, path):
 
 @pytest.mark.parametrize("path", sorted((CORPUS / "tables").glob("*.toml")), ids=lambda p: p.stem)
 def test_table_corpus_through_the_cli(capsys, path):
-    code, stdout, err = run(capsys, "solve", "--variant", "0", "--table", path)
+    """Each broken table asked for the row it has (or 0): the problems of that row, or of
+    the table as a whole, are the error, one line each."""
+    import re
+
+    row = re.search(r"^n = (\d+)$", path.read_text("utf-8"), re.M)
+    code, stdout, err = run(capsys, "solve", "--variant", row.group(1) if row else "0", "--table", path)
     assert code == 2 and stdout == ""
     lines = assert_clean_failure(err)
     want = expectations(path)
@@ -662,3 +667,27 @@ def test_all_variants_of_a_table_that_cannot_be_read_make_no_folder(capsys, tmp_
                        "-o", f"{tmp_path}/sheets/")
     assert code == 2 and len(err.splitlines()) == 1
     assert not (tmp_path / "sheets").exists()
+
+
+def test_a_bad_row_of_a_table_stops_only_its_own_variant(capsys, tmp_path):
+    """A typo in variant 3 of a class's table had stopped every variant of it, and
+    sheet --variant all made no sheet at all."""
+    table = tmp_path / "t.toml"
+    table.write_text("[[variant]]\nn = 1\nAB = 0.06\nBC = 0.16\nCD = 0.12\nAD = 0.11\n"
+                     "phi_deg = 50\nrpm = 115\n\n"
+                     "[[variant]]\nn = 3\nAB = 0.06\nBC = 0.16\nCD = 0.12\nAd = 0.11\n"
+                     "phi_deg = 50\nrpm = 115\n", "utf-8")
+    code, out, err = run(capsys, "solve", "--variant", "1", "--table", table)
+    assert code == 0 and "Four-bar linkage, variant 1" in out
+    assert err.splitlines() == [
+        f"plans solve: warning: {table}: line 10: variant[1].AD: missing: four-bar variant 3 "
+        "needs AB, BC, CD, AD, phi_deg, rpm",
+        f"plans solve: warning: {table}: line 15: variant[1].Ad: unknown column (variant 3) — "
+        'did you mean "AD"? known: AB, AD, BC, CD, kind, n, phi_deg, rpm']
+    code, out, err = run(capsys, "solve", "--variant", "3", "--table", table)
+    assert code == 2 and out == "" and len(err.splitlines()) == 2 and "variant 3" in err
+    code, _, err = run(capsys, "sheet", "--variant", "all", "--table", table, "-o", f"{tmp_path}/s/")
+    assert code == 2
+    assert sorted(p.name for p in (tmp_path / "s").iterdir()) == ["variant-1.svg"]
+    assert err.splitlines()[-1] == "plans sheet: 1 of 2 sheets failed"
+    assert "warning" not in err
