@@ -122,6 +122,12 @@ def _toml_problem(message: str, text: str) -> str:
         except (ValueError, SyntaxError, TypeError, RecursionError, MemoryError):
             pass
     hint = next((h for prefix, h in _TOML_HINTS if msg.startswith(prefix)), "")
+    lines = text.split("\n")
+    key = lines[line - 1].split("=", 1)[0] if m and 0 < line <= len(lines) else ""
+    cyrillic = [c for c in dict.fromkeys(key) if c in LOOKALIKES]
+    if cyrillic:  # "АВ = 0.06" typed on a Russian keyboard: a bare key is Latin only
+        hint = (f"the name has the Cyrillic letter{'s' if len(cyrillic) > 1 else ''} "
+                f"{', '.join(cyrillic)}: type {'them' if len(cyrillic) > 1 else 'it'} in Latin")
     msg = one_line(msg[:1].lower() + msg[1:], 120)
     return f"{where}: TOML syntax error: {msg}" + (f" ({hint})" if hint else "")
 
@@ -272,9 +278,23 @@ def check_keys(table: dict, allowed: set[str], where: str, problems: Problems):
         problems.add(path, f"unknown key — {guess}known: {', '.join(sorted(allowed))}")
 
 
+#: Cyrillic letters that look like Latin ones: "АВ" typed on a Russian keyboard
+LOOKALIKES = dict(zip("аеорсхукАВЕКМНОРСТХ", "aeopcxykABEKMHOPCTX", strict=True))
+
+
 def close_match(key: Any, allowed, cutoff: float = 0.6) -> str:
-    """'did you mean "AD"? ' for a key close to one of ``allowed``, else ''."""
+    """'did you mean "AD"? ' for a key close to one of ``allowed``, else ''; a key typed
+    with Cyrillic look-alike letters says so.
+
+    >>> close_match("АВ", ["AB", "BC"])
+    'did you mean "AB" (typed with the Cyrillic letters А, В)? '
+    """
     key = str(key)[:40]
+    latin = "".join(LOOKALIKES.get(c, c) for c in key)
+    if latin != key and latin in allowed:
+        found = [c for c in dict.fromkeys(key) if c in LOOKALIKES]
+        return (f'did you mean "{latin}" (typed with the Cyrillic letter'
+                f'{"s" if len(found) > 1 else ""} {", ".join(found)})? ')
     same = sorted(a for a in allowed if a.lower() == key.lower())
     close = same or difflib.get_close_matches(key, sorted(allowed), n=1, cutoff=cutoff)
     return f'did you mean "{close[0]}"? ' if close else ""

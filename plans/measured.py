@@ -15,7 +15,15 @@ from pathlib import Path
 from typing import Any
 
 from .errors import InputError, PlansError
-from .fileformat import Problems, check_keys, key_text, quote, read_number, read_toml
+from .fileformat import (
+    LOOKALIKES,
+    Problems,
+    check_keys,
+    key_text,
+    quote,
+    read_number,
+    read_toml,
+)
 from .mechanism import Mechanism
 from .plan import Plan, Solution, plan_name, solve_position
 
@@ -422,12 +430,12 @@ class _Names:
 
 
 #: Cyrillic letters that look like Latin ones on a plan (р as p, а as a …)
-_LOOKALIKES = dict(zip("аеорсхукАВЕКМНОРСТХ", "aeopcxykABEKMHOPCTX", strict=True))
+
 
 
 def _cyrillic(name: str) -> str:
     """', with the Cyrillic letters р, а: type them in Latin' where ``name`` has some."""
-    found = [c for c in dict.fromkeys(name) if c in _LOOKALIKES]
+    found = [c for c in dict.fromkeys(name) if c in LOOKALIKES]
     return f", with the Cyrillic letter{'s' if len(found) > 1 else ''} {', '.join(found)}: type " \
            f"{'them' if len(found) > 1 else 'it'} in Latin" if found else ""
 

@@ -691,3 +691,20 @@ def test_a_bad_row_of_a_table_stops_only_its_own_variant(capsys, tmp_path):
     assert sorted(p.name for p in (tmp_path / "s").iterdir()) == ["variant-1.svg"]
     assert err.splitlines()[-1] == "plans sheet: 1 of 2 sheets failed"
     assert "warning" not in err
+
+
+def test_names_typed_with_cyrillic_letters_say_so(capsys, tmp_path):
+    """"АВ" and "роints" typed on a Russian keyboard: a TOML syntax error, or an unknown
+    column, with nothing to say that the letters were the matter."""
+    mech = tmp_path / "m.toml"
+    mech.write_text('[frame]\nO = [0, 0]\n[driver]\nlink = 1\nangle_deg = 30\nomega = 10\n'
+                    '[links.1]\naxis = ["O", "A"]\nроints = { A = 0.1 }\n', "utf-8")
+    code, _, err = run(capsys, "solve", mech)
+    assert code == 2 and err == (f"plans solve: {mech}: line 9, column 1: TOML syntax error: invalid "
+                                 "statement (the name has the Cyrillic letters р, о: type them in Latin)\n")
+    table = tmp_path / "t.toml"
+    table.write_text('[[variant]]\nn = 3\n"АВ" = 0.06\nBC = 0.16\nCD = 0.12\nAD = 0.11\n'
+                     "phi_deg = 50\nrpm = 115\n", "utf-8")
+    code, _, err = run(capsys, "solve", "--variant", "3", "--table", table)
+    assert code == 2
+    assert 'unknown column (variant 3) — did you mean "AB" (typed with the Cyrillic letters А, В)?' in err
