@@ -71,6 +71,10 @@ def _read(path: str | Path | None) -> _Table:
     pr = Problems(source, text)
     table: dict[int, dict] = {}
     bad: dict[int, Problems] = {}
+    if "variant" not in data and {"frame", "driver", "links"} & data.keys():
+        pr.add("", "is a mechanism file, not a variant table: give it as FILE, without "
+                   "--variant and --table")
+        return _Table(source, text, pr, table, bad)
     for key in data:
         if key not in TABLE_KEYS:
             pr.add(key_text(key), "unknown key — a table has [[variant]] rows (and title, name, source, note)")

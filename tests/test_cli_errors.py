@@ -708,3 +708,11 @@ def test_names_typed_with_cyrillic_letters_say_so(capsys, tmp_path):
     code, _, err = run(capsys, "solve", "--variant", "3", "--table", table)
     assert code == 2
     assert 'unknown column (variant 3) — did you mean "AB" (typed with the Cyrillic letters А, В)?' in err
+
+
+def test_a_mechanism_file_given_as_a_table_is_named_so(capsys):
+    """It had got nine lines: unknown keys frame, driver, links…, and no rows."""
+    code, out, err = run(capsys, "solve", "--variant", "1", "--table", PRESS)
+    assert code == 2 and out == ""
+    assert err == (f"plans solve: {PRESS}: is a mechanism file, not a variant table: give it as "
+                   "FILE, without --variant and --table\n")
