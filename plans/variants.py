@@ -78,6 +78,8 @@ def _read(path: str | Path | None) -> _Table:
     for key in data:
         if key not in TABLE_KEYS:
             pr.add(key_text(key), "unknown key — a table has [[variant]] rows (and title, name, source, note)")
+        elif key != "variant" and not isinstance(data[key], str):
+            pr.add(key, f"must be text in double quotes, got {quote(data[key])}")
     rows = data.get("variant")
     if not isinstance(rows, list) or not rows:
         got = "" if rows is None else f" (got {quote(rows)})"
