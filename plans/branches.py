@@ -34,9 +34,11 @@ def parse_hint(hint: str, names: list[str]) -> tuple[str, list[str]]:
     raise ValueError('a hint reads "above BD", "below BD", "left of C" or "right of C"')
 
 
-#: above and below a line within this sine of vertical (left and right of one within it of
-#: horizontal) are not defined: the hint is refused (about 1°)
-UPRIGHT = 0.0175
+#: above and below a vertical line (left and right of a horizontal one) are not defined:
+#: the hint is refused. Only a line vertical to rounding: one a degree off still has a
+#: side that points up, and a table's own hint ("C above BD") passes near vertical as
+#: the crank turns
+UPRIGHT = 1e-9
 
 
 class Ambiguous(ValueError):
@@ -127,8 +129,8 @@ def _choose(mech: Mechanism, structure: Structure) -> tuple[int, ...]:
                              else '"above {0}" or "below {0}"').format(line)
                     raise InputError(
                         mech.source,
-                        f"assembly.{k}: {mech.assembly[k]!r}: the line {line} is {exc} (within "
-                        f"1°) at {mech.driver.at(mech.driver.phi)}, so {rel} it names no side: "
+                        f"assembly.{k}: {mech.assembly[k]!r}: the line {line} is {exc} at "
+                        f"{mech.driver.at(mech.driver.phi)}, so {rel} it names no side: "
                         f"write {other}") from None
             if holds:
                 ok.append(sigma)

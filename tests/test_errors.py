@@ -621,7 +621,7 @@ B = "HINT"
     for hint in ("above OD", "below DO"):
         err = engine_error(text.replace("HINT", hint))
         assert isinstance(err, InputError)
-        assert (f"assembly.B: '{hint}': the line {hint[-2:]} is vertical (within 1°) at "
+        assert (f"assembly.B: '{hint}': the line {hint[-2:]} is vertical at "
                 f"φ1 = 0°, so {hint.split()[0]} it names no side: write \"left of") in str(err)
     spots = {h: Solver(mechanism.from_dict(tomllib.loads(text.replace("HINT", h)), "<t>"))
              .solve_one(0.0).position["B"] for h in ("left of OD", "left of DO", "right of OD")}
