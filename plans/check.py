@@ -155,12 +155,14 @@ def lookalikes(meas: Measurement, devs: tuple[Deviation, ...], st: State, tol: T
     out: list[Lookalike] = []
     for d in devs:  # a value in m/s written as its segment's length in mm
         it = d.item
-        if it.name in names and it.kind == "value" and it.plan in MU_KEY:
+        if it.name in names and it.kind == "value" and it.plan in MU_KEY and _far(d):
             mu = meas.mu.get(MU_KEY[it.plan], 1.0)
             if abs(mu - 1.0) > 1e-9 and _near(it.measured, abs(d.computed) / mu, tol):
                 out.append(Lookalike(it.name, "length", f"{it.start}{it.end}", abs(d.computed) / mu))
+    # only an item far off its own length, matched closely: a measurement a little beyond
+    # tolerance is drawing scatter, and among a plan's many segments one is always near it
     bad = [d for d in devs if d.item.name in names and d.item.kind == "segment"
-           and d.item.plan in ("velocity", "acceleration")]
+           and d.item.plan in ("velocity", "acceleration") and _far(d)]
     swapped: set[str] = set()
     for i, d in enumerate(bad):
         for e in bad[i + 1:]:
@@ -182,13 +184,16 @@ def lookalikes(meas: Measurement, devs: tuple[Deviation, ...], st: State, tol: T
             out.append(Lookalike(it.name, "value", f"{sym}_{end}", value))
             continue
         vals = st.values(it.plan)
+        pole = "p" if it.plan == "velocity" else "π"
+        # a fixed point's letter stands at the pole (o, b): it is the pole, not another end
+        ends = [x for x in vals if x == pole or abs(vals[x] - vals[pole]) > 1e-12 * mu]
         best = None
-        for a, b in [(x, it.end) for x in vals] + [(it.start, x) for x in vals]:
+        for a, b in [(x, it.end) for x in ends] + [(it.start, x) for x in ends]:
             if {a, b} == {it.start, it.end} or a == b:
                 continue
             length = abs(vals[b] - vals[a]) / mu
-            if _near(length, abs(d.computed), tol) or not _near(it.measured, length, tol):
-                continue  # as long as the item itself (a fixed point at the pole), or no match
+            if _near(length, abs(d.computed), tol) or not _near(it.measured, length, tol, 0.5):
+                continue  # as long as the item itself, or no close match
             if best is None or abs(it.measured - length) < abs(it.measured - best[1]):
                 best = (f"{a}{b}", length)
         if best is not None:
@@ -196,8 +201,13 @@ def lookalikes(meas: Measurement, devs: tuple[Deviation, ...], st: State, tol: T
     return tuple(out)
 
 
-def _near(measured: float, exact: float, tol: Tolerance) -> bool:
-    return abs(measured - exact) <= tol.limit(exact)
+def _near(measured: float, exact: float, tol: Tolerance, share: float = 1.0) -> bool:
+    return abs(measured - exact) <= share * tol.limit(exact)
+
+
+def _far(d: Deviation) -> bool:
+    """Off by more than three times its tolerance: a wrong measurement, not scatter."""
+    return abs(d.deviation) > 3.0 * d.limit
 
 
 def diagnose(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance) -> Diagnosis:
@@ -243,7 +253,7 @@ def diagnose(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance) -> 
 def _fitted_scales(meas: Measurement, devs: tuple[Deviation, ...]) -> list[Mistake]:
     """A plan drawn at a scale factor other than the one written down, by any factor: the
     ratio of its measured segments to the exact ones, where two or more segments of it are
-    measured and the ratio is not near 1 (10 and 0.1 are among the common mistakes).
+    measured and the ratio is 15 % or more off 1 (10 and 0.1 are among the common mistakes).
     Whether it explains them, and spoils none that was right, is judged as for any other
     mistake."""
     out = []
@@ -254,7 +264,9 @@ def _fitted_scales(meas: Measurement, devs: tuple[Deviation, ...]) -> list[Mista
             continue  # one segment could be anything
         # the ratio of the sums: the long segments, measured to the same ±mm, weigh most
         r = sum(m for m, _ in pairs) / sum(c for _, c in pairs)
-        if r > 0 and not any(abs(r / f - 1) < 0.05 for f in (1.0, 10.0, 0.1)):
+        # a μ mistake is a step of the standard series or more (0.04 for 0.05: 20 %), not
+        # the few per cent that drawing scatter leaves on two or three segments
+        if r > 0 and abs(r - 1) >= 0.15 and not any(abs(r / f - 1) < 0.05 for f in (10.0, 0.1)):
             stated = meas.mu[MU_KEY[plan]]
             fits = stated / r
             # a round factor that close is the one drawn at: the segments' own scatter
