@@ -154,35 +154,9 @@ class GroupSolution(NamedTuple):
 
             return (f"группа {self.group.label.removeprefix('group ')} при {at}: положение, "
                     f"близкое к особому: прямые {r0.relation} и {r1.relation} пересекаются "
-                    f"под углом {num(_degrees(s), 3, 'ru')}° (sin = {num(s, 3, 'ru')})"
-                    + _digits_left(s, lang))
+                    f"под углом {num(_degrees(s), 3, 'ru')}° (sin = {num(s, 3, 'ru')})")
         return (f"{self.group.label} at {at}: near-singular, the lines "
-                f"{r0.relation} and {r1.relation} meet at {_degrees(s):.3g}° (sin = {s:.3g})"
-                + _digits_left(s, lang))
-
-
-#: velocities and accelerations stay within this many κ²·ε of exact, κ = 1 / the figure
-#: (measured on the stiff scenes of tests/test_stability.py; README, "Accuracy")
-KAPPA2_FACTOR = 11.0
-
-
-def _digits_left(figure: float, lang: str = "en") -> str:
-    """"; velocities and accelerations keep about 4 significant digits" where the
-    conditioning ``figure`` leaves fewer than six, from the error bound 11·κ²·ε.
-
-    >>> _digits_left(1e-5), _digits_left(1e-7), _digits_left(0.01)
-    ('; velocities and accelerations keep about 4 significant digits', '; velocities and accelerations have no significant digit left', '')
-    """
-    rel = KAPPA2_FACTOR * 2.220446049250313e-16 / (figure * figure)
-    digits = math.floor(-math.log10(rel)) if rel > 0 else 16
-    if digits >= 6:
-        return ""
-    if lang == "ru":
-        return ("; у скоростей и ускорений не остаётся верных значащих цифр" if digits < 1 else
-                f"; скорости и ускорения сохраняют около {digits} значащих цифр")
-    return ("; velocities and accelerations have no significant digit left" if digits < 1 else
-            f"; velocities and accelerations keep about {digits} significant digit"
-            f"{'s' if digits > 1 else ''}")
+                f"{r0.relation} and {r1.relation} meet at {_degrees(s):.3g}° (sin = {s:.3g})")
 
 
 def pivot_figure(g: GroupSolution, position: dict, crank_pivot: complex):
@@ -224,10 +198,9 @@ def near_pivot(g: GroupSolution, q: float, at: str, lang: str = "en") -> str | N
 
         return (f"группа {g.group.label.removeprefix('group ')} при {at}: камень {P} проходит "
                 f"близко к оси кулисы {Q} (|{Q}{P}| / (|O{Q}| + |O{P}|) = {num(q, 3, 'ru')}): "
-                "ω и ε кулисы теряют точность" + _digits_left(q, lang))
+                "ω и ε кулисы теряют точность")
     return (f"{g.group.label} at {at}: the block {P} passes close to the rocker's pivot {Q} "
-            f"(|{Q}{P}| / (|O{Q}| + |O{P}|) = {q:.3g}): the rocker's ω and ε lose digits"
-            + _digits_left(q, lang))
+            f"(|{Q}{P}| / (|O{Q}| + |O{P}|) = {q:.3g}): the rocker's ω and ε lose digits")
 
 
 def _degrees(sine: float) -> float:
