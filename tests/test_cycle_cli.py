@@ -299,3 +299,18 @@ def test_a_cycle_from_an_angle_that_does_not_close_says_why(capsys, tmp_path):
     assert err == (f"plans cycle: {path}: group 2–3 (PRP) at φ1 = 90°: the guides OA and y-y "
                    "are parallel: the hinge C is not fixed: a singular position (dead point), "
                    "the plan has no unique solution\n")
+
+
+@pytest.mark.parametrize("sense", ["ccw", "cw"])
+def test_the_json_crank_range_runs_counter_clockwise(capsys, tmp_path, sense):
+    """Seed 001's four-bar assembles counter-clockwise from 231.2° to 128.8° (from +x). With
+    the crank turning clockwise the JSON had said [128.8, 231.2]: the arc where it does
+    not assemble."""
+    from pathlib import Path
+
+    path = tmp_path / "f.toml"
+    path.write_text(Path(FOURBAR).read_text("utf-8").replace('sense = "ccw"', f'sense = "{sense}"'),
+                    "utf-8")
+    code, out, _ = run(capsys, "cycle", path, "--json", "--positions", "3")
+    lo, hi = json.loads(out)["cycle"]["crank_range_phi_deg"]
+    assert lo == pytest.approx(231.2, abs=0.1) and hi == pytest.approx(128.8, abs=0.1)
