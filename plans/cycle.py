@@ -99,14 +99,15 @@ def summary(c: Cycle, deg=None, link: int = 1, convention: str = "") -> list[str
 
     ``deg``: a crank angle (rad from +x) in degrees in the caller's convention (the file's
     for ``plans cycle`` and ``plans solve``); default counter-clockwise from +x.
-    ``convention``: said after the extreme positions' angles (" (from +y, cw)")."""
+    ``convention``: said after the angles of the extreme positions and of the crank range
+    (" (from +y, cw)")."""
     from .fmt import angle, num
     from .report import no_full_turn
 
     deg = deg or from_x
     lines = [f"four-bar: {c.grashof}"] if c.grashof else []
     if not c.full_turn:
-        lines.append(no_full_turn(c, "en", deg, link))
+        lines.append(no_full_turn(c, "en", deg, link, convention))
     lines += c.notes
     if c.stroke is not None and c.output is not None:
         if c.output.kind == "linear":

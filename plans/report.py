@@ -31,7 +31,7 @@ T = {
         "stroke": "Stroke of the output point {p}:",
         "swing": "Swing of the output link {l}:",
         "kth": "Crank angle between the extreme positions, θ, and the time ratio K:",
-        "noturn": "The input link {d} cannot make a full turn (it rocks, it is not a crank): the mechanism assembles only for φ1 from {lo}° to {hi}°, a swing of {span}°.",
+        "noturn": "The input link {d} cannot make a full turn (it rocks, it is not a crank): the mechanism assembles only for φ1 from {lo}° to {hi}°{conv}, a swing of {span}°.",
         "velocities": "Velocity plan",
         "va": "Velocity of point {t} of the input link, ⊥ {p}{t} in the sense of ω1:",
         "muv": "Scale factor of the velocity plan, with p{t} = {mm} mm:",
@@ -72,7 +72,7 @@ T = {
         "stroke": "Ход выходной точки {p}:",
         "swing": "Угол размаха выходного звена {l}:",
         "kth": "Угол между положениями кривошипа в крайних положениях механизма θ и коэффициент изменения средней скорости K:",
-        "noturn": "Начальное звено {d} не может сделать полный оборот (это коромысло, а не кривошип): механизм собирается только при φ1 от {lo}° до {hi}°, угол качания {span}°.",
+        "noturn": "Начальное звено {d} не может сделать полный оборот (это коромысло, а не кривошип): механизм собирается только при φ1 от {lo}° до {hi}°{conv}, угол качания {span}°.",
         "velocities": "План скоростей механизма",
         "va": "Скорость точки {t} начального звена, ⊥ {p}{t} в сторону вращения ω1:",
         "muv": "Масштабный коэффициент плана скоростей при p{t} = {mm} мм:",
@@ -212,7 +212,7 @@ def warnings(sol: Solution, lang: str = "en") -> list[str]:
     return out
 
 
-def no_full_turn(cycle, lang: str = "en", deg=None, link: int = 1) -> str:
+def no_full_turn(cycle, lang: str = "en", deg=None, link: int = 1, convention: str = "") -> str:
     """The sentence for a crank that cannot make a full turn, with its range in degrees by
     ``deg`` (a crank angle in rad → degrees in the convention wanted; default
     counter-clockwise from +x).
@@ -231,7 +231,7 @@ def no_full_turn(cycle, lang: str = "en", deg=None, link: int = 1) -> str:
     a = a - 360.0 if a > b else a
     return T[lang]["noturn"].format(
         d=link,
-        lo=num(a, 4, lang).replace("-", "−"), hi=angle(b, 4, lang),
+        lo=num(a, 4, lang).replace("-", "−"), hi=angle(b, 4, lang), conv=convention,
         span=num(math.degrees(abs(hi - lo)), 4, lang),
     )
 
