@@ -288,7 +288,7 @@ def run(args) -> int:
 
 
 def _batch(args) -> int:
-    from plans.variants import variant_numbers
+    from plans.variants import other_rows_problems, variant_numbers
 
     if not args.output or args.output == "-":
         raise InputError("-o", "with --variant all give a folder: -o DIR/")
@@ -299,6 +299,8 @@ def _batch(args) -> int:
         raise InputError("-o", f"{args.output} looks like a file name: with --variant all give a "
                          "folder, e.g. -o sheets/")
     numbers = list(variant_numbers(args.table))  # a table that cannot be read: no folder made
+    for line in other_rows_problems(None, args.table):  # rows with no number: no sheet
+        print(f"plans sheet: warning: {line}", file=sys.stderr)
     out.mkdir(parents=True, exist_ok=True)
     tty = sys.stderr.isatty()
     failed: list[tuple[int, str]] = []

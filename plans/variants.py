@@ -45,7 +45,8 @@ def load_table(path: str | Path | None = None) -> tuple[str, dict[int, dict]]:
     once, each with its line."""
     t = _read(path)
     everything = Problems(t.source, t.text)
-    everything.items = [*t.problems.items, *(it for p in t.rows_problems.values() for it in p.items)]
+    everything.items = [*t.problems.items, *t.loose.items,
+                        *(it for p in t.rows_problems.values() for it in p.items)]
     everything.raise_if_any()
     return t.source, t.rows
 
@@ -56,6 +57,7 @@ class _Table(NamedTuple):
     problems: Problems  # of the table as a whole: no row can be read while there are any
     rows: dict[int, dict]  # the rows that can be read, by their number
     rows_problems: dict[int, Problems]  # the problems of one numbered row, by its number
+    loose: Problems  # of rows without a number: no variant's own, so none stops
 
 
 def _read(path: str | Path | None) -> _Table:
@@ -69,12 +71,13 @@ def _read(path: str | Path | None) -> _Table:
         source = str(path)
         data, text = read_toml(path, "a variant table is a few KB")
     pr = Problems(source, text)
+    loose = Problems(source, text)
     table: dict[int, dict] = {}
     bad: dict[int, Problems] = {}
     if "variant" not in data and {"frame", "driver", "links"} & data.keys():
         pr.add("", "is a mechanism file, not a variant table: give it as FILE, without "
                    "--variant and --table")
-        return _Table(source, text, pr, table, bad)
+        return _Table(source, text, pr, table, bad, loose)
     for key in data:
         if key not in TABLE_KEYS:
             pr.add(key_text(key), "unknown key — a table has [[variant]] rows (and title, name, source, note)")
@@ -84,20 +87,20 @@ def _read(path: str | Path | None) -> _Table:
     if not isinstance(rows, list) or not rows:
         got = "" if rows is None else f" (got {quote(rows)})"
         pr.add("variant", f"missing: the table needs [[variant]] rows with n, AB, BC, CD, AD, phi_deg, rpm{got}")
-        return _Table(source, text, pr, table, bad)
+        return _Table(source, text, pr, table, bad, loose)
     if len(rows) > MAX_ROWS:
         pr.add("variant", f"{len(rows)} rows: at most {MAX_ROWS}")
-        return _Table(source, text, pr, table, bad)
+        return _Table(source, text, pr, table, bad, loose)
     first: dict[int, int] = {}
     for i, row in enumerate(rows):
         where = f"variant[{i}]"
         if not isinstance(row, dict):
-            pr.add(where, f"must be a table ([[variant]] n = …, AB = …), got {quote(row)}")
+            loose.add(where, f"must be a table ([[variant]] n = …, AB = …), got {quote(row)}")
             continue
         n = row.get("n")
         if isinstance(n, bool) or not isinstance(n, int) or not 0 <= n < 10**6:
             got = "missing" if n is None else f"got {quote(n, 20)}"
-            pr.add(where + ".n", f"the variant number must be a whole number 0…999999, {got}")
+            loose.add(where + ".n", f"the variant number must be a whole number 0…999999, {got}")
             continue
         rp = bad.setdefault(n, Problems(source, text))
         for key in row:
@@ -128,7 +131,7 @@ def _read(path: str | Path | None) -> _Table:
         if not rp:
             table[n] = dict(row, kind=kind, **values)
     bad = {n: p for n, p in bad.items() if p}
-    return _Table(source, text, pr, table, bad)
+    return _Table(source, text, pr, table, bad, loose)
 
 
 def variant_dict(row: dict) -> dict:
@@ -178,25 +181,33 @@ def variant(n: int, table: str | Path | None = None) -> Mechanism:
     an InputError, those of other rows are not (:func:`other_rows_problems`)."""
     t = _read(table)
     t.problems.raise_if_any()
+    if not t.rows and not t.rows_problems:  # not one numbered row: the table is unusable
+        t.loose.raise_if_any()
     if n in t.rows_problems:
         t.rows_problems[n].raise_if_any()
     if n not in t.rows:
         have = sorted(t.rows.keys() | t.rows_problems.keys())
         listed = ", ".join(map(str, have)) if len(have) <= 30 else f"{have[0]}…{have[-1]}, {len(have)} rows"
-        raise InputError(t.source, [*(line for p in t.rows_problems.values() for line in p.lines()),
+        raise InputError(t.source, [*t.loose.lines(),
+                                    *(line for p in t.rows_problems.values() for line in p.lines()),
                                     f"variant {n} is not in the table (it has {listed})"])
     return from_dict(variant_dict(t.rows[n]), f"{t.source}, variant {n}")
 
 
-def other_rows_problems(n: int, table: str | Path | None = None) -> list[str]:
-    """The problems of the table's rows other than ``n``, located, for a warning."""
+def other_rows_problems(n: int | None, table: str | Path | None = None) -> list[str]:
+    """The problems of the table's rows other than ``n`` (None: of the rows without a
+    number only), located, for a warning."""
     t = _read(table)
-    return [f"{t.source}: {line}" for m, p in sorted(t.rows_problems.items()) if m != n
-            for line in p.lines()]
+    lines = [*t.loose.lines()]
+    if n is not None:
+        lines += [line for m, p in sorted(t.rows_problems.items()) if m != n for line in p.lines()]
+    return [f"{t.source}: {line}" for line in lines]
 
 
 def variant_numbers(table: str | Path | None = None) -> list[int]:
     """Every numbered row, those with problems too: each fails on its own."""
     t = _read(table)
     t.problems.raise_if_any()
+    if not t.rows and not t.rows_problems:
+        t.loose.raise_if_any()
     return sorted(t.rows.keys() | t.rows_problems.keys())

@@ -716,3 +716,14 @@ def test_a_mechanism_file_given_as_a_table_is_named_so(capsys):
     assert code == 2 and out == ""
     assert err == (f"plans solve: {PRESS}: is a mechanism file, not a variant table: give it as "
                    "FILE, without --variant and --table\n")
+
+
+def test_a_row_without_a_number_stops_no_variant(capsys, tmp_path):
+    """n = "four" in one row had stopped every variant of the table."""
+    table = tmp_path / "t.toml"
+    table.write_text('[[variant]]\nn = 1\nAB = 0.06\nBC = 0.16\nCD = 0.12\nAD = 0.11\n'
+                     'phi_deg = 50\nrpm = 115\n\n[[variant]]\nn = "four"\nAB = 0.06\n', "utf-8")
+    code, out, err = run(capsys, "solve", "--variant", "1", "--table", table)
+    assert code == 0 and "variant 1" in out
+    assert err == (f"plans solve: warning: {table}: line 11: variant[1].n: the variant number "
+                   'must be a whole number 0…999999, got "four"\n')
