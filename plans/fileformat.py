@@ -123,7 +123,13 @@ def _toml_problem(message: str, text: str) -> str:
             pass
     hint = next((h for prefix, h in _TOML_HINTS if msg.startswith(prefix)), "")
     lines = text.split("\n")
-    key = lines[line - 1].split("=", 1)[0] if m and 0 < line <= len(lines) else ""
+    key = ""
+    if m and m.group("line") and 0 < line <= len(lines):
+        here = lines[line - 1]
+        # the name where the parser stopped (points = { В = 0.06 } stops at the В), or the
+        # line's own key
+        at = re.match(r"[^\s=,{}\[\]\"']*", here[max(int(m.group("col")) - 1, 0):]).group()
+        key = at if any(c in LOOKALIKES for c in at) else here.split("=", 1)[0]
     cyrillic = [c for c in dict.fromkeys(key) if c in LOOKALIKES]
     if cyrillic:  # "АВ = 0.06" typed on a Russian keyboard: a bare key is Latin only
         hint = (f"the name has the Cyrillic letter{'s' if len(cyrillic) > 1 else ''} "

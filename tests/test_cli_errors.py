@@ -702,6 +702,10 @@ def test_names_typed_with_cyrillic_letters_say_so(capsys, tmp_path):
     code, _, err = run(capsys, "solve", mech)
     assert code == 2 and err == (f"plans solve: {mech}: line 9, column 1: TOML syntax error: invalid "
                                  "statement (the name has the Cyrillic letters р, о: type them in Latin)\n")
+    inline = tmp_path / "i.toml"  # a point name in an inline table, where most of them are
+    inline.write_text(mech.read_text("utf-8").replace("роints = { A", "points = { А"), "utf-8")
+    code, _, err = run(capsys, "solve", inline)
+    assert code == 2 and err.endswith("(the name has the Cyrillic letter А: type it in Latin)\n")
     table = tmp_path / "t.toml"
     table.write_text('[[variant]]\nn = 3\n"АВ" = 0.06\nBC = 0.16\nCD = 0.12\nAD = 0.11\n'
                      "phi_deg = 50\nrpm = 115\n", "utf-8")
