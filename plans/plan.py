@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import hashlib
 import linecache
-import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -23,7 +22,7 @@ import numpy as np
 from .kernels import record
 from .kinematics import Motion, Solver
 from .mechanism import Mechanism
-from .records import WARN_SINE, frozen, near_pivot, on_pivot, pivot_figure
+from .records import flag_words, flagged, frozen
 from .scales import choose_mu, choose_mu_l
 from .structure import Structure
 
@@ -121,6 +120,8 @@ class Solution:
     segments: dict[str, float]
     lengths: dict[str, float]  # m, position plan segments
     warnings: tuple[str, ...] = field(default_factory=tuple)
+    #: the figures the warnings word (:func:`plans.records.flagged`), for other languages
+    flags: tuple = field(default=(), repr=False, compare=False)
     #: the recorded solution on Python numbers, that the plans were built from
     scalar: Motion | None = field(default=None, repr=False, compare=False)
 
@@ -154,20 +155,9 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     solver = solver or Solver(mech)
     phi = mech.driver.phi if phi is None else float(phi)
     motion = solver.solve_one(phi)
-    warnings = []
-    crank_pivot = mech.frame[mech.driver.pivot]
-    for g in motion.groups:
-        if not WARN_SINE <= abs(g.velocity.sine) < math.inf:  # NaN, inf: parallel() refuses them
-            at = mech.driver.at(phi)
-            if (err := g.parallel(None, at, mech.source)) is not None:
-                raise err
-            warnings.append(g.near_parallel(None, at))
-        q = pivot_figure(g, motion.position, crank_pivot)
-        if q is not None and q < WARN_SINE:  # a slotted link's block near its pivot
-            at = mech.driver.at(phi)
-            if (err := on_pivot(g, q, at, mech.source)) is not None:
-                raise err
-            warnings.append(near_pivot(g, q, at))
+    flags = flagged(motion.groups, motion.position, mech.frame[mech.driver.pivot],
+                    lambda: mech.driver.at(phi), mech.source)
+    warnings = [flag_words(f, mech.driver.at(phi)) for f in flags]
     scales = mech.scales
     if mu or "mu_l" not in scales:
         scales = dict(scales, **(mu or {}))
@@ -190,7 +180,7 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
         omega={i: states[i].omega for i in links},
         epsilon={i: states[i].epsilon for i in links},
         mu_l=mu_l, segments=segments, lengths=lengths,
-        warnings=tuple(warnings), scalar=motion,
+        warnings=tuple(warnings), flags=flags, scalar=motion,
     )
 
 

@@ -203,6 +203,32 @@ def near_pivot(g: GroupSolution, q: float, at: str, lang: str = "en") -> str | N
             f"(|{Q}{P}| / (|O{Q}| + |O{P}|) = {q:.3g}): the rocker's ω and ε lose digits")
 
 
+def flagged(groups, position: dict, crank_pivot: complex, at, source: str = "") -> tuple:
+    """The conditioning figures of one position (groups and positions on Python numbers)
+    that call for a word: (group, "lines" or "pivot", figure) for each under
+    :data:`WARN_SINE`, the sine between a group's two lines or a slotted link's pivot
+    figure. One that is singular raises its error. ``at()`` names the crank angle, asked
+    only then. The words, in either language, are :func:`flag_words`."""
+    out = []
+    for g in groups:
+        if not WARN_SINE <= abs(g.velocity.sine) < math.inf:  # NaN, inf: parallel() refuses them
+            if (err := g.parallel(None, at(), source)) is not None:
+                raise err
+            out.append((g, "lines", g.sine_at(None)))
+        q = pivot_figure(g, position, crank_pivot)
+        if q is not None and q < WARN_SINE:
+            if (err := on_pivot(g, q, at(), source)) is not None:
+                raise err
+            out.append((g, "pivot", q))
+    return tuple(out)
+
+
+def flag_words(flag: tuple, at: str, lang: str = "en") -> str:
+    """The warning for one of :func:`flagged`'s figures."""
+    g, kind, figure = flag
+    return g.near_parallel(None, at, lang) if kind == "lines" else near_pivot(g, figure, at, lang)
+
+
 def _degrees(sine: float) -> float:
     return math.degrees(math.asin(min(sine, 1.0)))
 

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 from .fmt import SENSE, angle, from_x, num
 from .plan import Solution, plan_name
-from .records import near_pivot, pivot_figure
+from .records import flag_words
 
 T = {
     "en": {
@@ -198,18 +198,12 @@ def _letter(plan, name: str) -> str:
 
 
 def warnings(sol: Solution, lang: str = "en") -> list[str]:
-    """The solution's near-singular groups in ``lang``: ``sol.warnings`` in English, written
-    again from the groups' own figures in Russian."""
+    """The solution's near-singular groups in ``lang``: ``sol.warnings`` in English, the
+    same figures (``sol.flags``) worded again in Russian."""
     if lang == "en":
         return list(sol.warnings)
-    mech, m = sol.mechanism, sol.scalar
-    at = mech.driver.at(sol.phi, lang)
-    out = []
-    for g in m.groups:
-        q = pivot_figure(g, m.position, mech.frame[mech.driver.pivot])
-        out += [w for w in (g.near_parallel(None, at, lang),
-                            None if q is None else near_pivot(g, q, at, lang)) if w is not None]
-    return out
+    at = sol.mechanism.driver.at(sol.phi, lang)
+    return [flag_words(f, at, lang) for f in sol.flags]
 
 
 def no_full_turn(cycle, lang: str = "en", deg=None, link: int = 1, convention: str = "") -> str:
