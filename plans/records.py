@@ -18,7 +18,7 @@ from .kernels import (
     SINGULAR_SINE,  # noqa: F401  (also read from here by the reports)
     record,
 )
-from .structure import Group
+from .structure import DyadKind, Group
 
 #: below this |sin| (about 2°) a position is reported as near-singular
 WARN_SINE = 0.035
@@ -164,7 +164,7 @@ def pivot_figure(g: GroupSolution, position: dict, crank_pivot: complex):
     to the loop, |QP| / (|OQ| + |OP|) with O the crank's pivot (arrays or Python numbers,
     as ``position`` holds them); None for the other kinds. Near 0 the rocker's
     ω = V / |QP| loses its digits, though the two lines of the plans stay perpendicular."""
-    if g.group.kind.name != "RPR":
+    if g.group.kind != DyadKind.RPR:
         return None
     P, Q = position[g.group.P], position[g.group.Q]
     loop = abs(Q - crank_pivot) + abs(P - crank_pivot)
