@@ -1,5 +1,5 @@
-"""What several test files share: the command line run in-process, and the problems a
-file of the malformed-input corpus says it must produce."""
+"""What several test files share: the command line run in-process, the problems a file
+of the malformed-input corpus says it must produce, and a four-bar standing upright."""
 
 from pathlib import Path
 
@@ -22,3 +22,28 @@ def expectations(path: Path) -> list[str]:
         out.append(line[len(b"# expect: ") :].decode("utf-8"))
     assert out, f"{path.name}: no '# expect:' header"
     return out
+
+
+def upright_fourbar(crank: float, coupler: float, rocker: float, height: float, hint: str) -> str:
+    """A four-bar file with its rocker's pivot D straight above the crank's O (the line
+    OD vertical), the crank at 0°, and the assembly hint ``hint`` for B."""
+    return f"""
+[frame]
+O = [0.0, 0.0]
+D = [0.0, {height!r}]
+[driver]
+link = 1
+angle_deg = 0
+omega = 10
+[links.1]
+axis = ["O", "A"]
+points = {{ A = {crank!r} }}
+[links.2]
+axis = ["A", "B"]
+points = {{ B = {coupler!r} }}
+[links.3]
+axis = ["D", "B"]
+points = {{ B = {rocker!r} }}
+[assembly]
+B = "{hint}"
+"""

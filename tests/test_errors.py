@@ -14,7 +14,7 @@ import tomllib
 from pathlib import Path
 
 import pytest
-from support import expectations, run
+from support import expectations, run, upright_fourbar
 
 from plans import fileformat, mechanism
 from plans.errors import (
@@ -598,26 +598,7 @@ def test_a_hint_naming_a_point_of_a_later_group_is_an_input_error(hint):
 def test_above_a_vertical_line_is_refused_and_left_of_it_does_not_depend_on_the_order():
     """A four-bar standing upright (D above O): "above OD" and "above DO" had picked the
     two different assemblies, neither of them above anything."""
-    text = """
-[frame]
-O = [0.0, 0.0]
-D = [0.0, 0.2]
-[driver]
-link = 1
-angle_deg = 0
-omega = 10
-[links.1]
-axis = ["O", "A"]
-points = { A = 0.05 }
-[links.2]
-axis = ["A", "B"]
-points = { B = 0.2 }
-[links.3]
-axis = ["D", "B"]
-points = { B = 0.15 }
-[assembly]
-B = "HINT"
-"""
+    text = upright_fourbar(0.05, 0.2, 0.15, 0.2, "HINT")
     for hint in ("above OD", "below DO"):
         err = engine_error(text.replace("HINT", hint))
         assert isinstance(err, InputError)

@@ -22,6 +22,7 @@ import numpy as np
 import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
+from support import upright_fourbar
 
 from plans.errors import InputError
 from plans.kinematics import Motion, Solver
@@ -744,26 +745,7 @@ def test_random_slotted_links(mech):
     assert check_coriolis(solve(mech, phi)) == 1
 
 
-ABOVE_AD = """
-[frame]
-O = [0.0, 0.0]
-D = [0.0, 0.3]
-[driver]
-link = 1
-angle_deg = 0
-omega = 10
-[links.1]
-axis = ["O", "A"]
-points = { A = 0.1 }
-[links.2]
-axis = ["A", "B"]
-points = { B = 0.35 }
-[links.3]
-axis = ["D", "B"]
-points = { B = 0.3 }
-[assembly]
-B = "above AD"
-"""
+ABOVE_AD = upright_fourbar(0.1, 0.35, 0.3, 0.3, "above AD")
 
 
 def test_a_turned_crank_keeps_the_branch_the_hints_chose_at_the_files_angle():
