@@ -114,15 +114,8 @@ def to_text(sol, cycle=None) -> str:
             out.append(f"  {key:10s} {num(mm):>9s} {num(mm * plan.mu):>11s}  {how}")
     out.append("")
     out.append("Angular velocities and accelerations")
-    from .plan import NOISE
-
-    # rounding left where ω or ε is 0 (a link at rest at an extreme position) prints as 0
-    big_w = max(abs(x) for x in sol.omega.values())
-    big_e = max([abs(x) for x in sol.epsilon.values()] + [big_w * big_w])
     for i in sorted(sol.omega):
         w, e = sol.omega[i], sol.epsilon[i]
-        w = 0.0 if abs(w) <= NOISE * big_w else w
-        e = 0.0 if abs(e) <= NOISE * big_e else e
         out.append(
             f"  link {i} ({mech.links[i].name}): ω{i} = {num(abs(w))} rad/s{_sense(w)}, "
             f"ε{i} = {num(abs(e))} rad/s²{_sense(e)}"

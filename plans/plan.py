@@ -173,15 +173,25 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     segments.update(aplan.segments)
     states = motion.links
     links = solver.cache.get("links") or solver.cache.setdefault("links", sorted(mech.links))
+    omega = _rounded_off({i: states[i].omega for i in links}, 0.0)
+    big_w = max(map(abs, omega.values()), default=0.0)
+    epsilon = _rounded_off({i: states[i].epsilon for i in links}, big_w * big_w)
     return frozen(
         Solution,
         mechanism=mech, structure=solver.structure, phi=phi, solver=solver,
         positions=positions, velocity=vplan, acceleration=aplan,
-        omega={i: states[i].omega for i in links},
-        epsilon={i: states[i].epsilon for i in links},
+        omega=omega, epsilon=epsilon,
         mu_l=mu_l, segments=segments, lengths=lengths,
         warnings=tuple(warnings), flags=flags, scalar=motion,
     )
+
+
+def _rounded_off(values: dict[int, float], floor: float) -> dict[int, float]:
+    """ω or ε of every link, 0 where it is rounding: within :data:`NOISE` of the largest
+    (or of ``floor``, ω1² for ε), as a plan's segments are. A rocker at rest at an extreme
+    position has ω 3.9e-14 rad/s, not a sense of turning."""
+    tiny = NOISE * max(max(map(abs, values.values()), default=0.0), floor)
+    return {i: (v if abs(v) > tiny else 0.0) for i, v in values.items()}
 
 
 def cycle_extent(solver: Solver) -> float:

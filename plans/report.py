@@ -289,7 +289,7 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
                 parts.append(f"{sym}_{r.base} = 0")
             for term in r.terms:
                 a_, b_ = term.about
-                rel = abs(vplan.value(plan_name(a_)) - vplan.value(plan_name(b_)))
+                rel = vplan.mm(plan_name(b_), plan_name(a_)) * vplan.mu  # 0 where it is rounding
                 if term.kind == "normal":
                     l = abs(sol.positions[a_] - sol.positions[b_])
                     out.append(f"- {t['normal'].format(x=a_, y=b_)}")
@@ -358,6 +358,7 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
                 continue
             l = abs(sol.positions[A] - sol.positions[B])
             mag = abs(r.param)
+            mag = mag if mag > plan.tiny * plan.mu else 0.0  # rounding, as the plan's segments
             val = (sol.epsilon if acc else sol.omega)[link]
             sense = t["sense"][int(math.copysign(1, val)) if val else 0]
             key = "eps" if acc else "omega"

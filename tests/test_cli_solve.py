@@ -367,5 +367,12 @@ def test_rounding_at_an_extreme_prints_as_zero(capsys):
     "3.516e-14 rad/s cw"."""
     code, out, _ = run(capsys, "solve", "samples/press.toml", "--angle", "109.93227047220137")
     assert code == 0 and "ω3 = 0 rad/s, ε3 = 145.1 rad/s² ccw" in out
+    # the solution holds the 0, so JSON and the explanatory note say it too
+    _, js, _ = run(capsys, "solve", "samples/press.toml", "--angle", "109.93227047220137", "--json")
+    assert json.loads(js)["links"]["3"]["omega"] == 0.0
+    code, note, _ = run(capsys, "report", "samples/press.toml", "--angle", "109.93227047220137",
+                        "--lang", "ru")
+    assert "`ω3 = V_A3B / l_A3B = 0 / 0,41364 = 0 рад/с`" in note
+    assert not re.search(r"e-\d\d", note)  # no 3,9e-14 anywhere
     code, out, _ = run(capsys, "cycle", "samples/press.toml", "--csv", "--positions", "2")
     assert "output D (m)" in out.splitlines()[0]
