@@ -143,7 +143,7 @@ def _views_of_any_size(mech, solver, cycle, lang) -> _AnySize:
         return _AnySize(shown, [diag], [])
     from plans.report import no_full_turn
 
-    why = (no_full_turn(cycle, lang, mech.driver.file_angle, mech.driver.link) if not cycle.full_turn else
+    why = (no_full_turn(cycle, lang, mech.driver) if not cycle.full_turn else
            "no stroke of the output" if lang == "en" else "нет хода выходного звена")
     return _AnySize(shown, [], [V.WORDS[lang]["no_diagrams"] + why[0].lower() + why[1:]])
 

@@ -402,7 +402,7 @@ def to_text(t: CycleTable) -> str:
     )
     from .cycle import summary
 
-    lines += summary(c, d.file_angle, d.link)
+    lines += summary(c, d)
     moving = [p for p in t.points if p not in mech.frame]
     fixed = [p for p in t.points if p in mech.frame]
     if fixed:

@@ -85,10 +85,9 @@ def to_text(sol, cycle=None) -> str:
     for g in st.groups:
         out.append(f"  {g.label}: kind {g.kind.value} ({g.kind.ru})")
     d = mech.driver
-    usual = (d.reference, d.measured) == ("+x", "ccw")
     # the file's own convention too, the one --angle and the cycle's lines below use
-    own = "" if usual else (f" ({angle(d.file_angle(sol.phi))}° from {d.reference}, "
-                            f"{d.measured}, as the file gives it)")
+    conv = d.convention()[2:-1]  # "from +y, cw" without its brackets
+    own = f" ({angle(d.file_angle(sol.phi))}° {conv}, as the file gives it)" if conv else ""
     out.append(
         f"Crank: link {d.link}, l_{d.pivot}{d.tip} = {num(d.length)} m, "
         f"φ1 = {angle(math.degrees(sol.phi))}° from +x{own}, ω1 = {num(abs(d.omega))} rad/s{_sense(d.omega)}"
@@ -125,8 +124,7 @@ def to_text(sol, cycle=None) -> str:
         from .cycle import summary
 
         out.append("Cycle")
-        conv = "" if usual else f" (from {d.reference}, {d.measured})"
-        out += [f"  {line}" for line in summary(cycle, d.file_angle, d.link, conv)]
+        out += [f"  {line}" for line in summary(cycle, d)]
     for w in sol.warnings:
         out.append(f"warning: {w}")
     return "\n".join(out) + "\n"

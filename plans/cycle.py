@@ -92,22 +92,21 @@ class Cycle:
     crank_range: tuple[float, float] | None = None  # rad: where it assembles, if not a full turn
 
 
-def summary(c: Cycle, deg=None, link: int = 1, convention: str = "") -> list[str]:
+def summary(c: Cycle, driver=None) -> list[str]:
     """The cycle in a few lines, as ``plans solve`` and ``plans cycle`` print it: the
     four-bar's Grashof class, the crank range where it cannot make a full turn, the notes,
     the stroke H or swing ψ, the extreme positions, θ and K.
 
-    ``deg``: a crank angle (rad from +x) in degrees in the caller's convention (the file's
-    for ``plans cycle`` and ``plans solve``); default counter-clockwise from +x.
-    ``convention``: said after the angles of the extreme positions and of the crank range
-    (" (from +y, cw)")."""
+    Angles are in the convention of ``driver`` (the file's), which they name (" (from +y,
+    cw)"); without one, counter-clockwise from +x."""
     from .fmt import angle, num
     from .report import no_full_turn
 
-    deg = deg or from_x
+    deg = driver.file_angle if driver else from_x
+    convention = driver.convention() if driver else ""
     lines = [f"four-bar: {c.grashof}"] if c.grashof else []
     if not c.full_turn:
-        lines.append(no_full_turn(c, "en", deg, link, convention))
+        lines.append(no_full_turn(c, "en", driver))
     lines += c.notes
     if c.stroke is not None and c.output is not None:
         if c.output.kind == "linear":

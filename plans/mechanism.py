@@ -116,13 +116,19 @@ class Driver:
         >>> d.at(math.radians(-240)), d.at(math.radians(-240.5), "ru")
         ('φ1 = 330° (from +y, cw)', 'φ1 = 330,5° (от +y, по часовой стрелке)')
         """
-        from .fmt import SENSE, angle
+        from .fmt import angle
 
-        text = f"φ1 = {angle(self.file_angle(phi), 6, lang)}°"
-        if (self.reference, self.measured) != ("+x", "ccw"):
-            sense = self.measured if lang == "en" else SENSE["ru"][int(SENSES[self.measured])]
-            text += f" ({'from' if lang == 'en' else 'от'} {self.reference}, {sense})"
-        return text
+        return f"φ1 = {angle(self.file_angle(phi), 6, lang)}°{self.convention(lang)}"
+
+    def convention(self, lang: str = "en") -> str:
+        """" (from +y, cw)" after an angle in the file's convention; nothing for the usual
+        one (from +x, counter-clockwise)."""
+        if (self.reference, self.measured) == ("+x", "ccw"):
+            return ""
+        from .fmt import SENSE
+
+        sense = self.measured if lang == "en" else SENSE["ru"][int(SENSES[self.measured])]
+        return f" ({'from' if lang == 'en' else 'от'} {self.reference}, {sense})"
 
 
 

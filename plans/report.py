@@ -162,7 +162,7 @@ def note(sol: Solution, lang: str = "en", cycle=None,
     if cycle is not None:
         out.append("")
         if not cycle.full_turn:
-            out.append(no_full_turn(cycle, lang, mech.driver.file_angle, d.link))
+            out.append(no_full_turn(cycle, lang, d))
         elif cycle.stroke is not None:
             if cycle.output.kind == "linear":
                 out.append(t["stroke"].format(p=cycle.output.point))
@@ -206,10 +206,10 @@ def warnings(sol: Solution, lang: str = "en") -> list[str]:
     return [flag_words(f, at, lang) for f in sol.flags]
 
 
-def no_full_turn(cycle, lang: str = "en", deg=None, link: int = 1, convention: str = "") -> str:
-    """The sentence for a crank that cannot make a full turn, with its range in degrees by
-    ``deg`` (a crank angle in rad → degrees in the convention wanted; default
-    counter-clockwise from +x).
+def no_full_turn(cycle, lang: str = "en", driver=None) -> str:
+    """The sentence for a crank that cannot make a full turn, with its range in the
+    convention of ``driver`` (:class:`plans.mechanism.Driver`), which it names; without
+    one, counter-clockwise from +x, and the input link is link 1.
 
     The range reads as the convention counts, from the smaller angle to the larger, the
     first one negative where it runs through 0°: "from −128.8° to 128.8°". The cycle's
@@ -217,15 +217,16 @@ def no_full_turn(cycle, lang: str = "en", deg=None, link: int = 1, convention: s
     "from 128.8° to 231.2°" named the very angles where it does not assemble.
     """
     lo, hi = cycle.crank_range
-    deg = deg or from_x
+    deg = driver.file_angle if driver else from_x
     a, b, mid = deg(lo), deg(hi), deg(0.5 * (lo + hi))
     if (mid - a) % 360.0 > (b - a) % 360.0:  # counted upwards, the range runs from b to a
         a, b = b, a
     b = float(angle(b, 12))  # 359.99999999999 is 0, as it is written
     a = a - 360.0 if a > b else a
     return T[lang]["noturn"].format(
-        d=link,
-        lo=num(a, 4, lang).replace("-", "−"), hi=angle(b, 4, lang), conv=convention,
+        d=driver.link if driver else 1,
+        lo=num(a, 4, lang).replace("-", "−"), hi=angle(b, 4, lang),
+        conv=driver.convention(lang) if driver else "",
         span=num(math.degrees(abs(hi - lo)), 4, lang),
     )
 

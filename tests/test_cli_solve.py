@@ -181,10 +181,10 @@ def test_the_crank_range_reads_upwards_in_the_files_convention(capsys, tmp_path,
         text = text.replace(a, b)
     path = tmp_path / "f.toml"
     path.write_text(text, "utf-8")
-    code, out, _ = run(capsys, "report", path)
-    assert code == 0 and f"assembles only for φ1 {words}, a swing of 257.6°" in out
-    # solve says the convention it is in, where it is not the usual one
+    # the note and solve say the convention they are in, where it is not the usual one
     conv = " (from +y, cw)" if "+y" in text else ""
+    code, out, _ = run(capsys, "report", path)
+    assert code == 0 and f"assembles only for φ1 {words}{conv}, a swing of 257.6°" in out
     code, out, _ = run(capsys, "solve", path)
     assert f"assembles only for φ1 {words}{conv}, a swing of 257.6°" in out
 
