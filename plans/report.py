@@ -221,7 +221,7 @@ def no_full_turn(cycle, lang: str = "en", driver=None) -> str:
     a, b, mid = deg(lo), deg(hi), deg(0.5 * (lo + hi))
     if (mid - a) % 360.0 > (b - a) % 360.0:  # counted upwards, the range runs from b to a
         a, b = b, a
-    b = float(angle(b, 12))  # 359.99999999999 is 0, as it is written
+    b = 0.0 if b > 360.0 - 1e-9 else b  # 359.99999999999 is 0, as angle() writes it
     a = a - 360.0 if a > b else a
     return T[lang]["noturn"].format(
         d=driver.link if driver else 1,
