@@ -230,11 +230,14 @@ def render(mech, args) -> tuple[str, str | None]:
     if getattr(args, "note", None):
         from plans.report import note
 
+        from drawing.scene import parse_markup
+
         sols = info["solutions"]
-        titles = [(label.replace("φ_1", "φ1"), sol) for tag, label, sol in sols]
+        # the plans' titles as plain text ("φ_1" is φ1); none for the given position
+        # alone ("g"), whose plans are the note's own sections
+        titles = [("".join(r.text for r in parse_markup(label)), sol) for _, label, sol in sols]
         # the structure and the plan of positions of the given position, drawn heavy
-        text = note(info["given"], args.lang, info["cycle"], titles if len(sols) > 1 or
-                    sols[0][0] != "g" else ())
+        text = note(info["given"], args.lang, info["cycle"], titles if sols[0][0] != "g" else ())
     return to_svg(scene, sheet, title=mech.name_in(args.lang)), text
 
 
