@@ -23,6 +23,7 @@ from plans.cli import (
     add_source,
     mechanism_from,
     number,
+    warn,
     write_output,
 )
 from plans.errors import InputError, PlansError
@@ -225,12 +226,11 @@ def render(mech, args) -> tuple[str, str | None]:
         print(f"plans sheet: note: {mech.source}: {note}", file=sys.stderr)
     for _, _, sol in info["solutions"]:  # a plan drawn near a dead point is said so
         for w in sol.warnings:
-            print(f"plans sheet: warning: {mech.source}: {w}", file=sys.stderr)
+            warn("sheet", w, mech.source)
     text = None
     if getattr(args, "note", None):
-        from plans.report import note
-
         from drawing.scene import parse_markup
+        from plans.report import note
 
         sols = info["solutions"]
         # the plans' titles as plain text ("φ_1" is φ1); none for the given position
@@ -303,7 +303,7 @@ def _batch(args) -> int:
                          "folder, e.g. -o sheets/")
     numbers = list(variant_numbers(args.table))  # a table that cannot be read: no folder made
     for line in other_rows_problems(None, args.table):  # rows with no number: no sheet
-        print(f"plans sheet: warning: {line}", file=sys.stderr)
+        warn("sheet", line)
     out.mkdir(parents=True, exist_ok=True)
     tty = sys.stderr.isatty()
     failed: list[tuple[int, str]] = []

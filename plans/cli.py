@@ -87,7 +87,7 @@ def mechanism_from(args):
         mech = variants.variant(int(text), args.table)
         if not getattr(args, "quiet_table", False):  # sheet --variant all reports each row
             for line in variants.other_rows_problems(int(text), args.table):
-                print(f"plans {args.command}: warning: {line}", file=sys.stderr)
+                warn(args.command, line)
     else:
         mech = mechanism.load(args.file)
     return mech if angle is None else mech.at_file_angle(angle)
@@ -235,6 +235,11 @@ def main(argv: list[str] | None = None) -> int:
             file=sys.stderr,
         )
         return EXIT_INTERNAL
+
+
+def warn(command: str, text: str, source: str = "") -> None:
+    """One warning line on stderr: "plans CMD: warning: [SOURCE: ]text"."""
+    print(f"plans {command}: warning: {source + ': ' if source else ''}{text}", file=sys.stderr)
 
 
 def write_output(path: str | None, text) -> None:

@@ -2,9 +2,7 @@
 
 from __future__ import annotations
 
-import sys
-
-from .cli import add_source, mechanism_from, write_output
+from .cli import add_source, mechanism_from, warn, write_output
 
 
 def configure(p) -> None:
@@ -24,5 +22,5 @@ def run(args) -> int:
     sol = solve_position(mech, solver=solver)
     write_output(args.output, note(sol, args.lang, analyse_cycle(mech, solver=solver)))
     for w in sol.warnings:
-        print(f"plans report: warning: {w}", file=sys.stderr)
+        warn("report", w)
     return 0

@@ -4,9 +4,8 @@ from __future__ import annotations
 
 import json
 import math
-import sys
 
-from .cli import add_source, mechanism_from, write_output
+from .cli import add_source, mechanism_from, warn, write_output
 from .fmt import angle, from_x, num
 
 
@@ -30,7 +29,7 @@ def run(args) -> int:
         text = to_text(sol, analyse_cycle(mech, solver=solver))
     write_output(args.output, text)
     for w in sol.warnings:
-        print(f"plans solve: warning: {w}", file=sys.stderr)
+        warn("solve", w)
     return 0
 
 
