@@ -300,10 +300,9 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
                     owner = m.point_link.get(a_) if a_ in m.coincident else m.point_link.get(b_)
                     w = abs(sol.omega[owner])
                     out.append(f"- {t['coriolis'].format(x=a_, y=b_, i=owner)}")
-                    carrier = next((sl.guide.link for sl in mech.sliders if sl.link == owner
-                                    and sl.guide.link not in (0, owner)), None)
-                    if carrier is not None:  # ω of a link that slides on a turning one
-                        out.append(f"  {t['same_w'].format(i=owner, k=carrier)}")
+                    s = mech.slider_of(owner)
+                    if s is not None and s.guide.link not in (0, owner):  # slides on a turning link
+                        out.append(f"  {t['same_w'].format(i=owner, k=s.guide.link)}")
                     out.append("  " + Step(f"{term.label} = 2·ω{owner}·V_{a_}{b_}",
                                            f"2·{n(w, 5)}·{n(rel, 5)}", n(2 * w * rel), unit).markdown()[2:])
                 seg = _component_segment(plan, term.label)
