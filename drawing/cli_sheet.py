@@ -37,6 +37,9 @@ FIELDS = {
 }  # fmt: skip
 
 
+#: how many positions of the cycle a sheet may draw
+POSITIONS = (3, 72)
+
 def configure(p) -> None:
     add_source(p, allow_all=True)
     p.add_argument("-o", "--output", metavar="OUT.svg",
@@ -44,7 +47,7 @@ def configure(p) -> None:
     p.add_argument("--format", default="A1", choices=["A0", "A1", "A2", "A3", "A4"],
                    help="sheet format (default A1)")
     p.add_argument("--lang", default="ru", choices=["ru", "en"], help="language of the sheet (default ru)")
-    p.add_argument("--positions", type=number(3, 72, integer=True), default=12, metavar="N",
+    p.add_argument("--positions", type=number(*POSITIONS, integer=True), default=12, metavar="N",
                    help="crank positions on the plan of positions (default 12)")
     p.add_argument("--plans", metavar="1,4",
                    help="position numbers (from an extreme position) to draw the plans for; "
@@ -100,15 +103,17 @@ def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
     from plans.plan import solve_position
     from plans.scales import choose_mu_l
 
-    if not 3 <= n_positions <= 72:
-        raise InputError("--positions", f"give 3 to 72 positions, got {n_positions}")
+    if not POSITIONS[0] <= n_positions <= POSITIONS[1]:  # called from Python, not argparse
+        raise InputError("--positions", f"give {POSITIONS[0]} to {POSITIONS[1]} positions, "
+                         f"got {n_positions}")
     sheet = Sheet(fmt)
     solver = Solver(mech)
     cycle = analyse_cycle(mech, n_positions, solver=solver)
     chosen = _parse_plans(None if plans is None else ",".join(map(str, plans)), len(cycle.positions))
     fixed = _views_of_any_size(mech, solver, cycle, lang)
     extent = fixed.shown.extent
-    # the plans' values, at a μl of this sheet's own positions (not solve's twelve)
+    # the plans, for their μv and μa: sheet_scales reads nothing else. μl is given only so
+    # that solve_position does not size a plan of positions of its own
     first = solve_position(mech, solver=solver, mu={"mu_l": mech.scales.get("mu_l") or choose_mu_l(extent)})
     # the largest views that fit: scales the file leaves free are chosen for the sheet
     error, tried = None, []
