@@ -30,7 +30,6 @@ both are then named.
 from __future__ import annotations
 
 import math
-import re
 from dataclasses import dataclass, field, replace
 
 from .errors import PlansError
@@ -47,6 +46,7 @@ from .measured import (  # noqa: F401  (the public names of the check live here)
     parse_tolerance,
     recorded_segments,
 )
+from .plan import plan_name
 from .replay import (  # noqa: F401
     Mistake,
     State,
@@ -156,7 +156,7 @@ def lookalikes(meas: Measurement, devs: tuple[Deviation, ...], st: State, tol: T
     for d in devs:  # a value in m/s written as its segment's length in mm
         it = d.item
         if it.name in names and it.kind == "value" and it.plan in MU_KEY and _far(d):
-            mu = meas.mu.get(MU_KEY[it.plan], 1.0)
+            mu = meas.mu[MU_KEY[it.plan]]
             if abs(mu - 1.0) > 1e-9 and _near(it.measured, abs(d.computed) / mu, tol):
                 out.append(Lookalike(it.name, "length", f"{it.start}{it.end}", abs(d.computed) / mu))
     # only an item far off its own length, matched closely: a measurement a little beyond
@@ -171,20 +171,24 @@ def lookalikes(meas: Measurement, devs: tuple[Deviation, ...], st: State, tol: T
                 out += [Lookalike(d.item.name, "swapped", e.item.name, abs(e.computed)),
                         Lookalike(e.item.name, "swapped", d.item.name, abs(d.computed))]
                 swapped |= {d.item.name, e.item.name}
+    sol = meas.solution
+    mech_name = {plan_name(n): n for n in sol.positions}  # a3 → A3
     for d in bad:
         it = d.item
         if it.name in swapped:
             continue
         mu = meas.mu[MU_KEY[it.plan]]
         value = abs(d.computed) * mu
-        component = any(re.fullmatch(r"[kn]\d*", x) for x in (it.start, it.end))
-        if abs(mu - 1.0) > 1e-9 and not component and _near(it.measured, value, tol):
+        plan = sol.velocity if it.plan == "velocity" else sol.acceleration
+        pole = plan.pole
+        names_ = [mech_name.get(x) for x in (it.end, it.start) if x != pole]
+        # a value for a segment between mechanism points (not a component's n or k), in
+        # m/s: 1 mm of drawing is μ of it
+        if abs(mu - 1.0) > 1e-9 and None not in names_ and _near(it.measured, value, tol, per_mm=mu):
             sym = "V" if it.plan == "velocity" else "a"
-            end = it.end.upper() if it.start in ("p", "π") else f"{it.end}{it.start}".upper()
-            out.append(Lookalike(it.name, "value", f"{sym}_{end}", value))
+            out.append(Lookalike(it.name, "value", f"{sym}_{''.join(names_)}", value))
             continue
         vals = st.values(it.plan)
-        pole = "p" if it.plan == "velocity" else "π"
         # a fixed point's letter stands at the pole (o, b): it is the pole, not another end
         ends = [x for x in vals if x == pole or abs(vals[x] - vals[pole]) > 1e-12 * mu]
         best = None
@@ -201,8 +205,11 @@ def lookalikes(meas: Measurement, devs: tuple[Deviation, ...], st: State, tol: T
     return tuple(out)
 
 
-def _near(measured: float, exact: float, tol: Tolerance, share: float = 1.0) -> bool:
-    return abs(measured - exact) <= share * tol.limit(exact)
+def _near(measured: float, exact: float, tol: Tolerance, share: float = 1.0,
+          per_mm: float = 1.0) -> bool:
+    """Within ``share`` of the tolerance, as :func:`compare` judges an item whose 1 mm of
+    drawing is ``per_mm`` of it."""
+    return abs(measured - exact) <= share * tol.limit(exact, per_mm) * (1 + 1e-9) + 1e-12
 
 
 def _far(d: Deviation) -> bool:

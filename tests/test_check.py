@@ -770,3 +770,14 @@ def test_the_header_credits_the_student_only_with_the_scale_factors_given(tmp_pa
     assert "Student's scale factors: μv = 0.02 (m/s)/mm\n" in out
     code, out, _ = run(capsys, "check", meas, "--json")
     assert json.loads(out)["scales"] == {"mu_v": 0.02}
+
+
+def test_a_value_look_alike_is_judged_at_the_plans_scale(tmp_path, press):
+    """pa3 = 1.9 had been offered as "V_A3 in m/s (2.772 m/s)": the match took the
+    tolerance of a length in mm, ±1 (m/s), where 1 mm of the plan is 0.05 m/s."""
+    seg = {k: press.segments[k] for k in ("pa3", "aa3", "pc", "cd", "pd")}
+    for written, offered in ((1.9, False), (2.77, True)):
+        seg["pa3"] = written
+        res = ck.check(ck.load(write_meas(tmp_path / "m.toml", PRESS, seg, MU_PRESS)))
+        got = [(lk.item, lk.kind, lk.other) for lk in res.diagnosis.lookalikes]
+        assert got == ([("pa3", "value", "V_A3")] if offered else []), written
