@@ -169,10 +169,11 @@ def conditioning(mech, motion) -> tuple[Status, ...]:
             if pivot is not None:
                 q = pivot[k]
                 figures[f"{label} pivot"] = q
-                if (err := on_pivot(g, q, at(k))) is not None:
-                    errors.append(str(err))
-                elif (warning := near_pivot(g, q, at(k))) is not None:
-                    warnings.append(warning)
+                if q < WARN_SINE:  # worded (and the angle with it) only where flagged
+                    if (err := on_pivot(g, q, at(k))) is not None:
+                        errors.append(str(err))
+                    else:
+                        warnings.append(near_pivot(g, q, at(k)))
         sines = [v for key, v in figures.items() if not key.endswith(" pivot")]
         if not sines:
             min_sine = 1.0
