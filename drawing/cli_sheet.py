@@ -296,7 +296,7 @@ def run(args) -> int:
 
 
 def _batch(args) -> int:
-    from plans.variants import other_rows_problems, variant_numbers
+    from plans.variants import read_table
 
     if not args.output or args.output == "-":
         raise InputError("-o", "with --variant all give a folder: -o DIR/")
@@ -306,8 +306,9 @@ def _batch(args) -> int:
     if not out.exists() and out.suffix and not args.output.endswith(("/", "\\")):
         raise InputError("-o", f"{args.output} looks like a file name: with --variant all give a "
                          "folder, e.g. -o sheets/")
-    numbers = list(variant_numbers(args.table))  # a table that cannot be read: no folder made
-    for line in other_rows_problems(None, args.table):  # rows with no number: no sheet
+    table = read_table(args.table)  # once, for every row
+    numbers = table.numbers  # a table that cannot be used: no folder made
+    for line in table.others(None):  # rows with no number: no sheet
         warn("sheet", line)
     out.mkdir(parents=True, exist_ok=True)
     tty = sys.stderr.isatty()
@@ -316,8 +317,7 @@ def _batch(args) -> int:
         if tty:
             print(f"\rsheet {i}/{len(numbers)}: variant {n} ", end="", file=sys.stderr, flush=True)
         a = copy.copy(args)
-        a.variant = str(n)
-        a.quiet_table = True  # a row's problems fail that row's sheet, said once below
+        a.variant, a.table = str(n), table
         a.output = str(out / f"variant-{n}.svg")
         a.png = str(out / f"variant-{n}.png") if args.png else None
         a.pdf = str(out / f"variant-{n}.pdf") if args.pdf else None

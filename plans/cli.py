@@ -73,20 +73,23 @@ def mechanism_from(args):
     if (args.file is None) == (args.variant is None):
         raise InputError("command line", "give a mechanism FILE or --variant N (one of them)")
     table = getattr(args, "table", None)
-    if table is not None and args.variant is None:
+    read = isinstance(table, variants.Table)  # sheet --variant all reads it once for all rows
+    path = table.path if read else table
+    if path is not None and args.variant is None:
         raise InputError("command line", "--table goes with --variant N: a mechanism FILE "
                                          "is read as it is")
-    if table == "":
+    if path == "":
         raise InputError("command line", "--table was given an empty file name")
-    claim_inputs(args, [p for p in (args.file, table) if p])
+    claim_inputs(args, [p for p in (args.file, path) if p])
     angle = getattr(args, "angle", None)  # a finite number within ±MAX_ABS: argparse checked
     if args.variant is not None:
         text = str(args.variant).strip()
         if not re.fullmatch(r"[+-]?\d{1,9}", text):
             raise InputError("command line", f"--variant: {_arg(args.variant, 30)} is not a variant number (0, 1, 2…)")
-        mech = variants.variant(int(text), args.table)
-        if not getattr(args, "quiet_table", False):  # sheet --variant all reports each row
-            for line in variants.other_rows_problems(int(text), args.table):
+        t = table if read else variants.read_table(table)
+        mech = t.variant(int(text))
+        if not read:  # --variant all says each row's problems with that row's sheet
+            for line in t.others(int(text)):
                 warn(args.command, line)
     else:
         mech = mechanism.load(args.file)
@@ -107,7 +110,7 @@ def claim_inputs(args, paths, outputs=OUTPUTS) -> None:
     """Remember files the command reads, so that :func:`write_output` never writes over
     them, and refuse at once (before anything is computed) an output given as one, or
     any output that could not be written (:func:`check_outputs`)."""
-    _INPUTS.extend(str(p) for p in paths)
+    _INPUTS.extend(p for p in map(str, paths) if p not in _INPUTS)  # a batch claims each row
     check_outputs(args, outputs)
 
 

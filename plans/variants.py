@@ -43,26 +43,64 @@ ROW_KEYS = {"n", "kind", *COLUMNS}
 def load_table(path: str | Path | None = None) -> tuple[str, dict[int, dict]]:
     """The rows of a variant table by their number ``n``; every problem is reported at
     once, each with its line."""
-    t = _read(path)
-    everything = Problems(t.source, t.text)
-    everything.items = [*t.problems.items, *t.loose.items,
-                        *(it for p in t.rows_problems.values() for it in p.items)]
-    everything.raise_if_any()
+    t = read_table(path)
+    t.problems.raise_if_any()
+    t.located(None, every=True).raise_if_any()
     return t.source, t.rows
 
 
-class _Table(NamedTuple):
+class Table(NamedTuple):
+    """A table read once, row by row: a problem of one numbered row is that row's own, so
+    that a typo in variant 3 does not stop variant 5 (nor the sheets of the others)."""
+
     source: str
     text: str
+    path: str | None  # the file, None for the built-in table
     problems: Problems  # of the table as a whole: no row can be read while there are any
     rows: dict[int, dict]  # the rows that can be read, by their number
-    rows_problems: dict[int, Problems]  # the problems of one numbered row, by its number
-    loose: Problems  # of rows without a number: no variant's own, so none stops
+    rows_problems: dict[int, list]  # the problems (key, message) of a numbered row, by number
+    loose: list  # the problems of rows without a number: no variant's own, so none stops
+
+    @property
+    def numbers(self) -> list[int]:
+        """Every numbered row, those with problems too: each fails on its own. An
+        InputError where the table cannot be used at all."""
+        self.problems.raise_if_any()
+        if not self.rows and not self.rows_problems:  # not one numbered row
+            self.located(None).raise_if_any()
+        return sorted(self.rows.keys() | self.rows_problems.keys())
+
+    def located(self, n: int | None, every: bool = False) -> Problems:
+        """The problems of the rows without a number and of row ``n`` (``every``: of every
+        row but ``n``), in one list, so that they are located and capped once."""
+        out = Problems(self.source, self.text)
+        out.items = list(self.loose) + [it for m, items in sorted(self.rows_problems.items())
+                                        if (m != n if every else m == n) for it in items]
+        return out
+
+    def variant(self, n: int) -> Mechanism:
+        """Row ``n`` as a mechanism; the problems of that row, or of the table as a whole,
+        are an InputError, those of other rows are not (:meth:`others`)."""
+        have = self.numbers
+        if n in self.rows_problems:
+            own = Problems(self.source, self.text)
+            own.items = list(self.rows_problems[n])
+            own.raise_if_any()
+        if n not in self.rows:
+            listed = ", ".join(map(str, have)) if len(have) <= 30 else f"{have[0]}…{have[-1]}, {len(have)} rows"
+            raise InputError(self.source, [*self.located(n, every=True).lines(),
+                                           f"variant {n} is not in the table (it has {listed})"])
+        return from_dict(variant_dict(self.rows[n]), f"{self.source}, variant {n}")
+
+    def others(self, n: int | None) -> list[str]:
+        """The problems of the rows other than ``n`` (None: of the rows without a number
+        only), located, for warnings."""
+        found = self.located(n, every=True) if n is not None else self.located(None)
+        return [f"{self.source}: {line}" for line in found.lines()]
 
 
-def _read(path: str | Path | None) -> _Table:
-    """A table read row by row: a problem of one numbered row is that row's own, so that a
-    typo in variant 3 does not stop variant 5 (nor the sheets of the others)."""
+def read_table(path: str | Path | None = None) -> Table:
+    """The table at ``path`` (None: the built-in Table 2), read once."""
     if path is None:
         text = resources.files("plans").joinpath("data/table2.toml").read_text("utf-8")
         source = BUILTIN
@@ -74,10 +112,14 @@ def _read(path: str | Path | None) -> _Table:
     loose = Problems(source, text)
     table: dict[int, dict] = {}
     bad: dict[int, Problems] = {}
+
+    def done() -> Table:
+        return Table(source, text, None if path is None else str(path), pr, table,
+                     {n: p.items for n, p in bad.items() if p}, loose.items)
     if "variant" not in data and {"frame", "driver", "links"} & data.keys():
         pr.add("", "is a mechanism file, not a variant table: give it as FILE, without "
                    "--variant and --table")
-        return _Table(source, text, pr, table, bad, loose)
+        return done()
     for key in data:
         if key not in TABLE_KEYS:
             pr.add(key_text(key), "unknown key — a table has [[variant]] rows (and title, name, source, note)")
@@ -87,10 +129,10 @@ def _read(path: str | Path | None) -> _Table:
     if not isinstance(rows, list) or not rows:
         got = "" if rows is None else f" (got {quote(rows)})"
         pr.add("variant", f"missing: the table needs [[variant]] rows with n, AB, BC, CD, AD, phi_deg, rpm{got}")
-        return _Table(source, text, pr, table, bad, loose)
+        return done()
     if len(rows) > MAX_ROWS:
         pr.add("variant", f"{len(rows)} rows: at most {MAX_ROWS}")
-        return _Table(source, text, pr, table, bad, loose)
+        return done()
     first: dict[int, int] = {}
     for i, row in enumerate(rows):
         where = f"variant[{i}]"
@@ -130,8 +172,7 @@ def _read(path: str | Path | None) -> _Table:
                 values[col] = read_number(row[col], cw, rp, positive=True, low=MIN_LINK, high=MAX_ABS)
         if not rp:
             table[n] = dict(row, kind=kind, **values)
-    bad = {n: p for n, p in bad.items() if p}
-    return _Table(source, text, pr, table, bad, loose)
+    return done()
 
 
 def variant_dict(row: dict) -> dict:
@@ -176,38 +217,11 @@ def variant_dict(row: dict) -> dict:
     }
 
 
-def variant(n: int, table: str | Path | None = None) -> Mechanism:
-    """Row ``n`` as a mechanism; the problems of that row, or of the table as a whole, are
-    an InputError, those of other rows are not (:func:`other_rows_problems`)."""
-    t = _read(table)
-    t.problems.raise_if_any()
-    if not t.rows and not t.rows_problems:  # not one numbered row: the table is unusable
-        t.loose.raise_if_any()
-    if n in t.rows_problems:
-        t.rows_problems[n].raise_if_any()
-    if n not in t.rows:
-        have = sorted(t.rows.keys() | t.rows_problems.keys())
-        listed = ", ".join(map(str, have)) if len(have) <= 30 else f"{have[0]}…{have[-1]}, {len(have)} rows"
-        raise InputError(t.source, [*t.loose.lines(),
-                                    *(line for p in t.rows_problems.values() for line in p.lines()),
-                                    f"variant {n} is not in the table (it has {listed})"])
-    return from_dict(variant_dict(t.rows[n]), f"{t.source}, variant {n}")
-
-
-def other_rows_problems(n: int | None, table: str | Path | None = None) -> list[str]:
-    """The problems of the table's rows other than ``n`` (None: of the rows without a
-    number only), located, for a warning."""
-    t = _read(table)
-    lines = [*t.loose.lines()]
-    if n is not None:
-        lines += [line for m, p in sorted(t.rows_problems.items()) if m != n for line in p.lines()]
-    return [f"{t.source}: {line}" for line in lines]
+def variant(n: int, table: str | Path | Table | None = None) -> Mechanism:
+    """Row ``n`` of the table (a path, None for the built-in one, or one already read)."""
+    return (table if isinstance(table, Table) else read_table(table)).variant(n)
 
 
 def variant_numbers(table: str | Path | None = None) -> list[int]:
-    """Every numbered row, those with problems too: each fails on its own."""
-    t = _read(table)
-    t.problems.raise_if_any()
-    if not t.rows and not t.rows_problems:
-        t.loose.raise_if_any()
-    return sorted(t.rows.keys() | t.rows_problems.keys())
+    """Every numbered row of the table, those with problems too."""
+    return read_table(table).numbers

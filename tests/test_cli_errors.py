@@ -731,3 +731,27 @@ def test_a_row_without_a_number_stops_no_variant(capsys, tmp_path):
     assert code == 0 and "variant 1" in out
     assert err == (f"plans solve: warning: {table}: line 11: variant[1].n: the variant number "
                    'must be a whole number 0…999999, got "four"\n')
+
+
+def test_a_table_is_read_once_and_its_other_rows_problems_are_capped(capsys, tmp_path, monkeypatch):
+    """The table had been read again for the other rows' warnings (a pipe gave nothing the
+    second time) and for every sheet of --variant all, and each row's problems were
+    located apart: 300 broken rows took 11 s and printed 299 lines."""
+    import plans.variants as variants
+
+    rows = [f"[[variant]]\nn = {n}\nAB = 0.06\nBC = 0.16\nCD = 0.12\n{'Ad' if n else 'AD'} = 0.11\n"
+            "phi_deg = 50\nrpm = 115\n" for n in range(300)]
+    table = tmp_path / "t.toml"
+    table.write_text("\n".join(rows), "utf-8")
+    reads = []
+    real = variants.read_toml
+    monkeypatch.setattr(variants, "read_toml", lambda *a, **k: reads.append(a) or real(*a, **k))
+    code, _, err = run(capsys, "solve", "--variant", "0", "--table", table)
+    assert code == 0 and len(reads) == 1
+    lines = err.splitlines()
+    assert len(lines) == 51 and lines[-1] == f"plans solve: warning: {table}: … and 399 more problems"
+    two = tmp_path / "two.toml"
+    two.write_text("\n".join(rows[:2]).replace("Ad =", "AD ="), "utf-8")
+    reads.clear()
+    code, _, _ = run(capsys, "sheet", "--variant", "all", "--table", two, "-o", f"{tmp_path}/s/")
+    assert code == 0 and len(reads) == 1
