@@ -214,12 +214,9 @@ def _cycle_summary(t: CycleTable) -> dict:
         "theta_deg": None if c.theta is None else math.degrees(c.theta),
         "K": c.K,
         "grashof": c.grashof,
-        # counter-clockwise from the first angle to the second, whichever way the crank
-        # turns: with a clockwise crank the cycle's own order named the arc that does not
-        # assemble
-        "crank_range_phi_deg": None if c.crank_range is None
-        else [from_x(x) for x in (c.crank_range if t.mechanism.driver.omega > 0
-                                  else c.crank_range[::-1])],
+        # counter-clockwise from the first angle to the second: in the crank's order a
+        # clockwise crank's range named the arc that does not assemble
+        "crank_range_phi_deg": None if c.ccw_range is None else [from_x(x) for x in c.ccw_range],
         "notes": list(c.notes),
     }
     return out

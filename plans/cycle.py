@@ -91,6 +91,16 @@ class Cycle:
     notes: tuple[str, ...]
     crank_range: tuple[float, float] | None = None  # rad: where it assembles, if not a full turn
 
+    @property
+    def ccw_range(self) -> tuple[float, float] | None:
+        """``crank_range`` counter-clockwise from its first angle to its second, whichever
+        way the crank turns (``crank_range`` runs in the crank's sense: numbers falling
+        for a clockwise crank)."""
+        if self.crank_range is None:
+            return None
+        lo, hi = self.crank_range
+        return (min(lo, hi), max(lo, hi))
+
 
 def summary(c: Cycle, driver=None) -> list[str]:
     """The cycle in a few lines, as ``plans solve`` and ``plans cycle`` print it: the

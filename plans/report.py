@@ -212,14 +212,14 @@ def no_full_turn(cycle, lang: str = "en", driver=None) -> str:
     one, counter-clockwise from +x, and the input link is link 1.
 
     The range reads as the convention counts, from the smaller angle to the larger, the
-    first one negative where it runs through 0°: "from −128.8° to 128.8°". The cycle's
-    own order follows the crank's sense; read in a convention that counts the other way,
-    "from 128.8° to 231.2°" named the very angles where it does not assemble.
+    first one negative where it runs through 0°: "from −128.8° to 128.8°" (in the crank's
+    own order, a clockwise crank's "from 128.8° to 231.2°" named the very angles where it
+    does not assemble).
     """
-    lo, hi = cycle.crank_range
+    lo, hi = cycle.ccw_range
     deg = driver.file_angle if driver else from_x
-    a, b, mid = deg(lo), deg(hi), deg(0.5 * (lo + hi))
-    if (mid - a) % 360.0 > (b - a) % 360.0:  # counted upwards, the range runs from b to a
+    a, b = deg(lo), deg(hi)
+    if driver is not None and driver.measured == "cw":  # that convention counts the other way
         a, b = b, a
     b = 0.0 if b > 360.0 - 1e-9 else b  # 359.99999999999 is 0, as angle() writes it
     a = a - 360.0 if a > b else a
