@@ -130,10 +130,8 @@ def _toml_problem(message: str, text: str) -> str:
         # line's own key
         at = re.match(r"[^\s=,{}\[\]\"']*", here[max(int(m.group("col")) - 1, 0):]).group()
         key = at if any(c in LOOKALIKES for c in at) else here.split("=", 1)[0]
-    cyrillic = [c for c in dict.fromkeys(key) if c in LOOKALIKES]
-    if cyrillic:  # "АВ = 0.06" typed on a Russian keyboard: a bare key is Latin only
-        hint = (f"the name has the Cyrillic letter{'s' if len(cyrillic) > 1 else ''} "
-                f"{', '.join(cyrillic)}: type {'them' if len(cyrillic) > 1 else 'it'} in Latin")
+    if type_in_latin(key):  # "АВ = 0.06" typed on a Russian keyboard: a bare key is Latin only
+        hint = f"the name has {type_in_latin(key)}"
     msg = one_line(msg[:1].lower() + msg[1:], 120)
     return f"{where}: TOML syntax error: {msg}" + (f" ({hint})" if hint else "")
 
@@ -288,6 +286,27 @@ def check_keys(table: dict, allowed: set[str], where: str, problems: Problems):
 LOOKALIKES = dict(zip("аеорсхукАВЕКМНОРСТХ", "aeopcxykABEKMHOPCTX", strict=True))
 
 
+def cyrillic_letters(text: str) -> str:
+    """"the Cyrillic letters р, а" (or "letter р") for the look-alikes in ``text``; "" where
+    it has none. The messages of every file kind say it with these words.
+
+    >>> cyrillic_letters("рa"), cyrillic_letters("pa")
+    ('the Cyrillic letter р', '')
+    """
+    found = [c for c in dict.fromkeys(text) if c in LOOKALIKES]
+    return f"the Cyrillic letter{'s' if len(found) > 1 else ''} {', '.join(found)}" if found else ""
+
+
+def type_in_latin(text: str) -> str:
+    """"the Cyrillic letters р, а: type them in Latin", or "" where ``text`` has none.
+
+    >>> type_in_latin("ро")
+    'the Cyrillic letters р, о: type them in Latin'
+    """
+    letters = cyrillic_letters(text)
+    return f"{letters}: type {'them' if ',' in letters else 'it'} in Latin" if letters else ""
+
+
 def close_match(key: Any, allowed, cutoff: float = 0.6) -> str:
     """'did you mean "AD"? ' for a key close to one of ``allowed``, else ''; a key typed
     with Cyrillic look-alike letters says so.
@@ -298,9 +317,7 @@ def close_match(key: Any, allowed, cutoff: float = 0.6) -> str:
     key = str(key)[:40]
     latin = "".join(LOOKALIKES.get(c, c) for c in key)
     if latin != key and latin in allowed:
-        found = [c for c in dict.fromkeys(key) if c in LOOKALIKES]
-        return (f'did you mean "{latin}" (typed with the Cyrillic letter'
-                f'{"s" if len(found) > 1 else ""} {", ".join(found)})? ')
+        return f'did you mean "{latin}" (typed with {cyrillic_letters(key)})? '
     same = sorted(a for a in allowed if a.lower() == key.lower())
     close = same or difflib.get_close_matches(key, sorted(allowed), n=1, cutoff=cutoff)
     return f'did you mean "{close[0]}"? ' if close else ""

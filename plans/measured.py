@@ -16,13 +16,13 @@ from typing import Any
 
 from .errors import InputError, PlansError
 from .fileformat import (
-    LOOKALIKES,
     Problems,
     check_keys,
     key_text,
     quote,
     read_number,
     read_toml,
+    type_in_latin,
 )
 from .mechanism import Mechanism
 from .plan import Plan, Solution, plan_name, solve_position
@@ -429,15 +429,9 @@ class _Names:
         return None
 
 
-#: Cyrillic letters that look like Latin ones on a plan (р as p, а as a …)
-
-
-
 def _cyrillic(name: str) -> str:
     """', with the Cyrillic letters р, а: type them in Latin' where ``name`` has some."""
-    found = [c for c in dict.fromkeys(name) if c in LOOKALIKES]
-    return f", with the Cyrillic letter{'s' if len(found) > 1 else ''} {', '.join(found)}: type " \
-           f"{'them' if len(found) > 1 else 'it'} in Latin" if found else ""
+    return f", with {type_in_latin(name)}" if type_in_latin(name) else ""
 
 
 def _magnitude_sense(value, key, problems, *, allow_sense):
