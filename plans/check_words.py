@@ -103,12 +103,15 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
                 f"draw the plan of positions with the given assembly of the group ({g('point')} "
                 "on the other side), then redraw the plans")
     if k in ("scale", "scale-swapped"):
+        from .measured import MU_KEY, MU_SYMBOL
+        from .report import UNITS
+
         facs = dict(mk.info)
         fits = facs.pop("fits", None)
         parts = []
         for plan, f in facs.items():
             f = float(f)
-            mu = {"velocity": "μv", "acceleration": "μa", "positions": "μl"}[plan]
+            mu = MU_SYMBOL[plan]
             if ru:
                 parts.append(f"{PLAN_WORDS[lang][plan]} в {_fnum(f, lang)} раза крупнее "
                              f"(при указанном {mu})" if f > 1 else
@@ -122,9 +125,7 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
         what = "; ".join(parts)
         if fits is not None:
             (plan,) = facs
-            mu, unit = {"velocity": ("μv", "(m/s)/mm" if not ru else "(м/с)/мм"),
-                        "acceleration": ("μa", "(m/s²)/mm" if not ru else "(м/с²)/мм"),
-                        "positions": ("μl", "m/mm" if not ru else "м/мм")}[plan]
+            mu, unit = MU_SYMBOL[plan], UNITS[lang][MU_KEY[plan]]
             what += (f": его отрезки соответствуют {mu} = {_fnum(float(fits), lang)} {unit}" if ru
                      else f": its segments fit {mu} = {_fnum(float(fits), lang)} {unit}")
             if float(fits) == 1.0 and plan != "positions":  # values in SI written as lengths

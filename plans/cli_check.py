@@ -201,9 +201,11 @@ def to_text(result, lang: str = "en") -> str:
     out.append(f"{w['mech']}: {mech.name_in(lang)} ({mech.source}), "
                f"φ1 = {angle(math.degrees(sol.phi), 4, lang)}° {w['from_x']}")
     mu = meas.mu
-    given = [f"{sym} = {num(mu[key], 4, lang)} {_u(unit, lang)}" for key, sym, unit in
-             (("mu_l", "μl", "m/mm"), ("mu_v", "μv", "(m/s)/mm"), ("mu_a", "μa", "(m/s²)/mm"))
-             if key in meas.given]
+    from .measured import MU_KEY, MU_SYMBOL
+    from .report import UNITS
+
+    given = [f"{MU_SYMBOL[plan]} = {num(mu[key], 4, lang)} {UNITS[lang][key]}"
+             for plan, key in MU_KEY.items() if key in meas.given]
     out.append(f"{w['scales']}: {', '.join(given) if given else w['none_given']}")
     out.append(f"{w['tol']}: {result.tolerance.describe(lang)}")
     groups = [("positions", lambda it: it.kind == "segment" and it.plan == "positions"),
@@ -265,18 +267,19 @@ def diagnosis_lines(result, lang: str = "en") -> list[str]:
 def lookalike_lines(result, lang: str = "en") -> list[str]:
     """One line per item beyond tolerance that no mistake explains but that matches
     something else (:func:`plans.check.lookalikes`)."""
+    from .measured import MU_SYMBOL
+
     w = WORDS[lang]
     measured = {d.item.name: d.item for d in result.deviations}
     out = []
     for lk in result.diagnosis.lookalikes:
         it = measured[lk.item]
         if lk.kind in ("value", "length"):
-            si = "m/s" if it.plan == "velocity" else "m/s²"
-            unit = {"m/s": "м/с", "m/s²": "м/с²"}[si] if lang == "ru" else si
+            unit = _u("m/s" if it.plan == "velocity" else "m/s²", lang)
             exact = num(lk.exact, 4, lang) + (f" {unit}" if lk.kind == "value" else "")
             text = w[f"like_{lk.kind}"].format(
                 item=lk.item, m=num(it.measured, 4, lang), other=lk.other, unit=unit,
-                exact=exact, mu="μv" if it.plan == "velocity" else "μa")
+                exact=exact, mu=MU_SYMBOL[it.plan])
         else:
             text = w[f"like_{lk.kind}"].format(item=lk.item, m=num(it.measured, 4, lang),
                                                 other=lk.other, exact=num(lk.exact, 4, lang))

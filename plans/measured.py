@@ -29,6 +29,8 @@ from .plan import Plan, Solution, plan_name, solve_position
 
 PLANS = ("positions", "velocity", "acceleration")
 MU_KEY = {"positions": "mu_l", "velocity": "mu_v", "acceleration": "mu_a"}
+#: the scale factor of each plan as the note writes it
+MU_SYMBOL = {"positions": "μl", "velocity": "μv", "acceleration": "μa"}
 SENSE_WORDS = {"ccw": 1, "cw": -1, "против": 1, "по": -1}
 
 
