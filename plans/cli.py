@@ -106,20 +106,20 @@ OUTPUTS = (("-o", "output"), ("--svg", "svg"), ("--note", "note"), ("--png", "pn
            ("--pdf", "pdf"), ("--chart", "chart"))
 
 
-def claim_inputs(args, paths, outputs=OUTPUTS) -> None:
+def claim_inputs(args, paths) -> None:
     """Remember files the command reads, so that :func:`write_output` never writes over
     them, and refuse at once (before anything is computed) an output given as one, or
     any output that could not be written (:func:`check_outputs`)."""
     _INPUTS.extend(p for p in map(str, paths) if p not in _INPUTS)  # a batch claims each row
-    check_outputs(args, outputs)
+    check_outputs(args)
 
 
-def check_outputs(args, outputs=OUTPUTS) -> None:
+def check_outputs(args) -> None:
     """Refuse, before anything is computed or written, an output that could not be
     written (a folder, a folder that does not exist, an input) and two outputs that
     are one file, or both stdout: a run writes all its outputs or none."""
     seen: list[tuple[str, str]] = []
-    for opt, attr in outputs:
+    for opt, attr in OUTPUTS:
         if not hasattr(args, attr):
             continue
         out = getattr(args, attr)

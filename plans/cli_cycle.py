@@ -231,11 +231,6 @@ def _numbering(t: CycleTable) -> str:
     return "from the given crank position (the output has no two extreme positions)"
 
 
-def to_json(t: CycleTable) -> dict:
-    """The whole table as one JSON object (``--json`` writes the same text row by row)."""
-    return dict(_json_head(t), rows=list(_json_rows(t)))
-
-
 def json_chunks(t: CycleTable):
     """The JSON text of :func:`to_json` in pieces: the head, then one row per line, so
     that 10⁵ rows are written as they are made."""
@@ -323,10 +318,6 @@ def _csv_header(t: CycleTable) -> list[str]:
         head += [f"omega{i}", f"epsilon{i}"]
     head += ["warnings", "errors"]
     return head
-
-
-def to_csv(t: CycleTable) -> str:
-    return "".join(csv_chunks(t))
 
 
 def csv_chunks(t: CycleTable, rows: int = 1000):

@@ -197,13 +197,21 @@ def test_positions_out_of_range(capsys, n):
     assert f"argument --positions: '{n}' is not a whole number from 1 to 100000" in err
 
 
-def test_json_is_written_row_by_row_as_the_one_object_it_stands_for():
-    from plans.cli_cycle import compute, json_chunks, to_json
+def test_json_is_written_row_by_row_as_one_object():
+    """The head, then one position per line, then the tail: one JSON object whatever the
+    number of rows, each row on its own line."""
+    from plans.cli_cycle import compute, json_chunks
 
-    t = compute(mechanism.load(PRESS), 7)
-    chunks = list(json_chunks(t))
-    assert len(chunks) == 7 + 2  # the head, a row each, the tail
-    assert json.loads("".join(chunks)) == json.loads(json.dumps(to_json(t)))
+    for n in (1, 2, 7):
+        chunks = list(json_chunks(compute(mechanism.load(PRESS), n)))
+        assert len(chunks) == n + 2  # the head, a row each, the tail
+        text = "".join(chunks)
+        data = json.loads(text)
+        assert list(data) == ["mechanism", "positions", "numbering", "omega1", "cycle",
+                              "point_names", "link_ids", "rows"]
+        assert data["positions"] == n and [r["index"] for r in data["rows"]] == list(range(n))
+        rows = [line for line in text.splitlines() if line.startswith('  {"index": ')]
+        assert len(rows) == n
 
 
 def test_one_position_and_json_is_strict(capsys):
