@@ -379,13 +379,13 @@ def place_labels(
     for req in requests:
         chosen: tuple[Text, Polygon] | None = None
         fallback: tuple[float, Text, Polygon] | None = None
+        spots = [(anchor, direction) for anchor in (req.anchor, *req.also)
+                 for direction in _directions(req.prefer)]
+        boxes = np.asarray(placed, dtype=object)  # the labels before this one, once
+        others = np.asarray([a != req.anchor for a in placed_at], dtype=bool)
         for ring in rings:
             # clear of everything wins; else the spot crossing the fewest thin lines
             relaxed: tuple[int, Text, Polygon] | None = None
-            spots = [(anchor, direction) for anchor in (req.anchor, *req.also)
-                     for direction in _directions(req.prefer)]
-            boxes = np.asarray(placed, dtype=object)  # the labels before this one, once
-            others = np.asarray([a != req.anchor for a in placed_at], dtype=bool)
             for gap in ring:
                 for anchor, direction in spots:
                     text = _candidate(req, direction, gap, anchor)
