@@ -248,9 +248,12 @@ _POLE_SOURCE = Source("pole")
 
 #: a plan's segment shorter than this share of its longest vector is 0: rounding left by
 #: two equal vectors subtracted (a relative acceleration that is 0, a translating link's
-#: points) is a few 1e-16 of them, never a length to draw, measure or print as 4e-16. A
-#: real small value (a^n = V²/l near an extreme position, 1e-12 of the plan) stays.
-NOISE = 1e-14
+#: points) is a few 1e-16 of them, and at an extreme position, after a group's fifty
+#: operations, up to 1.2e-14 (variant 3's rocker at rest: pc = 1.6e-12 mm of 137 mm),
+#: never a length to draw, measure or print. It is below what the engine can resolve
+#: (2.6e-15 at worst against the 30-digit reference, a few ulps per step). A real small
+#: value (a^n = V²/l 1e-4° from the press's extreme position, 4.5e-13 of the plan) stays.
+NOISE = 1e-13
 
 
 class _Recipe(NamedTuple):

@@ -262,3 +262,19 @@ def test_a_real_small_segment_is_not_taken_for_rounding():
     l_ab = abs(sol.positions["A3"] - sol.positions["B"])
     assert 0 < v < 1e-5
     assert sol.acceleration.segments["bn1"] == pytest.approx(v * v / l_ab / sol.acceleration.mu, rel=1e-6)
+
+
+def test_a_rocker_at_rest_has_no_velocity_left_on_its_plan():
+    """Variant 3 at its cycle's position 0, an extreme position: the rocker is at rest,
+    and pc, dc had read 1.599e-12 mm on the sheet's table (1.2e-14 of the plan's longest
+    vector, just above the 1e-14 rounding was taken to reach)."""
+    from plans.cycle import analyse_cycle
+    from plans.kinematics import Solver
+    from plans.variants import variant
+
+    mech = variant(3)
+    solver = Solver(mech)
+    phi = analyse_cycle(mech, solver=solver).positions[0]
+    sol = solve_position(mech, phi, solver=solver)
+    assert sol.velocity.segments["pc"] == 0.0 and sol.omega[3] == 0.0
+    assert sol.velocity.segments["pb"] > 50  # the crank pin is not at rest
