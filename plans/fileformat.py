@@ -234,9 +234,12 @@ def read_number(value: Any, where: str, problems: Problems, *, positive=False, d
         hint = ""
         if isinstance(value, str):
             bare = re.sub(r"\s*(°|deg|rad/s|rpm|mm|m)$", "", value.strip()[:40])
+            point = bare.replace(",", ".") if re.fullmatch(r"-?\d+,\d+", bare) else bare
             try:
-                float(bare)
-                hint = f": write {bare} without quotes" + (" and units" if bare != value.strip() else "")
+                float(point)
+                hint = (f": write {point} without quotes"
+                        + (" and units" if bare != value.strip() else "")
+                        + (", with a decimal point" if point != bare else ""))
             except ValueError:
                 pass
         problems.add(where, f"must be a number, got {quote(value)}{hint}")

@@ -755,3 +755,12 @@ def test_a_table_is_read_once_and_its_other_rows_problems_are_capped(capsys, tmp
     reads.clear()
     code, _, _ = run(capsys, "sheet", "--variant", "all", "--table", two, "-o", f"{tmp_path}/s/")
     assert code == 0 and len(reads) == 1
+
+
+def test_a_decimal_comma_in_quotes_is_told_to_take_a_point(capsys, tmp_path):
+    """A Russian keyboard writes "0,05": the message said only "must be a number"."""
+    meas = tmp_path / "m.toml"
+    meas.write_text(f'mechanism = "{PRESS}"\n[scales]\nmu_v = "0,05"\n[segments]\npa3 = 55\n', "utf-8")
+    code, _, err = run(capsys, "check", meas)
+    assert code == 2 and err == (f'plans check: {meas}: line 3: scales.mu_v: must be a number, '
+                                 'got "0,05": write 0.05 without quotes, with a decimal point\n')
