@@ -174,7 +174,7 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     states = motion.links
     links = solver.cache.get("links") or solver.cache.setdefault("links", sorted(mech.links))
     omega = _rounded_off({i: states[i].omega for i in links}, 0.0)
-    big_w = max(map(abs, omega.values()), default=0.0)
+    big_w = abs(mech.driver.omega)  # the crank's ω, the largest there is or near it
     epsilon = _rounded_off({i: states[i].epsilon for i in links}, big_w * big_w)
     return frozen(
         Solution,
@@ -191,6 +191,8 @@ def _rounded_off(values: dict[int, float], floor: float) -> dict[int, float]:
     (or of ``floor``, ω1² for ε), as a plan's segments are. A rocker at rest at an extreme
     position has ω 3.9e-14 rad/s, not a sense of turning."""
     tiny = NOISE * max(max(map(abs, values.values()), default=0.0), floor)
+    if all(abs(v) > tiny or v == 0.0 for v in values.values()):  # nearly always: as it is
+        return values
     return {i: (v if abs(v) > tiny else 0.0) for i, v in values.items()}
 
 
