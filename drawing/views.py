@@ -660,7 +660,7 @@ def diagrams_view(mech, cycle, lang: str = "ru", width: float = 180.0, height: f
     phi0 = cycle.positions[0]
     phis = phi0 + sense * np.linspace(0.0, 2 * math.pi, 361)
     m = solver.solve(phis)
-    if not np.asarray(m.valid).all():
+    if not m.placed.all():
         return None
     s = np.asarray(out.value(m, mech), dtype=float)
     if out.kind == "angular":
@@ -670,6 +670,12 @@ def diagrams_view(mech, cycle, lang: str = "ru", width: float = 180.0, height: f
     s = flip * s
     v = flip * np.asarray(out.rate(m, mech, "velocity"), dtype=float)
     a = flip * np.asarray(out.rate(m, mech, "acceleration"), dtype=float)
+    ok = np.asarray(m.valid, dtype=bool) & (m.min_sine >= 1e-6)
+    if not ok.all():  # change points: the plans are singular there, so the smooth
+        # motion's rates are taken as the mean of theirs 1e-6 rad on either side
+        sides = [solver.solve(phis[~ok] + d) for d in (-1e-6, 1e-6)]
+        v[~ok] = flip * np.mean([out.rate(x, mech, "velocity") for x in sides], axis=0)
+        a[~ok] = flip * np.mean([out.rate(x, mech, "acceleration") for x in sides], axis=0)
     linear = out.kind == "linear"
     w = WORDS[lang]
     units = (w["m"], w["ms"], w["ms2"]) if linear else (w["rad"], w["rads"], w["rads2"])

@@ -1,18 +1,108 @@
 """Assembly branches from human-readable hints: "above BD", "right of C".
 
 Each group with two assemblies gets a sign, chosen at the file's crank angle by the hints
-and then kept over the whole cycle, so the branch stays continuous.
+and then kept over the whole cycle, so the branch stays continuous; at a change point,
+where the two assemblies meet, the sign flips so that the motion stays smooth
+(:func:`change_points`).
 """
 
 from __future__ import annotations
 
+import math
+
+import numpy as np
+
 from .errors import AssemblyError, InputError, SingularPlanError
 from .geometry import cross
 from .mechanism import Mechanism
-from .records import coincident_name
+from .records import IN_LINE, coincident_name
 from .structure import DyadKind, Structure
 
 RELATIONS = ("above", "below", "left of", "right of")
+
+#: samples of the turn searched for change points
+CHANGE_SAMPLES = 3600
+
+
+def change_points(sv) -> tuple[tuple[tuple[float, ...], ...], tuple[tuple[float, ...], ...]]:
+    """Per group of ``sv``, the change points of its motion: counter-clockwise turns of
+    the crank from ``sv.branch_at`` (rad, in [0, 2π), ascending) where the group's
+    links come in line and part again on the same side without ever failing to close;
+    and per group those where its sign flips.
+
+    There the group's margin (how far inside its limit it is) touches 0 and rises
+    again, and its two assemblies meet: kept, the sign would fold the linkage into the
+    other assembly with a kink in its motion (a parallelogram into an antiparallelogram,
+    an isosceles crank-slider's slider to rest on the crank's pivot). The smooth motion
+    goes on with the other sign. A minimum of the margin on a grid of the turn is refined
+    to 1e-12 rad and taken when it lies within :data:`plans.records.IN_LINE` of 0; one below
+    that is a dead point of a linkage that cannot turn there.
+
+    Where a group meets an odd number of them a turn, its smooth motion repeats only
+    after two turns (a kite's, a crank-slider's with its rod as long as crank and offset
+    together): it keeps its sign, and folds back at them, as long as that is a
+    continuous motion. A slotted link whose pivot is on the crank circle would turn
+    over by 180° at once as the block passes the pivot: it follows its smooth motion,
+    half the crank's turn, with the seam of the two turns at ``branch_at``.
+    """
+    n = len(sv.structure.groups)
+    found: list[tuple[float, ...]] = []
+    flips: list[tuple[float, ...]] = []
+    grid = sv.branch_at + np.linspace(0.0, 2 * math.pi, CHANGE_SAMPLES, endpoint=False)
+    step = 2 * math.pi / CHANGE_SAMPLES
+    for i, g in enumerate(sv.structure.groups):
+        if g.kind in (DyadKind.PRP, DyadKind.RPP):  # no assemblies to meet
+            found.append(())
+            flips.append(())
+            continue
+        trial = sv.with_flips(tuple(flips) + ((),) * (n - i))
+        with np.errstate(all="ignore"):
+            margin = trial.solve(grid).groups[i].margin
+        low = (margin <= np.roll(margin, 1)) & (margin < np.roll(margin, -1)) & (margin < 1e-3)
+        points = []
+        for k in np.flatnonzero(low):
+            at, least = _lowest(trial, i, grid[k] - step, grid[k] + step)
+            if abs(least) <= IN_LINE:
+                points.append((at - sv.branch_at) % (2 * math.pi))
+        points.sort()
+        found.append(tuple(points))
+        flips.append(tuple(points) if len(points) % 2 == 0 or _jumps(trial, i, points) else ())
+    return tuple(found), tuple(flips)
+
+
+def _jumps(sv, i: int, points: list[float]) -> bool:
+    """Whether a link of group ``i`` turns over (by more than a degree) within 1e-6 rad of
+    one of its change points when it keeps its sign."""
+    g = sv.structure.groups[i]
+    near = np.array([[p - 1e-6, p + 1e-6] for p in points]).ravel() + sv.branch_at
+    with np.errstate(all="ignore"):
+        m = sv.solve(near)
+    for lid in (g.a, g.b):
+        rot = m.links[lid].rotor
+        if np.any(np.abs(rot[1::2] - rot[::2]) > math.radians(1)):
+            return True
+    return False
+
+
+def _lowest(sv, i: int, lo: float, hi: float) -> tuple[float, float]:
+    """Where in [lo, hi] group ``i``'s margin is least, and that margin: 33 samples,
+    narrowed eight times round the least (to about 1e-12 rad of the turn).
+
+    A margin that touches 0 as a square (links coming in line) is flat to rounding for
+    some 1e-8 rad round its least, where the samples pick any point: the place is then
+    the vertex of the parabola through the margins 1e-5 rad either side."""
+    with np.errstate(all="ignore"):
+        for _ in range(8):
+            xs = np.linspace(lo, hi, 33)
+            margin = sv.solve(xs).groups[i].margin
+            j = int(np.argmin(margin))
+            lo, hi = xs[max(j - 1, 0)], xs[min(j + 1, 32)]
+        at, h = float(xs[j]), 1e-5
+        left, mid, right = sv.solve(np.array([at - h, at, at + h])).groups[i].margin
+    bend = left - 2 * mid + right
+    if bend > 0 and abs(left - right) < 2 * bend:  # the vertex lies within h of ``at``
+        at += h * (left - right) / (2 * bend)
+    return at, float(margin[j])
 
 
 def parse_hint(hint: str, names: list[str]) -> tuple[str, list[str]]:
@@ -66,9 +156,10 @@ def hint_holds(rel: str, X: complex, refs: list[complex]) -> bool:
     return side if rel == "left of" else not side
 
 
-def choose_branches(mech: Mechanism, structure: Structure) -> tuple[int, ...]:
+def choose_branches(mech: Mechanism, structure: Structure) -> tuple[tuple[int, ...], float]:
     """Turn the file's hints into a sign per group, evaluated at the file's crank angle
-    (``mech.hints_at`` when the crank was turned from it, :meth:`Mechanism.at_file_angle`).
+    (``mech.hints_at`` when the crank was turned from it, :meth:`Mechanism.at_file_angle`);
+    returns the signs and the crank angle they were read at (rad from +x).
 
     The sign (which side of the line of centres, which way along the guide) is then kept
     over the whole cycle, so the branch stays continuous: ``--angle 180`` gives the
@@ -79,10 +170,10 @@ def choose_branches(mech: Mechanism, structure: Structure) -> tuple[int, ...]:
     at = mech.hints_at
     if at is not None and at != mech.driver.phi:
         try:
-            return _choose(mech.with_phi(at), structure)
+            return _choose(mech.with_phi(at), structure), at
         except (AssemblyError, SingularPlanError):
             pass
-    return _choose(mech, structure)
+    return _choose(mech, structure), mech.driver.phi
 
 
 def _choose(mech: Mechanism, structure: Structure) -> tuple[int, ...]:
@@ -106,7 +197,8 @@ def _choose(mech: Mechanism, structure: Structure) -> tuple[int, ...]:
         ok = []
         positions = {}
         for sigma in (1, -1):
-            trial = Solver(mech, structure, tuple(sigmas) + (sigma,) + (1,) * (len(structure.groups) - i - 1))
+            trial = Solver(mech, structure, tuple(sigmas) + (sigma,) + (1,) * (len(structure.groups) - i - 1),
+                           ((),) * len(structure.groups))
             motion = trial._solve_upto(i + 1)
             positions[sigma] = motion
             for k, (_, refs) in mine.items():

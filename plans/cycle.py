@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .errors import PlansError
-from .fmt import from_x
+from .fmt import angle, from_x
 from .kinematics import Motion, Solver
 from .mechanism import Mechanism
 from .structure import DyadKind
@@ -90,6 +90,9 @@ class Cycle:
     grashof: str | None
     notes: tuple[str, ...]
     crank_range: tuple[float, float] | None = None  # rad: where it assembles, if not a full turn
+    #: crank angles (rad from +x) of the change points the motion passes smoothly
+    #: (:func:`plans.branches.change_points`), in the order the crank meets them
+    change_points: tuple[float, ...] = ()
 
     @property
     def ccw_range(self) -> tuple[float, float] | None:
@@ -153,7 +156,22 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
     valid = m.valid
     notes: list[str] = []
     grashof = _grashof(mech, solver)
-    full = bool(valid.all())
+    changes, near = _change_points(solver, grid)
+    if changes:
+        deg = mech.driver.file_angle
+        odd = [bool(f) for c, f in zip(solver.changes, solver.flips, strict=True) if len(c) % 2]
+        notes.append(
+            "change points at φ1 = " + ", ".join(f"{angle(deg(x))}°" for x in changes)
+            + mech.driver.convention() + ": the links of a group lie in line there, where "
+            + ("its two assemblies meet; the cycle keeps the assembly, so the linkage "
+               "folds back there (its smooth motion would repeat only after two turns)"
+               if odd and not any(odd) else
+               "its two assemblies meet; the cycle follows the smooth motion, which "
+               f"repeats only after two turns: its two turns meet at φ1 = "
+               f"{angle(deg(solver.branch_at))}°" if odd else
+               "it could fold into its other assembly; the cycle follows the smooth motion")
+            + " (the plans there are singular)")
+    full = bool((valid | (near & m.placed)).all())
     out = find_output(mech)
     if not full:  # the range is worded where it is shown (report.no_full_turn)
         if not valid[0]:  # the given angle itself does not close: say why, as solve does
@@ -166,10 +184,13 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
     stroke = theta = K = None
     start = phi0
     if out is not None:
-        sgn = _signs(out.rate(m, mech))
+        sgn = _signs(np.where(near, 0.0, out.rate(m, mech)))  # no sign where it is singular
         idx = np.nonzero(sgn != np.roll(sgn, -1))[0]
         for i in idx:
             a, b = grid[i], grid[(i + 1) % samples] if i + 1 < samples else grid[0] + sense * TWO_PI
+            if near[(i + 1) % samples]:  # it turns back at a change point: a fold
+                extremes.append(min(changes, key=lambda x: abs((x - b + math.pi) % TWO_PI - math.pi)))
+                continue
             extremes.append(_refine(solver, out, mech, a, b))
         if len(extremes) == 2:
             with np.errstate(all="ignore"):
@@ -190,7 +211,24 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
         elif extremes:
             notes.append(f"the output {out.point} has {len(extremes)} turning points per turn")
     pos = tuple(start + sense * TWO_PI * i / n_positions for i in range(n_positions))
-    return Cycle(out, True, tuple(extremes), stroke, theta, K, pos, grashof, tuple(notes))
+    return Cycle(out, True, tuple(extremes), stroke, theta, K, pos, grashof, tuple(notes),
+                 change_points=changes)
+
+
+def _change_points(solver: Solver, grid: np.ndarray) -> tuple[tuple[float, ...], np.ndarray]:
+    """The change points of the solver's motion as crank angles (rad from +x) in the order
+    the crank meets them from ``grid[0]``, and the samples of ``grid`` within a step of
+    one (where a group may fail to close by rounding, and the plans are singular)."""
+    step = abs(grid[1] - grid[0])
+    turn = (grid - solver.branch_at) % TWO_PI
+    near = np.zeros(grid.shape, dtype=bool)
+    offsets = sorted({f for points in solver.changes for f in points})
+    for f in offsets:
+        near |= np.abs((turn - f + math.pi) % TWO_PI - math.pi) <= step
+    angles = [solver.branch_at + f for f in offsets]
+    sense = 1.0 if solver.mech.driver.omega > 0 else -1.0
+    angles.sort(key=lambda x: (sense * (x - grid[0])) % TWO_PI)
+    return tuple(angles), near
 
 
 def _signs(rate: np.ndarray) -> np.ndarray:
@@ -271,7 +309,7 @@ def grashof_class(a: float, b: float, c: float, d: float) -> str:
     lhs, rhs = s + l, p + q
     tag = f"{lhs:.6g} {'≤' if lhs <= rhs else '>'} {rhs:.6g}"
     if math.isclose(lhs, rhs, rel_tol=1e-12):
-        return f"change-point linkage (Grashof equality: {tag}): it folds at two positions"
+        return f"change-point linkage (Grashof equality: {tag}): its links come in line at change points"
     if lhs > rhs:
         return f"double rocker (non-Grashof: {tag})"
     if s == a:

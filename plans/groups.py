@@ -36,36 +36,40 @@ class ScalarFallback(Exception):
     the array path then finds and words the failure."""
 
 
-def _closure(xp, closes, gap, scale):
-    """(valid, gap, singular) of a group; the scalar path leaves as soon as it misses.
-    ``gap``: how far it is from closing (a function, evaluated only for arrays)."""
+def _closure(xp, closes, margin, scale):
+    """(valid, gap, singular, margin) of a group; the scalar path leaves as soon as it
+    misses. ``margin``: how far inside its limit the group is, in metres, negative where
+    it misses (a function, evaluated only for arrays); ``scale``: the group's size, which
+    the recorded margin is a fraction of."""
     if xp.scalar:
         if not closes:
             raise ScalarFallback
-        return True, 0.0, False
-    gap = gap()
-    return closes, gap, ~closes & (gap <= 1e-9 * scale)
+        return True, 0.0, False, None
+    inside = margin()
+    gap = np.maximum(-inside, 0.0)
+    return closes, gap, ~closes & (gap <= 1e-9 * scale), inside * (1.0 / scale)
 
 
 def _never_misses(xp, closes, shape):
     """(valid, gap, singular) of a group that cannot miss, only fail at a dead point
-    (parallel guides): its gap is 0 and where it does not close it is singular."""
+    (parallel guides): its gap is 0, its margin infinite, and where it does not close
+    it is singular."""
     if xp.scalar:
         if not closes:
             raise ScalarFallback
-        return True, 0.0, False
+        return True, 0.0, False, None
     closes = np.broadcast_to(closes, shape)
-    return closes, np.zeros(shape), ~closes
+    return closes, np.zeros(shape), ~closes, np.full(shape, np.inf)
 
 
 def _solution(g: Group, w: dict, point: str, v, a, vroute, aroute, sine, closure):
     """A group's recorded solution: the velocity and acceleration constructions of its
     new ``point``, where the group closes, and the words of its conditions (``w``)."""
-    valid, gap, singular = closure
+    valid, gap, singular, margin = closure
     return record(GroupSolution, (
         g, record(Construction, (point, v, vroute, sine, w["veq"])),
         record(Construction, (point, a, aroute, sine, w["aeq"])),
-        valid, gap, w["admissible"], singular, w["singular"],
+        valid, gap, w["admissible"], singular, w["singular"], margin,
     ))
 
 
@@ -164,7 +168,7 @@ def _rrr(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     Pw, Qw = pos[P], pos[Q]
     r = kernels.rrr(xp, sigma, l2, l3, Pw, vel[P], acc[P], Qw, vel[Q], acc[Q])
     closure = _closure(
-        xp, r.closes, lambda: np.maximum(np.maximum(r.d - (l2 + l3), abs(l2 - l3) - r.d), 0.0),
+        xp, r.closes, lambda: np.minimum((l2 + l3) - r.d, r.d - abs(l2 - l3)),
         l2 + l3)
     vroute = (
         record(Route, (P, vel[P], (), r.d1, w["⊥P"], w["VP"], "relative", r.t1)),
@@ -214,7 +218,7 @@ def _rrp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     Pw = pos[P]
     G0, u, vG, aG, wk, ek = _guide(sv, s.guide, states)
     r = kernels.rrp(xp, sigma, l2, Pw, vel[P], acc[P], G0, u, vG, aG, wk, ek)
-    closure = _closure(xp, r.closes, lambda: np.maximum(r.h - l2, 0.0), l2)
+    closure = _closure(xp, r.closes, lambda: l2 - r.h, l2)
     vroute = (
         record(Route, (P, vel[P], (), r.d1, w["⊥P"], w["VP"], "relative", r.t1)),
         record(Route, (base, r.vCk, (), u, w["∥"], w["Vs"], "sliding", r.t2)),
@@ -265,7 +269,7 @@ def _rpr(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     e, name = w["e"], w["name"]
     Pw, Qw = pos[P], pos[Q]
     r = kernels.rpr(xp, sigma, e, w["gd"], Pw, vel[P], acc[P], Qw, vel[Q], acc[Q])
-    closure = _closure(xp, r.closes, lambda: np.maximum(abs(e) - r.dist, 0.0), max(abs(e), 1.0))
+    closure = _closure(xp, r.closes, lambda: r.dist - abs(e), max(abs(e), 1.0))
     vroute = (
         record(Route, (P, vel[P], (), r.u, w["∥"], w["VP"], "sliding", r.t1)),
         record(Route, (Q, vel[Q], (), r.d2, w["⊥Q"], w["VQ"], "relative", r.t2)),

@@ -53,13 +53,32 @@ __all__ = [
 
 
 class Solver:
-    """Solves one mechanism; branches fixed once at its given crank angle."""
+    """Solves one mechanism on one continuous motion: each group's assembly is chosen at
+    the crank angle the hints are read at (``branch_at``) and carried over the turn.
+
+    The sign of a group (which side of its line of centres, which way along its guide)
+    is kept, except at a change point, where the group's links lie in line and its two
+    assemblies meet without parting (a parallelogram at 0° and 180°): there the smooth
+    motion goes on in the other sign, as a parallelogram stays one
+    (:func:`plans.branches.change_points`, found over the turn at the first solve). A
+    group that meets an odd number of change points a turn keeps its sign, and folds
+    back there, since its smooth motion would take two turns to repeat; unless keeping
+    it would make a link jump (a slotted link's pivot on the crank circle).
+    """
 
     def __init__(self, mech: Mechanism, structure: Structure | None = None,
-                 sigmas: tuple[int, ...] | None = None):
+                 sigmas: tuple[int, ...] | None = None,
+                 flips: tuple[tuple[float, ...], ...] | None = None):
         self.mech = mech
         self.structure = structure or analyse(mech)
-        self.sigmas = sigmas if sigmas is not None else choose_branches(mech, self.structure)
+        if sigmas is None:
+            self.sigmas, self.branch_at = choose_branches(mech, self.structure)
+        else:  # given signs hold at the mechanism's own angle
+            self.sigmas, self.branch_at = sigmas, mech.driver.phi
+        #: per group, its change points as counter-clockwise turns from ``branch_at``
+        #: (rad, in [0, 2π), ascending), and where its sign flips (at all of them, or at
+        #: none); None until the first solve
+        self._changes = self._flips = flips
         #: what follows from the mechanism alone, worked out once: the groups' words,
         #: the plans' recipes, the extent of the cycle (``plans.plan``)
         self.cache: dict = {}
@@ -68,6 +87,39 @@ class Solver:
         self.translating = mech.translating()
         self.steps = tuple((SOLVERS[g.kind], g, sigma)
                            for g, sigma in zip(self.structure.groups, self.sigmas, strict=True))
+
+    @property
+    def changes(self) -> tuple[tuple[float, ...], ...]:
+        if self._changes is None:
+            from .branches import change_points
+
+            self._changes, self._flips = change_points(self)
+        return self._changes
+
+    @property
+    def flips(self) -> tuple[tuple[float, ...], ...]:
+        if self._flips is None:
+            self.changes  # noqa: B018 - finds both
+        return self._flips
+
+    def sigma(self, i: int, phi):
+        """Group ``i``'s sign at crank angle(s) ``phi`` (rad from +x): its sign at
+        ``branch_at``, flipped at each change point passed on the way there."""
+        flips = self.flips[i]
+        if not flips:
+            return self.sigmas[i]
+        turn = (phi - self.branch_at) % (2 * math.pi)
+        if isinstance(turn, float):
+            passed = sum(f < turn for f in flips)
+            return -self.sigmas[i] if passed % 2 else self.sigmas[i]
+        passed = np.searchsorted(np.asarray(flips), turn)
+        return np.where(passed % 2 == 1, -self.sigmas[i], self.sigmas[i]).astype(float)
+
+    def with_flips(self, flips: tuple[tuple[float, ...], ...]) -> Solver:
+        """This solver with the given change points instead of its own."""
+        out = Solver(self.mech, self.structure, self.sigmas, flips)
+        out.branch_at = self.branch_at
+        return out
 
     # -------------------------------------------------------------------------------
     def solve(self, phi) -> Motion:
@@ -133,7 +185,10 @@ class Solver:
         solutions = []
         valid = True if xp.scalar else np.ones(phi.shape, dtype=bool)
         coincident: dict[str, str] = {}
-        for solve_group, g, sigma in self.steps:
+        flips = self.flips
+        for i, (solve_group, g, sigma) in enumerate(self.steps):
+            if flips[i]:
+                sigma = self.sigma(i, phi)
             sol, extra = solve_group(self, xp, g, sigma, states, pos, vel, acc)
             solutions.append(sol)
             if not xp.scalar:
@@ -158,7 +213,7 @@ class Solver:
     def _solve_upto(self, count: int) -> Motion:
         """Solve only the first ``count`` groups at the given crank angle (branch choice)."""
         part = Solver(self.mech, replace(self.structure, groups=self.structure.groups[:count]),
-                      self.sigmas[:count])
+                      self.sigmas[:count], ((),) * count)  # at branch_at: no flip counts
         return part.solve(np.array([self.mech.driver.phi]))
 
     def _fill(self, lid, states, pos, vel, acc, owner):

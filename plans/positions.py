@@ -40,10 +40,11 @@ def trajectory_angles(cycle, n: int = 361) -> np.ndarray:
 
 
 def positions_at(solver: Solver, phis) -> list[dict[str, complex] | None]:
-    """Every point's position at each angle; None where the mechanism does not close."""
+    """Every point's position at each angle; None where the mechanism does not close (a
+    change point, where it closes to rounding, stands: :attr:`Motion.placed`)."""
     with np.errstate(all="ignore"):
         m = solver.solve(np.asarray(phis, dtype=float))
-    ok = np.asarray(m.valid, dtype=bool)
+    ok = m.placed
     return [{n: complex(np.asarray(a)[i]) for n, a in m.position.items()} if ok[i] else None
             for i in range(len(phis))]
 
@@ -104,7 +105,7 @@ def drawn(solver: Solver, cycle) -> Drawn:
                      if p is not None and q is None)
     motion_all = solver.solve(trajectory_angles(cycle))
     traced = tuple(n for n in (*mech.trace, mech.driver.tip) if n in motion_all.position)
-    trajectory = np.asarray(motion_all.valid, dtype=bool).copy()
+    trajectory = motion_all.placed
     for n in traced:
         trajectory &= ~far(motion_all.position[n])
     got = solver.cache[key] = Drawn(given, kept, near(positions_at(solver, cycle.extremes)),

@@ -23,6 +23,11 @@ from .structure import DyadKind, Group
 #: below this |sin| (about 2°) a position is reported as near-singular
 WARN_SINE = 0.035
 
+#: a group whose margin (a fraction of its size) is within this of 0 has its links in
+#: line to rounding: equal lengths typed in decimal meet to about 1e-16, and Grashof's
+#: equality is judged to 1e-12 as well
+IN_LINE = 1e-12
+
 
 
 class LinkState(NamedTuple):
@@ -102,6 +107,10 @@ class GroupSolution(NamedTuple):
     admissible: str  # the condition, for messages
     singular: np.ndarray  # bool: where it does not close, is it a dead point (no miss)?
     why_singular: str  # what makes it singular, for messages
+    #: how far inside its limit the group is, as a fraction of its size: 0 where its links
+    #: lie in line (a dead point, or a change point where its two assemblies meet), < 0
+    #: where it does not close (arrays only: None on the one-angle path)
+    margin: np.ndarray | None
 
     def failure(self, k: int, at: str, note: str = "", source: str = "") -> PlansError:
         """The error for angle index ``k`` where the group does not close; ``at`` names the
@@ -257,6 +266,16 @@ class Motion:
     groups: tuple[GroupSolution, ...]
     valid: np.ndarray
     coincident: dict[str, str] = field(default_factory=dict)  # "A3" -> "A"
+
+    @property
+    def placed(self) -> np.ndarray:
+        """Where every point stands: the groups close, or miss by rounding only, their
+        links in line (at a change point the positions stand, the plans are singular)."""
+        out = np.asarray(self.valid, dtype=bool).copy()
+        for g in self.groups:
+            if g.margin is not None:
+                out |= ~g.valid & (g.margin >= -IN_LINE)
+        return out
 
     @property
     def min_sine(self) -> np.ndarray:

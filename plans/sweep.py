@@ -215,7 +215,10 @@ class _Block:
         self.links[drv.link] = (mech.frame[drv.pivot], 0j, 0j, rotor, drv.omega, 0.0, 0j)
         self._fill(drv.link)
         xp = kernels.ARRAY
-        for g, sigma in zip(sv.structure.groups, sv.sigmas, strict=True):
+        flips = sv.flips
+        for i, (g, sigma) in enumerate(zip(sv.structure.groups, sv.sigmas, strict=True)):
+            if flips[i]:
+                sigma = sv.sigma(i, phi)
             self._pending: list = []
             getattr(self, "_" + g.kind.name.lower())(xp, g, sigma)
             for lid in (g.a, g.b):

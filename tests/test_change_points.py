@@ -1,0 +1,216 @@
+"""Change points: where a group's links lie in line and its two assemblies meet, the motion
+goes on smoothly (plans.branches.change_points, Solver.flips), checked against closed forms
+(a parallelogram translates its coupler, an isosceles crank-slider's slider runs at 2R·cos φ,
+a slotted link whose pivot is on the crank circle turns at half the crank's rate) and
+against the smoothness of the velocities across the change point."""
+
+import math
+
+import numpy as np
+import pytest
+from test_stability import crank_slider, fourbar, mech_of, slotted
+
+from plans import Solver, analyse_cycle
+from plans.cycle import summary
+from plans.positions import drawn
+
+A, B_, D = 0.05, 0.2, 0.2  # crank, coupler, frame: a parallelogram with c = a
+
+
+def parallelogram(hint="above OD"):
+    return mech_of(fourbar(A, B_, A, D).replace('B = "above OD"', f'B = "{hint}"'))
+
+
+def isosceles(R=0.1):
+    return mech_of(crank_slider(R, R, 0.0).replace('B = "right of O"', 'B = "right of A"'))
+
+
+def away(changes, n=7201, gap=1e-4):
+    """Angles over the turn, none within ``gap`` rad of a change point (rad from +x)."""
+    phi = np.linspace(0.0, 2 * math.pi, n)
+    keep = np.ones(n, dtype=bool)
+    for c in changes:
+        keep &= np.abs((phi - c + math.pi) % (2 * math.pi) - math.pi) > gap
+    return phi[keep]
+
+
+def angles(sv):
+    return [math.degrees(sv.branch_at + f) for points in sv.changes for f in points]
+
+
+def on_circle(got, want, tol=1e-9):
+    """Angles (degrees) ``got`` are ``want`` in some order, each to ``tol`` round the turn."""
+    left = list(want)
+    for g in got:
+        k = min(range(len(left)), key=lambda i: abs((g - left[i] + 180) % 360 - 180))
+        if abs((g - left[k] + 180) % 360 - 180) > tol:
+            return False
+        left.pop(k)
+    return not left
+
+
+def test_a_parallelogram_stays_a_parallelogram_over_the_whole_turn():
+    mech = parallelogram()
+    sv = Solver(mech)
+    assert on_circle(angles(sv), [0.0, 180.0])
+    assert sv.flips == sv.changes  # two a turn: both flip the sign
+    phi = away([0.0, math.pi])
+    m = sv.solve(phi)
+    assert m.valid.all()
+    # the coupler translates: B − A = D − O, so the rocker turns with the crank
+    assert np.max(np.abs(m.position["B"] - m.position["A"] - D)) < 1e-12
+    w1 = mech.driver.omega
+    assert np.max(np.abs(m.links[3].omega - w1)) < 1e-9 * w1
+    assert np.max(np.abs(m.links[2].omega)) < 1e-9 * w1
+    c = analyse_cycle(mech, solver=sv)
+    assert c.full_turn and not c.extremes
+    assert [math.degrees(x) % 360 for x in c.change_points] == pytest.approx([180.0, 0.0], abs=1e-9)
+    text = "\n".join(summary(c, mech.driver))
+    assert "change points at φ1 = 180°, 0°" in text and "smooth motion" in text
+    assert "cannot make a full turn" not in text
+
+
+def test_with_its_sign_kept_the_parallelogram_would_fold_and_stop():
+    """What the flips mend: a solver told of no change points folds into the
+    antiparallelogram past 180° and judges the crank unable to turn."""
+    mech = parallelogram()
+    sv = Solver(mech)
+    kept = sv.with_flips(((),))
+    phi = np.radians(np.array([200.0, 300.0]))
+    assert np.max(np.abs(kept.solve(phi).position["B"] - kept.solve(phi).position["A"] - D)) > 0.05
+    assert np.max(np.abs(sv.solve(phi).position["B"] - sv.solve(phi).position["A"] - D)) < 1e-12
+
+
+@pytest.mark.parametrize("hint", ["above OD", "below OD"])
+def test_velocities_are_smooth_across_each_change_point(hint):
+    """The parallelogram and the antiparallelogram (the other hint) each keep their form:
+    the plan velocities on either side of a change point agree to O(δ), where a fold
+    would reverse them."""
+    mech = parallelogram(hint)
+    sv = Solver(mech)
+    for c in (0.0, math.pi):
+        for d in (1e-3, 1e-2):
+            m = sv.solve(np.array([c - d, c + d]))
+            assert m.valid.all()
+            for name in ("B",):
+                v = m.velocity[name]
+                assert abs(v[1] - v[0]) < 20 * d * abs(v[0]), (hint, c, d)
+    # the antiparallelogram stays crossed: its coupler never translates
+    if hint == "below OD":
+        m = sv.solve(away([0.0, math.pi], gap=0.1))
+        assert np.min(np.abs(m.position["B"] - m.position["A"] - D)) > 1e-3
+
+
+def test_plan_velocities_are_the_derivatives_of_positions_through_the_turn():
+    mech = parallelogram("below OD")
+    sv = Solver(mech)
+    h = 1e-6
+    phi = away([0.0, math.pi], n=361, gap=0.01)
+    m, lo, hi = sv.solve(phi), sv.solve(phi - h), sv.solve(phi + h)
+    w1 = mech.driver.omega
+    for name in ("B", "E", "F"):
+        fd = (hi.position[name] - lo.position[name]) / (2 * h) * w1
+        assert np.max(np.abs(fd - m.velocity[name])) < 1e-6 * np.max(np.abs(m.velocity[name]))
+
+
+def test_an_isosceles_crank_slider_runs_at_2R_cos_phi_with_a_stroke_of_4R():
+    R = 0.1
+    mech = isosceles(R)
+    sv = Solver(mech)
+    assert on_circle(angles(sv), [90.0, 270.0])
+    phi = away([math.pi / 2, 3 * math.pi / 2])
+    m = sv.solve(phi)
+    assert np.max(np.abs(m.position["B"] - 2 * R * np.cos(phi))) < 1e-12
+    w1 = mech.driver.omega
+    assert np.max(np.abs(m.velocity["B"] + 2 * R * w1 * np.sin(phi))) < 1e-9
+    c = analyse_cycle(mech, solver=sv)
+    assert c.full_turn
+    assert c.stroke == pytest.approx(4 * R, rel=1e-12)
+    assert c.theta == 0.0 and c.K == 1.0
+    assert on_circle([math.degrees(x) for x in c.extremes], [0.0, 180.0])
+
+
+def test_positions_on_a_change_point_are_drawn():
+    """The twelve positions of the parallelogram from 60° include 0° and 180°, where the
+    groups close to rounding only: they stand on the plan of positions."""
+    mech = parallelogram()
+    sv = Solver(mech)
+    c = analyse_cycle(mech, solver=sv)
+    on = [k for k, x in enumerate(c.positions) if abs(math.sin(x)) < 1e-12]
+    assert len(on) == 2
+    shown = drawn(sv, c)
+    assert all(p is not None for p in shown.cycle)
+    for k in on:
+        p = shown.cycle[k]
+        assert abs(p["B"] - p["A"] - D) < 1e-7  # the tangency, to the root of rounding
+    assert shown.trajectory.all()
+
+
+def test_the_sweep_and_the_one_angle_path_follow_the_same_smooth_motion():
+    mech = isosceles()
+    sv = Solver(mech)
+    phi = away([math.pi / 2, 3 * math.pi / 2], n=3601)
+    m = sv.solve(phi)
+    sw = sv.sweep(phi, block=500)
+    for name in m.position:
+        assert np.max(np.abs(sw.position[name] - m.position[name])) < 1e-15
+        assert np.max(np.abs(sw.velocity[name] - m.velocity[name])) < 1e-12
+    for x in (2.0, 4.0, 5.0):  # past one change point and past both
+        one = sv.solve_one(x)
+        assert abs(one.position["B"] - 2 * 0.1 * math.cos(x)) < 1e-15
+
+
+def test_a_slotted_link_with_its_pivot_on_the_crank_circle_turns_at_half_the_crank_rate():
+    """Its block passes the pivot once a turn (an odd change point): kept, the sign would
+    turn the slotted link over by 180° there; its smooth motion turns at ω1/2 and repeats
+    after two crank turns, the seam at the file's angle."""
+    R = 0.1
+    mech = mech_of(slotted(R, R))
+    sv = Solver(mech)
+    assert on_circle(angles(sv), [270.0])
+    assert sv.flips == sv.changes
+    start = sv.branch_at
+    phi = start + away([3 * math.pi / 2 - start], n=3601, gap=1e-3)[:-1]
+    m = sv.solve(phi)
+    w1 = mech.driver.omega
+    assert np.max(np.abs(m.links[3].omega - w1 / 2)) < 1e-9 * w1
+    psi = np.unwrap(np.angle(m.links[3].rotor))
+    assert np.max(np.abs(np.diff(psi))) < 0.01  # no turning over within the turn
+    c = analyse_cycle(mech, solver=sv)
+    assert c.full_turn
+    text = "\n".join(summary(c, mech.driver))
+    assert "repeats only after two turns" in text and "meet at φ1 = 20°" in text
+
+
+def test_a_crank_slider_whose_rod_reaches_the_guide_once_a_turn_folds_back_there():
+    """R + e = L: the rod stands across the guide at 270° once a turn. Kept, the sign
+    makes a continuous motion that turns back there: an extreme position exactly at the
+    change point, the slider at the foot x = 0, the stroke to the stretched-out position."""
+    R, L, e = 0.1, 0.15, 0.05
+    mech = mech_of(crank_slider(R, L, e))
+    sv = Solver(mech)
+    assert on_circle(angles(sv), [270.0])
+    assert sv.flips == ((),)
+    c = analyse_cycle(mech, solver=sv)
+    assert c.full_turn
+    assert any(on_circle([math.degrees(x)], [270.0]) for x in c.extremes)
+    assert c.stroke == pytest.approx(math.sqrt((R + L) ** 2 - e**2), rel=1e-9)
+    text = "\n".join(summary(c, mech.driver))
+    assert "folds back there" in text
+
+
+@pytest.mark.parametrize("scale", [1 - 1e-9, 1 + 1e-9])
+def test_a_near_miss_is_no_change_point(scale):
+    """A frame 1e-9 shorter (a Grashof double crank that clears the line by a hair) or
+    longer (a non-Grashof linkage with a dead point) has no change point: its sign is
+    kept, as a true dead point must be."""
+    sv = Solver(mech_of(fourbar(A, B_, A, D * scale)))
+    assert sv.changes == ((),) and sv.flips == ((),)
+
+
+def test_well_shaped_mechanisms_have_no_change_points():
+    from plans.scenes import SCENES
+
+    for name, scene in SCENES.items():
+        sv = Solver(scene.mechanism())
+        assert all(not c for c in sv.changes), name
