@@ -82,7 +82,9 @@ def output_of(mech: Mechanism, name: str) -> Output | None:
 class Cycle:
     output: Output | None
     full_turn: bool
-    extremes: tuple[float, ...]  # crank angles of the extreme positions (rad)
+    #: crank angles (rad) of the extreme positions: the output's, or where the crank
+    #: cannot make a full turn its limit positions (dead points), ``crank_range``
+    extremes: tuple[float, ...]
     stroke: float | None  # H (m) or swing ψ (rad)
     theta: float | None  # rad
     K: float | None
@@ -176,10 +178,11 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
     if not full:  # the range is worded where it is shown (report.no_full_turn)
         if not valid[0]:  # the given angle itself does not close: say why, as solve does
             solver.solve_one(phi0)
-        lo, hi = _interval_around(grid, valid)
-        span = np.linspace(lo, hi, n_positions) if n_positions > 1 else np.array([lo])
-        return Cycle(out, False, (), None, None, None, tuple(span), grashof, tuple(notes),
-                     (lo, hi))
+        lo, hi = _limits(solver, *_interval_around(grid, valid | (near & m.placed)),
+                         grid[1] - grid[0])
+        span = lo + (hi - lo) * (np.arange(n_positions) + 0.5) / n_positions
+        return Cycle(out, False, (lo, hi), None, None, None, tuple(span), grashof,
+                     tuple(notes), (lo, hi), changes)
     extremes: list[float] = []
     stroke = theta = K = None
     start = phi0
@@ -266,6 +269,22 @@ def _refine(solver: Solver, out: Output, mech: Mechanism, a: float, b: float) ->
         if abs(b - a) < 1e-13:
             break
     return 0.5 * (a + b)
+
+
+def _limits(solver: Solver, lo: float, hi: float, step: float) -> tuple[float, float]:
+    """The crank's limit positions, refined from the last samples ``lo`` and ``hi`` that
+    close (``step`` before ``lo`` and after ``hi`` it does not) to 1e-13 rad by bisection,
+    both at once; each on the side where every point stands (:attr:`Motion.placed`)."""
+    inside = np.array([lo, hi])
+    outside = inside + np.array([-step, step])
+    for _ in range(60):
+        mid = 0.5 * (inside + outside)
+        with np.errstate(all="ignore"):
+            ok = solver.solve(mid).placed
+        inside, outside = np.where(ok, mid, inside), np.where(ok, outside, mid)
+        if np.all(np.abs(outside - inside) < 1e-13):
+            break
+    return float(inside[0]), float(inside[1])
 
 
 def _interval_around(grid, valid):

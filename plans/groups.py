@@ -52,14 +52,14 @@ def _closure(xp, closes, margin, scale):
 
 def _never_misses(xp, closes, shape):
     """(valid, gap, singular) of a group that cannot miss, only fail at a dead point
-    (parallel guides): its gap is 0, its margin infinite, and where it does not close
-    it is singular."""
+    (parallel guides): its gap is 0 and where it does not close it is singular; its
+    margin is infinite, and minus infinity where its point is nowhere."""
     if xp.scalar:
         if not closes:
             raise ScalarFallback
         return True, 0.0, False, None
     closes = np.broadcast_to(closes, shape)
-    return closes, np.zeros(shape), ~closes, np.full(shape, np.inf)
+    return closes, np.zeros(shape), ~closes, np.where(closes, np.inf, -np.inf)
 
 
 def _solution(g: Group, w: dict, point: str, v, a, vroute, aroute, sine, closure):

@@ -21,7 +21,7 @@ from .kinematics import Motion, Solver
 
 #: how far a point of a drawn position may lie from the given position, in multiples of
 #: the given position's size
-FAR = 20.0
+FAR = 8.0
 
 
 def reach(given: dict[str, complex]) -> tuple[complex, float]:

@@ -143,22 +143,32 @@ def test_variant_to_a_file(capsys, tmp_path):
     assert not list(tmp_path.glob(".*.tmp"))
 
 
-def test_a_linkage_that_cannot_turn_fully_warns_at_its_limits(capsys):
+def test_a_linkage_that_cannot_turn_fully_has_its_positions_inside_its_exact_limits(capsys):
+    """Seed 001's four-bar folds where |BD| = BC − CD: its limits, by the cosine rule,
+    are the extreme positions to 1e-9°; the nine positions are the middles of nine equal
+    parts of the range, none of them at a dead point, so none is near-singular (they had
+    been the last samples of a 0.1° grid, sin = 0.007, with values that hung on the grid)."""
     code, out, err = run(capsys, "cycle", FOURBAR, "--json", "--positions", "9")
     assert code == 0, err
     data = json.loads(out)
     assert data["cycle"]["full_turn"] is False
     assert "cannot make a full turn" in data["numbering"]
+    mech = mechanism.load(FOURBAR)
+    a, ad = mech.driver.length, abs(mech.frame["D"] - mech.frame["A"])
+    bc = abs(mech.links[2].points["C"] - mech.links[2].points["B"])
+    cd = abs(mech.links[3].points["C"] - mech.links[3].points["D"])
+    gamma = math.degrees(math.acos((a * a + ad * ad - (bc - cd) ** 2) / (2 * a * ad)))
+    lo, hi = data["cycle"]["crank_range_phi_deg"]
+    assert (lo % 360, hi) == pytest.approx((180 + gamma, 180 - gamma), abs=1e-9)
+    assert data["cycle"]["extremes_phi_deg"] == data["cycle"]["crank_range_phi_deg"]
     rows = data["rows"]
-    # the range ends where the coupler and rocker fold: near-singular, with the figure
-    for row in (rows[0], rows[-1]):
-        assert row["solved"]
-        assert row["conditioning"]["min_sine"] < WARN_SINE
-        assert len(row["warnings"]) == 1
-        assert "near-singular" in row["warnings"][0]
-        assert f"sin = {row['conditioning']['min_sine']:.3g}" in row["warnings"][0]
-    assert all(r["warnings"] == [] for r in rows[2:-2])
-    assert "warning: 2 of 9 positions are near-singular" in err
+    span = (hi - lo) % 360
+    for k, row in enumerate(rows):
+        assert (row["phi_deg"] - lo - (k + 0.5) * span / 9 + 180) % 360 - 180 == pytest.approx(
+            0, abs=1e-9)
+        assert row["solved"] and row["warnings"] == []
+        assert row["conditioning"]["min_sine"] > WARN_SINE
+    assert "near-singular" not in err
 
 
 def test_singular_positions_are_errors_with_no_values(capsys, monkeypatch):
@@ -166,6 +176,7 @@ def test_singular_positions_are_errors_with_no_values(capsys, monkeypatch):
 
     # make every position with |sin| < 0.7 count as singular, so the error path runs
     monkeypatch.setattr(plans.records, "SINGULAR_SINE", 0.7)
+    monkeypatch.setattr(plans.records, "WARN_SINE", 0.9)
     code, out, err = run(capsys, "cycle", FOURBAR, "--json", "--positions", "9")
     assert code == 2
     rows = json.loads(out)["rows"]
@@ -182,7 +193,11 @@ def test_singular_positions_are_errors_with_no_values(capsys, monkeypatch):
     assert "—" in out and "error" in out
 
 
-def test_table_marks_warnings(capsys):
+def test_table_marks_warnings(capsys, monkeypatch):
+    import plans.records
+
+    # the five positions' sines are 0.54 at the ends and 0.86 or more between: warn below 0.6
+    monkeypatch.setattr(plans.records, "WARN_SINE", 0.6)
     code, out, _ = run(capsys, "cycle", FOURBAR, "--positions", "5")
     assert code == 0
     assert "position 0: warning: group 2–3 (RRR)" in out
