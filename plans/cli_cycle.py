@@ -122,7 +122,7 @@ def compute(mech, n_positions: int, solver=None) -> CycleTable:
     phi = np.array(cycle.positions, dtype=float)
     with np.errstate(all="ignore"):
         motion = solver.solve(phi)
-        status = conditioning(mech, motion)
+        status = conditioning(mech, motion, solver)
         out_values = (
             cycle.output.value(motion, mech) if cycle.output is not None else None
         )
@@ -131,8 +131,9 @@ def compute(mech, n_positions: int, solver=None) -> CycleTable:
     return CycleTable(mech, cycle, motion, status, points, links, out_values)
 
 
-def conditioning(mech, motion) -> tuple[Status, ...]:
-    """Per position: the figures of every group, warnings and errors (see the module doc)."""
+def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
+    """Per position: the figures of every group, warnings and errors (see the module doc);
+    ``solver``, the motion's, names the change points among the angles."""
     import numpy as np
 
     from .records import WARN_SINE, near_pivot, on_pivot, pivot_figure
@@ -149,7 +150,8 @@ def conditioning(mech, motion) -> tuple[Status, ...]:
         q = None if pivot is None else np.where(np.isfinite(pivot), pivot, 0.0).tolist()
         cols.append((g, g.group.label, valid.tolist(), s.tolist(), (s < WARN_SINE).tolist(), q))
     phis = np.asarray(motion.phi, dtype=float).tolist()
-    at = functools.cache(lambda k: mech.driver.at(phis[k]))  # words only where flagged, once
+    at_ = solver.at if solver is not None else mech.driver.at
+    at = functools.cache(lambda k: at_(phis[k]))  # words only where flagged, once
     out = []
     for k in range(n):
         figures: dict[str, float] = {}

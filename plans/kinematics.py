@@ -115,6 +115,16 @@ class Solver:
         passed = np.searchsorted(np.asarray(flips), turn)
         return np.where(passed % 2 == 1, -self.sigmas[i], self.sigmas[i]).astype(float)
 
+    def at(self, phi: float) -> str:
+        """The crank angle ``phi`` in words, as :meth:`plans.mechanism.Driver.at` gives it,
+        saying so where it is a change point (to 1e-9 rad)."""
+        words = self.mech.driver.at(phi)
+        turn = (phi - self.branch_at) % (2 * math.pi)
+        for points in self.changes:
+            if any(abs((turn - f + math.pi) % (2 * math.pi) - math.pi) < 1e-9 for f in points):
+                return words + " (a change point: the two assemblies of a group meet there)"
+        return words
+
     def with_flips(self, flips: tuple[tuple[float, ...], ...]) -> Solver:
         """This solver with the given change points instead of its own."""
         out = Solver(self.mech, self.structure, self.sigmas, flips)
@@ -156,7 +166,7 @@ class Solver:
         except (ScalarFallback, ArithmeticError, ValueError):
             pass
         m = self.solve(np.array([phi]))
-        at = self.mech.driver.at(phi)
+        at = self.at(phi)
         source = self.mech.source
         for g in m.groups:
             if not g.valid[0]:

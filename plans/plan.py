@@ -156,8 +156,8 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     phi = mech.driver.phi if phi is None else float(phi)
     motion = solver.solve_one(phi)
     flags = flagged(motion.groups, motion.position, mech.frame[mech.driver.pivot],
-                    lambda: mech.driver.at(phi), mech.source)
-    warnings = [flag_words(f, mech.driver.at(phi)) for f in flags]
+                    lambda: solver.at(phi), mech.source)
+    warnings = [flag_words(f, solver.at(phi)) for f in flags]
     scales = mech.scales
     if mu or "mu_l" not in scales:
         scales = dict(scales, **(mu or {}))

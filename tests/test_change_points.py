@@ -214,3 +214,22 @@ def test_well_shaped_mechanisms_have_no_change_points():
     for name, scene in SCENES.items():
         sv = Solver(scene.mechanism())
         assert all(not c for c in sv.changes), name
+
+
+def test_a_plan_asked_for_on_a_change_point_is_refused_and_says_why(capsys, tmp_path):
+    from support import run
+
+    path = tmp_path / "parallelogram.toml"
+    path.write_text(fourbar(A, B_, A, D), "utf-8")
+    code, out, err = run(capsys, "solve", path, "--angle", "180")
+    assert code != 0 and out == ""
+    assert "at φ1 = 180° (a change point: the two assemblies of a group meet there)" in err
+    assert len(err.strip().splitlines()) == 1
+    code, out, err = run(capsys, "cycle", path, "--positions", "4", "--json")
+    import json
+
+    rows = json.loads(out)["rows"]  # from 60°: 60, 150, 240, 330 miss them; 12 would not
+    assert all(r["solved"] for r in rows)
+    code, out, err = run(capsys, "cycle", path, "--positions", "12")
+    assert "position 4: error: group 2–3 (RRR) at φ1 = 180° (a change point" in out
+    assert "error: position 4: group 2–3 (RRR) at φ1 = 180° (a change point" in err
