@@ -31,6 +31,9 @@ T = {
         "stroke": "Stroke of the output point {p}:",
         "swing": "Swing of the output link {l}:",
         "kth": "Crank angle between the extreme positions, θ, and the time ratio K:",
+        "change": "At φ1 = {at}°{conv}, {what}, the links of a group lie on one line and its two assemblies meet: the plans there are singular.",
+        "change1": "a change point",
+        "changes": "change points",
         "noturn": "The input link {d} cannot make a full turn (it rocks, it is not a crank): the mechanism assembles only for φ1 from {lo}° to {hi}°{conv}, a swing of {span}°.",
         "velocities": "Velocity plan",
         "va": "Velocity of point {t} of the input link, ⊥ {p}{t} in the sense of ω1:",
@@ -72,6 +75,9 @@ T = {
         "stroke": "Ход выходной точки {p}:",
         "swing": "Угол размаха выходного звена {l}:",
         "kth": "Угол между положениями кривошипа в крайних положениях механизма θ и коэффициент изменения средней скорости K:",
+        "change": "При φ1 = {at}°{conv} ({what}) звенья группы лежат на одной прямой и обе её сборки совпадают: планы скоростей и ускорений там не строятся.",
+        "change1": "точка смены сборки",
+        "changes": "точки смены сборки",
         "noturn": "Начальное звено {d} не может сделать полный оборот (это коромысло, а не кривошип): механизм собирается только при φ1 от {lo}° до {hi}°{conv}, угол качания {span}°.",
         "velocities": "План скоростей механизма",
         "va": "Скорость точки {t} начального звена, ⊥ {p}{t} в сторону вращения ω1:",
@@ -161,6 +167,8 @@ def note(sol: Solution, lang: str = "en", cycle=None,
         out.append(Step(f"{k} = l_{k} / μl", f"{n(v, 5)} / {n(mu_l)}", n(v / mu_l), u["mm"]).markdown())
     if cycle is not None:
         out.append("")
+        if cycle.change_points:
+            out += [change_points(cycle, lang, d), ""]
         if not cycle.full_turn:
             out.append(no_full_turn(cycle, lang, d))
         elif cycle.stroke is not None:
@@ -204,6 +212,15 @@ def warnings(sol: Solution, lang: str = "en") -> list[str]:
         return list(sol.warnings)
     at = sol.mechanism.driver.at(sol.phi, lang)
     return [flag_words(f, at, lang) for f in sol.flags]
+
+
+def change_points(cycle, lang: str, driver) -> str:
+    """The sentence naming the cycle's change points, in the file's convention."""
+    t = T[lang]
+    joined = {"en": " and ", "ru": " и "}.get(lang, ", ")
+    at = joined.join(angle(driver.file_angle(x), 4, lang) for x in cycle.change_points)
+    what = t["change1"] if len(cycle.change_points) == 1 else t["changes"]
+    return t["change"].format(at=at.replace("°", ""), conv=driver.convention(lang), what=what)
 
 
 def no_full_turn(cycle, lang: str = "en", driver=None) -> str:

@@ -233,3 +233,16 @@ def test_a_plan_asked_for_on_a_change_point_is_refused_and_says_why(capsys, tmp_
     code, out, err = run(capsys, "cycle", path, "--positions", "12")
     assert "position 4: error: group 2–3 (RRR) at φ1 = 180° (a change point" in out
     assert "error: position 4: group 2–3 (RRR) at φ1 = 180° (a change point" in err
+
+
+def test_the_explanatory_note_names_the_change_points_in_either_language(capsys, tmp_path):
+    from support import run
+
+    path = tmp_path / "parallelogram.toml"
+    path.write_text(fourbar(A, B_, A, D), "utf-8")
+    code, out, _ = run(capsys, "report", path, "--lang", "ru")
+    assert code == 0
+    assert ("При φ1 = 180 и 0° (точки смены сборки) звенья группы лежат на одной прямой и обе "
+            "её сборки совпадают") in out
+    code, out, _ = run(capsys, "report", path)
+    assert "At φ1 = 180 and 0°, change points, the links of a group lie on one line" in out
