@@ -24,18 +24,21 @@ RELATIONS = ("above", "below", "left of", "right of")
 CHANGE_SAMPLES = 3600
 
 
-def change_points(sv) -> tuple[tuple[tuple[float, ...], ...], tuple[tuple[float, ...], ...]]:
+def change_points(sv) -> tuple[tuple[tuple[float, ...], ...], tuple[tuple[float, ...], ...],
+                               float | None]:
     """Per group of ``sv``, the change points of its motion: counter-clockwise turns of
     the crank from ``sv.branch_at`` (rad, in [0, 2π), ascending) where the group's
     links come in line and part again on the same side without ever failing to close;
-    and per group those where its sign flips.
+    per group those where its sign flips; and the seam, a turn from ``sv.branch_at`` where
+    the mechanism does not close (None when it makes a full turn), across which the flips
+    are not counted (:meth:`plans.kinematics.Solver.sigma`).
 
     There the group's margin (how far inside its limit it is) touches 0 and rises
     again, and its two assemblies meet: kept, the sign would fold the linkage into the
     other assembly with a kink in its motion (a parallelogram into an antiparallelogram,
     an isosceles crank-slider's slider to rest on the crank's pivot). The smooth motion
     goes on with the other sign. A minimum of the margin on a grid of the turn is refined
-    to 1e-12 rad and taken when it lies within :data:`plans.records.IN_LINE` of 0; one below
+    (to about 1e-10 rad) and taken when it lies within :data:`plans.records.IN_LINE` of 0; one below
     that is a dead point of a linkage that cannot turn there.
 
     Where a group meets an odd number of them a turn, its smooth motion repeats only
@@ -43,19 +46,28 @@ def change_points(sv) -> tuple[tuple[tuple[float, ...], ...], tuple[tuple[float,
     together): it keeps its sign, and folds back at them, as long as that is a
     continuous motion. A slotted link whose pivot is on the crank circle would turn
     over by 180° at once as the block passes the pivot: it follows its smooth motion,
-    half the crank's turn, with the seam of the two turns at ``branch_at``.
+    half the crank's turn, with the seam of the two turns at ``branch_at``. A crank that
+    cannot make a full turn has no turn to repeat: its groups flip at every change point
+    within its range.
     """
     n = len(sv.structure.groups)
     found: list[tuple[float, ...]] = []
     flips: list[tuple[float, ...]] = []
     grid = sv.branch_at + np.linspace(0.0, 2 * math.pi, CHANGE_SAMPLES, endpoint=False)
     step = 2 * math.pi / CHANGE_SAMPLES
+    with np.errstate(all="ignore"):
+        gap = ~sv.with_flips(((),) * n).solve(grid).placed
+    seam = None
+    if gap.any() and not gap[0]:  # the middle of the first run of angles that do not close
+        first = int(np.argmax(gap))
+        last = first + int(np.argmin(gap[first:])) - 1 if not gap[first:].all() else len(gap) - 1
+        seam = 0.5 * (first + last) * step
     for i, g in enumerate(sv.structure.groups):
         if g.kind in (DyadKind.PRP, DyadKind.RPP):  # no assemblies to meet
             found.append(())
             flips.append(())
             continue
-        trial = sv.with_flips(tuple(flips) + ((),) * (n - i))
+        trial = sv.with_flips(tuple(flips) + ((),) * (n - i), seam)
         with np.errstate(all="ignore"):
             margin = trial.solve(grid).groups[i].margin
         low = (margin <= np.roll(margin, 1)) & (margin < np.roll(margin, -1)) & (margin < 1e-3)
@@ -66,8 +78,9 @@ def change_points(sv) -> tuple[tuple[tuple[float, ...], ...], tuple[tuple[float,
                 points.append((at - sv.branch_at) % (2 * math.pi))
         points.sort()
         found.append(tuple(points))
-        flips.append(tuple(points) if len(points) % 2 == 0 or _jumps(trial, i, points) else ())
-    return tuple(found), tuple(flips)
+        smooth = len(points) % 2 == 0 or seam is not None or _jumps(trial, i, points)
+        flips.append(tuple(points) if smooth else ())
+    return tuple(found), tuple(flips), seam
 
 
 def _jumps(sv, i: int, points: list[float]) -> bool:
@@ -90,7 +103,8 @@ def _lowest(sv, i: int, lo: float, hi: float) -> tuple[float, float]:
 
     A margin that touches 0 as a square (links coming in line) is flat to rounding for
     some 1e-8 rad round its least, where the samples pick any point: the place is then
-    the vertex of the parabola through the margins 1e-5 rad either side."""
+    the vertex of the parabola through the margins 1e-5 rad either side, which the
+    margin's third-order term and rounding leave some 1e-10 rad off."""
     with np.errstate(all="ignore"):
         for _ in range(8):
             xs = np.linspace(lo, hi, 33)

@@ -161,9 +161,11 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
     changes, near = _change_points(solver, grid)
     if changes:
         deg = mech.driver.file_angle
-        odd = [bool(f) for c, f in zip(solver.changes, solver.flips, strict=True) if len(c) % 2]
+        odd = [bool(f) for c, f in zip(solver.changes, solver.flips, strict=True)
+               if len(c) % 2 and solver.seam is None]  # a rocking crank has no turn to repeat
         notes.append(
-            "change points at φ1 = " + ", ".join(f"{angle(deg(x))}°" for x in changes)
+            # found to about 1e-10 rad: shown to 1e-6°, so that 0° is not 5.7e-09°
+            "change points at φ1 = " + ", ".join(f"{angle(round(deg(x), 6))}°" for x in changes)
             + mech.driver.convention() + ": the links of a group lie in line there, where "
             + ("its two assemblies meet; the cycle keeps the assembly, so the linkage "
                "folds back there (its smooth motion would repeat only after two turns)"
@@ -187,14 +189,20 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
     stroke = theta = K = None
     start = phi0
     if out is not None:
-        sgn = _signs(np.where(near, 0.0, out.rate(m, mech)))  # no sign where it is singular
+        rate = out.rate(m, mech)
+        # no sign where it is singular, nor where the rate is rounding of 0 (1e-9 of the
+        # crank's ω1, or of its pin's speed): an output at rest does not turn back
+        still = 1e-9 * abs(w1) * (mech.driver.length if out.kind == "linear" else 1.0)
+        sgn = _signs(np.where(near | (np.abs(rate) < still), 0.0, rate))
+        if not sgn.any():
+            notes.append(f"the output {out.point} does not move")
         idx = np.nonzero(sgn != np.roll(sgn, -1))[0]
         for i in idx:
             a, b = grid[i], grid[(i + 1) % samples] if i + 1 < samples else grid[0] + sense * TWO_PI
             if near[(i + 1) % samples]:  # it turns back at a change point: a fold
                 extremes.append(min(changes, key=lambda x: abs((x - b + math.pi) % TWO_PI - math.pi)))
                 continue
-            extremes.append(_refine(solver, out, mech, a, b))
+            extremes.append(_refine(solver, out, mech, a, b, sgn[i] > 0))
         if len(extremes) == 2:
             with np.errstate(all="ignore"):
                 me = solver.solve(np.array(extremes))
@@ -248,9 +256,12 @@ def _signs(rate: np.ndarray) -> np.ndarray:
     return sgn
 
 
-def _refine(solver: Solver, out: Output, mech: Mechanism, a: float, b: float) -> float:
-    """The crank angle in [a, b] where the output's velocity changes sign (bisection to
-    1e-13 rad: the velocity is exact, so the extreme is as exact as the angle)."""
+def _refine(solver: Solver, out: Output, mech: Mechanism, a: float, b: float,
+            rising: bool) -> float:
+    """The crank angle in [a, b] where the output's velocity changes sign, from ``rising``
+    (positive) at a to the other sign (bisection to 1e-13 rad: the velocity is exact, so
+    the extreme is as exact as the angle). The sign at a is the grid's: an extreme on a
+    sample has there a velocity of rounding, whose sign one path and the other differ on."""
     def v(phi):
         try:  # one angle on Python numbers: a sixth of the array path's time
             return float(out.rate(solver.solve_one(phi), mech))
@@ -258,12 +269,10 @@ def _refine(solver: Solver, out: Output, mech: Mechanism, a: float, b: float) ->
             with np.errstate(all="ignore"):
                 return float(out.rate(solver.solve(np.array([phi])), mech)[0])
 
-    va = v(a)
     for _ in range(60):
         mid = 0.5 * (a + b)
-        vm = v(mid)
-        if (vm > 0) == (va > 0):
-            a, va = mid, vm
+        if (v(mid) > 0) == rising:
+            a = mid
         else:
             b = mid
         if abs(b - a) < 1e-13:
@@ -274,13 +283,13 @@ def _refine(solver: Solver, out: Output, mech: Mechanism, a: float, b: float) ->
 def _limits(solver: Solver, lo: float, hi: float, step: float) -> tuple[float, float]:
     """The crank's limit positions, refined from the last samples ``lo`` and ``hi`` that
     close (``step`` before ``lo`` and after ``hi`` it does not) to 1e-13 rad by bisection,
-    both at once; each on the side where every point stands (:attr:`Motion.placed`)."""
+    both at once; each on the side where the mechanism closes."""
     inside = np.array([lo, hi])
     outside = inside + np.array([-step, step])
     for _ in range(60):
         mid = 0.5 * (inside + outside)
         with np.errstate(all="ignore"):
-            ok = solver.solve(mid).placed
+            ok = solver.solve(mid).valid
         inside, outside = np.where(ok, mid, inside), np.where(ok, outside, mid)
         if np.all(np.abs(outside - inside) < 1e-13):
             break

@@ -63,7 +63,9 @@ class Solver:
     (:func:`plans.branches.change_points`, found over the turn at the first solve). A
     group that meets an odd number of change points a turn keeps its sign, and folds
     back there, since its smooth motion would take two turns to repeat; unless keeping
-    it would make a link jump (a slotted link's pivot on the crank circle).
+    it would make a link jump (a slotted link's pivot on the crank circle). Where the
+    crank cannot make a full turn the signs are counted from ``branch_at`` within its
+    range, the way the crank goes, not through the angles where it does not close.
     """
 
     def __init__(self, mech: Mechanism, structure: Structure | None = None,
@@ -79,6 +81,9 @@ class Solver:
         #: (rad, in [0, 2π), ascending), and where its sign flips (at all of them, or at
         #: none); None until the first solve
         self._changes = self._flips = flips
+        #: where the counting of flips wraps: a turn from ``branch_at`` (rad) where the
+        #: mechanism does not close; None: at ``branch_at`` itself
+        self._seam: float | None = None
         #: what follows from the mechanism alone, worked out once: the groups' words,
         #: the plans' recipes, the extent of the cycle (``plans.plan``)
         self.cache: dict = {}
@@ -93,8 +98,13 @@ class Solver:
         if self._changes is None:
             from .branches import change_points
 
-            self._changes, self._flips = change_points(self)
+            self._changes, self._flips, self._seam = change_points(self)
         return self._changes
+
+    @property
+    def seam(self) -> float | None:
+        self.changes  # noqa: B018 - found with them
+        return self._seam
 
     @property
     def flips(self) -> tuple[tuple[float, ...], ...]:
@@ -109,10 +119,13 @@ class Solver:
         if not flips:
             return self.sigmas[i]
         turn = (phi - self.branch_at) % (2 * math.pi)
-        if isinstance(turn, float):
-            passed = sum(f < turn for f in flips)
+        seam = 2 * math.pi if self._seam is None else self._seam
+        if isinstance(turn, float):  # ahead of branch_at up to the seam, behind it past it
+            passed = sum(f < turn for f in flips) if turn < seam else sum(f > turn for f in flips)
             return -self.sigmas[i] if passed % 2 else self.sigmas[i]
-        passed = np.searchsorted(np.asarray(flips), turn)
+        f = np.asarray(flips)
+        passed = np.where(turn < seam, np.searchsorted(f, turn),
+                          len(f) - np.searchsorted(f, turn, side="right"))
         return np.where(passed % 2 == 1, -self.sigmas[i], self.sigmas[i]).astype(float)
 
     def at(self, phi: float) -> str:
@@ -125,10 +138,10 @@ class Solver:
                 return words + " (a change point: the two assemblies of a group meet there)"
         return words
 
-    def with_flips(self, flips: tuple[tuple[float, ...], ...]) -> Solver:
-        """This solver with the given change points instead of its own."""
+    def with_flips(self, flips: tuple[tuple[float, ...], ...], seam: float | None = None) -> Solver:
+        """This solver with the given flips (and seam) instead of its own."""
         out = Solver(self.mech, self.structure, self.sigmas, flips)
-        out.branch_at = self.branch_at
+        out.branch_at, out._seam = self.branch_at, seam
         return out
 
     # -------------------------------------------------------------------------------

@@ -275,6 +275,8 @@ class Motion:
         for g in self.groups:
             if g.margin is not None:
                 out |= ~g.valid & (g.margin >= -IN_LINE)
+        for z in self.position.values():  # a pin exactly on a pivot: the group has no place
+            out &= np.isfinite(z)
         return out
 
     @property

@@ -250,11 +250,14 @@ def simulate(sol: Solution, mk: Mistake | None, mu: dict[str, float] | None = No
     if mk is None:
         return _Replayer(sol).exact()
     if mk.kind == "branch":
-        sigmas = list(sol.solver.sigmas)  # the branches the solution was solved on
+        # the signs the solution was solved on at its angle (past a change point they are
+        # not those read at the file's angle), one of them flipped, none flipping again
+        n = len(sol.structure.groups)
+        sigmas = [int(sol.solver.sigma(i, sol.phi)) for i in range(n)]
         sigmas[mk.group] = -sigmas[mk.group]
         mu = mu or sol.mu
-        other = solve_position(sol.mechanism, sol.phi,
-                               solver=Solver(sol.mechanism, sol.structure, tuple(sigmas)), mu=mu)
+        other = solve_position(sol.mechanism, sol.phi, solver=Solver(
+            sol.mechanism, sol.structure, tuple(sigmas), ((),) * n), mu=mu)
         return _Replayer(other).exact()
     if mk.kind in ("scale", "scale-swapped"):
         st = _Replayer(sol).exact()

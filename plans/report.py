@@ -218,7 +218,7 @@ def change_points(cycle, lang: str, driver) -> str:
     """The sentence naming the cycle's change points, in the file's convention."""
     t = T[lang]
     joined = {"en": " and ", "ru": " и "}.get(lang, ", ")
-    at = joined.join(angle(driver.file_angle(x), 4, lang) for x in cycle.change_points)
+    at = joined.join(angle(round(driver.file_angle(x), 6), 4, lang) for x in cycle.change_points)
     what = t["change1"] if len(cycle.change_points) == 1 else t["changes"]
     return t["change"].format(at=at.replace("°", ""), conv=driver.convention(lang), what=what)
 
@@ -240,6 +240,7 @@ def no_full_turn(cycle, lang: str = "en", driver=None) -> str:
         a, b = b, a
     b = 0.0 if b > 360.0 - 1e-9 else b  # 359.99999999999 is 0, as angle() writes it
     a = a - 360.0 if a > b else a
+    a = 0.0 if abs(a) < 1e-9 else a  # a limit found to 1e-13 rad: −5.7e−14° is 0
     return T[lang]["noturn"].format(
         d=driver.link if driver else 1,
         lo=num(a, 4, lang).replace("-", "−"), hi=angle(b, 4, lang),

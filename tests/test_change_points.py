@@ -246,3 +246,107 @@ def test_the_explanatory_note_names_the_change_points_in_either_language(capsys,
             "её сборки совпадают") in out
     code, out, _ = run(capsys, "report", path)
     assert "At φ1 = 180 and 0°, change points, the links of a group lie on one line" in out
+
+
+# --- found by review: each failed before its fix ------------------------------------------
+
+
+def test_a_pin_landing_exactly_on_a_pivot_is_no_internal_error(capsys, tmp_path):
+    """A kite (crank = frame) whose crank pin lands on the rocker's pivot at 0°, the first
+    sample of its trajectories: the positions there are not finite, and were taken as
+    standing (exit 3, 'cannot convert float NaN to integer')."""
+    from support import run
+
+    path = tmp_path / "kite.toml"
+    path.write_text('trace = ["E"]\n' + fourbar(0.1, 0.2, 0.2, 0.1), "utf-8")
+    code, out, err = run(capsys, "solve", path)
+    assert code == 0, err
+    assert "nan" not in out.lower()
+
+
+def test_a_rocking_crank_flips_at_its_change_point_within_its_range():
+    """Crank 0.2, coupler and rocker 0.1, frame 0.2: the crank rocks over −60°…60° with a
+    change point at 0°. The flips were counted round through the angles where it does not
+    close, so the positions between 0° and the file's 50° were on the other assembly."""
+    mech = mech_of(fourbar(0.2, 0.1, 0.1, 0.2, angle=50.0).replace("above OD", "above AD"))
+    sv = Solver(mech)
+    c = analyse_cycle(mech, 12, solver=sv)
+    assert not c.full_turn and sv.seam is not None
+    lo, hi = c.crank_range
+    assert math.degrees(lo) == pytest.approx(-60, abs=1e-9)
+    assert math.degrees(hi) == pytest.approx(60, abs=1e-9)
+    m = sv.solve(np.array(c.positions))
+    x = m.position["B"].real
+    assert np.allclose(x, x[::-1], atol=1e-12)  # symmetric about 0°, as the linkage is
+    phi = np.linspace(lo + 1e-3, hi - 1e-3, 4001)
+    phi = phi[np.abs(phi) > 1e-4]
+    from test_stability import jumps
+
+    assert jumps(sv.solve(phi), mech.driver.omega) < 1.05  # no step beyond its velocity
+
+
+def test_an_output_at_rest_has_no_turning_points():
+    """The isosceles crank-slider on its other assembly keeps its slider on the crank's
+    pivot: velocities of 1e-17 that change sign had made some 1200 'turning points',
+    each drawn as an extreme position."""
+    mech = mech_of(crank_slider(0.1, 0.1, 0.0).replace('B = "right of O"', 'B = "left of A"'))
+    c = analyse_cycle(mech)
+    assert c.full_turn and c.extremes == () and c.stroke is None
+    assert "the output B does not move" in c.notes
+
+
+def test_an_extreme_on_a_grid_sample_is_found_exactly():
+    """Crank and coupler 0.1, rocker and frame 0.2: the rocker stops at 300° exactly, a
+    sample of the grid from 60°, where the two paths' rounding differs in sign."""
+    c = analyse_cycle(mech_of(fourbar(0.1, 0.1, 0.2, 0.2)))
+    assert on_circle([math.degrees(x) for x in c.extremes], [300.0, 60.0])
+    assert math.degrees(c.theta) == pytest.approx(60.0, abs=1e-9)
+    assert c.K == pytest.approx(2.0, abs=1e-12)
+
+
+def test_the_diagrams_draw_rounding_as_zero_and_run_over_change_points():
+    from drawing.scene import Polyline, Text
+    from drawing.views import diagrams_view
+
+    mech = parallelogram()
+    sv = Solver(mech)
+    view = diagrams_view(mech, analyse_cycle(mech, solver=sv), "en", solver=sv)
+    texts = [it.text for it in view.items if isinstance(it, Text)]
+    assert "μ_{ε} = 0.025 (rad/s²)/mm" in texts  # ε3 = 0: no scale of 5e-10 for its noise
+    curves = [it for it in view.items if isinstance(it, Polyline)]
+    omega = np.array(curves[1].points)[:, 1]
+    assert np.ptp(omega) < 1e-9  # ω3 = ω1 all round, the change points included
+
+
+def test_check_names_the_other_assembly_past_a_change_point(tmp_path):
+    """At 200°, past the change point at 180°, the sign the plan is solved on is not the
+    one read at 60°: the 'other assembly' hypothesis had been the exact solution again."""
+    from test_check import ck, named, write_meas
+
+    from plans import solve_position
+
+    path = tmp_path / "parallelogram.toml"
+    path.write_text(fourbar(A, B_, A, D), "utf-8")
+    mech = mech_of(fourbar(A, B_, A, D))
+    turned = mech.at_file_angle(200.0)
+    sv = Solver(mech)
+    mu = {"mu_l": 0.002, "mu_v": 0.01, "mu_a": 0.1}
+    other = solve_position(turned, solver=Solver(
+        turned, sigmas=(-int(sv.sigma(0, turned.driver.phi)),), flips=((),)), mu=mu)
+    segs = {k: v for k, v in other.segments.items() if k[0].islower() or k[0] == "π"}
+    meas = write_meas(tmp_path / "m.toml", path, segs, mu, extra="angle_deg = 200")
+    got = named(ck.check(ck.load(meas)))
+    assert (got.kind, got.target) == ("branch", "group 2–3 (RRR)")
+
+
+def test_a_limit_is_found_on_the_side_where_the_mechanism_closes():
+    """A crank-slider with L = R − e reaches the guide's normal at 0° and 180°: the range
+    read 'from −2.6e−11° to 180°'."""
+    from plans.report import no_full_turn
+
+    mech = mech_of(crank_slider(0.1, 0.05, 0.05).replace('B = "right of O"', 'B = "right of A"'))
+    sv = Solver(mech)
+    c = analyse_cycle(mech, solver=sv)
+    assert sv.solve(np.array(c.crank_range)).placed.all()
+    assert abs(c.crank_range[0]) < 1e-13 and abs(c.crank_range[1] - math.pi) < 1e-13
+    assert "from 0° to 180°, a swing of 180°" in no_full_turn(c, "en", mech.driver)
