@@ -123,8 +123,8 @@ class GroupSolution(NamedTuple):
         label = self.group.label
         if bool(self.singular[k]):
             return SingularPlanError(
-                f"{label} at {at}: {self.why_singular}: a singular position "
-                f"(dead point), the plan has no unique solution{note}", source=source,
+                f"{label} at {at}: {self.why_singular}: {_singular(at)}, the plan has no "
+                f"unique solution{note}", source=source,
             )
         return AssemblyError(
             f"{label} cannot be assembled at {at}: needs {self.admissible}, "
@@ -148,8 +148,8 @@ class GroupSolution(NamedTuple):
         r0, r1 = self.velocity.routes
         return SingularPlanError(
             f"{self.group.label} at {at}: the lines {r0.relation} and "
-            f"{r1.relation} are parallel (angle {_degrees(s):.3g}°, sin = {s:.3g}): a singular "
-            "position (dead point), the plan has no unique solution", sine=s, source=source)
+            f"{r1.relation} are parallel (angle {_degrees(s):.3g}°, sin = {s:.3g}): "
+            f"{_singular(at)}, the plan has no unique solution", sine=s, source=source)
 
     def near_parallel(self, k: int | None, at: str, lang: str = "en") -> str | None:
         """The warning where the two lines meet at under about 2° (|sin| below
@@ -236,6 +236,12 @@ def flag_words(flag: tuple, at: str, lang: str = "en") -> str:
     """The warning for one of :func:`flagged`'s figures."""
     g, kind, figure = flag
     return g.near_parallel(None, at, lang) if kind == "lines" else near_pivot(g, figure, at, lang)
+
+
+def _singular(at: str) -> str:
+    """'a singular position (dead point)', but not where ``at`` already calls the angle a
+    change point (:meth:`plans.kinematics.Solver.at`), through which the motion goes on."""
+    return "a singular position" if "change point" in at else "a singular position (dead point)"
 
 
 def _degrees(sine: float) -> float:

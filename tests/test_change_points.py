@@ -224,6 +224,7 @@ def test_a_plan_asked_for_on_a_change_point_is_refused_and_says_why(capsys, tmp_
     code, out, err = run(capsys, "solve", path, "--angle", "180")
     assert code != 0 and out == ""
     assert "at φ1 = 180° (a change point: the two assemblies of a group meet there)" in err
+    assert "dead point" not in err
     assert len(err.strip().splitlines()) == 1
     code, out, err = run(capsys, "cycle", path, "--positions", "4", "--json")
     import json
