@@ -275,14 +275,15 @@ class Motion:
 
     @property
     def placed(self) -> np.ndarray:
-        """Where every point stands: the groups close, or miss by rounding only, their
+        """Where every point stands: each group closes, or misses by rounding only, its
         links in line (at a change point the positions stand, the plans are singular)."""
-        out = np.asarray(self.valid, dtype=bool).copy()
+        out = np.asarray(self.valid, dtype=bool)
+        if self.groups:  # valid, unless a group misses by more than rounding
+            out = np.ones_like(out)
         for g in self.groups:
-            if g.margin is not None:
-                out |= ~g.valid & (g.margin >= -IN_LINE)
+            out = out & (g.valid if g.margin is None else g.valid | (g.margin >= -IN_LINE))
         for z in self.position.values():  # a pin exactly on a pivot: the group has no place
-            out &= np.isfinite(z)
+            out = out & np.isfinite(z)
         return out
 
     @property

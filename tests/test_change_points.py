@@ -351,3 +351,20 @@ def test_a_limit_is_found_on_the_side_where_the_mechanism_closes():
     assert sv.solve(np.array(c.crank_range)).placed.all()
     assert abs(c.crank_range[0]) < 1e-13 and abs(c.crank_range[1] - math.pi) < 1e-13
     assert "from 0° to 180°, a swing of 180°" in no_full_turn(c, "en", mech.driver)
+
+
+def test_a_position_stands_only_where_every_group_closes_or_misses_by_rounding():
+    """placed had been valid OR any group missing by rounding: a group that misses by
+    centimetres beside one in line to rounding counted as standing."""
+    from dataclasses import replace
+
+    mech = parallelogram()
+    m = Solver(mech).solve(np.radians([60.0, 180.0, 200.0]))
+    (g,) = m.groups
+    assert list(m.placed) == [True, True, True]
+    for margin, valid, want in ((-1e-15, False, True), (-0.01, False, False), (0.2, True, True)):
+        fake = g._replace(valid=np.full(3, valid), margin=np.full(3, margin))
+        two = replace(m, groups=(fake, g._replace(valid=np.full(3, False),
+                                                  margin=np.full(3, -1e-15))),
+                      valid=np.full(3, False))
+        assert list(two.placed) == [want] * 3, (margin, valid)
