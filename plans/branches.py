@@ -56,7 +56,8 @@ def change_points(sv) -> tuple[tuple[tuple[float, ...], ...], tuple[tuple[float,
     grid = sv.branch_at + np.linspace(0.0, 2 * math.pi, CHANGE_SAMPLES, endpoint=False)
     step = 2 * math.pi / CHANGE_SAMPLES
     with np.errstate(all="ignore"):
-        gap = ~sv.with_flips(((),) * n).solve(grid).placed
+        kept = sv.with_flips(((),) * n).solve(grid)  # every sign kept: serves until one flips
+    gap = ~kept.placed
     seam = None
     if gap.any() and not gap[0]:  # the middle of the first run of angles that do not close
         first = int(np.argmax(gap))
@@ -68,8 +69,10 @@ def change_points(sv) -> tuple[tuple[tuple[float, ...], ...], tuple[tuple[float,
             flips.append(())
             continue
         trial = sv.with_flips(tuple(flips) + ((),) * (n - i), seam)
-        with np.errstate(all="ignore"):
-            margin = trial.solve(grid).groups[i].margin
+        if any(flips):
+            with np.errstate(all="ignore"):
+                kept = trial.solve(grid)
+        margin = kept.groups[i].margin
         low = (margin <= np.roll(margin, 1)) & (margin < np.roll(margin, -1)) & (margin < 1e-3)
         points = []
         for k in np.flatnonzero(low):
