@@ -14,6 +14,7 @@ import numpy as np
 
 from .errors import PlansError
 from .fmt import angle, from_x
+from .geometry import apart
 from .kinematics import Motion, Solver
 from .mechanism import Mechanism
 from .structure import DyadKind
@@ -161,27 +162,31 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
     changes, near = _change_points(solver, grid)
     if changes:
         deg = mech.driver.file_angle
+        # groups that meet them an odd number of times a turn: flipped (smooth) or kept;
+        # a rocking crank has no turn to repeat
         odd = [bool(f) for c, f in zip(solver.changes, solver.flips, strict=True)
-               if len(c) % 2 and solver.seam is None]  # a rocking crank has no turn to repeat
+               if len(c) % 2 and solver.seam is None]
+        if not odd:
+            how = "it could fold into its other assembly; the cycle follows the smooth motion"
+        elif any(odd):
+            how = ("its two assemblies meet; the cycle follows the smooth motion, which "
+                   "repeats only after two turns: its two turns meet at φ1 = "
+                   f"{angle(deg(solver.branch_at))}°")
+        else:
+            how = ("its two assemblies meet; the cycle keeps the assembly, so the linkage "
+                   "folds back there (its smooth motion would repeat only after two turns)")
         notes.append(
             # found to about 1e-10 rad: shown to 1e-6°, so that 0° is not 5.7e-09°
             "change points at φ1 = " + ", ".join(f"{angle(round(deg(x), 6))}°" for x in changes)
-            + mech.driver.convention() + ": the links of a group lie in line there, where "
-            + ("its two assemblies meet; the cycle keeps the assembly, so the linkage "
-               "folds back there (its smooth motion would repeat only after two turns)"
-               if odd and not any(odd) else
-               "its two assemblies meet; the cycle follows the smooth motion, which "
-               f"repeats only after two turns: its two turns meet at φ1 = "
-               f"{angle(deg(solver.branch_at))}°" if odd else
-               "it could fold into its other assembly; the cycle follows the smooth motion")
-            + " (the plans there are singular)")
-    full = bool((valid | (near & m.placed)).all())
+            + mech.driver.convention() + f": the links of a group lie in line there, where {how}"
+            " (the plans there are singular)")
+    closes = valid | (near & m.placed)  # a sample on a change point closes to rounding
+    full = bool(closes.all())
     out = find_output(mech)
     if not full:  # the range is worded where it is shown (report.no_full_turn)
         if not valid[0]:  # the given angle itself does not close: say why, as solve does
             solver.solve_one(phi0)
-        lo, hi = _limits(solver, *_interval_around(grid, valid | (near & m.placed)),
-                         grid[1] - grid[0])
+        lo, hi = _limits(solver, *_interval_around(grid, closes), grid[1] - grid[0])
         span = lo + (hi - lo) * (np.arange(n_positions) + 0.5) / n_positions
         return Cycle(out, False, (lo, hi), None, None, None, tuple(span), grashof,
                      tuple(notes), (lo, hi), changes)
@@ -200,7 +205,7 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
         for i in idx:
             a, b = grid[i], grid[(i + 1) % samples] if i + 1 < samples else grid[0] + sense * TWO_PI
             if near[(i + 1) % samples]:  # it turns back at a change point: a fold
-                extremes.append(min(changes, key=lambda x: abs((x - b + math.pi) % TWO_PI - math.pi)))
+                extremes.append(min(changes, key=lambda x: apart(x, b)))
                 continue
             extremes.append(_refine(solver, out, mech, a, b, sgn[i] > 0))
         if len(extremes) == 2:
@@ -235,7 +240,7 @@ def _change_points(solver: Solver, grid: np.ndarray) -> tuple[tuple[float, ...],
     near = np.zeros(grid.shape, dtype=bool)
     offsets = sorted({f for points in solver.changes for f in points})
     for f in offsets:
-        near |= np.abs((turn - f + math.pi) % TWO_PI - math.pi) <= step
+        near |= apart(turn, f) <= step
     angles = [solver.branch_at + f for f in offsets]
     sense = 1.0 if solver.mech.driver.omega > 0 else -1.0
     angles.sort(key=lambda x: (sense * (x - grid[0])) % TWO_PI)

@@ -11,6 +11,16 @@ from __future__ import annotations
 import numpy as np
 
 
+def apart(a, b):
+    """How far angle ``a`` is from angle ``b`` round the circle (rad, in [0, π]); for
+    arrays and Python numbers alike.
+
+    >>> round(float(apart(0.1, 2 * np.pi - 0.1)), 12)
+    0.2
+    """
+    return abs((a - b + np.pi) % (2 * np.pi) - np.pi)
+
+
 def cross(a, b):
     """z-component of a × b (positive when b is counter-clockwise from a); for arrays and
     Python numbers alike.

@@ -28,6 +28,7 @@ import numpy as np
 from . import kernels
 from .branches import choose_branches, hint_holds, parse_hint
 from .errors import SingularPlanError
+from .geometry import apart
 from .groups import SOLVERS, ScalarFallback
 from .kernels import record
 from .mechanism import Mechanism
@@ -134,7 +135,7 @@ class Solver:
         words = self.mech.driver.at(phi)
         turn = (phi - self.branch_at) % (2 * math.pi)
         for points in self.changes:
-            if any(abs((turn - f + math.pi) % (2 * math.pi) - math.pi) < 1e-9 for f in points):
+            if any(apart(turn, f) < 1e-9 for f in points):
                 return words + " (a change point: the two assemblies of a group meet there)"
         return words
 
