@@ -89,7 +89,8 @@ class Plan(NamedTuple):
     segments: Mapping[str, float] = MappingProxyType({})
     #: the same segments' ends: name → (from, to), plan point names or the pole
     ends: Mapping[str, tuple[str, str]] = MappingProxyType({})
-    #: mm: a segment no longer than this is 0 (:data:`NOISE` of the plan's longest vector)
+    #: m/s or m/s²: a vector no longer than this is rounding of 0 (:data:`NOISE` of the
+    #: plan's longest vector), at any μ
     tiny: float = 0.0
 
     def value(self, name: str) -> complex:
@@ -98,8 +99,8 @@ class Plan(NamedTuple):
     def mm(self, start: str, end: str) -> float:
         """Length of the segment start→end on the drawing, in mm; 0 up to ``tiny``, as in
         ``segments``."""
-        mm = abs(self.value(end) - self.value(start)) / self.mu
-        return mm if mm > self.tiny else 0.0
+        size = abs(self.value(end) - self.value(start))
+        return size / self.mu if size > self.tiny else 0.0
 
 
 @dataclass(frozen=True)
@@ -502,8 +503,8 @@ def _compile(kind: str, pole: str, tip: str, steps, ends):
     values = ", ".join(dict((pn, v) for pn, v, _ in points).values())  # as the plan keeps them
     # each length 0 up to ``tiny`` (see NOISE), in the one dict display
     segments = ", ".join(
-        f"{key!r}: (m_ if (m_ := abs({var[b]} - {var[a]}) / mu) > tiny else 0.0)" if var[a] != "0j"
-        else f"{key!r}: (m_ if (m_ := abs({var[b]}) / mu) > tiny else 0.0)" for key, (a, b) in ends.items())
+        f"{key!r}: (m_ if (m_ := abs({var[b]} - {var[a]}) / mu) > tiny_mm else 0.0)" if var[a] != "0j"
+        else f"{key!r}: (m_ if (m_ := abs({var[b]}) / mu) > tiny_mm else 0.0)" for key, (a, b) in ends.items())
     unit = "m/s²" if kind == "acceleration" else "m/s"
     source = "\n".join([
         "def follow(store, cons, pos, mu):",
@@ -511,7 +512,8 @@ def _compile(kind: str, pole: str, tip: str, steps, ends):
         f"    big = max(map(abs, ({values}, 0j)))",
         "    if not mu:",
         f"        mu = choose_mu(abs(store[{tip!r}]), big)",
-        "    tiny = NOISE * big / mu",
+        "    tiny = NOISE * big",
+        "    tiny_mm = tiny / mu",
         "    return record(Plan, (",
         f"        {kind!r}, {pole!r},",
         "        {" + ", ".join(f"{pn!r}: {rec}" for pn, _, rec in points) + "},",

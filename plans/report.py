@@ -376,7 +376,7 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
                 continue
             l = abs(sol.positions[A] - sol.positions[B])
             mag = abs(r.param)
-            mag = mag if mag > plan.tiny * plan.mu else 0.0  # rounding, as the plan's segments
+            mag = mag if mag > plan.tiny else 0.0  # rounding, as the plan's segments
             val = (sol.epsilon if acc else sol.omega)[link]
             sense = t["sense"][int(math.copysign(1, val)) if val else 0]
             key = "eps" if acc else "omega"

@@ -368,3 +368,16 @@ def test_a_position_stands_only_where_every_group_closes_or_misses_by_rounding()
                                                   margin=np.full(3, -1e-15))),
                       valid=np.full(3, False))
         assert list(two.placed) == [want] * 3, (margin, valid)
+
+
+def test_rounding_of_a_zero_stays_zero_at_any_scale_factor():
+    """A parallelogram's coupler translates: its relative velocity ab is rounding. Plan.tiny
+    is in m/s, so a plan redrawn at a scale factor 10⁴ times finer still has ab = 0 mm (in
+    mm, kept from the first μ, it gave 1e-9 mm)."""
+    from plans import solve_position
+
+    plan = solve_position(parallelogram(), math.radians(200.0)).velocity
+    assert plan.mm("a", "b") == 0.0
+    fine = plan._replace(mu=plan.mu / 1e4)
+    assert fine.mm("a", "b") == 0.0 and fine.mm("p", "b") == pytest.approx(plan.mm("p", "b") * 1e4)
+
