@@ -192,7 +192,7 @@ def on_pivot(g: GroupSolution, q: float, at: str, source: str = "") -> SingularP
     P, Q = g.group.P, g.group.Q
     return SingularPlanError(
         f"{g.group.label} at {at}: the block {P} is on the rocker's pivot {Q} (|{Q}{P}| "
-        f"ratio {q:.3g}): the rocker's ω is undefined, a singular position (dead point)",
+        f"ratio {q:.3g}): the rocker's ω is undefined, {_singular(at)}",
         sine=q, source=source)
 
 

@@ -381,3 +381,14 @@ def test_rounding_of_a_zero_stays_zero_at_any_scale_factor():
     fine = plan._replace(mu=plan.mu / 1e4)
     assert fine.mm("a", "b") == 0.0 and fine.mm("p", "b") == pytest.approx(plan.mm("p", "b") * 1e4)
 
+
+
+def test_a_block_on_the_pivot_at_a_change_point_is_not_called_a_dead_point(capsys, tmp_path):
+    from support import run
+
+    path = tmp_path / "slotted.toml"
+    path.write_text(slotted(0.1, 0.1), "utf-8")
+    code, _, err = run(capsys, "solve", path, "--angle", "270")
+    assert code != 0 and "at φ1 = 270° (a change point" in err
+    assert "is on the rocker's pivot" in err and "dead point" not in err
+
