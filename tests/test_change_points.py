@@ -370,6 +370,16 @@ def test_a_position_stands_only_where_every_group_closes_or_misses_by_rounding()
         assert list(two.placed) == [want] * 3, (margin, valid)
 
 
+def test_a_block_on_the_pivot_at_a_change_point_is_not_called_a_dead_point(capsys, tmp_path):
+    from support import run
+
+    path = tmp_path / "slotted.toml"
+    path.write_text(slotted(0.1, 0.1), "utf-8")
+    code, _, err = run(capsys, "solve", path, "--angle", "270")
+    assert code != 0 and "at φ1 = 270° (a change point" in err
+    assert "is on the rocker's pivot" in err and "dead point" not in err
+
+
 def test_rounding_of_a_zero_stays_zero_at_any_scale_factor():
     """A parallelogram's coupler translates: its relative velocity ab is rounding. Plan.tiny
     is in m/s, so a plan redrawn at a scale factor 10⁴ times finer still has ab = 0 mm (in
@@ -382,13 +392,15 @@ def test_rounding_of_a_zero_stays_zero_at_any_scale_factor():
     assert fine.mm("a", "b") == 0.0 and fine.mm("p", "b") == pytest.approx(plan.mm("p", "b") * 1e4)
 
 
-
-def test_a_block_on_the_pivot_at_a_change_point_is_not_called_a_dead_point(capsys, tmp_path):
+def test_the_cycle_table_rounds_epsilon_as_solve_does(capsys, tmp_path):
+    """The isosceles crank-slider's rod turns at −ω1 throughout: its ε2 is rounding at
+    every position, the largest of its own column; solve printed 0 and cycle 1e-13."""
     from support import run
 
-    path = tmp_path / "slotted.toml"
-    path.write_text(slotted(0.1, 0.1), "utf-8")
-    code, _, err = run(capsys, "solve", path, "--angle", "270")
-    assert code != 0 and "at φ1 = 270° (a change point" in err
-    assert "is on the rocker's pivot" in err and "dead point" not in err
-
+    path = tmp_path / "iso.toml"
+    path.write_text(crank_slider(0.1, 0.1, 0.0).replace('B = "right of O"', 'B = "right of A"'),
+                    "utf-8")
+    _, out, _ = run(capsys, "cycle", path, "--positions", "8")
+    table = out.split("ω (rad/s) and ε (rad/s²) of links")[1].split("\n\n")[0]
+    rows = [r.split() for r in table.splitlines()[2:] if r.strip()]
+    assert rows and all(r[6] in ("0", "—") for r in rows), table  # ε2
