@@ -43,6 +43,7 @@ from drawing.scene import (
     translate,
 )
 from drawing.styles import LineType
+from plans.cycle import at_rest
 from plans.fmt import num
 from plans.positions import drawn
 
@@ -685,9 +686,7 @@ def diagrams_view(mech, cycle, lang: str = "ru", width: float = 180.0, height: f
     y = 0.0
     # rounding of a 0 is drawn as 0, not blown up to the height of the diagram (a
     # parallelogram's ε3 of 1e-13 rad/s² at μ = 5e-10)
-    size = 1e-9 * (mech.driver.length if linear else 1.0)
-    w1 = abs(mech.driver.omega)
-    s, v, a = (np.where(np.abs(x) < size * w1**k, 0.0, x) for k, x in enumerate((s, v, a)))
+    s, v, a = (np.where(np.abs(x) < at_rest(mech, linear, k), 0.0, x) for k, x in enumerate((s, v, a)))
     for data, name, unit in zip((s, v, a), names, units, strict=True):
         lo, hi = float(min(data.min(), 0)), float(max(data.max(), 0))
         span = hi - lo or 1.0

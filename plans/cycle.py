@@ -176,8 +176,7 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
             how = ("its two assemblies meet; the cycle keeps the assembly, so the linkage "
                    "folds back there (its smooth motion would repeat only after two turns)")
         notes.append(
-            # found to about 1e-10 rad: shown to 1e-6°, so that 0° is not 5.7e-09°
-            "change points at φ1 = " + ", ".join(f"{angle(round(deg(x), 6))}°" for x in changes)
+                "change points at φ1 = " + ", ".join(f"{x}°" for x in change_angles(changes, mech.driver))
             + mech.driver.convention() + f": the links of a group lie in line there, where {how}"
             " (the plans there are singular)")
     closes = valid | (near & m.placed)  # a sample on a change point closes to rounding
@@ -197,7 +196,7 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
         rate = out.rate(m, mech)
         # no sign where it is singular, nor where the rate is rounding of 0 (1e-9 of the
         # crank's ω1, or of its pin's speed): an output at rest does not turn back
-        still = 1e-9 * abs(w1) * (mech.driver.length if out.kind == "linear" else 1.0)
+        still = at_rest(mech, out.kind == "linear")
         sgn = _signs(np.where(near | (np.abs(rate) < still), 0.0, rate))
         if not sgn.any():
             notes.append(f"the output {out.point} does not move")
@@ -229,6 +228,18 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
     pos = tuple(start + sense * TWO_PI * i / n_positions for i in range(n_positions))
     return Cycle(out, True, tuple(extremes), stroke, theta, K, pos, grashof, tuple(notes),
                  change_points=changes)
+
+
+def change_angles(changes, driver, lang: str = "en") -> list[str]:
+    """Change points (rad from +x) as the file's angles, written to 1e-6°: they are found to
+    about 1e-10 rad, and 0° is not to read 5.7e-09°."""
+    return [angle(round(driver.file_angle(x), 6), 4, lang) for x in changes]
+
+
+def at_rest(mech: Mechanism, linear: bool, order: int = 1) -> float:
+    """Below this an output's value (``order`` 0), rate (1) or acceleration (2) is rounding
+    of 0: 1e-9 of the crank's own (its pin's for a linear output) to that order."""
+    return 1e-9 * (mech.driver.length if linear else 1.0) * abs(mech.driver.omega) ** order
 
 
 def _change_points(solver: Solver, grid: np.ndarray) -> tuple[tuple[float, ...], np.ndarray]:

@@ -216,11 +216,13 @@ def warnings(sol: Solution, lang: str = "en") -> list[str]:
 
 def change_points(cycle, lang: str, driver) -> str:
     """The sentence naming the cycle's change points, in the file's convention."""
+    from .cycle import change_angles  # the cycle words its summary from here
+
     t = T[lang]
     joined = {"en": " and ", "ru": " и "}.get(lang, ", ")
-    at = joined.join(angle(round(driver.file_angle(x), 6), 4, lang) for x in cycle.change_points)
+    at = joined.join(change_angles(cycle.change_points, driver, lang))
     what = t["change1"] if len(cycle.change_points) == 1 else t["changes"]
-    return t["change"].format(at=at.replace("°", ""), conv=driver.convention(lang), what=what)
+    return t["change"].format(at=at, conv=driver.convention(lang), what=what)
 
 
 def no_full_turn(cycle, lang: str = "en", driver=None) -> str:
