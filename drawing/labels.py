@@ -123,8 +123,8 @@ def runs_width(runs: Sequence[Run], size: float) -> float:
 def text_box(t: Text) -> Polygon:
     """The box of ``t`` on the sheet: advance × (h + descent).
 
-    Anchor, baseline, rotation and horizontal stretch are honoured; the lean
-    of slanted letters is not (it is left to the clearances).
+    Anchor, baseline, rotation, horizontal stretch and the lean of slanted letters at
+    the top of the box are honoured.
     """
     runs = t.runs()
     w = runs_width(runs, t.size) * t.stretch
