@@ -71,14 +71,7 @@ class Deviation:
     sense_ok: bool | None = None  # ω, ε with a sense given
 
 
-#: a computed segment (mm) or value below this is rounding of a 0: a parallelogram's
-#: coupler, which translates, has a relative velocity of 1e-13 mm
-ROUNDING = 1e-9
-
-
 def compare(item: Item, computed: float, tol: Tolerance) -> Deviation:
-    if abs(computed) < ROUNDING:
-        computed = 0.0  # not a percentage of rounding, nor a sense
     mag = abs(computed)
     dev = item.measured - mag
     limit = tol.limit(mag, item.per_mm)

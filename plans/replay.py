@@ -17,7 +17,7 @@ from .check_words import _text
 from .geometry import cross, intersect
 from .kinematics import Solver
 from .measured import MU_KEY, PLANS, Item
-from .plan import Plan, Solution, plan_name, solve_position
+from .plan import NOISE, Plan, Solution, plan_name, solve_position
 from .structure import DyadKind
 
 
@@ -48,7 +48,10 @@ def expected(item: Item, st: State, mu: dict[str, float]) -> float:
     if item.plan == "positions":
         return abs(st.positions[item.end] - st.positions[item.start]) / mu["mu_l"] * f
     vals = st.values(item.plan)
-    d = abs(vals[item.end] - vals[item.start]) * f
+    d = abs(vals[item.end] - vals[item.start])
+    if d <= NOISE * max(map(abs, vals.values())):  # rounding of a 0, as the plan rounds it
+        return 0.0  # (a parallelogram's coupler translates: ab is 1e-13 mm, not 4e16 % off)
+    d *= f
     return d if item.kind == "value" else d / mu[MU_KEY[item.plan]]
 
 

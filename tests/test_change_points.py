@@ -404,3 +404,23 @@ def test_the_cycle_table_rounds_epsilon_as_solve_does(capsys, tmp_path):
     table = out.split("ω (rad/s) and ε (rad/s²) of links")[1].split("\n\n")[0]
     rows = [r.split() for r in table.splitlines()[2:] if r.strip()]
     assert rows and all(r[6] in ("0", "—") for r in rows), table  # ε2
+
+
+def test_check_keeps_small_true_values_and_zeroes_only_rounding():
+    """A crank at 1e-4 rad/s gives ε3 of 5e-10 rad/s²: a real value, which an absolute
+    1e-9 floor had made 0 (and the student's right answer BEYOND). Only what is rounding
+    relative to the plan, as the plan's own segments are, is 0."""
+    from plans import check as ck
+    from plans import solve_position
+    from plans.measured import Item, Tolerance
+    from plans.replay import expected, simulate
+
+    item = Item("values.eps3", "ε3", "epsilon", "acceleration", 5.17e-10, link=3)
+    d = ck.compare(item, 5.17e-10, Tolerance(5.0, 1.0))
+    assert d.computed == 5.17e-10 and d.ok and d.percent == 0.0
+    sol = solve_position(parallelogram(), math.radians(200.0))
+    st = simulate(sol, None)
+    ab = Item("segments.ab", "ab", "segment", "velocity", 0.0, "a", "b")
+    pb = Item("segments.pb", "pb", "segment", "velocity", 0.0, "p", "b")
+    assert expected(ab, st, sol.mu) == 0.0  # the coupler translates: rounding is 0
+    assert expected(pb, st, sol.mu) == pytest.approx(sol.segments["pb"])
