@@ -317,13 +317,13 @@ def _batch(args) -> int:
         if tty:
             print(f"\rsheet {i}/{len(numbers)}: variant {n} ", end="", file=sys.stderr, flush=True)
         a = copy.copy(args)
-        a.variant, a.table = str(n), table
+        a.variant = str(n)
         a.output = str(out / f"variant-{n}.svg")
         a.png = str(out / f"variant-{n}.png") if args.png else None
         a.pdf = str(out / f"variant-{n}.pdf") if args.pdf else None
         a.note = str(out / f"variant-{n}.md") if args.note else None
         try:
-            mech = mechanism_from(a)
+            mech = mechanism_from(a, table)
             _write(render(mech, a), a)
         except (PlansError, ValueError, ArithmeticError) as exc:
             source = getattr(exc, "source", "")  # an input error names its source itself

@@ -60,8 +60,10 @@ def number(lo: float, hi: float, integer: bool = False):
     return parse
 
 
-def mechanism_from(args):
-    """The mechanism named by FILE or --variant, with --angle applied.
+def mechanism_from(args, table=None):
+    """The mechanism named by FILE or --variant, with --angle applied; ``table``: the
+    variant table of ``--table`` already read (``sheet --variant all`` reads it once for
+    all its rows, and says each row's problems with that row's sheet).
 
     Refuses, before anything is computed, an output (``-o``) that is one of the inputs, and
     remembers the inputs so that :func:`write_output` refuses them too.
@@ -72,9 +74,7 @@ def mechanism_from(args):
 
     if (args.file is None) == (args.variant is None):
         raise InputError("command line", "give a mechanism FILE or --variant N (one of them)")
-    table = getattr(args, "table", None)
-    read = isinstance(table, variants.Table)  # sheet --variant all reads it once for all rows
-    path = table.path if read else table
+    path = getattr(args, "table", None)
     if path is not None and args.variant is None:
         raise InputError("command line", "--table goes with --variant N: a mechanism FILE "
                                          "is read as it is")
@@ -86,9 +86,9 @@ def mechanism_from(args):
         text = str(args.variant).strip()
         if not re.fullmatch(r"[+-]?\d{1,9}", text):
             raise InputError("command line", f"--variant: {_arg(args.variant, 30)} is not a variant number (0, 1, 2…)")
-        t = table if read else variants.read_table(table)
+        t = table or variants.read_table(path)
         mech = t.variant(int(text))
-        if not read:  # --variant all says each row's problems with that row's sheet
+        if table is None:
             for line in t.others(int(text)):
                 warn(args.command, line)
     else:

@@ -217,9 +217,9 @@ def variant_dict(row: dict) -> dict:
     }
 
 
-def variant(n: int, table: str | Path | Table | None = None) -> Mechanism:
-    """Row ``n`` of the table (a path, None for the built-in one, or one already read)."""
-    return (table if isinstance(table, Table) else read_table(table)).variant(n)
+def variant(n: int, table: str | Path | None = None) -> Mechanism:
+    """Row ``n`` of the table at ``table`` (None: the built-in one)."""
+    return read_table(table).variant(n)
 
 
 def variant_numbers(table: str | Path | None = None) -> list[int]:
