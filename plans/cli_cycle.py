@@ -21,7 +21,15 @@ import functools
 import math
 from dataclasses import dataclass
 
-from .cli import EXIT_INPUT, EXIT_OK, add_source, mechanism_from, number, write_output
+from .cli import (
+    EXIT_INPUT,
+    EXIT_OK,
+    add_source,
+    mechanism_from,
+    number,
+    warn,
+    write_output,
+)
 from .fmt import from_x, num
 
 #: a table for reading or a file for a spreadsheet: 10⁵ rows of the press are 270 MB of
@@ -79,7 +87,6 @@ class CycleTable:
 def run(args) -> int:
     import sys
 
-
     n = args.positions
     mech = mechanism_from(args)
     table = compute(mech, n)
@@ -94,12 +101,8 @@ def run(args) -> int:
     failed = [i for i, s in enumerate(table.status) if s.errors]
     if warned:
         worst = min(warned, key=lambda i: table.status[i].min_sine)
-        print(
-            f"plans cycle: warning: {len(warned)} of {n} positions are near-singular "
-            f"(smallest figure at position {worst}: "
-            f"{_fig(min(table.status[worst].figures.values()))})",
-            file=sys.stderr,
-        )
+        warn("cycle", f"{len(warned)} of {n} positions are near-singular (smallest figure at "
+                      f"position {worst}: {_fig(min(table.status[worst].figures.values()))})")
     for i in failed:
         for e in table.status[i].errors:
             print(f"plans cycle: error: position {i}: {e}", file=sys.stderr)
@@ -379,6 +382,8 @@ def _table(title: str, head: list[str], rows: list[list[str]]) -> list[str]:
 
 
 def to_text(t: CycleTable) -> str:
+    import numpy as np
+
     m, mech, c = t.motion, t.mechanism, t.cycle
     d = mech.driver
     n = len(t.status)
@@ -417,10 +422,12 @@ def to_text(t: CycleTable) -> str:
 
     from .plan import NOISE
 
-    ok = [k for k in range(n) if t.status[k].ok]
+    ok = np.array([st.ok for st in t.status], dtype=bool)
 
     def largest(values) -> float:
-        return max((abs(complex(values[k])) for k in ok), default=0.0)
+        """|value| largest over the positions solved (numpy: 10⁵ rows in Python took 3 s)."""
+        got = np.abs(np.broadcast_to(np.asarray(values), ok.shape)[ok])
+        return float(got.max()) if got.size else 0.0
 
     base = ["№", "φ1 °"]
     for title, key in (("x of points (m)", "x"), ("y of points (m)", "y")):
