@@ -13,6 +13,11 @@ the rocker's ω = V / |QP| loses its digits. A figure below ``WARN_SINE`` (≈ 2
 warning, below ``SINGULAR_SINE`` (or a group that does not close) an error: the values of
 that position are then left out (``—`` in the table, empty in CSV, null in JSON) and the
 command exits with status 2 after writing everything else.
+
+A position on a change point (a parallelogram at 0° and 180°) is no error: the positions
+stand there and the motion goes on smoothly, only its plans are singular. Its row gives
+the positions, leaves the velocities and accelerations out, and says why ("singular");
+the command still exits with status 0.
 """
 
 from __future__ import annotations
@@ -63,6 +68,7 @@ class Status:
     """Conditioning and diagnostics of one position."""
 
     ok: bool  # solved: every group closes and no figure is singular
+    placed: bool  # the positions stand: every group closes (or misses it by rounding)
     min_sine: (
         float  # the smallest |sin| between intersected lines (NaN if it does not close)
     )
@@ -71,6 +77,13 @@ class Status:
     ]  # per group: "group 2–3 (RPR)" → |sin|; "… pivot" → |QP| ratio
     warnings: tuple[str, ...]
     errors: tuple[str, ...]
+    #: why the plans are singular where the position is a change point (positions only)
+    singular: tuple[str, ...] = ()
+
+    @property
+    def state(self) -> str:
+        return ("error" if self.errors else "singular" if self.singular
+                else "warning" if self.warnings else "ok")
 
 
 @dataclass(frozen=True)
@@ -106,6 +119,12 @@ def run(args) -> int:
     for i in failed:
         for e in table.status[i].errors:
             print(f"plans cycle: error: position {i}: {e}", file=sys.stderr)
+    singular = [i for i, s in enumerate(table.status) if s.singular]
+    if singular:
+        which = ", ".join(str(i) for i in singular)
+        warn("cycle", f"position{'s' if len(singular) > 1 else ''} {which} "
+                      f"{'are change points' if len(singular) > 1 else 'is a change point'}: "
+                      "positions only, the plans there are singular")
     return EXIT_INPUT if failed else EXIT_OK
 
 
@@ -155,6 +174,7 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
     phis = np.asarray(motion.phi, dtype=float).tolist()
     at_ = solver.at if solver is not None else mech.driver.at
     at = functools.cache(lambda k: at_(phis[k]))  # words only where flagged, once
+    placed = np.broadcast_to(np.asarray(motion.placed, dtype=bool), (n,)).tolist()
     out = []
     for k in range(n):
         figures: dict[str, float] = {}
@@ -163,7 +183,7 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
         for g, label, valid, sine, low, pivot in cols:
             if not valid[k]:
                 errors.append(str(g.failure(k, at(k))))
-                figures[label] = math.nan
+                figures[label] = sine[k] if placed[k] else math.nan  # in line: about 0
                 continue
             figures[label] = sine[k]
             if low[k]:
@@ -186,9 +206,11 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
             min_sine = min(sines)
         else:
             min_sine = math.nan
-        out.append(
-            Status(not errors, min_sine, figures, tuple(warnings), tuple(errors))
-        )
+        singular: list[str] = []
+        if errors and placed[k] and solver is not None and solver.on_change_point(phis[k]):
+            singular, errors = errors, []
+        out.append(Status(not errors and not singular, placed[k], min_sine, figures,
+                          tuple(warnings), tuple(errors), tuple(singular)))
     return tuple(out)
 
 
@@ -276,22 +298,24 @@ def _json_rows(t: CycleTable):
             "phi_deg": from_x(phi),
             "angle_deg": mech.driver.file_angle(phi),
             "solved": good,
+            "placed": st.placed,  # the positions stand (where not solved: a change point)
             "conditioning": {
                 "min_sine": _ok(st.min_sine),
                 "figures": {key: _ok(v) for key, v in st.figures.items()},
             },
             "warnings": list(st.warnings),
             "errors": list(st.errors),
+            "singular": list(st.singular),
         }
         if t.output_values is not None:
-            row["output"] = _ok(t.output_values[k]) if good else None
+            row["output"] = _ok(t.output_values[k]) if st.placed else None
         row["points"] = {
             name: {
-                key: ([float(z.real), float(z.imag)] if good else None)
-                for key, z in (
-                    ("position", complex(m.position[name][k])),
-                    ("velocity", complex(m.velocity[name][k])),
-                    ("acceleration", complex(m.acceleration[name][k])),
+                key: ([float(z.real), float(z.imag)] if shown else None)
+                for key, z, shown in (
+                    ("position", complex(m.position[name][k]), st.placed),
+                    ("velocity", complex(m.velocity[name][k]), good),
+                    ("acceleration", complex(m.acceleration[name][k]), good),
                 )
             }
             for name in t.points
@@ -321,7 +345,7 @@ def _csv_header(t: CycleTable) -> list[str]:
         head += [f"{name}.{q}" for q in ("x", "y", "vx", "vy", "ax", "ay")]
     for i in t.links:
         head += [f"omega{i}", f"epsilon{i}"]
-    head += ["warnings", "errors"]
+    head += ["warnings", "errors", "singular"]
     return head
 
 
@@ -341,25 +365,35 @@ def csv_chunks(t: CycleTable, rows: int = 1000):
         x = float(x)
         return repr(x) if math.isfinite(x) else ""
 
-    # the columns as Python numbers, converted once (not cell by cell from numpy)
+    # the columns as Python numbers, converted once (not cell by cell from numpy), each
+    # with whether it stands where the position does but the plans are singular
     cols: list[list[float]] = []
+    placed: list[bool] = []
     for name in t.points:
-        for arr in (m.position[name], m.velocity[name], m.acceleration[name]):
+        for arr, shown in ((m.position[name], True), (m.velocity[name], False),
+                           (m.acceleration[name], False)):
             z = np.asarray(arr)
             cols += [z.real.tolist(), z.imag.tolist()]
+            placed += [shown, shown]
     for i in t.links:
         cols += [np.asarray(m.links[i].omega).tolist(), np.asarray(m.links[i].epsilon).tolist()]
     phis = np.asarray(m.phi).tolist()
     out = None if t.output_values is None else np.asarray(t.output_values).tolist()
+    placed += [False] * (len(cols) - len(placed))  # ω and ε
     blank = [""] * len(cols)
     for k, st in enumerate(t.status):
         good = st.ok
         row = [k, f(from_x(phis[k])), f(mech.driver.file_angle(phis[k])), int(good), f(st.min_sine)]
         row += [f(v) for v in st.figures.values()]
         if out is not None:
-            row.append(f(out[k]) if good else "")
-        row += [f(c[k]) for c in cols] if good else blank
-        row += ["; ".join(st.warnings), "; ".join(st.errors)]
+            row.append(f(out[k]) if st.placed else "")
+        if good:
+            row += [f(c[k]) for c in cols]
+        elif st.placed:
+            row += [f(c[k]) if shown else "" for c, shown in zip(cols, placed, strict=True)]
+        else:
+            row += blank
+        row += ["; ".join(st.warnings), "; ".join(st.errors), "; ".join(st.singular)]
         w.writerow(row)
         if k % rows == rows - 1:
             yield buf.getvalue()
@@ -413,9 +447,10 @@ def to_text(t: CycleTable) -> str:
     def lead(k: int) -> list[str]:
         return [str(k), f"{mech.driver.file_angle(float(m.phi[k])):.2f}"]
 
-    def cell(k: int, value, big: float = 0.0) -> str:
-        """A value of position k; rounding (below NOISE of its column's largest) is 0."""
-        if not t.status[k].ok:
+    def cell(k: int, value, big: float = 0.0, position: bool = False) -> str:
+        """A value of position k; rounding (below NOISE of its column's largest) is 0.
+        ``position``: it stands where the position does, even if the plans are singular."""
+        if not (t.status[k].placed if position else t.status[k].ok):
             return "—"
         value = float(value)
         return num(0.0 if abs(value) <= NOISE * big else value)
@@ -439,6 +474,7 @@ def to_text(t: CycleTable) -> str:
                     getattr(
                         complex(m.position[p][k]), "real" if key == "x" else "imag"
                     ),
+                    position=True,
                 )
                 for p in moving
             ]
@@ -485,10 +521,10 @@ def to_text(t: CycleTable) -> str:
             v = float(t.output_values[k])
             if c.output.kind != "linear":
                 v = math.degrees(v)
-            r.append(num(v) if st.ok else "—")
+            r.append(num(v) if st.placed else "—")
         r.append(_fig(st.min_sine))
         r += [_fig(st.figures.get(x, math.nan)) for x in labels]
-        r.append("error" if st.errors else "warning" if st.warnings else "ok")
+        r.append(st.state)
         rows.append(r)
     lines += _table(
         "Conditioning (sine of the angle between the intersected lines)", head, rows
@@ -496,12 +532,17 @@ def to_text(t: CycleTable) -> str:
     if any(x.endswith(" pivot") for x in labels):
         lines.append("  QP: how far a slotted link's block P is from the rocker's pivot Q, "
                      "|QP| / (|OQ| + |OP|), O the crank's pivot")
-    notes = [(k, "error", e) for k, st in enumerate(t.status) for e in st.errors]
-    notes += [(k, "warning", w) for k, st in enumerate(t.status) for w in st.warnings]
+    order = ("error", "singular", "warning")
+    notes = [(k, kind, text) for k, st in enumerate(t.status)
+             for kind, texts in zip(order, (st.errors, st.singular, st.warnings), strict=True)
+             for text in texts]
     if notes:
         lines.append("")
-        for k, kind, text in sorted(notes, key=lambda x: (x[0], x[1] != "error")):
+        for k, kind, text in sorted(notes, key=lambda x: (x[0], order.index(x[1]))):
             lines.append(f"position {k}: {kind}: {text}")
+        if any(st.singular for st in t.status):
+            lines.append("singular: a change point, where the positions stand and the motion "
+                         "goes on smoothly; only its plans have no unique solution")
     return "\n".join(lines) + "\n"
 
 

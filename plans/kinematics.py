@@ -129,14 +129,18 @@ class Solver:
                           len(f) - np.searchsorted(f, turn, side="right"))
         return np.where(passed % 2 == 1, -self.sigmas[i], self.sigmas[i]).astype(float)
 
+    def on_change_point(self, phi: float) -> bool:
+        """Whether the crank angle ``phi`` (rad from +x) is a change point, to 1e-9 rad:
+        the positions stand there, the plans are singular."""
+        turn = (phi - self.branch_at) % (2 * math.pi)
+        return any(apart(turn, f) < 1e-9 for points in self.changes for f in points)
+
     def at(self, phi: float) -> str:
         """The crank angle ``phi`` in words, as :meth:`plans.mechanism.Driver.at` gives it,
         saying so where it is a change point (to 1e-9 rad)."""
         words = self.mech.driver.at(phi)
-        turn = (phi - self.branch_at) % (2 * math.pi)
-        for points in self.changes:
-            if any(apart(turn, f) < 1e-9 for f in points):
-                return words + " (a change point: the two assemblies of a group meet there)"
+        if self.on_change_point(phi):
+            return words + " (a change point: the two assemblies of a group meet there)"
         return words
 
     def with_flips(self, flips: tuple[tuple[float, ...], ...], seam: float | None = None) -> Solver:

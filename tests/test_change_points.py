@@ -231,9 +231,60 @@ def test_a_plan_asked_for_on_a_change_point_is_refused_and_says_why(capsys, tmp_
 
     rows = json.loads(out)["rows"]  # from 60°: 60, 150, 240, 330 miss them; 12 would not
     assert all(r["solved"] for r in rows)
-    code, out, err = run(capsys, "cycle", path, "--positions", "12")
-    assert "position 4: error: group 2–3 (RRR) at φ1 = 180° (a change point" in out
-    assert "error: position 4: group 2–3 (RRR) at φ1 = 180° (a change point" in err
+
+
+def test_a_cycle_row_on_a_change_point_gives_its_positions_and_says_why(capsys, tmp_path):
+    """From 60° in 12 positions a parallelogram passes 180° (position 4) and 0° (10): their
+    positions stand (B − A = D − O), their plans are singular. That is no error: the rows
+    give x and y and leave V, a, ω and ε out, with the reason, and the command exits 0."""
+    import csv
+    import io
+    import json
+
+    from support import run
+
+    path = tmp_path / "parallelogram.toml"
+    path.write_text(fourbar(A, B_, A, D), "utf-8")
+    code, out, err = run(capsys, "cycle", path, "--positions", "12", "--json")
+    assert code == 0, err
+    assert err.strip() == ("plans cycle: warning: positions 4, 10 are change points: "
+                           "positions only, the plans there are singular")
+    rows = json.loads(out)["rows"]
+    for r in rows:
+        k, phi = r["index"], math.radians(r["phi_deg"])
+        assert r["placed"]
+        (ax, ay), (bx, by) = r["points"]["A"]["position"], r["points"]["B"]["position"]
+        assert (ax, ay) == pytest.approx((A * math.cos(phi), A * math.sin(phi)), abs=1e-15)
+        assert (bx - ax, by - ay) == pytest.approx((D, 0.0), abs=1e-15)  # the coupler translates
+        assert r["output"] == pytest.approx(math.atan2(by, bx - D) % (2 * math.pi), abs=1e-12) \
+            or r["output"] == pytest.approx(math.atan2(by, bx - D) % (2 * math.pi) + 2 * math.pi)
+        if k in (4, 10):
+            assert not r["solved"] and r["errors"] == [] and r["warnings"] == []
+            assert r["points"]["B"]["velocity"] is None and r["links"]["3"]["omega"] is None
+            assert len(r["singular"]) == 1 and "(a change point" in r["singular"][0]
+            assert r["conditioning"]["min_sine"] < 1e-12
+        else:
+            assert r["solved"] and r["singular"] == []
+            assert r["links"]["3"]["omega"] == pytest.approx(10.0, abs=1e-9)
+    code, out, _ = run(capsys, "cycle", path, "--positions", "12")
+    assert code == 0
+    lines = out.splitlines()
+
+    def cells(title, k):
+        table = lines[lines.index(title):]
+        return dict(zip(table[1].replace("φ1 °", "φ1").split(), table[2 + k].split(), strict=True))
+
+    x4 = cells("x of points (m)", 4)
+    assert (x4["φ1"], x4["A"], x4["B"]) == ("180.00", "-0.05", "0.15")
+    assert cells("|V| of points (m/s)", 4)["B"] == "—"
+    assert cells("|V| of points (m/s)", 3)["B"] == "0.5"
+    assert "position 4: singular: group 2–3 (RRR) at φ1 = 180° (a change point" in out
+    assert "position 10: singular: group 2–3 (RRR) at φ1 = 0° (a change point" in out
+    assert "error" not in out
+    code, out, _ = run(capsys, "cycle", path, "--positions", "12", "--csv")
+    row = list(csv.DictReader(io.StringIO(out)))[4]
+    assert float(row["B.x"]) == pytest.approx(0.15) and row["B.vx"] == "" and row["omega3"] == ""
+    assert row["solved"] == "0" and row["errors"] == "" and "(a change point" in row["singular"]
 
 
 def test_the_explanatory_note_names_the_change_points_in_either_language(capsys, tmp_path):
