@@ -23,6 +23,11 @@ RELATIONS = ("above", "below", "left of", "right of")
 #: samples of the turn searched for change points
 CHANGE_SAMPLES = 3600
 
+#: how far past an angle where a group's two assemblies meet its hints are read (rad):
+#: there (a change point, a limit of the crank's range) no hint can tell them apart,
+#: while 1e-4 rad on they stand some 1e-4 of the group's size apart
+PAST_MEETING = 1e-4
+
 
 def change_points(sv) -> tuple[tuple[tuple[float, ...], ...], tuple[tuple[float, ...], ...],
                                float | None]:
@@ -187,13 +192,37 @@ def choose_branches(mech: Mechanism, structure: Structure) -> tuple[tuple[int, .
     at = mech.hints_at
     if at is not None and at != mech.driver.phi:
         try:
-            return _choose(mech.with_phi(at), structure), at
+            return _read(mech.with_phi(at), structure)
         except (AssemblyError, SingularPlanError):
             pass
-    return _choose(mech, structure), mech.driver.phi
+    return _read(mech, structure)
 
 
-def _choose(mech: Mechanism, structure: Structure) -> tuple[int, ...]:
+class _Meet(Exception):
+    """A group's two assemblies meet at the angle the hints are read at."""
+
+
+def _read(mech: Mechanism, structure: Structure) -> tuple[tuple[int, ...], float]:
+    """The signs the hints give and the angle they were read at: the mechanism's own,
+    or, where a group's two assemblies meet there, :data:`PAST_MEETING` on, the way the
+    crank turns (or back, where the linkage does not close on that side). The change
+    point itself is then one the motion passes (a parallelogram given at 0°)."""
+    phi = mech.driver.phi
+    try:
+        return _choose(mech, structure), phi
+    except _Meet:
+        step = math.copysign(PAST_MEETING, mech.driver.omega)
+        for past in (phi + step, phi - step):
+            try:
+                return _choose(mech.with_phi(past), structure), past
+            except (AssemblyError, SingularPlanError, _Meet):
+                continue
+        return _choose(mech, structure, meet=False), phi  # its error, or its rounding's pick
+
+
+def _choose(mech: Mechanism, structure: Structure, meet: bool = True) -> tuple[int, ...]:
+    """The sign of each group by the hints at the mechanism's angle; ``meet``: raise
+    :class:`_Meet` where a group's two assemblies meet there (to rounding)."""
     from .kinematics import Solver  # it calls back here: imported when first needed
 
     names = mech.point_names()
@@ -243,6 +272,9 @@ def _choose(mech: Mechanism, structure: Structure) -> tuple[int, ...]:
                         f"write {other}") from None
             if holds:
                 ok.append(sigma)
+        margin = positions[1].groups[i].margin
+        if meet and margin is not None and abs(float(np.ravel(margin)[0])) <= IN_LINE:
+            raise _Meet(g.label)
         used |= set(mine)
         if len(ok) == 1:
             sigmas.append(ok[0])

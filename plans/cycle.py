@@ -180,10 +180,11 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
             + mech.driver.convention() + f": the links of a group lie in line there, where {how}"
             " (the plans there are singular)")
     closes = valid | (near & m.placed)  # a sample on a change point closes to rounding
+    closes[0] |= m.placed[0]  # the given angle on a limit of the crank's range ends it
     full = bool(closes.all())
     out = find_output(mech)
     if not full:  # the range is worded where it is shown (report.no_full_turn)
-        if not valid[0]:  # the given angle itself does not close: say why, as solve does
+        if not closes[0]:  # the given angle itself does not close: say why, as solve does
             solver.solve_one(phi0)
         lo, hi = _limits(solver, *_interval_around(grid, closes), grid[1] - grid[0])
         span = lo + (hi - lo) * (np.arange(n_positions) + 0.5) / n_positions

@@ -475,3 +475,74 @@ def test_check_keeps_small_true_values_and_zeroes_only_rounding():
     pb = Item("segments.pb", "pb", "segment", "velocity", 0.0, "p", "b")
     assert expected(ab, st, sol.mu) == 0.0  # the coupler translates: rounding is 0
     assert expected(pb, st, sol.mu) == pytest.approx(sol.segments["pb"])
+
+
+@pytest.mark.parametrize("given", [0.0, 180.0])
+@pytest.mark.parametrize(("sense", "hint", "kind"), [
+    ("ccw", "above OD", "parallelogram"), ("ccw", "below OD", "anti"),
+    ("cw", "above OD", "anti"), ("cw", "below OD", "parallelogram"),
+])
+def test_hints_given_on_a_change_point_are_read_just_past_it(given, sense, hint, kind):
+    """At 0° and 180° a parallelogram's two assemblies meet, so "above OD" names neither:
+    the hint had been read on rounding, or failed as a dead point. It is read just past
+    the angle the way the crank turns: counter-clockwise from 0° the parallelogram has B
+    above OD, clockwise below. At 180° the sides are the other way round."""
+    mech = mech_of(fourbar(A, B_, A, D, angle=given).replace(
+        'B = "above OD"', f'B = "{hint}"').replace("omega = 10.0", f'omega = 10.0\nsense = "{sense}"'))
+    assert (mech.driver.omega > 0) == (sense == "ccw")
+    sv = Solver(mech)
+    if given == 180.0:
+        kind = {"parallelogram": "anti", "anti": "parallelogram"}[kind]
+    assert on_circle(angles(sv), [0.0, 180.0])
+    m = sv.solve(away([0.0, math.pi], n=721))
+    assert m.valid.all()
+    coupler = m.position["B"] - m.position["A"]
+    if kind == "parallelogram":
+        assert np.abs(coupler - D).max() < 1e-12  # B − A = D − O all round
+    else:  # the other assembly: away from the change points never a parallelogram
+        assert np.abs(coupler - D).max() > 0.05
+        assert (np.abs(coupler - D) > 1e-5).all()
+
+
+def test_a_cycle_from_a_change_point_starts_with_a_singular_row(capsys, tmp_path):
+    from support import run
+
+    path = tmp_path / "parallelogram.toml"
+    path.write_text(fourbar(A, B_, A, D, angle=0.0), "utf-8")
+    code, out, err = run(capsys, "cycle", path, "--positions", "4")
+    assert code == 0, err
+    assert "position 0: singular: group 2–3 (RRR) at φ1 = 0° (a change point" in out
+    assert "position 2: singular: group 2–3 (RRR) at φ1 = 180° (a change point" in out
+    code, out, err = run(capsys, "solve", path)
+    assert code == 2 and out == ""
+    assert err.strip().splitlines() == [
+        f"plans solve: {path}: group 2–3 (RRR) at φ1 = 0° (a change point: the two assemblies "
+        "of a group meet there): A, B and D are in line (links 2 and 3 stretched out or "
+        "folded): a singular position, the plan has no unique solution"]
+
+
+def test_a_crank_given_at_a_limit_of_its_range_rocks_between_its_two_limits():
+    """b + c = |BD| at 90°: the crank rocks between −90° and 90°, its limits, and the given
+    angle is one of them. The hint is read just inside the range, and the cycle spans it;
+    before, the cycle failed there as a dead point. "Above AD" and "below AD" give the
+    two assemblies, each on one side of AD all through."""
+    a, d = 0.05, 0.2
+    b = 0.15
+    c = math.hypot(a, d) - b
+    sides = []
+    for hint in ("above AD", "below AD"):
+        mech = mech_of(fourbar(a, b, c, d, angle=90.0).replace('"above OD"', f'"{hint}"'))
+        sv = Solver(mech)
+        cyc = analyse_cycle(mech, n_positions=6, solver=sv)
+        assert not cyc.full_turn
+        assert sorted(math.degrees(x) for x in cyc.extremes) == pytest.approx([-90.0, 90.0],
+                                                                             abs=1e-9)
+        m = sv.solve(cyc.positions)
+        assert m.valid.all()
+        A_, B = m.position["A"], m.position["B"]
+        assert np.abs(np.abs(B - A_) - b).max() < 1e-12
+        assert np.abs(np.abs(B - D) - c).max() < 1e-12
+        side = np.sign(((D - A_).conjugate() * (B - A_)).imag)  # + : B left of A→D
+        assert len(set(side.tolist())) == 1
+        sides.append(side[0])
+    assert sides == [1.0, -1.0]
