@@ -175,8 +175,13 @@ def pivot_figure(g: GroupSolution, position: dict, crank_pivot: complex):
     ω = V / |QP| loses its digits, though the two lines of the plans stay perpendicular."""
     if g.group.kind != DyadKind.RPR:
         return None
-    P, Q = position[g.group.P], position[g.group.Q]
-    loop = abs(Q - crank_pivot) + abs(P - crank_pivot)
+    return pivot_ratio(position[g.group.P], position[g.group.Q], crank_pivot)
+
+
+def pivot_ratio(P, Q, O):
+    """|QP| / (|OQ| + |OP|) of a block P, a rocker's pivot Q and the crank's pivot O
+    (arrays or Python numbers); 0 where all three coincide."""
+    loop = abs(Q - O) + abs(P - O)
     if isinstance(loop, float):  # the one-angle path, on Python numbers
         return abs(P - Q) / loop if loop > 0 else 0.0
     with np.errstate(all="ignore"):

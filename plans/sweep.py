@@ -26,6 +26,8 @@ import numpy as np
 from . import kernels
 from .groups import setup
 from .kinematics import Solver
+from .records import pivot_ratio
+from .structure import DyadKind
 
 #: angles per block: 8192 complex numbers are 128 KiB an array, so the few arrays a step
 #: works on at a time stay in a core's 2 MiB second-level cache, while numpy's cost per
@@ -40,8 +42,9 @@ class Sweep:
     """Every point and link over the crank angles ``phi`` (1-D), without the record.
 
     ``sine`` holds, per group (by its label), the |sin| between the two lines its plans
-    intersect: the conditioning figure. Where ``valid`` is False a group does not close
-    and the values there are meaningless.
+    intersect: the conditioning figure. A slotted link (RPR) has a second figure,
+    :attr:`pivot`. Where ``valid`` is False a group does not close and the values there
+    are meaningless.
     """
 
     phi: np.ndarray
@@ -52,6 +55,9 @@ class Sweep:
     epsilon: dict[int, np.ndarray]
     sine: dict[str, np.ndarray]
     valid: np.ndarray
+    #: per slotted link (RPR): its key in :attr:`pivot`, its block P and rocker pivot Q,
+    #: and the crank's pivot O
+    slots: tuple[tuple[str, str, str, complex], ...] = ()
 
     @property
     def min_sine(self) -> np.ndarray:
@@ -59,6 +65,15 @@ class Sweep:
         for s in self.sine.values():
             out = np.minimum(out, s)
         return out
+
+    @property
+    def pivot(self) -> dict[str, np.ndarray]:
+        """Per slotted link ("group 2–3 (RPR) pivot", as ``plans cycle`` names it): how far
+        its block P is from the rocker's pivot Q, |QP| / (|OQ| + |OP|), O the crank's pivot
+        (:func:`plans.records.pivot_figure`). Near 0 the rocker's ω = V / |QP| loses its
+        digits while the lines' sine stays 1. Worked out when asked for."""
+        return {key: pivot_ratio(self.position[P], self.position[Q], O)
+                for key, P, Q, O in self.slots}
 
 
 def sweep(sv: Solver, phi, block: int = BLOCK, into: Sweep | None = None) -> Sweep:
@@ -105,7 +120,10 @@ def sweep(sv: Solver, phi, block: int = BLOCK, into: Sweep | None = None) -> Swe
             for label, v in part.sine.items():
                 sine[label][i:j] = v
             valid[i:j] = part.valid
-    return Sweep(phi, out["pos"], out["vel"], out["acc"], omega, epsilon, sine, valid)
+    mech = sv.mech
+    slots = tuple((f"{g.label} pivot", g.P, g.Q, mech.frame[mech.driver.pivot])
+                  for g in sv.structure.groups if g.kind == DyadKind.RPR)
+    return Sweep(phi, out["pos"], out["vel"], out["acc"], omega, epsilon, sine, valid, slots)
 
 
 def _layout(sv: Solver):

@@ -325,3 +325,27 @@ def test_one_angle_that_is_no_number_is_a_value_error(phi):
     sv = Solver(SCENES["press"].mechanism())
     with pytest.raises(ValueError, match="the crank angle must be a finite number"):
         sv.solve_one(phi)
+
+
+@pytest.mark.parametrize("name", ["press", "slotted_oscillating", "crank_rocker"])
+def test_the_sweep_gives_each_slotted_links_pivot_figure_as_the_cycle_does(name):
+    """|QP| / (|OQ| + |OP|): the figure under which ``plans cycle`` refuses a block on the
+    rocker's pivot, where the lines' sine stays 1; the sweep had only the sine."""
+    from plans.cli_cycle import conditioning
+
+    mech = SCENES[name].mechanism()
+    sv = Solver(mech)
+    phi = mech.driver.phi + np.linspace(0, 2 * np.pi, 37)
+    sw = sv.sweep(phi)
+    m = sv.solve(phi)
+    rows = conditioning(mech, m, sv)
+    want = {k for k in rows[0].figures if k.endswith(" pivot")}
+    assert set(sw.pivot) == want and (name == "crank_rocker") == (not want)
+    for key in want:
+        np.testing.assert_allclose(sw.pivot[key], [r.figures[key] for r in rows], rtol=1e-14)
+        g = next(g for g in sv.structure.groups if f"{g.label} pivot" == key)
+        P, Q = sw.position[g.P], sw.position[g.Q]
+        O = mech.frame[mech.driver.pivot]
+        by_hand = np.abs(P - Q) / (np.abs(Q - O) + np.abs(P - O))
+        np.testing.assert_allclose(sw.pivot[key], by_hand, rtol=1e-15)
+        assert 0 < sw.pivot[key].min() < sw.pivot[key].max() <= 1 + 1e-15  # the triangle OPQ
