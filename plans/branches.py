@@ -210,13 +210,17 @@ def _read(mech: Mechanism, structure: Structure) -> tuple[tuple[int, ...], float
     phi = mech.driver.phi
     try:
         return _choose(mech, structure), phi
-    except _Meet:
+    except _Meet as meet:
         step = math.copysign(PAST_MEETING, mech.driver.omega)
         for past in (phi + step, phi - step):
             try:
                 return _choose(mech.with_phi(past), structure), past
             except (AssemblyError, SingularPlanError, _Meet):
                 continue
+            except InputError as exc:  # the hints do not part them there either
+                why = (f" (read {PAST_MEETING:g} rad past {mech.driver.at(phi)}, where the two "
+                       f"assemblies of {meet} meet)")
+                raise InputError(exc.source, [p + why for p in exc.problems]) from None
         return _choose(mech, structure, meet=False), phi  # its error, or its rounding's pick
 
 

@@ -546,3 +546,10 @@ def test_a_crank_given_at_a_limit_of_its_range_rocks_between_its_two_limits():
         assert len(set(side.tolist())) == 1
         sides.append(side[0])
     assert sides == [1.0, -1.0]
+    from plans.errors import InputError
+
+    with pytest.raises(InputError) as exc:  # B is above OD on both, either side of the limit
+        Solver(mech_of(fourbar(a, b, c, d, angle=90.0)))
+    assert "'above OD' fits both assemblies of group 2–3 (RRR) at φ1 = 89.9943°" in str(exc.value)
+    assert str(exc.value).endswith(
+        "(read 0.0001 rad past φ1 = 90°, where the two assemblies of group 2–3 (RRR) meet)")
