@@ -458,13 +458,17 @@ def to_text(t: CycleTable) -> str:
     from .plan import NOISE
 
     ok = np.array([st.ok for st in t.status], dtype=bool)
+    placed = np.array([st.placed for st in t.status], dtype=bool)
 
-    def largest(values) -> float:
+    def largest(values, rows=ok) -> float:
         """|value| largest over the positions solved (numpy: 10⁵ rows in Python took 3 s)."""
-        got = np.abs(np.broadcast_to(np.asarray(values), ok.shape)[ok])
+        got = np.abs(np.broadcast_to(np.asarray(values), rows.shape)[rows])
         return float(got.max()) if got.size else 0.0
 
     base = ["№", "φ1 °"]
+    # a coordinate is rounding against the largest distance from the origin: x of a crank
+    # pin at 90° is R·cos(π/2) = 3e-18 m
+    size = max((largest(m.position[p], placed) for p in moving), default=0.0)
     for title, key in (("x of points (m)", "x"), ("y of points (m)", "y")):
         rows = [
             lead(k)
@@ -474,6 +478,7 @@ def to_text(t: CycleTable) -> str:
                     getattr(
                         complex(m.position[p][k]), "real" if key == "x" else "imag"
                     ),
+                    size,
                     position=True,
                 )
                 for p in moving

@@ -278,6 +278,8 @@ def test_a_cycle_row_on_a_change_point_gives_its_positions_and_says_why(capsys, 
     assert (x4["φ1"], x4["A"], x4["B"]) == ("180.00", "-0.05", "0.15")
     assert cells("|V| of points (m/s)", 4)["B"] == "—"
     assert cells("|V| of points (m/s)", 3)["B"] == "0.5"
+    assert cells("x of points (m)", 1)["A"] == "0"  # R·cos(π/2) = 3.06e-18 m is rounding
+    assert cells("y of points (m)", 4)["B"] == "0"
     assert "position 4: singular: group 2–3 (RRR) at φ1 = 180° (a change point" in out
     assert "position 10: singular: group 2–3 (RRR) at φ1 = 0° (a change point" in out
     assert "error" not in out
