@@ -35,7 +35,13 @@ class Output:
         if self.kind == "linear":
             g = mech.slider_of(self.link).guide
             return ((m.position[self.point] - g.point) * np.conj(g.direction)).real
-        return np.unwrap(np.angle(m.links[self.link].rotor))
+        psi = np.angle(m.links[self.link].rotor)
+        known = np.isfinite(psi)
+        if np.ndim(psi) == 0 or known.all():
+            return np.unwrap(psi)
+        out = np.full(psi.shape, np.nan)  # one position where the link is nowhere: not the rest
+        out[known] = np.unwrap(psi[known])
+        return out
 
     def rate(self, m: Motion, mech: Mechanism, which: str = "velocity"):
         data = m.velocity if which == "velocity" else m.acceleration
@@ -180,7 +186,9 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
             + mech.driver.convention() + f": the links of a group lie in line there, where {how}"
             " (the plans there are singular)")
     closes = valid | (near & m.placed)  # a sample on a change point closes to rounding
-    closes[0] |= m.placed[0]  # the given angle on a limit of the crank's range ends it
+    # the given angle on a limit of the crank's range ends it; on a change point where a
+    # point is nowhere (a kite's crank pin on the rocker's pivot) the motion goes through
+    closes[0] |= m.placed[0] or solver.on_change_point(phi0)
     full = bool(closes.all())
     out = find_output(mech)
     if not full:  # the range is worded where it is shown (report.no_full_turn)
