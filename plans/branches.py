@@ -28,6 +28,10 @@ CHANGE_SAMPLES = 3600
 #: while 1e-4 rad on they stand some 1e-4 of the group's size apart
 PAST_MEETING = 1e-4
 
+#: a point within this fraction of the distances from a hint's line (or level with its
+#: point) lies on it, on neither side
+ON_LINE = 1e-9
+
 
 def change_points(sv) -> tuple[tuple[tuple[float, ...], ...], tuple[tuple[float, ...], ...],
                                float | None]:
@@ -158,30 +162,35 @@ class Ambiguous(ValueError):
 
 
 def hint_holds(rel: str, X: complex, refs: list[complex]) -> bool:
+    """Whether X lies on the side ``rel`` of the point or line ``refs``; a point on the
+    line (or level with the point) to rounding, :data:`ON_LINE` of the distances, lies
+    on neither side: an assembly must not be picked by the sign of rounding."""
     if len(refs) == 1:
         Q = refs[0]
-        return {"above": X.imag > Q.imag, "below": X.imag < Q.imag,
-                "left of": X.real < Q.real, "right of": X.real > Q.real}[rel]
+        off = X - Q
+        across = off.imag if rel in ("above", "below") else off.real
+        if abs(across) <= ON_LINE * (abs(X) + abs(Q)):
+            return False
+        return across > 0 if rel in ("above", "right of") else across < 0
     Q, R = refs
     d = R - Q
     across = d.real if rel in ("above", "below") else d.imag
     if abs(across) < UPRIGHT * abs(d):
         raise Ambiguous("vertical" if rel in ("above", "below") else "horizontal")
-    if rel in ("above", "below"):
-        if d.real < 0:
-            d = -d
-        side = cross(d, X - Q) > 0
-        return side if rel == "above" else not side
-    if d.imag < 0:
+    if (d.real < 0) if rel in ("above", "below") else (d.imag < 0):
         d = -d
-    side = cross(d, X - Q) > 0
-    return side if rel == "left of" else not side
+    side = cross(d, X - Q)
+    if abs(side) <= ON_LINE * abs(d) * (abs(X - Q) + abs(d)):
+        return False
+    return (side > 0) == (rel in ("above", "left of"))
 
 
-def choose_branches(mech: Mechanism, structure: Structure) -> tuple[tuple[int, ...], float]:
+def choose_branches(mech: Mechanism,
+                    structure: Structure) -> tuple[tuple[int, ...], float, float]:
     """Turn the file's hints into a sign per group, evaluated at the file's crank angle
     (``mech.hints_at`` when the crank was turned from it, :meth:`Mechanism.at_file_angle`);
-    returns the signs and the crank angle they were read at (rad from +x).
+    returns the signs, that angle and the one they were read at (rad from +x): the same,
+    unless a group's two assemblies meet there (:func:`_read`).
 
     The sign (which side of the line of centres, which way along the guide) is then kept
     over the whole cycle, so the branch stays continuous: ``--angle 180`` gives the
@@ -202,26 +211,31 @@ class _Meet(Exception):
     """A group's two assemblies meet at the angle the hints are read at."""
 
 
-def _read(mech: Mechanism, structure: Structure) -> tuple[tuple[int, ...], float]:
-    """The signs the hints give and the angle they were read at: the mechanism's own,
-    or, where a group's two assemblies meet there, :data:`PAST_MEETING` on, the way the
-    crank turns (or back, where the linkage does not close on that side). The change
-    point itself is then one the motion passes (a parallelogram given at 0°)."""
+def _read(mech: Mechanism, structure: Structure) -> tuple[tuple[int, ...], float, float]:
+    """The signs the hints give, the mechanism's angle, and the angle they were read at:
+    the mechanism's own, or, where a group's two assemblies meet there,
+    :data:`PAST_MEETING` on, the way the crank turns (or back, where the linkage does not
+    close on that side or the hints part nothing there). The change point itself is then
+    one the motion passes (a parallelogram given at 0°), and the motion's turn still
+    starts at the given angle (:meth:`plans.kinematics.Solver.sigma`)."""
     phi = mech.driver.phi
     try:
-        return _choose(mech, structure), phi
+        return _choose(mech, structure), phi, phi
     except _Meet as meet:
         step = math.copysign(PAST_MEETING, mech.driver.omega)
+        first = None
         for past in (phi + step, phi - step):
             try:
-                return _choose(mech.with_phi(past), structure), past
+                return _choose(mech.with_phi(past), structure), phi, past
             except (AssemblyError, SingularPlanError, _Meet):
                 continue
-            except InputError as exc:  # the hints do not part them there either
-                why = (f" (read {PAST_MEETING:g} rad past {mech.driver.at(phi)}, where the two "
-                       f"assemblies of {meet} meet)")
-                raise InputError(exc.source, [p + why for p in exc.problems]) from None
-        return _choose(mech, structure, meet=False), phi  # its error, or its rounding's pick
+            except InputError as exc:  # the hints part nothing there: the other side?
+                first = first or exc
+        if first is not None:
+            why = (f" (read {PAST_MEETING:g} rad past {mech.driver.at(phi)}, where the two "
+                   f"assemblies of {meet} meet)")
+            raise InputError(first.source, [p + why for p in first.problems]) from None
+        return _choose(mech, structure, meet=False), phi, phi  # its error, or rounding's pick
 
 
 def _choose(mech: Mechanism, structure: Structure, meet: bool = True) -> tuple[int, ...]:

@@ -15,9 +15,10 @@ that position are then left out (``—`` in the table, empty in CSV, null in JSO
 command exits with status 2 after writing everything else.
 
 A position on a change point (a parallelogram at 0° and 180°) is no error: the positions
-stand there and the motion goes on smoothly, only its plans are singular. Its row gives
-the positions, leaves the velocities and accelerations out, and says why ("singular");
-the command still exits with status 0.
+stand there, only its plans are singular. So is one beside a change point whose figure is
+under ``CHANGE_SINE`` (1e-3), where the acceleration plan would lose its digits as
+1/sin³. Its row gives the positions, leaves the velocities and accelerations out, and
+says why ("singular"); the command still exits with status 0.
 """
 
 from __future__ import annotations
@@ -123,7 +124,7 @@ def run(args) -> int:
     if singular:
         which = ", ".join(str(i) for i in singular)
         warn("cycle", f"position{'s' if len(singular) > 1 else ''} {which} "
-                      f"{'are change points' if len(singular) > 1 else 'is a change point'}: "
+                      f"{'are' if len(singular) > 1 else 'is'} on or beside a change point: "
                       "positions only, the plans there are singular")
     return EXIT_INPUT if failed else EXIT_OK
 
@@ -158,7 +159,14 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
     ``solver``, the motion's, names the change points among the angles."""
     import numpy as np
 
-    from .records import WARN_SINE, near_pivot, on_pivot, pivot_figure
+    from .records import (
+        CHANGE_PIVOT,
+        CHANGE_SINE,
+        WARN_SINE,
+        near_pivot,
+        on_pivot,
+        pivot_figure,
+    )
 
     n = len(motion.phi)
     crank_pivot = mech.frame[mech.driver.pivot]
@@ -175,30 +183,43 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
     at_ = solver.at if solver is not None else mech.driver.at
     at = functools.cache(lambda k: at_(phis[k]))  # words only where flagged, once
     placed = np.broadcast_to(np.asarray(motion.placed, dtype=bool), (n,)).tolist()
+    from .records import SINGULAR_SINE
+
+    def beside(k: int, i: int) -> bool:  # group i's change point within CHANGE_NEAR
+        return solver is not None and solver.change_point_near(phis[k], i) is not None
+
     out = []
     for k in range(n):
         figures: dict[str, float] = {}
         warnings: list[str] = []
         errors: list[str] = []
-        for g, label, valid, sine, low, pivot in cols:
+        singular: list[str] = []  # positions stand, plans singular: beside a change point
+        for i, (g, label, valid, sine, low, pivot) in enumerate(cols):
+            # a group beside one of its change points: its failures are the change point's
+            # (positions only, no error), and its figures must reach CHANGE_SINE
+            near = (not valid[k] or low[k]) and beside(k, i)
+            fails = singular if near and placed[k] else errors
             if not valid[k]:
-                errors.append(str(g.failure(k, at(k))))
+                fails.append(str(g.failure(k, at(k))))
                 figures[label] = sine[k] if placed[k] else math.nan  # in line: about 0
                 continue
             figures[label] = sine[k]
+            under = CHANGE_SINE if near else SINGULAR_SINE
             if low[k]:
-                if (err := g.parallel(k, at(k))) is not None:
-                    errors.append(str(err))
-                elif (warning := g.near_parallel(k, at(k))) is not None:
+                if (err := g.parallel(k, at(k), below=under)) is not None:
+                    fails.append(str(err))
+                elif (warning := g.near_parallel(k, at(k), below=under)) is not None:
                     warnings.append(warning)
             if pivot is not None:
                 q = pivot[k]
                 figures[f"{label} pivot"] = q
                 if q < WARN_SINE:  # worded (and the angle with it) only where flagged
-                    if (err := on_pivot(g, q, at(k))) is not None:
-                        errors.append(str(err))
+                    under = CHANGE_PIVOT if beside(k, i) else SINGULAR_SINE
+                    if (err := on_pivot(g, q, at(k), below=under)) is not None:
+                        (singular if under > SINGULAR_SINE and placed[k] else errors).append(
+                            str(err))
                     else:
-                        warnings.append(near_pivot(g, q, at(k)))
+                        warnings.append(near_pivot(g, q, at(k), below=under))
         sines = [v for key, v in figures.items() if not key.endswith(" pivot")]
         if not sines:
             min_sine = 1.0
@@ -206,9 +227,6 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
             min_sine = min(sines)
         else:
             min_sine = math.nan
-        singular: list[str] = []
-        if errors and placed[k] and solver is not None and solver.on_change_point(phis[k]):
-            singular, errors = errors, []
         out.append(Status(not errors and not singular, placed[k], min_sine, figures,
                           tuple(warnings), tuple(errors), tuple(singular)))
     return tuple(out)
@@ -546,8 +564,8 @@ def to_text(t: CycleTable) -> str:
         for k, kind, text in sorted(notes, key=lambda x: (x[0], order.index(x[1]))):
             lines.append(f"position {k}: {kind}: {text}")
         if any(st.singular for st in t.status):
-            lines.append("singular: a change point, where the positions stand and the motion "
-                         "goes on smoothly; only its plans have no unique solution")
+            lines.append("singular: on or beside a change point, where a group's two "
+                         "assemblies meet: the positions stand, the plans cannot be built")
     return "\n".join(lines) + "\n"
 
 

@@ -33,6 +33,9 @@ from .groups import SOLVERS, ScalarFallback
 from .kernels import record
 from .mechanism import Mechanism
 from .records import (
+    CHANGE_NEAR,
+    CHANGE_PIVOT,
+    CHANGE_SINE,
     SINGULAR_SINE,
     WARN_SINE,
     Construction,
@@ -75,9 +78,12 @@ class Solver:
         self.mech = mech
         self.structure = structure or analyse(mech)
         if sigmas is None:
-            self.sigmas, self.branch_at = choose_branches(mech, self.structure)
+            self.sigmas, self.branch_at, self.read_at = choose_branches(mech, self.structure)
         else:  # given signs hold at the mechanism's own angle
             self.sigmas, self.branch_at = sigmas, mech.driver.phi
+            self.read_at = self.branch_at
+        #: ``sigmas`` hold at ``read_at``, which is ``branch_at`` unless the groups' two
+        #: assemblies meet there (a parallelogram given at 0°): then a little past it
         #: per group, its change points as counter-clockwise turns from ``branch_at``
         #: (rad, in [0, 2π), ascending), and where its sign flips (at all of them, or at
         #: none); None until the first solve
@@ -115,38 +121,74 @@ class Solver:
 
     def sigma(self, i: int, phi):
         """Group ``i``'s sign at crank angle(s) ``phi`` (rad from +x): its sign at
-        ``branch_at``, flipped at each change point passed on the way there."""
+        ``branch_at``, flipped at each change point passed on the way there. The turn
+        starts at ``branch_at``: a motion that repeats only after two turns has its seam
+        there."""
         flips = self.flips[i]
         if not flips:
             return self.sigmas[i]
-        turn = (phi - self.branch_at) % (2 * math.pi)
         seam = 2 * math.pi if self._seam is None else self._seam
-        if isinstance(turn, float):  # ahead of branch_at up to the seam, behind it past it
-            passed = sum(f < turn for f in flips) if turn < seam else sum(f > turn for f in flips)
-            return -self.sigmas[i] if passed % 2 else self.sigmas[i]
+        start = self.sigmas[i]
+        if self.read_at != self.branch_at:  # the sign read past a change point at branch_at
+            if self._passed(flips, (self.read_at - self.branch_at) % (2 * math.pi), seam) % 2:
+                start = -start
+        turn = (phi - self.branch_at) % (2 * math.pi)
+        if isinstance(turn, float):
+            return -start if self._passed(flips, turn, seam) % 2 else start
         f = np.asarray(flips)
         passed = np.where(turn < seam, np.searchsorted(f, turn),
                           len(f) - np.searchsorted(f, turn, side="right"))
-        return np.where(passed % 2 == 1, -self.sigmas[i], self.sigmas[i]).astype(float)
+        return np.where(passed % 2 == 1, -start, start).astype(float)
+
+    @staticmethod
+    def _passed(flips, turn: float, seam: float) -> int:
+        """Flips passed from ``branch_at`` to ``turn``: ahead of it up to the seam,
+        behind it past the seam."""
+        return sum(f < turn for f in flips) if turn < seam else sum(f > turn for f in flips)
+
+    def change_point_near(self, phi: float, group: int | None = None) -> float | None:
+        """The change point (crank angle, rad from +x) of group ``group`` (of any: None)
+        nearest to ``phi``, if one is within :data:`plans.records.CHANGE_NEAR`."""
+        turn = (phi - self.branch_at) % (2 * math.pi)
+        best = None
+        for i, points in enumerate(self.changes):
+            if group is None or i == group:
+                for f in points:
+                    if (d := apart(turn, f)) < CHANGE_NEAR and (best is None or d < best[0]):
+                        best = (d, f)
+        return None if best is None else self.branch_at + best[1]
 
     def on_change_point(self, phi: float) -> bool:
         """Whether the crank angle ``phi`` (rad from +x) is a change point, to 1e-9 rad:
         the positions stand there, the plans are singular."""
-        turn = (phi - self.branch_at) % (2 * math.pi)
-        return any(apart(turn, f) < 1e-9 for points in self.changes for f in points)
+        near = self.change_point_near(phi)
+        return near is not None and apart(phi, near) < 1e-9
+
+    def singular_figures(self, group: int, phi: float) -> tuple[float, float]:
+        """Below which figures (the lines' sine, a slotted link's pivot figure) group
+        ``group``'s plans are singular at ``phi``: :data:`plans.records.SINGULAR_SINE`, or
+        beside one of its change points :data:`plans.records.CHANGE_SINE` and
+        :data:`plans.records.CHANGE_PIVOT`."""
+        if self.change_point_near(phi, group) is None:
+            return SINGULAR_SINE, SINGULAR_SINE
+        return CHANGE_SINE, CHANGE_PIVOT
 
     def at(self, phi: float) -> str:
         """The crank angle ``phi`` in words, as :meth:`plans.mechanism.Driver.at` gives it,
-        saying so where it is a change point (to 1e-9 rad)."""
+        saying so where it is a change point (to 1e-9 rad) or beside one."""
         words = self.mech.driver.at(phi)
-        if self.on_change_point(phi):
+        near = self.change_point_near(phi)
+        if near is None:
+            return words
+        if apart(phi, near) < 1e-9:
             return words + " (a change point: the two assemblies of a group meet there)"
-        return words
+        return (words + f" (beside the change point at {self.mech.driver.at(near)}, where the "
+                "two assemblies of a group meet)")
 
     def with_flips(self, flips: tuple[tuple[float, ...], ...], seam: float | None = None) -> Solver:
         """This solver with the given flips (and seam) instead of its own."""
         out = Solver(self.mech, self.structure, self.sigmas, flips)
-        out.branch_at, out._seam = self.branch_at, seam
+        out.branch_at, out.read_at, out._seam = self.branch_at, self.read_at, seam
         return out
 
     # -------------------------------------------------------------------------------
@@ -189,8 +231,8 @@ class Solver:
         for g in m.groups:
             if not g.valid[0]:
                 raise g.failure(0, at, source=source)
-        for g in m.groups:
-            if (err := g.parallel(0, at, source)) is not None:
+        for i, g in enumerate(m.groups):
+            if (err := g.parallel(0, at, source, self.singular_figures(i, phi)[0])) is not None:
                 raise err
         raise SingularPlanError(  # pragma: no cover - every fallback above is a failure
             f"at {at}: the plan has no unique solution", source=source)

@@ -157,7 +157,8 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     phi = mech.driver.phi if phi is None else float(phi)
     motion = solver.solve_one(phi)
     flags = flagged(motion.groups, motion.position, mech.frame[mech.driver.pivot],
-                    lambda: solver.at(phi), mech.source)
+                    lambda: solver.at(phi), mech.source,
+                    lambda i: solver.singular_figures(i, phi))
     warnings = [flag_words(f, solver.at(phi)) for f in flags]
     scales = mech.scales
     if mu or "mu_l" not in scales:

@@ -23,6 +23,17 @@ from .structure import DyadKind, Group
 #: below this |sin| (about 2°) a position is reported as near-singular
 WARN_SINE = 0.035
 
+#: beside a change point (within :data:`CHANGE_NEAR` rad of one of the group's) a sine
+#: below this makes the position singular: there the acceleration plan's right-hand side
+#: carries the velocities' error (κ²·ε, κ = 1/sin), and the nearly parallel lines
+#: multiply it by κ again; measured on a parallelogram, ε of the rocker was off by
+#: 7·κ³·ε of ω1², 2e-6 at sin = 1e-3 and 1e-3 at sin = 1e-4
+CHANGE_SINE = 1e-3
+#: the same for a slotted link's pivot figure, whose accelerations lose 0.05–0.4·κ³·ε
+#: there (its pivot on the crank circle: 1e-8 at 1.1e-3, 1e-4 at 1.1e-4): about 3e-6 here
+CHANGE_PIVOT = 3e-4
+CHANGE_NEAR = 0.05
+
 #: a group whose margin (a fraction of its size) is within this of 0 has its links in
 #: line to rounding: equal lengths typed in decimal meet to about 1e-16, and Grashof's
 #: equality is judged to 1e-12 as well
@@ -139,23 +150,33 @@ class GroupSolution(NamedTuple):
         s = abs(float(s if k is None else s[k]))
         return s if math.isfinite(s) else 0.0
 
-    def parallel(self, k: int | None, at: str, source: str = "") -> SingularPlanError | None:
+    def parallel(self, k: int | None, at: str, source: str = "",
+                 below: float = SINGULAR_SINE) -> SingularPlanError | None:
         """The error where the two lines of the plans are parallel (|sin| below
-        :data:`SINGULAR_SINE`): a dead point, no unique plan. None elsewhere."""
+        :data:`SINGULAR_SINE`): a dead point, no unique plan. None elsewhere. ``below``:
+        :data:`CHANGE_SINE` beside a change point."""
         s = self.sine_at(k)
-        if s >= SINGULAR_SINE:
+        if s >= below:
             return None
         r0, r1 = self.velocity.routes
+        if s >= SINGULAR_SINE:
+            return SingularPlanError(
+                f"{self.group.label} at {at}: the lines {r0.relation} and {r1.relation} "
+                f"meet at {_degrees(s):.3g}° (sin = {s:.3g}), under {below:g} beside a "
+                f"change point, where the accelerations lose their digits as 1/sin³: "
+                f"{_singular(at)}, the plan is not built", sine=s, source=source)
         return SingularPlanError(
             f"{self.group.label} at {at}: the lines {r0.relation} and "
             f"{r1.relation} are parallel (angle {_degrees(s):.3g}°, sin = {s:.3g}): "
             f"{_singular(at)}, the plan has no unique solution", sine=s, source=source)
 
-    def near_parallel(self, k: int | None, at: str, lang: str = "en") -> str | None:
+    def near_parallel(self, k: int | None, at: str, lang: str = "en",
+                      below: float = SINGULAR_SINE) -> str | None:
         """The warning where the two lines meet at under about 2° (|sin| below
-        :data:`WARN_SINE`), when they are not parallel. None elsewhere."""
+        :data:`WARN_SINE`), when they are not parallel (``below``, as for
+        :meth:`parallel`). None elsewhere."""
         s = self.sine_at(k)
-        if not SINGULAR_SINE <= s < WARN_SINE:
+        if not below <= s < WARN_SINE:
             return None
         r0, r1 = self.velocity.routes
         if lang == "ru":
@@ -188,23 +209,26 @@ def pivot_ratio(P, Q, O):
         return np.where(loop > 0, np.abs(P - Q) / np.where(loop > 0, loop, 1.0), 0.0)
 
 
-def on_pivot(g: GroupSolution, q: float, at: str, source: str = "") -> SingularPlanError | None:
+def on_pivot(g: GroupSolution, q: float, at: str, source: str = "",
+             below: float = SINGULAR_SINE) -> SingularPlanError | None:
     """The error where the block is on the rocker's pivot (``q`` from :func:`pivot_figure`
-    below :data:`SINGULAR_SINE`): the rocker's direction, ω and ε are undefined. None
-    elsewhere."""
-    if not q < SINGULAR_SINE:
+    below :data:`SINGULAR_SINE`, or ``below`` beside a change point): the rocker's
+    direction, ω and ε are undefined. None elsewhere."""
+    if not q < below:
         return None
     P, Q = g.group.P, g.group.Q
+    where = "is on" if q < SINGULAR_SINE else f"is all but on (under {below:g}, beside a change point)"
     return SingularPlanError(
-        f"{g.group.label} at {at}: the block {P} is on the rocker's pivot {Q} (|{Q}{P}| "
+        f"{g.group.label} at {at}: the block {P} {where} the rocker's pivot {Q} (|{Q}{P}| "
         f"ratio {q:.3g}): the rocker's ω is undefined, {_singular(at)}",
         sine=q, source=source)
 
 
-def near_pivot(g: GroupSolution, q: float, at: str, lang: str = "en") -> str | None:
+def near_pivot(g: GroupSolution, q: float, at: str, lang: str = "en",
+               below: float = SINGULAR_SINE) -> str | None:
     """The warning where the block passes close to the rocker's pivot (``q`` under
-    :data:`WARN_SINE`, not on it). None elsewhere."""
-    if not SINGULAR_SINE <= q < WARN_SINE:
+    :data:`WARN_SINE`, not on it: ``below`` as for :func:`on_pivot`). None elsewhere."""
+    if not below <= q < WARN_SINE:
         return None
     P, Q = g.group.P, g.group.Q
     if lang == "ru":
@@ -217,21 +241,28 @@ def near_pivot(g: GroupSolution, q: float, at: str, lang: str = "en") -> str | N
             f"(|{Q}{P}| / (|O{Q}| + |O{P}|) = {q:.3g}): the rocker's ω and ε lose digits")
 
 
-def flagged(groups, position: dict, crank_pivot: complex, at, source: str = "") -> tuple:
+def flagged(groups, position: dict, crank_pivot: complex, at, source: str = "",
+            below=None) -> tuple:
     """The conditioning figures of one position (groups and positions on Python numbers)
     that call for a word: (group, "lines" or "pivot", figure) for each under
     :data:`WARN_SINE`, the sine between a group's two lines or a slotted link's pivot
     figure. One that is singular raises its error. ``at()`` names the crank angle, asked
-    only then. The words, in either language, are :func:`flag_words`."""
+    only then; ``below(i)``, the singular figures (lines, pivot) of the i-th group
+    (:meth:`plans.kinematics.Solver.singular_figures`). The words, in either language, are
+    :func:`flag_words`."""
     out = []
-    for g in groups:
-        if not WARN_SINE <= abs(g.velocity.sine) < math.inf:  # NaN, inf: parallel() refuses them
-            if (err := g.parallel(None, at(), source)) is not None:
+    for i, g in enumerate(groups):
+        lines = abs(g.velocity.sine)
+        q = pivot_figure(g, position, crank_pivot)
+        if WARN_SINE <= lines < math.inf and (q is None or q >= WARN_SINE):
+            continue
+        under, under_q = (SINGULAR_SINE, SINGULAR_SINE) if below is None else below(i)
+        if not WARN_SINE <= lines < math.inf:  # NaN, inf: parallel() refuses them
+            if (err := g.parallel(None, at(), source, under)) is not None:
                 raise err
             out.append((g, "lines", g.sine_at(None)))
-        q = pivot_figure(g, position, crank_pivot)
         if q is not None and q < WARN_SINE:
-            if (err := on_pivot(g, q, at(), source)) is not None:
+            if (err := on_pivot(g, q, at(), source, under_q)) is not None:
                 raise err
             out.append((g, "pivot", q))
     return tuple(out)

@@ -247,8 +247,8 @@ def test_a_cycle_row_on_a_change_point_gives_its_positions_and_says_why(capsys, 
     path.write_text(fourbar(A, B_, A, D), "utf-8")
     code, out, err = run(capsys, "cycle", path, "--positions", "12", "--json")
     assert code == 0, err
-    assert err.strip() == ("plans cycle: warning: positions 4, 10 are change points: "
-                           "positions only, the plans there are singular")
+    assert err.strip() == ("plans cycle: warning: positions 4, 10 are on or beside a change "
+                           "point: positions only, the plans there are singular")
     rows = json.loads(out)["rows"]
     for r in rows:
         k, phi = r["index"], math.radians(r["phi_deg"])
@@ -555,3 +555,106 @@ def test_a_crank_given_at_a_limit_of_its_range_rocks_between_its_two_limits():
     assert "'above OD' fits both assemblies of group 2–3 (RRR) at φ1 = 89.9943°" in str(exc.value)
     assert str(exc.value).endswith(
         "(read 0.0001 rad past φ1 = 90°, where the two assemblies of group 2–3 (RRR) meet)")
+
+
+def tilted_parallelogram(angle=60.0):
+    """The parallelogram with its frame OD turned 30° up: its change points, 30° and 210°,
+    are where rounding leaves the lines' sine at 3e-8 rather than under 1e-10."""
+    d = D * np.exp(1j * math.radians(30.0))
+    return fourbar(A, B_, A, D, angle=angle).replace(
+        f"D = [{D!r}, 0.0]", f"D = [{float(d.real)!r}, {float(d.imag)!r}]").replace(
+        'B = "above OD"', 'B = "left of OD"')
+
+
+def test_no_solved_row_beside_a_change_point_carries_lost_digits(capsys, tmp_path):
+    """At 30° the tilted parallelogram's lines met at sin = 3e-8, above the 1e-10 of a
+    singular plan: the cycle printed |a_B| = 2.3e8 m/s² (truly 5) as a warning, while
+    solve refused the angle. Beside a change point the acceleration plan loses 7·κ³·ε,
+    so there a sine under CHANGE_SINE is singular as well: every row still solved is
+    right to 1e-5 (ω3 = ω1 = 10, ε = 0, |a_B| = ω1²·a = 5), every other gives positions."""
+    import json
+
+    from support import run
+
+    path = tmp_path / "tilted.toml"
+    path.write_text(tilted_parallelogram(), "utf-8")
+    code, out, err = run(capsys, "cycle", path, "--positions", "12", "--json")
+    assert code == 0, err
+    rows = json.loads(out)["rows"]
+    assert [r["index"] for r in rows if not r["solved"]] == [5, 11]  # 210° and 30°
+    assert all(r["placed"] and r["errors"] == [] for r in rows)
+    code, out, err = run(capsys, "cycle", path, "--positions", "7200", "--json")
+    assert code == 0, err
+    rows = json.loads(out)["rows"]
+    solved = [r for r in rows if r["solved"]]
+    assert 7190 <= len(solved) < 7200  # a sample or two each side of each change point
+    for r in solved:
+        assert abs(r["links"]["3"]["omega"] - 10.0) < 1e-5
+        assert abs(r["links"]["3"]["epsilon"]) < 1e-5 * 100 and abs(r["links"]["2"]["epsilon"]) < 1e-3
+        assert abs(math.hypot(*r["points"]["B"]["acceleration"]) - 5.0) < 5e-5
+    for r in rows:
+        if not r["solved"]:
+            assert r["conditioning"]["min_sine"] < 1e-3 and r["singular"]
+    for cmd in (("solve", path, "--angle", "30"), ("sheet", path, "--plans", "11", "-o",
+                                                   tmp_path / "t.svg")):
+        code, out, err = run(capsys, *cmd)
+        assert code == 2 and "group 2–3 (RRR) at φ1 = 30° (a change point" in err, err
+        assert "dead point" not in err and ": a singular position, the plan" in err
+        assert len(err.strip().splitlines()) == 1
+
+
+@pytest.mark.parametrize("angle", ["359.9999999", "1e-7", "180.0000001"])
+def test_a_row_within_rounding_of_a_change_point_is_no_dead_point(capsys, tmp_path, angle):
+    """1e-7° from a change point the links lie in line to rounding: those rows were errors
+    (exit 2) called dead points, under a summary that names the change points."""
+    from support import run
+
+    path = tmp_path / "parallelogram.toml"
+    path.write_text(fourbar(A, B_, A, D), "utf-8")
+    code, out, err = run(capsys, "cycle", path, "--positions", "12", "--angle", angle)
+    assert code == 0, err
+    assert "dead point" not in out + err and "error" not in out
+    assert out.count("singular: group 2–3 (RRR) at φ1 = ") == 2
+    assert "(beside the change point at φ1 = 0°" in out + err or angle == "1e-7" and \
+        "(beside the change point at φ1 = 0°" in out
+
+
+def test_a_slotted_link_given_on_its_change_point_turns_on_from_there(capsys, tmp_path):
+    """The slotted link whose pivot is on the crank circle, given at 270° where the block
+    is on the pivot: its smooth motion takes two turns, and its two turns meet at the
+    given angle. Read 1e-4 rad on, the hints had moved that seam there too: row 0 was on
+    the other turn, and the rocker jumped 165° between rows 0 and 1."""
+    import json
+
+    from support import run
+
+    path = tmp_path / "slotted.toml"
+    path.write_text(slotted(0.1, 0.1, angle=270.0), "utf-8")
+    code, out, err = run(capsys, "cycle", path, "--positions", "12", "--json")
+    assert code == 0, err
+    rows = json.loads(out)["rows"]
+    assert rows[0]["singular"] and rows[0]["placed"]
+    psi = [math.degrees(r["output"]) for r in rows]
+    assert np.diff(psi) == pytest.approx([15.0] * 11, abs=1e-9)  # ω3 = ω1 / 2 all round
+    C = [complex(*rows[k]["points"]["C"]["position"]) for k in (0, 1)]
+    assert abs(C[1] - C[0]) < 0.14  # 15° of a 0.5 m rocker is 0.13 m, not a jump
+    sv = Solver(mech_of(slotted(0.1, 0.1, angle=270.0)))
+    after, before = (complex(sv.solve_one(math.radians(a)).position["C"]) for a in (270.001, 269.999))
+    assert after.real == pytest.approx(0.5, abs=1e-6) and before.real == pytest.approx(-0.5, abs=1e-6)
+
+
+def test_a_hint_met_only_by_rounding_picks_no_assembly():
+    """The kite a = b given at 180°: read just past it, one assembly has B on OD (to
+    2.8e-13 m), where the crank and coupler fold onto the frame and the rocker stays. "Above
+    OD" had picked it by the sign of rounding: 'the output B does not move'. It names the
+    other, which swings the rocker 120° with K = 2."""
+    from plans.branches import hint_holds
+
+    c = analyse_cycle(mech_of(fourbar(0.1, 0.1, 0.2, 0.2, angle=180.0)))
+    assert c.K == pytest.approx(2.0, abs=1e-9)
+    assert "the output B does not move" not in c.notes
+    assert not hint_holds("above", complex(-1e-17, 2.8e-13), [0j, 0.2 + 0j])
+    assert not hint_holds("below", complex(-1e-17, -2.8e-13), [0j, 0.2 + 0j])
+    assert hint_holds("above", complex(0.1, 1e-6), [0j, 0.2 + 0j])
+    assert not hint_holds("right of", complex(1e-18, 0.3), [0j])
+    assert hint_holds("right of", complex(1e-9, 0.3), [0j])

@@ -415,7 +415,8 @@ def test_a_hint_that_fits_both_assemblies_says_where_they_are(capsys, tmp_path):
 
 def test_near_dead_point_is_a_warning():
     # crank-slider with the rod as long as the crank: at φ1 = 90° the rod stands on the
-    # guide, the plan's two lines (⊥ BA, ∥ x-x) are parallel; at 89° they meet at 1°
+    # guide, the plan's two lines (⊥ BA, ∥ x-x) are parallel; at 89° they meet at 1°.
+    # 90° is a change point (the slider could stay on the crank's pivot): named beside it
     text = """
 [frame]
 O = [0.0, 0.0]
@@ -438,7 +439,9 @@ B = "right of A"
 """
     sol = solve_position(from_dict(tomllib.loads(text), "dead"))
     (warning,) = sol.warnings
-    assert warning.startswith("group 2–3 (RRP) at φ1 = 89°: near-singular, the lines ⊥ BA and ∥ x-x meet at 1°")
+    assert warning.startswith(
+        "group 2–3 (RRP) at φ1 = 89° (beside the change point at φ1 = 90°, where the two "
+        "assemblies of a group meet): near-singular, the lines ⊥ BA and ∥ x-x meet at 1°")
 
 
 PARALLEL_PRP = """

@@ -182,9 +182,10 @@ def check(mech, phi, *, c=C):
 
 
 def warnings_at(mech, phi):
+    sv = Solver(mech)
     with np.errstate(all="ignore"):
-        motion = Solver(mech).solve(phi)
-    return [w for s in conditioning(mech, motion) for w in s.warnings]
+        motion = sv.solve(phi)
+    return [w for s in conditioning(mech, motion, sv) for w in s.warnings]
 
 
 # ---------------------------------------------------------------------------------------
