@@ -26,7 +26,7 @@ from plans.cli import (
     warn,
     write_output,
 )
-from plans.errors import InputError, PlansError
+from plans.errors import InputError, PlansError, SingularPlanError
 
 FIELDS = {
     "name": "name", "designation": "designation", "student": "developer",
@@ -114,7 +114,12 @@ def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
     extent = fixed.shown.extent
     # the plans, for their μv and μa: sheet_scales reads nothing else. μl is given only so
     # that solve_position does not size a plan of positions of its own
-    first = solve_position(mech, solver=solver, mu={"mu_l": mech.scales.get("mu_l") or choose_mu_l(extent)})
+    try:
+        first = solve_position(mech, solver=solver,
+                               mu={"mu_l": mech.scales.get("mu_l") or choose_mu_l(extent)})
+    except SingularPlanError as exc:  # the given position is drawn whatever --plans asks
+        raise SingularPlanError(f"{exc} (the sheet draws the given position: choose another "
+                                "with --angle)", sine=exc.sine, source=exc.source) from None
     # the largest views that fit: scales the file leaves free are chosen for the sheet
     error, tried = None, []
     for size in SIZES:

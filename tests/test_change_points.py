@@ -521,6 +521,11 @@ def test_a_cycle_from_a_change_point_starts_with_a_singular_row(capsys, tmp_path
         f"plans solve: {path}: group 2–3 (RRR) at φ1 = 0° (a change point: the two assemblies "
         "of a group meet there): A, B and D are in line (links 2 and 3 stretched out or "
         "folded): a singular position, the plan has no unique solution"]
+    code, out, err = run(capsys, "sheet", path, "--plans", "1", "-o", tmp_path / "s.svg")
+    assert code == 2 and not (tmp_path / "s.svg").exists()
+    assert err.strip().endswith("(the sheet draws the given position: choose another with --angle)")
+    code, out, err = run(capsys, "sheet", path, "--angle", "30", "-o", tmp_path / "s.svg")
+    assert code == 0, err
 
 
 def test_a_crank_given_at_a_limit_of_its_range_rocks_between_its_two_limits():
