@@ -356,6 +356,10 @@ def grashof_class(a: float, b: float, c: float, d: float) -> str:
 
     >>> grashof_class(0.05, 0.2, 0.15, 0.2)
     'crank-rocker (Grashof: 0.25 ≤ 0.35)'
+    >>> grashof_class(0.3, 0.35, 0.15, 0.4)
+    'rocker-crank (Grashof, the shortest link is the rocker, which turns fully: 0.55 ≤ 0.65)'
+    >>> grashof_class(0.3, 0.15, 0.35, 0.4)
+    'double rocker (Grashof, the shortest link is the coupler: 0.55 ≤ 0.65)'
     """
     lengths = sorted((a, b, c, d))
     s, l, p, q = lengths[0], lengths[3], lengths[1], lengths[2]
@@ -369,4 +373,6 @@ def grashof_class(a: float, b: float, c: float, d: float) -> str:
         return f"crank-rocker (Grashof: {tag})"
     if s == d:
         return f"double crank (Grashof: {tag})"
+    if s == c:  # the driven link turns fully, the driving one rocks
+        return f"rocker-crank (Grashof, the shortest link is the rocker, which turns fully: {tag})"
     return f"double rocker (Grashof, the shortest link is the coupler: {tag})"
