@@ -11,8 +11,9 @@ dead point or toggle), and for a slotted link (RPR) also how far the block is fr
 rocker's pivot relative to the loop (|QP| / (|OQ| + |OP|), O the crank's pivot): near 0
 the rocker's ω = V / |QP| loses its digits. A figure below ``WARN_SINE`` (≈ 2°) makes a
 warning, below ``SINGULAR_SINE`` (or a group that does not close) an error: the values of
-that position are then left out (``—`` in the table, empty in CSV, null in JSON) and the
-command exits with status 2 after writing everything else.
+that position are then left out (``—`` in the table, empty in CSV, null in JSON; its
+coordinates are given where its positions stand, ``placed``) and the command exits with
+status 2 after writing everything else.
 
 A position on a change point (a parallelogram at 0° and 180°) is no error: the positions
 stand there, only its plans are singular. So is one beside a change point whose figure is
@@ -349,7 +350,7 @@ def _json_rows(t: CycleTable):
 
 
 def _csv_header(t: CycleTable) -> list[str]:
-    head = ["index", "phi_deg", "angle_deg", "solved", "min_sine"]
+    head = ["index", "phi_deg", "angle_deg", "solved", "placed", "min_sine"]
     for label in t.status[0].figures if t.status else ():
         head.append(
             f"pivot {label[: -len(' pivot')]}"
@@ -401,7 +402,8 @@ def csv_chunks(t: CycleTable, rows: int = 1000):
     blank = [""] * len(cols)
     for k, st in enumerate(t.status):
         good = st.ok
-        row = [k, f(from_x(phis[k])), f(mech.driver.file_angle(phis[k])), int(good), f(st.min_sine)]
+        row = [k, f(from_x(phis[k])), f(mech.driver.file_angle(phis[k])), int(good),
+               int(st.placed), f(st.min_sine)]
         row += [f(v) for v in st.figures.values()]
         if out is not None:
             row.append(f(out[k]) if st.placed else "")

@@ -287,6 +287,7 @@ def test_a_cycle_row_on_a_change_point_gives_its_positions_and_says_why(capsys, 
     row = list(csv.DictReader(io.StringIO(out)))[4]
     assert float(row["B.x"]) == pytest.approx(0.15) and row["B.vx"] == "" and row["omega3"] == ""
     assert row["solved"] == "0" and row["errors"] == "" and "(a change point" in row["singular"]
+    assert row["placed"] == "1"
 
 
 def test_the_explanatory_note_names_the_change_points_in_either_language(capsys, tmp_path):
