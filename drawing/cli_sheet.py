@@ -192,7 +192,7 @@ def _compose(mech, sheet, solver, cycle, chosen, mu, lang, title, fixed):
     sols: list[tuple[str, str, object]] = []
     if chosen is None:
         deg = mech.driver.angle_deg
-        sols.append(("g", f"φ_1 = {num(deg, 4, lang)}°", given))
+        sols.append(("g", f"φ_1 = {num(deg, 6, lang)}°", given))
     else:
         for k in chosen:
             deg = mech.driver.file_angle(cycle.positions[k])

@@ -86,10 +86,11 @@ def to_text(sol, cycle=None) -> str:
     d = mech.driver
     # the file's own convention too, the one --angle and the cycle's lines below use
     conv = d.convention()[2:-1]  # "from +y, cw" without its brackets
-    own = f" ({angle(d.file_angle(sol.phi))}° {conv}, as the file gives it)" if conv else ""
+    # six digits: the angle as the user typed it (270.01° had printed as 270°)
+    own = f" ({angle(d.file_angle(sol.phi), 6)}° {conv}, as the file gives it)" if conv else ""
     out.append(
         f"Crank: link {d.link}, l_{d.pivot}{d.tip} = {num(d.length)} m, "
-        f"φ1 = {angle(math.degrees(sol.phi))}° from +x{own}, ω1 = {num(abs(d.omega))} rad/s{_sense(d.omega)}"
+        f"φ1 = {angle(math.degrees(sol.phi), 6)}° from +x{own}, ω1 = {num(abs(d.omega))} rad/s{_sense(d.omega)}"
     )
     out.append(
         f"Scales: μl = {num(sol.mu_l)} m/mm, μv = {num(sol.mu_v)} (m/s)/mm, μa = {num(sol.mu_a)} (m/s²)/mm"

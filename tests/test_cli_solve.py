@@ -190,9 +190,13 @@ def test_the_crank_range_reads_upwards_in_the_files_convention(capsys, tmp_path,
 
 
 def test_an_angle_that_rounds_to_360_is_written_0(capsys):
-    code, out, _ = run(capsys, "solve", "--variant", "1", "--angle", "359.99")
+    """At the header's six digits 359.9999999 rounds to 360: it is written 0; 359.99 is
+    written as typed."""
+    code, out, _ = run(capsys, "solve", "--variant", "1", "--angle", "359.9999999")
     assert code == 0
     assert "φ1 = 0° from +x" in out and "360°" not in out
+    code, out, _ = run(capsys, "solve", "--variant", "1", "--angle", "359.99")
+    assert code == 0 and "φ1 = 359.99° from +x" in out
 
 
 def test_the_russian_note_reads_as_a_teacher_wants(capsys):
@@ -376,3 +380,15 @@ def test_rounding_at_an_extreme_prints_as_zero(capsys):
     assert not re.search(r"e-\d\d", note)  # no 3,9e-14 anywhere
     code, out, _ = run(capsys, "cycle", "samples/press.toml", "--csv", "--positions", "2")
     assert "output D (m)" in out.splitlines()[0]
+
+
+def test_the_crank_angle_is_printed_as_typed(capsys):
+    """--angle 40.001 printed as 40° (four digits): the header keeps six."""
+    from support import run
+
+    code, out, err = run(capsys, "solve", "samples/fourbar.toml", "--angle", "40.001")
+    assert code == 0, err
+    assert "φ1 = 40.001° from +x," in out
+    code, out, err = run(capsys, "solve", "samples/press.toml", "--angle", "270.01")
+    assert code == 0, err
+    assert "φ1 = 179.99° from +x (270.01° from +y, cw, as the file gives it)" in out
