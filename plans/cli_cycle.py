@@ -540,10 +540,12 @@ def to_text(t: CycleTable) -> str:
     labels = list(t.status[0].figures) if t.status else []
     head = base + out_head + ["min sin"] + [_short(x) for x in labels] + ["status"]
     rows = []
+    big_out = 0.0 if not out_head else largest(t.output_values, placed)
     for k, st in enumerate(t.status):
         r = lead(k)
         if out_head:
             v = float(t.output_values[k])
+            v = 0.0 if abs(v) <= NOISE * big_out else v  # s of 4.7e-15 m is rounding
             if c.output.kind != "linear":
                 v = math.degrees(v)
             r.append(num(v) if st.placed else "—")

@@ -664,3 +664,20 @@ def test_a_hint_met_only_by_rounding_picks_no_assembly():
     assert hint_holds("above", complex(0.1, 1e-6), [0j, 0.2 + 0j])
     assert not hint_holds("right of", complex(1e-18, 0.3), [0j])
     assert hint_holds("right of", complex(1e-9, 0.3), [0j])
+
+
+def test_the_cycle_table_prints_a_stroke_position_that_is_rounding_as_0(capsys, tmp_path):
+    """The isosceles crank-slider from 30°: s_B = 2R·cos φ is 0 at 90° and 270°, which the
+    table printed as −2.505e-15 and 2.518e-15 m."""
+    from support import run
+
+    path = tmp_path / "isosceles.toml"
+    path.write_text(crank_slider(0.1, 0.1, 0.0, angle=30.0).replace(
+        'B = "right of O"', 'B = "right of A"'), "utf-8")
+    code, out, err = run(capsys, "cycle", path, "--positions", "12")
+    assert code == 0, err
+    lines = out.splitlines()
+    table = lines[lines.index("Conditioning (sine of the angle between the intersected lines)") + 2:][:12]
+    s = [row.split()[2] for row in table]
+    assert s == ["-0.2", "-0.1732", "-0.1", "0", "0.1", "0.1732", "0.2", "0.1732", "0.1", "0",
+                 "-0.1", "-0.1732"]
