@@ -160,14 +160,7 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
     ``solver``, the motion's, names the change points among the angles."""
     import numpy as np
 
-    from .records import (
-        CHANGE_PIVOT,
-        CHANGE_SINE,
-        WARN_SINE,
-        near_pivot,
-        on_pivot,
-        pivot_figure,
-    )
+    from .records import SINGULAR_SINE, WARN_SINE, near_pivot, on_pivot, pivot_figure
 
     n = len(motion.phi)
     crank_pivot = mech.frame[mech.driver.pivot]
@@ -184,11 +177,7 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
     at_ = solver.at if solver is not None else mech.driver.at
     at = functools.cache(lambda k: at_(phis[k]))  # words only where flagged, once
     placed = np.broadcast_to(np.asarray(motion.placed, dtype=bool), (n,)).tolist()
-    from .records import SINGULAR_SINE
-
-    def beside(k: int, i: int) -> bool:  # group i's change point within CHANGE_NEAR
-        return solver is not None and solver.change_point_near(phis[k], i) is not None
-
+    plain = (SINGULAR_SINE, SINGULAR_SINE)
     out = []
     for k in range(n):
         figures: dict[str, float] = {}
@@ -196,16 +185,18 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
         errors: list[str] = []
         singular: list[str] = []  # positions stand, plans singular: beside a change point
         for i, (g, label, valid, sine, low, pivot) in enumerate(cols):
-            # a group beside one of its change points: its failures are the change point's
-            # (positions only, no error), and its figures must reach CHANGE_SINE
-            near = (not valid[k] or low[k]) and beside(k, i)
-            fails = singular if near and placed[k] else errors
+            # a group beside one of its change points: its figures must reach CHANGE_SINE
+            # (Solver.singular_figures), and its failures are the change point's: positions
+            # only, no error. Looked up only where a figure calls for a word
+            flagged = not valid[k] or low[k] or (pivot is not None and pivot[k] < WARN_SINE)
+            under, under_q = (solver.singular_figures(i, phis[k])
+                              if flagged and solver is not None else plain)
+            fails = singular if under > SINGULAR_SINE and placed[k] else errors
             if not valid[k]:
                 fails.append(str(g.failure(k, at(k))))
                 figures[label] = sine[k] if placed[k] else math.nan  # in line: about 0
                 continue
             figures[label] = sine[k]
-            under = CHANGE_SINE if near else SINGULAR_SINE
             if low[k]:
                 if (err := g.parallel(k, at(k), below=under)) is not None:
                     fails.append(str(err))
@@ -215,12 +206,10 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
                 q = pivot[k]
                 figures[f"{label} pivot"] = q
                 if q < WARN_SINE:  # worded (and the angle with it) only where flagged
-                    under = CHANGE_PIVOT if beside(k, i) else SINGULAR_SINE
-                    if (err := on_pivot(g, q, at(k), below=under)) is not None:
-                        (singular if under > SINGULAR_SINE and placed[k] else errors).append(
-                            str(err))
+                    if (err := on_pivot(g, q, at(k), below=under_q)) is not None:
+                        fails.append(str(err))
                     else:
-                        warnings.append(near_pivot(g, q, at(k), below=under))
+                        warnings.append(near_pivot(g, q, at(k), below=under_q))
         sines = [v for key, v in figures.items() if not key.endswith(" pivot")]
         if not sines:
             min_sine = 1.0
@@ -385,20 +374,20 @@ def csv_chunks(t: CycleTable, rows: int = 1000):
         return repr(x) if math.isfinite(x) else ""
 
     # the columns as Python numbers, converted once (not cell by cell from numpy), each
-    # with whether it stands where the position does but the plans are singular
+    # with whether it is a coordinate, given where the position stands but the plans do not
     cols: list[list[float]] = []
-    placed: list[bool] = []
+    coordinate: list[bool] = []
     for name in t.points:
         for arr, shown in ((m.position[name], True), (m.velocity[name], False),
                            (m.acceleration[name], False)):
             z = np.asarray(arr)
             cols += [z.real.tolist(), z.imag.tolist()]
-            placed += [shown, shown]
+            coordinate += [shown, shown]
     for i in t.links:
         cols += [np.asarray(m.links[i].omega).tolist(), np.asarray(m.links[i].epsilon).tolist()]
     phis = np.asarray(m.phi).tolist()
     out = None if t.output_values is None else np.asarray(t.output_values).tolist()
-    placed += [False] * (len(cols) - len(placed))  # ω and ε
+    coordinate += [False] * (len(cols) - len(coordinate))  # ω and ε
     blank = [""] * len(cols)
     for k, st in enumerate(t.status):
         good = st.ok
@@ -410,7 +399,7 @@ def csv_chunks(t: CycleTable, rows: int = 1000):
         if good:
             row += [f(c[k]) for c in cols]
         elif st.placed:
-            row += [f(c[k]) if shown else "" for c, shown in zip(cols, placed, strict=True)]
+            row += [f(c[k]) if shown else "" for c, shown in zip(cols, coordinate, strict=True)]
         else:
             row += blank
         row += ["; ".join(st.warnings), "; ".join(st.errors), "; ".join(st.singular)]

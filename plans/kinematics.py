@@ -25,7 +25,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from . import kernels
+from . import kernels, records
 from .branches import choose_branches, hint_holds, parse_hint
 from .errors import SingularPlanError
 from .geometry import apart
@@ -170,7 +170,7 @@ class Solver:
         beside one of its change points :data:`plans.records.CHANGE_SINE` and
         :data:`plans.records.CHANGE_PIVOT`."""
         if self.change_point_near(phi, group) is None:
-            return SINGULAR_SINE, SINGULAR_SINE
+            return records.SINGULAR_SINE, records.SINGULAR_SINE  # read now, as records does
         return CHANGE_SINE, CHANGE_PIVOT
 
     def at(self, phi: float) -> str:

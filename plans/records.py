@@ -151,10 +151,11 @@ class GroupSolution(NamedTuple):
         return s if math.isfinite(s) else 0.0
 
     def parallel(self, k: int | None, at: str, source: str = "",
-                 below: float = SINGULAR_SINE) -> SingularPlanError | None:
+                 below: float | None = None) -> SingularPlanError | None:
         """The error where the two lines of the plans are parallel (|sin| below
         :data:`SINGULAR_SINE`): a dead point, no unique plan. None elsewhere. ``below``:
         :data:`CHANGE_SINE` beside a change point."""
+        below = SINGULAR_SINE if below is None else below  # read when called, not when defined
         s = self.sine_at(k)
         if s >= below:
             return None
@@ -171,10 +172,11 @@ class GroupSolution(NamedTuple):
             f"{_singular(at)}, the plan has no unique solution", sine=s, source=source)
 
     def near_parallel(self, k: int | None, at: str, lang: str = "en",
-                      below: float = SINGULAR_SINE) -> str | None:
+                      below: float | None = None) -> str | None:
         """The warning where the two lines meet at under about 2° (|sin| below
         :data:`WARN_SINE`), when they are not parallel (``below``, as for
         :meth:`parallel`). None elsewhere."""
+        below = SINGULAR_SINE if below is None else below  # read when called, not when defined
         s = self.sine_at(k)
         if not below <= s < WARN_SINE:
             return None
@@ -210,10 +212,11 @@ def pivot_ratio(P, Q, O):
 
 
 def on_pivot(g: GroupSolution, q: float, at: str, source: str = "",
-             below: float = SINGULAR_SINE) -> SingularPlanError | None:
+             below: float | None = None) -> SingularPlanError | None:
     """The error where the block is on the rocker's pivot (``q`` from :func:`pivot_figure`
     below :data:`SINGULAR_SINE`, or ``below`` beside a change point): the rocker's
     direction, ω and ε are undefined. None elsewhere."""
+    below = SINGULAR_SINE if below is None else below  # read when called, not when defined
     if not q < below:
         return None
     P, Q = g.group.P, g.group.Q
@@ -225,9 +228,10 @@ def on_pivot(g: GroupSolution, q: float, at: str, source: str = "",
 
 
 def near_pivot(g: GroupSolution, q: float, at: str, lang: str = "en",
-               below: float = SINGULAR_SINE) -> str | None:
+               below: float | None = None) -> str | None:
     """The warning where the block passes close to the rocker's pivot (``q`` under
     :data:`WARN_SINE`, not on it: ``below`` as for :func:`on_pivot`). None elsewhere."""
+    below = SINGULAR_SINE if below is None else below  # read when called, not when defined
     if not below <= q < WARN_SINE:
         return None
     P, Q = g.group.P, g.group.Q
