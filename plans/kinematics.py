@@ -77,13 +77,14 @@ class Solver:
                  flips: tuple[tuple[float, ...], ...] | None = None):
         self.mech = mech
         self.structure = structure or analyse(mech)
+        # the turn starts at ``branch_at``; ``sigmas`` hold at ``read_at``, which is
+        # ``branch_at`` unless a group's two assemblies meet there (a parallelogram given
+        # at 0°): then a little past it (plans.branches._read)
         if sigmas is None:
             self.sigmas, self.branch_at, self.read_at = choose_branches(mech, self.structure)
         else:  # given signs hold at the mechanism's own angle
             self.sigmas, self.branch_at = sigmas, mech.driver.phi
             self.read_at = self.branch_at
-        #: ``sigmas`` hold at ``read_at``, which is ``branch_at`` unless the groups' two
-        #: assemblies meet there (a parallelogram given at 0°): then a little past it
         #: per group, its change points as counter-clockwise turns from ``branch_at``
         #: (rad, in [0, 2π), ascending), and where its sign flips (at all of them, or at
         #: none); None until the first solve
