@@ -671,10 +671,10 @@ def diagrams_view(mech, cycle, lang: str = "ru", width: float = 180.0, height: f
     s = flip * s
     v = flip * np.asarray(out.rate(m, mech, "velocity"), dtype=float)
     a = flip * np.asarray(out.rate(m, mech, "acceleration"), dtype=float)
-    ok = np.asarray(m.valid, dtype=bool) & (m.min_sine >= 1e-6)
-    if not ok.all():  # a sample on a change point, where the plans are singular: the
-        # curve runs straight over it from the samples either side (1° away), since the
-        # values just beside it are as poor as the sine there is small
+    ok = solver.trusted(m)
+    if not ok.all():  # a sample on or beside a change point, where the plans are singular:
+        # the curve runs straight over it from the samples either side (1° away); a
+        # slotted link's block on its pivot is one too, where the lines' sine stays 1
         k = np.arange(len(phis))
         v[~ok] = np.interp(k[~ok], k[ok], v[ok])
         a[~ok] = np.interp(k[~ok], k[ok], a[ok])

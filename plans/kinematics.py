@@ -46,6 +46,7 @@ from .records import (
     Term,
     coincident_name,
     frozen,
+    pivot_figure,
 )
 from .structure import Structure, analyse
 
@@ -173,6 +174,27 @@ class Solver:
         if self.change_point_near(phi, group) is None:
             return records.SINGULAR_SINE, records.SINGULAR_SINE  # read now, as records does
         return CHANGE_SINE, CHANGE_PIVOT
+
+    def trusted(self, m: Motion) -> np.ndarray:
+        """Where the plans of ``m`` (this solver's motion over an array of angles) can be
+        built: every group closes and its figures, the lines' sine and a slotted link's
+        pivot figure, reach :meth:`singular_figures` there; over the whole array at once."""
+        phi = np.asarray(m.phi, dtype=float)
+        turn = (phi - self.branch_at) % (2 * math.pi)
+        ok = np.broadcast_to(np.asarray(m.valid, dtype=bool), phi.shape).copy()
+        crank = self.mech.frame[self.mech.driver.pivot]
+        for i, g in enumerate(m.groups):
+            beside = np.zeros(phi.shape, dtype=bool)
+            for f in self.changes[i]:
+                beside |= apart(turn, f) < CHANGE_NEAR
+            with np.errstate(invalid="ignore"):
+                sine = np.abs(np.asarray(g.velocity.sine, dtype=float))
+                ok &= np.where(np.isfinite(sine), sine, 0.0) >= np.where(
+                    beside, CHANGE_SINE, records.SINGULAR_SINE)
+                q = pivot_figure(g, m.position, crank)
+                if q is not None:
+                    ok &= q >= np.where(beside, CHANGE_PIVOT, records.SINGULAR_SINE)
+        return ok
 
     def at(self, phi: float) -> str:
         """The crank angle ``phi`` in words, as :meth:`plans.mechanism.Driver.at` gives it,

@@ -681,3 +681,26 @@ def test_the_cycle_table_prints_a_stroke_position_that_is_rounding_as_0(capsys, 
     s = [row.split()[2] for row in table]
     assert s == ["-0.2", "-0.1732", "-0.1", "0", "0.1", "0.1732", "0.2", "0.1732", "0.1", "0",
                  "-0.1", "-0.1732"]
+
+
+def test_the_diagrams_run_over_a_block_passing_the_rockers_pivot():
+    """The slotted link whose pivot is on the crank circle turns at ω1/2 with ε = 0 all
+    round. Its block passes the pivot at 270°, where the lines' sine stays 1: the diagrams
+    had trusted that sample (they read only the sine) and drew ε up to 4e16 rad/s², at
+    μ_ε = 4e15. They skip what Solver.trusted refuses, as solve and cycle do."""
+    from drawing.scene import Polyline, Text
+    from drawing.views import diagrams_view
+
+    mech = mech_of(slotted(0.1, 0.1, angle=300.0))
+    sv = Solver(mech)
+    view = diagrams_view(mech, analyse_cycle(mech, solver=sv), "en", solver=sv)
+    texts = [it.text for it in view.items if isinstance(it, Text)]
+    assert "μ_{ε} = 0.025 (rad/s²)/mm" in texts
+    curves = [np.array(it.points)[:, 1] for it in view.items if isinstance(it, Polyline)]
+    assert np.ptp(curves[1]) < 1e-9 and np.ptp(curves[2]) < 1e-9  # ω3 = 4, ε3 = 0
+    phi = np.radians([270.0, 270.1, 271.0, 300.0])
+    m = sv.solve(phi)
+    assert sv.trusted(m).tolist() == [False, True, True, True]  # pivot figure 8.7e-4 at 270.1°
+    pm = Solver(parallelogram())
+    near = np.radians([0.0, 0.01, 0.1, 90.0])  # sine 0, 1.7e-4, 1.7e-3, 1
+    assert pm.trusted(pm.solve(near)).tolist() == [False, False, True, True]
