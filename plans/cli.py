@@ -228,6 +228,7 @@ def main(argv: list[str] | None = None) -> int:
         if exc.errno not in (errno.ENOSPC, errno.EIO, errno.EDQUOT, errno.EROFS):
             raise
         print(f"plans {args.command}: cannot write the output: {exc.strerror}", file=sys.stderr)
+        _drop_stdout()
         return EXIT_INPUT
     except Exception as exc:  # an internal error: short message, traceback on --debug
         if args.debug:
@@ -238,6 +239,19 @@ def main(argv: list[str] | None = None) -> int:
             file=sys.stderr,
         )
         return EXIT_INTERNAL
+
+
+def _drop_stdout() -> None:
+    """Point stdout at the null device: what it still holds would fail again as the
+    interpreter exits, as "Exception ignored" with exit status 120."""
+    import os
+
+    try:
+        null = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(null, sys.stdout.fileno())
+        os.close(null)
+    except (OSError, ValueError):  # no file descriptor to point (a test's captured stdout)
+        pass
 
 
 def warn(command: str, text: str, source: str = "") -> None:
@@ -265,6 +279,7 @@ def write_output(path: str | None, text) -> None:
                 sys.stdout.buffer.write(chunk)
             else:
                 sys.stdout.write(chunk)
+        sys.stdout.flush()  # now, inside main's handler, not at the interpreter's exit
         return
     where, target, st, folder = _target(path)
 

@@ -573,11 +573,17 @@ def test_a_date_in_place_of_a_number_is_quoted_as_the_file_wrote_it(capsys, tmp_
 
 
 @pytest.mark.skipif(not Path("/dev/full").exists(), reason="needs /dev/full (Linux)")
-def test_stdout_on_a_full_disk_is_bad_output_not_a_crash():
+@pytest.mark.parametrize("buffered", [True, False])
+def test_stdout_on_a_full_disk_is_bad_output_not_a_crash(buffered):
+    """Buffered, as a user's stdout is: the text waited in the buffer until the
+    interpreter's exit, which printed "Exception ignored" and exited 120. This
+    machine's PYTHONUNBUFFERED=1 had hidden it."""
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONUNBUFFERED"}
+    env.update({"PYTHONPATH": str(ROOT)} if buffered else {"PYTHONPATH": str(ROOT),
+                                                           "PYTHONUNBUFFERED": "1"})
     with open("/dev/full", "w") as full:
         r = subprocess.run([sys.executable, "-m", "plans", "solve", str(PRESS)], cwd=ROOT,
-                           env={**os.environ, "PYTHONPATH": str(ROOT)}, stdout=full,
-                           stderr=subprocess.PIPE, text=True)
+                           env=env, stdout=full, stderr=subprocess.PIPE, text=True)
     assert r.returncode == 2
     assert r.stderr == "plans solve: cannot write the output: No space left on device\n"
 
