@@ -138,7 +138,7 @@ def run(args) -> int:
 def compute(mech, n_positions: int, solver=None) -> CycleTable:
     import numpy as np
 
-    from .cycle import analyse_cycle
+    from .cycle import analyse_cycle, table_angle
     from .kinematics import Solver
 
     solver = solver or Solver(mech)
@@ -147,9 +147,11 @@ def compute(mech, n_positions: int, solver=None) -> CycleTable:
     with np.errstate(all="ignore"):
         motion = solver.solve(phi)
         status = conditioning(mech, motion, solver)
-        out_values = (
-            cycle.output.value(motion, mech) if cycle.output is not None else None
-        )
+        out_values = None
+        if cycle.output is not None:
+            out_values = cycle.output.value(motion, mech)
+            if cycle.output.kind == "angular":
+                out_values = table_angle(out_values, cycle.full_turn)
     points = tuple(motion.position)
     links = tuple(sorted(lid for lid in motion.links if lid != 0))
     return CycleTable(mech, cycle, motion, status, points, links, out_values)
@@ -439,6 +441,10 @@ def to_text(t: CycleTable) -> str:
     lines.append(
         f"φ1: degrees from {d.reference}, measured {d.measured} (the file's convention)"
     )
+    if c.output is not None and c.output.kind == "angular":
+        lines.append(
+            f"ψ_{c.output.point}: degrees of link {c.output.link} from +x, measured ccw"
+        )
     from .cycle import summary
 
     lines += summary(c, d)

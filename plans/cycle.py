@@ -52,6 +52,30 @@ class Output:
         return st.omega if which == "velocity" else st.epsilon
 
 
+def table_angle(psi, full_turn: bool):
+    """The output's angle ψ (rad, unwrapped over the positions in their order) as a table
+    gives it: an output that turns with the crank, a whole turn per turn, modulo 2π as φ1
+    is; one that swings, continuous over its swing and moved by whole turns so that the
+    middle of its swing lies in [0, 2π). A rocker then reads 170°…190° whichever side of
+    ±180° ``np.angle`` started it on, one swinging about +x −10°…10°, and a drag link's
+    output 150°…360°, 0°…120° rather than up to 480°.
+    NaN (a position where the link is nowhere) stays NaN."""
+    psi = np.array(psi, dtype=float)
+    known = np.isfinite(psi)
+    if psi.ndim == 0 or not known.any():
+        return psi
+    got = psi[known]
+    if full_turn and got.size > 1:
+        # the step from the last position back to the first closes the turn: the output
+        # turns fully when the steps add up to a whole turn, not to nothing
+        back = math.remainder(got[0] - got[-1], TWO_PI)
+        if round((got[-1] - got[0] + back) / TWO_PI) != 0:
+            psi[known] = np.mod(got, TWO_PI)
+            return psi
+    psi[known] = got - TWO_PI * math.floor((got.max() + got.min()) / 2 / TWO_PI)
+    return psi
+
+
 def find_output(mech: Mechanism) -> Output | None:
     """The output named in the file, else the last slider on a fixed guide, else the last
     link hinged to the frame (a rocker)."""

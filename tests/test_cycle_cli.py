@@ -337,3 +337,70 @@ def test_the_json_crank_range_runs_counter_clockwise(capsys, tmp_path, sense):
     code, out, _ = run(capsys, "cycle", path, "--json", "--positions", "3")
     lo, hi = json.loads(out)["cycle"]["crank_range_phi_deg"]
     assert lo == pytest.approx(231.2, abs=0.1) and hi == pytest.approx(128.8, abs=0.1)
+
+
+DRAG_LINK = """
+name = "drag link"
+output = "C"
+[frame]
+A = [0.0, 0.0]
+D = [0.05, 0.0]
+[driver]
+link = 1
+angle_deg = 60
+rpm = 100
+sense = "ccw"
+[links.1]
+axis = ["A", "B"]
+points = { B = 0.2 }
+[links.2]
+axis = ["B", "C"]
+points = { C = 0.25 }
+[links.3]
+axis = ["D", "C"]
+points = { C = 0.22 }
+[assembly]
+C = "above BD"
+"""
+
+
+def _output_column(out: str) -> list[float]:
+    rows = out.split("Conditioning")[1].splitlines()
+    head = next(i for i, line in enumerate(rows) if "ψ_C °" in line)
+    return [float(r.split()[2]) for r in rows[head + 1:] if r.strip() and r.split()[0].isdigit()]
+
+
+def test_an_output_that_turns_fully_reads_its_angle_within_one_turn(capsys, tmp_path):
+    """A drag link's output turns with the crank: its ψ column reads within [0°, 360°) as
+    φ1 does, where the unwrapped angle reached 480° by position 11."""
+    f = tmp_path / "drag.toml"
+    f.write_text(DRAG_LINK)
+    code, out, err = run(capsys, "cycle", str(f))
+    assert code == 0, err
+    assert "ψ_C: degrees of link 3 from +x, measured ccw" in out
+    psi = _output_column(out)
+    assert len(psi) == 12 and all(0 <= v < 360 for v in psi)
+    assert psi[7] > 300 and psi[8] < 10  # it passes 360° between positions 7 and 8
+    code, out, err = run(capsys, "cycle", str(f), "--json")
+    data = json.loads(out)
+    for row, shown in zip(data["rows"], psi, strict=True):
+        c, d = row["points"]["C"]["position"], (0.05, 0.0)
+        truth = math.degrees(math.atan2(c[1] - d[1], c[0] - d[0])) % 360
+        assert math.degrees(row["output"]) == pytest.approx(truth, abs=1e-9)
+        assert shown == pytest.approx(truth, abs=0.06)
+
+
+def test_a_table_angle_moves_a_swing_by_whole_turns_and_keeps_it_continuous():
+    from plans.cycle import table_angle
+
+    swing = np.radians([-170.0, -178.0, -185.0, -190.0, -181.0])  # across ±180°
+    got = np.degrees(table_angle(swing, full_turn=True))
+    assert got == pytest.approx([190, 182, 175, 170, 179])
+    got = np.degrees(table_angle(np.radians([350.0, 365.0, 370.0, 355.0]), full_turn=True))
+    assert got == pytest.approx([-10, 5, 10, -5])  # a swing across 0° stays continuous
+    ramp = np.radians([150.0, 250.0, 350.0, 450.0, 475.0, np.nan])
+    got = np.degrees(table_angle(ramp, full_turn=True))
+    assert got[:5] == pytest.approx([150, 250, 350, 90, 115]) and np.isnan(got[5])
+    # a crank that rocks never closes a turn: its output's angle is never taken modulo
+    assert np.degrees(table_angle(ramp[:5], full_turn=False)) == pytest.approx(
+        [150, 250, 350, 450, 475])
