@@ -10,6 +10,10 @@ from +x, crank turning counter-clockwise, C above the line BD, E on BC produced 
 with CE = BC/2, centres of mass mid-link (S2 at the middle of BE); links 1 = AB, 2 = BE,
 3 = CD. Crank-slider: A = (0, 0), slider C on the x axis on the +x side, zero offset,
 S1, S2 mid-link, S3 = C; links 1 = AB, 2 = BC, 3 = slider.
+
+A table's ``designation`` is the pattern of its sheets' document designation, with the
+variant number as ``{n}`` (Python's format: ``"ТММ.КП.{n:02d}"`` gives ТММ.КП.07 for
+variant 7); the default is :data:`DESIGNATION`.
 """
 
 from __future__ import annotations
@@ -36,7 +40,9 @@ COLUMNS = ("AB", "BC", "CD", "AD", "phi_deg", "rpm")
 KINDS = ("crank-slider", "four-bar")
 MAX_ROWS = 10_000
 #: top-level keys a table may have besides its rows
-TABLE_KEYS = {"variant", "title", "name", "source", "note"}
+TABLE_KEYS = {"variant", "title", "name", "source", "note", "designation"}
+#: the designation of a variant's sheet where its table gives none
+DESIGNATION = "ПМ.01.{n:02d}"
 ROW_KEYS = {"n", "kind", *COLUMNS}
 
 
@@ -60,6 +66,7 @@ class Table(NamedTuple):
     rows: dict[int, dict]  # the rows that can be read, by their number
     rows_problems: dict[int, list]  # the problems (key, message) of a numbered row, by number
     loose: list  # the problems of rows without a number: no variant's own, so none stops
+    designation: str = DESIGNATION  # the pattern of a variant's designation, ``{n}`` its number
 
     @property
     def numbers(self) -> list[int]:
@@ -90,7 +97,8 @@ class Table(NamedTuple):
             listed = ", ".join(map(str, have)) if len(have) <= 30 else f"{have[0]}…{have[-1]}, {len(have)} rows"
             raise InputError(self.source, [*self.located(n, every=True).lines(),
                                            f"variant {n} is not in the table (it has {listed})"])
-        return from_dict(variant_dict(self.rows[n]), f"{self.source}, variant {n}")
+        return from_dict(variant_dict(self.rows[n], self.designation),
+                         f"{self.source}, variant {n}")
 
     def others(self, n: int | None) -> list[str]:
         """The problems of the rows other than ``n`` (None: of the rows without a number
@@ -115,16 +123,22 @@ def read_table(path: str | Path | None = None) -> Table:
 
     def done() -> Table:
         return Table(source, text, None if path is None else str(path), pr, table,
-                     {n: p.items for n, p in bad.items() if p}, loose.items)
+                     {n: p.items for n, p in bad.items() if p}, loose.items,
+                     pattern if isinstance(pattern, str) else DESIGNATION)
+    pattern = data.get("designation", DESIGNATION)
     if "variant" not in data and {"frame", "driver", "links"} & data.keys():
         pr.add("", "is a mechanism file, not a variant table: give it as FILE, without "
                    "--variant and --table")
         return done()
     for key in data:
         if key not in TABLE_KEYS:
-            pr.add(key_text(key), "unknown key — a table has [[variant]] rows (and title, name, source, note)")
+            pr.add(key_text(key), "unknown key — a table has [[variant]] rows (and title, name, "
+                                  "source, note, designation)")
         elif key != "variant" and not isinstance(data[key], str):
             pr.add(key, f"must be text in double quotes, got {quote(data[key])}")
+        elif key == "designation" and (why := _bad_pattern(data[key])):
+            pr.add(key, f"{why}, got {quote(data[key])}")
+            pattern = None
     rows = data.get("variant")
     if not isinstance(rows, list) or not rows:
         got = "" if rows is None else f" (got {quote(rows)})"
@@ -175,10 +189,30 @@ def read_table(path: str | Path | None = None) -> Table:
     return done()
 
 
-def variant_dict(row: dict) -> dict:
-    """The mechanism file (as a parsed dict) of one table row."""
+def _bad_pattern(pattern: str) -> str | None:
+    """What is wrong with a table's designation pattern, None if nothing: it must name the
+    variant ``{n}`` (else every sheet would carry one designation) and nothing else."""
+    from string import Formatter
+
+    try:
+        fields = [f for _, f, _, _ in Formatter().parse(pattern) if f is not None]
+        pattern.format(n=7)
+    except (ValueError, KeyError, IndexError, AttributeError, TypeError):
+        fields = None
+    if fields is None or any(f != "n" for f in fields):
+        return ('must hold the variant number as {n} and no other field in braces, '
+                'as "ТММ.КП.{n:02d}"')
+    if not fields:
+        return 'must hold the variant number as {n} (as "ТММ.КП.{n:02d}"): each sheet its own'
+    return None
+
+
+def variant_dict(row: dict, designation: str = DESIGNATION) -> dict:
+    """The mechanism file (as a parsed dict) of one table row; ``designation``, its
+    table's pattern (``{n}`` the variant)."""
     ab, bc, phi, rpm = row["AB"], row["BC"], row["phi_deg"], row["rpm"]
     n = row["n"]
+    title = {"designation": designation.format(n=n)}
     driver = {"link": 1, "angle_deg": phi, "rpm": rpm, "sense": "ccw"}
     if row["kind"] == "four-bar":
         cd, ad = row["CD"], row["AD"]
@@ -196,7 +230,7 @@ def variant_dict(row: dict) -> dict:
             "assembly": {"C": "above BD"},
             "trace": ["E"],
             "output": "C",
-            "title": {"designation": f"ПМ.01.{n:02d}"},
+            "title": title,
         }
     return {
         "name": {"en": f"Crank-slider mechanism, variant {n}",
@@ -213,7 +247,7 @@ def variant_dict(row: dict) -> dict:
         "assembly": {"C": "right of A"},
         "trace": ["S2"],
         "output": "C",
-        "title": {"designation": f"ПМ.01.{n:02d}"},
+        "title": title,
     }
 
 

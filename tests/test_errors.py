@@ -354,6 +354,23 @@ def test_variant_table_limits(tmp_path):
     assert info.value.problems == ["variant 5000 is not in the table (it has 0…99, 100 rows)"]
 
 
+def test_a_tables_designation_pattern_names_each_variants_sheet(tmp_path, capsys):
+    row = '[[variant]]\nn = {}\nAB = 0.05\nBC = 0.15\nCD = 0.1\nAD = 0.1\nphi_deg = 15\nrpm = 100\n'
+    path = tmp_path / "t.toml"
+    path.write_text('designation = "ТММ.КП.{n:03d}.00"\n' + row.format(6) + row.format(7))
+    assert variant(7, path).title["designation"] == "ТММ.КП.007.00"
+    assert variant(6, path).title["designation"] == "ТММ.КП.006.00"
+    assert variant(7).title["designation"] == "ПМ.01.07"  # the built-in table's
+    for bad, why in (('"ТММ.КП"', "(as"), ('"ТММ.{n"', "no other field"),
+                     ('"ТММ.{v}"', "no other field"), ('"ТММ.{n:q}"', "no other field"),
+                     ("7", "must be text")):
+        path.write_text(f"designation = {bad}\n" + row.format(7))
+        code, out, err = run(capsys, "solve", "--variant", "7", "--table", str(path))
+        assert code == 2 and out == ""
+        assert err.count("\n") == 1 and f"{path}: line 1: designation: " in err, err
+        assert why in err
+
+
 def test_public_api_is_unchanged():
     for name in ("load", "from_dict", "Mechanism", "Link", "Guide", "Slider", "Driver"):
         assert hasattr(mechanism, name)
