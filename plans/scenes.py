@@ -374,7 +374,7 @@ guide = { link = 3, offset = 0.1, angle_deg = 15 }
 
 # --- RPR + PRP on two moving guides: a block G slides on a guide of the crank (⊥ to it,
 # 0.05 from O) and is hinged to a block sliding on the slotted link's offset guide. The
-# guides turn parallel near φ = 200° and 340°: the range is 0°…180° -----------------------
+# guides turn parallel at φ = 199.47° and 340.53°: the crank's range between them ------
 PRP_TWO_MOVING = """
 name = { en = "Cross-slide on the crank and the slotted link", ru = "Крестовый ползун на кривошипе и кулисе" }
 [frame]

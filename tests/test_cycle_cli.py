@@ -404,3 +404,41 @@ def test_a_table_angle_moves_a_swing_by_whole_turns_and_keeps_it_continuous():
     # a crank that rocks never closes a turn: its output's angle is never taken modulo
     assert np.degrees(table_angle(ramp[:5], full_turn=False)) == pytest.approx(
         [150, 250, 350, 450, 475])
+
+
+@pytest.mark.parametrize("given", ["25", "25.05", "-37.0137"])
+def test_parallel_guides_end_the_cranks_range_wherever_the_samples_fall(given):
+    """The tangent mechanism's slider runs off to infinity at φ1 = ±90°, where its two
+    guides turn parallel. The range was found only where one of the 3600 samples fell
+    exactly there (given at 25°); given at 25.05° the cycle ran through infinity as a full
+    turn, with y_C = 2.3 m at 85° and −0.43 m at 115°."""
+    from plans.scenes import SCENES
+
+    toml = SCENES["tangent"].toml.replace("angle_deg = 25", f"angle_deg = {given}", 1)
+    mech = mechanism.from_dict(__import__("tomllib").loads(toml))
+    c = analyse_cycle(mech)
+    assert not c.full_turn
+    # to within 1e-10 rad: a sine under SINGULAR_SINE (1e-10) is parallel, C at 2e9 m
+    assert c.ccw_range == pytest.approx((-math.pi / 2, math.pi / 2), abs=2e-10)
+    assert any("guides turn parallel" in n for n in c.notes)
+    assert all(abs(p) < math.pi / 2 for p in c.positions)
+
+
+def test_two_moving_guides_limit_the_crank_where_they_turn_parallel():
+    from plans.scenes import SCENES
+
+    toml = SCENES["prp_two_moving"].toml
+    got = []
+    for shift in (0.0, 0.05, 0.0137):
+        mech = mechanism.from_dict(__import__("tomllib").loads(toml))
+        mech = mechanism.from_dict(__import__("tomllib").loads(toml.replace(
+            f"angle_deg = {math.degrees(mech.driver.phi):g}",
+            f"angle_deg = {math.degrees(mech.driver.phi) + shift:g}", 1)))
+        c = analyse_cycle(mech)
+        assert not c.full_turn
+        lo, hi = c.ccw_range
+        m = Solver(mech).solve(np.array([lo, hi]))
+        prp = [g for g in m.groups if g.group.kind.name == "PRP"]
+        assert len(prp) == 1 and np.all(np.abs(prp[0].velocity.sine) < 1e-9)
+        got.append((lo, hi))
+    assert got[1] == pytest.approx(got[0], abs=1e-12) and got[2] == pytest.approx(got[0], abs=1e-12)
