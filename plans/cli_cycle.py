@@ -157,6 +157,12 @@ def compute(mech, n_positions: int, solver=None) -> CycleTable:
     return CycleTable(mech, cycle, motion, status, points, links, out_values)
 
 
+def figure_labels(t: CycleTable) -> list[str]:
+    """The conditioning figures' keys, each once, in the order the rows give them: one
+    column each in the CSV and the text table, whichever rows lack one."""
+    return list(dict.fromkeys(key for st in t.status for key in st.figures))
+
+
 def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
     """Per position: the figures of every group, warnings and errors (see the module doc);
     ``solver``, the motion's, names the change points among the angles."""
@@ -197,6 +203,8 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
             if not valid[k]:
                 fails.append(str(g.failure(k, at(k))))
                 figures[label] = sine[k] if placed[k] else math.nan  # in line: about 0
+                if pivot is not None:  # every row has every figure: the CSV's columns
+                    figures[f"{label} pivot"] = pivot[k] if placed[k] else math.nan
                 continue
             figures[label] = sine[k]
             if low[k]:
@@ -342,7 +350,7 @@ def _json_rows(t: CycleTable):
 
 def _csv_header(t: CycleTable) -> list[str]:
     head = ["index", "phi_deg", "angle_deg", "solved", "placed", "min_sine"]
-    for label in t.status[0].figures if t.status else ():
+    for label in figure_labels(t):
         head.append(
             f"pivot {label[: -len(' pivot')]}"
             if label.endswith(" pivot")
@@ -391,11 +399,12 @@ def csv_chunks(t: CycleTable, rows: int = 1000):
     out = None if t.output_values is None else np.asarray(t.output_values).tolist()
     coordinate += [False] * (len(cols) - len(coordinate))  # ω and ε
     blank = [""] * len(cols)
+    labels = figure_labels(t)
     for k, st in enumerate(t.status):
         good = st.ok
         row = [k, f(from_x(phis[k])), f(mech.driver.file_angle(phis[k])), int(good),
                int(st.placed), f(st.min_sine)]
-        row += [f(v) for v in st.figures.values()]
+        row += [f(st.figures.get(x, math.nan)) for x in labels]
         if out is not None:
             row.append(f(out[k]) if st.placed else "")
         if good:
@@ -532,7 +541,7 @@ def to_text(t: CycleTable) -> str:
         out_head = [
             f"{'s' if c.output.kind == 'linear' else 'ψ'}_{c.output.point} {unit}"
         ]
-    labels = list(t.status[0].figures) if t.status else []
+    labels = figure_labels(t)
     head = base + out_head + ["min sin"] + [_short(x) for x in labels] + ["status"]
     rows = []
     big_out = 0.0 if not out_head else largest(t.output_values, placed)

@@ -56,6 +56,11 @@ __all__ = [
     "parse_hint",
 ]
 
+#: how far past a change point (rad, in the crank's sense) the points that are nowhere on
+#: it are placed (:meth:`Solver.solve`): the positions are then off by about 1e-9 of the
+#: links' lengths, where rounding alone would leave the rocker's direction 0/0
+LIMIT_STEP = 1e-9
+
 
 class Solver:
     """Solves one mechanism on one continuous motion: each group's assembly is chosen at
@@ -224,7 +229,37 @@ class Solver:
         with np.errstate(all="ignore"):
             phi = np.atleast_1d(np.asarray(phi, dtype=float))
             zero = np.zeros_like(phi)
-            return self._solve(kernels.ARRAY, phi, zero, np.exp(1j * phi))
+            m = self._solve(kernels.ARRAY, phi, zero, np.exp(1j * phi))
+            return self._placed_on_change_points(m) if any(self.changes) else m
+
+    def _placed_on_change_points(self, m: Motion) -> Motion:
+        """``m`` with the points that are nowhere on a change point placed where the
+        motion puts them: a slotted link's rocker when the block is exactly on its pivot,
+        whose direction 0/0 leaves undetermined, is where it stands an instant later
+        (:data:`LIMIT_STEP` on, in the crank's sense), as the turn from there goes on.
+        The plans there stay singular; only positions and the links' poses are filled."""
+        placed = m.placed
+        if placed.all():
+            return m
+        flat = m.phi.reshape(-1)
+        idx = np.array([k for k in np.flatnonzero(~placed.reshape(-1))
+                        if self.on_change_point(float(flat[k]))], dtype=int)
+        if not idx.size:
+            return m
+        on = flat[idx] + math.copysign(LIMIT_STEP, self.mech.driver.omega)
+        later = self._solve(kernels.ARRAY, on, np.zeros_like(on), np.exp(1j * on))
+
+        def filled(now, then):
+            out = np.array(now, copy=True)
+            got = out.reshape(-1)[idx]
+            out.reshape(-1)[idx] = np.where(np.isfinite(got), got, then)
+            return out
+
+        position = {name: filled(z, later.position[name]) for name, z in m.position.items()}
+        links = {lid: st._replace(origin=filled(st.origin, later.links[lid].origin),
+                                  rotor=filled(st.rotor, later.links[lid].rotor))
+                 for lid, st in m.links.items()}
+        return replace(m, position=position, links=links)
 
     def sweep(self, phi, **options):
         """Every point and link at many angles, without the recorded constructions:

@@ -704,3 +704,41 @@ def test_the_diagrams_run_over_a_block_passing_the_rockers_pivot():
     pm = Solver(parallelogram())
     near = np.radians([0.0, 0.01, 0.1, 90.0])  # sine 0, 1.7e-4, 1.7e-3, 1
     assert pm.trusted(pm.solve(near)).tolist() == [False, False, True, True]
+
+
+def test_a_block_exactly_on_the_pivot_at_the_given_angle_is_a_singular_row(capsys, tmp_path):
+    """The pivot B on the crank circle at (R, 0), the file given at 0°: the block is
+    exactly on the pivot, and 0/0 left the rocker nowhere. Row 0 was an error (exit 2,
+    every value blank, the crank pin's too), where given at 90° the same 0° row was
+    singular with its positions; and the CSV's header, made from row 0, had no pivot
+    column, so every later column of rows 1–7 stood one to the right (ψ read as O.x)."""
+    import csv
+    import io
+    import json
+
+    from support import run
+
+    text = (slotted(0.1, 0.1, angle=0.0).replace("B = [0.0, -0.1]", "B = [0.1, 0.0]")
+            .replace("C = 0.5, S3 = [0.25, 0.01]", "C = 0.35"))
+    path = tmp_path / "slotted.toml"
+    path.write_text(text, "utf-8")
+    code, out, err = run(capsys, "cycle", path, "--positions", "8", "--json")
+    assert code == 0, err
+    rows = json.loads(out)["rows"]
+    assert rows[0]["singular"] and rows[0]["placed"] and not rows[0]["errors"]
+    assert all(r["solved"] for r in rows[1:])
+    psi = [math.degrees(r["output"]) for r in rows]
+    assert psi[0] == pytest.approx(90.0, abs=1e-6)  # where the turn from 0° goes on
+    assert np.diff(psi) == pytest.approx([22.5] * 7, abs=1e-6)  # ω3 = ω1 / 2 all round
+    C0 = complex(*rows[0]["points"]["C"]["position"])
+    assert abs(C0 - complex(0.1, 0.35)) < 1e-8
+    assert rows[0]["points"]["A"]["position"] == [0.1, 0.0]  # exact, not moved on
+    code, out, err = run(capsys, "cycle", path, "--positions", "8", "--csv")
+    assert code == 0, err
+    table = list(csv.reader(io.StringIO(out)))
+    head = table[0]
+    assert {len(r) for r in table} == {len(head)}
+    assert "pivot group 2–3 (RPR)" in head
+    got = [float(r[head.index("output C (rad)")]) for r in table[1:]]
+    assert got == pytest.approx([r["output"] for r in rows], abs=1e-12)
+    assert float(table[2][head.index("O.x")]) == 0.0
