@@ -291,7 +291,11 @@ def _choose(mech: Mechanism, structure: Structure, meet: bool = True) -> tuple[i
             if holds:
                 ok.append(sigma)
         margin = positions[1].groups[i].margin
-        if meet and margin is not None and abs(float(np.ravel(margin)[0])) <= IN_LINE:
+        # on a meeting point to rounding the hints are read past it, unless they part the
+        # two assemblies here (a parallelogram given 1e-6 rad short of its change point,
+        # its coupler 1e-7 below OD and the other assembly's above: the file's own angle)
+        if (meet and margin is not None and abs(float(np.ravel(margin)[0])) <= IN_LINE
+                and not (mine and len(ok) == 1)):
             raise _Meet(g.label)
         used |= set(mine)
         if len(ok) == 1:

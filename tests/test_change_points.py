@@ -742,3 +742,26 @@ def test_a_block_exactly_on_the_pivot_at_the_given_angle_is_a_singular_row(capsy
     got = [float(r[head.index("output C (rad)")]) for r in table[1:]]
     assert got == pytest.approx([r["output"] for r in rows], abs=1e-12)
     assert float(table[2][head.index("O.x")]) == 0.0
+
+
+@pytest.mark.parametrize(("angle", "sense", "hint", "parallel"), [
+    (359.9999, "ccw", "below OD", True), (0.0001, "cw", "above OD", True),
+    (359.9999, "ccw", "above OD", False), (0.0001, "cw", "below OD", False),
+])
+def test_a_hint_that_parts_the_assemblies_at_the_given_angle_is_read_there(
+        angle, sense, hint, parallel):
+    """A parallelogram given 1.7e-6 rad short of its change point at 0°: its coupler end B
+    is 1.7e-7 m below OD, the other assembly's 3.5e-7 m above, and the hint parts them.
+    Its margin is within rounding of 0, so the hint was read 1e-4 rad on, past the change
+    point, where "below OD" names the other assembly: the file's parallelogram became an
+    antiparallelogram at the very angle it was given for."""
+    text = (fourbar(A, B_, A, D, angle=angle).replace('"above OD"', f'"{hint}"')
+            .replace("omega = 10.0", f'omega = 10.0\nsense = "{sense}"'))
+    mech = mech_of(text)
+    m = Solver(mech).solve(mech.driver.phi + np.radians(np.arange(0.0, 360.0, 15.0)))
+    B, Ap = m.position["B"], m.position["A"]
+    assert (B[0].imag < 0) == (hint == "below OD")  # the hint holds at the given angle
+    if parallel:  # to 1.6·κ·ε, κ = 1/sin ≈ 6e5 at the given angle
+        assert np.abs(B - Ap - D).max() < 1e-9
+    else:
+        assert np.abs(B - Ap - D).max() > 0.05
