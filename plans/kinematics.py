@@ -180,23 +180,30 @@ class Solver:
             return records.SINGULAR_SINE, records.SINGULAR_SINE  # read now, as records does
         return CHANGE_SINE, CHANGE_PIVOT
 
-    def trusted(self, m: Motion) -> np.ndarray:
-        """Where the plans of ``m`` (this solver's motion over an array of angles) can be
-        built: every group closes and its figures, the lines' sine and a slotted link's
-        pivot figure, reach :meth:`singular_figures` there; over the whole array at once."""
+    def trusted(self, m) -> np.ndarray:
+        """Where the plans of ``m`` can be built: every group closes and its figures, the
+        lines' sine and a slotted link's pivot figure, reach :meth:`singular_figures`
+        there; over the whole array at once. ``m``: this solver's :class:`Motion` over an
+        array of angles, or its :class:`plans.sweep.Sweep`, whose ``valid`` alone does not
+        see the accelerations that lose their digits beside a change point."""
         phi = np.asarray(m.phi, dtype=float)
         turn = (phi - self.branch_at) % (2 * math.pi)
         ok = np.broadcast_to(np.asarray(m.valid, dtype=bool), phi.shape).copy()
         crank = self.mech.frame[self.mech.driver.pivot]
-        for i, g in enumerate(m.groups):
+        if isinstance(m, Motion):
+            figures = [(g.velocity.sine, pivot_figure(g, m.position, crank)) for g in m.groups]
+        else:  # a sweep: its figures by the group's label, the pivot's worked out here
+            pivots = m.pivot
+            figures = [(m.sine[g.label], pivots.get(f"{g.label} pivot"))
+                       for g in self.structure.groups]
+        for i, (sine, q) in enumerate(figures):
             beside = np.zeros(phi.shape, dtype=bool)
             for f in self.changes[i]:
                 beside |= apart(turn, f) < CHANGE_NEAR
             with np.errstate(invalid="ignore"):
-                sine = np.abs(np.asarray(g.velocity.sine, dtype=float))
+                sine = np.abs(np.asarray(sine, dtype=float))
                 ok &= np.where(np.isfinite(sine), sine, 0.0) >= np.where(
                     beside, CHANGE_SINE, records.SINGULAR_SINE)
-                q = pivot_figure(g, m.position, crank)
                 if q is not None:
                     ok &= q >= np.where(beside, CHANGE_PIVOT, records.SINGULAR_SINE)
         return ok
