@@ -238,6 +238,31 @@ def _read(mech: Mechanism, structure: Structure) -> tuple[tuple[int, ...], float
         return _choose(mech, structure, meet=False), phi, phi  # its error, or rounding's pick
 
 
+def _same(positions: dict, name: str) -> bool:
+    """Whether the two assemblies (``positions`` by sign) put point ``name`` in one place,
+    to rounding of the mechanism's size."""
+    a, b = (complex(positions[sigma].position[name][0]) for sigma in (1, -1))
+    return abs(a - b) <= 1e-9 * (1.0 + abs(a) + abs(b))
+
+
+def _at_both(positions: dict, name: str) -> str:
+    """Where the two assemblies put point ``name``, for messages."""
+    return " and ".join(f"({X.real:.4g}, {X.imag:.4g})" for X in (
+        complex(positions[sigma].position[name][0]) for sigma in (1, -1)))
+
+
+def _parting(g, mech: Mechanism, positions: dict) -> str:
+    """The point to name in a hint for group ``g``: its new point, or the first point of
+    its links that the two assemblies put in different places (a slotted link's rocker
+    end, not its pivot)."""
+    names = ([g.C] if g.C else []) + list(mech.links[g.b].points) + list(mech.links[g.a].points)
+    for name in names:
+        if name in positions[1].position and name in positions[-1].position:
+            if not _same(positions, name):
+                return name
+    return g.C or next(iter(mech.links[g.b].points))
+
+
 def _choose(mech: Mechanism, structure: Structure, meet: bool = True) -> tuple[int, ...]:
     """The sign of each group by the hints at the mechanism's angle; ``meet``: raise
     :class:`_Meet` where a group's two assemblies meet there (to rounding)."""
@@ -313,7 +338,17 @@ def _choose(mech: Mechanism, structure: Structure, meet: bool = True) -> tuple[i
             raise positions[1].groups[i].failure(0, mech.driver.at(mech.driver.phi), note,
                                                  source=mech.source)
         new = g.C or coincident_name(g.P, g.b)
-        key = g.C or next(iter(mech.links[g.b].points))
+        key = _parting(g, mech, positions)
+        if mine and key not in mine and all(
+                _same(positions, k) for k in mine if k in positions[1].position):
+            # a hint on a point both assemblies put in one place (a slotted link's block
+            # on the crank pin, the rocker's pivot) can choose neither
+            k = next(iter(mine))
+            raise InputError(
+                mech.source,
+                f"assembly.{k}: {k} stands at the same place in both assemblies of "
+                f"{g.label} at {mech.driver.at(mech.driver.phi)}, so a hint on it chooses "
+                f"neither: write one on {key}, which stands at {_at_both(positions, key)}")
         if not mine:
             cands = []
             for sigma in (1, -1):
@@ -327,8 +362,7 @@ def _choose(mech: Mechanism, structure: Structure, meet: bool = True) -> tuple[i
             )
         hints_ = ", ".join(f"{k} = {mech.assembly[k]!r}" for k in mine)
         if ok:  # both: say where the two are, so that the hint can be chosen between them
-            spots = " and ".join(f"({X.real:.4g}, {X.imag:.4g})" for X in (
-                complex(positions[sigma].position[key][0]) for sigma in (1, -1)))
+            spots = _at_both(positions, key)
             raise InputError(
                 mech.source,
                 f"assembly: the {'hint' if len(mine) == 1 else 'hints'} {hints_} "

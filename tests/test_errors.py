@@ -628,3 +628,26 @@ def test_above_a_vertical_line_is_refused_and_left_of_it_does_not_depend_on_the_
              .solve_one(0.0).position["B"] for h in ("left of OD", "left of DO", "right of OD")}
     assert spots["left of OD"] == spots["left of DO"] and spots["left of OD"].real < 0
     assert spots["right of OD"].real > 0
+
+
+@pytest.mark.parametrize("hint", ['A = "right of B"', 'A = "left of B"'])
+def test_a_hint_on_a_point_both_assemblies_share_names_one_that_parts_them(capsys, tmp_path, hint):
+    """A slotted link with an offset guide: its block's pin A and the rocker's pivot B
+    stand in one place in both assemblies. The hint on A was "fits both … with B at
+    (0, -0.3) and (0, -0.3)" or "fits neither (new point A3)": neither says what to
+    write. It now names the rocker's end C and where each assembly puts it."""
+    from plans.scenes import SLOTTED_OFFSET
+
+    path = tmp_path / "slot.toml"
+    path.write_text(SLOTTED_OFFSET + f"[assembly]\n{hint}\n", "utf-8")
+    code, out, err = run(capsys, "solve", path)
+    assert code == 2 and out == ""
+    assert err.strip().splitlines() == [
+        f"plans solve: {path}: assembly.A: A stands at the same place in both assemblies of "
+        "group 2–3 (RPR) at φ1 = 110°, so a hint on it chooses neither: write one on C, which "
+        "stands at (-0.018, 0.1997) and (0.06838, -0.7953)"]
+    path.write_text(SLOTTED_OFFSET + '[assembly]\nC = "left of OB"\n', "utf-8")
+    code, out, err = run(capsys, "solve", path, "--json")
+    assert code == 0, err
+    C = __import__("json").loads(out)["points"]["C"]["position"]
+    assert C == pytest.approx([-0.018, 0.1997], abs=1e-4)
