@@ -339,52 +339,29 @@ def test_the_json_crank_range_runs_counter_clockwise(capsys, tmp_path, sense):
     assert lo == pytest.approx(231.2, abs=0.1) and hi == pytest.approx(128.8, abs=0.1)
 
 
-DRAG_LINK = """
-name = "drag link"
-output = "C"
-[frame]
-A = [0.0, 0.0]
-D = [0.05, 0.0]
-[driver]
-link = 1
-angle_deg = 60
-rpm = 100
-sense = "ccw"
-[links.1]
-axis = ["A", "B"]
-points = { B = 0.2 }
-[links.2]
-axis = ["B", "C"]
-points = { C = 0.25 }
-[links.3]
-axis = ["D", "C"]
-points = { C = 0.22 }
-[assembly]
-C = "above BD"
-"""
-
-
 def _output_column(out: str) -> list[float]:
     rows = out.split("Conditioning")[1].splitlines()
-    head = next(i for i, line in enumerate(rows) if "ψ_C °" in line)
+    head = next(i for i, line in enumerate(rows) if "ψ_B °" in line)
     return [float(r.split()[2]) for r in rows[head + 1:] if r.strip() and r.split()[0].isdigit()]
 
 
 def test_an_output_that_turns_fully_reads_its_angle_within_one_turn(capsys, tmp_path):
     """A drag link's output turns with the crank: its ψ column reads within [0°, 360°) as
     φ1 does, where the unwrapped angle reached 480° by position 11."""
+    from test_stability import fourbar
+
     f = tmp_path / "drag.toml"
-    f.write_text(DRAG_LINK)
+    f.write_text(fourbar(0.2, 0.25, 0.22, 0.05))  # the frame is the shortest link
     code, out, err = run(capsys, "cycle", str(f))
     assert code == 0, err
-    assert "ψ_C: degrees of link 3 from +x, measured ccw" in out
+    assert "ψ_B: degrees of link 3 from +x, measured ccw" in out
     psi = _output_column(out)
     assert len(psi) == 12 and all(0 <= v < 360 for v in psi)
-    assert psi[7] > 300 and psi[8] < 10  # it passes 360° between positions 7 and 8
+    assert int(np.sum(np.diff(psi) < 0)) == 1  # it passes 360° once
     code, out, err = run(capsys, "cycle", str(f), "--json")
     data = json.loads(out)
     for row, shown in zip(data["rows"], psi, strict=True):
-        c, d = row["points"]["C"]["position"], (0.05, 0.0)
+        c, d = row["points"]["B"]["position"], (0.05, 0.0)
         truth = math.degrees(math.atan2(c[1] - d[1], c[0] - d[0])) % 360
         assert math.degrees(row["output"]) == pytest.approx(truth, abs=1e-9)
         assert shown == pytest.approx(truth, abs=0.06)
