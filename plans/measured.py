@@ -166,7 +166,6 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
               text: str | None = None) -> Measurement:
     """Build a :class:`Measurement` from parsed TOML (the mechanism is loaded and solved)."""
     from . import mechanism as mechmod
-    from . import variants
 
     problems = Problems(source, text)
     check_keys(data, TOP_KEYS, "", problems)
@@ -181,31 +180,22 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
         problems.add('mechanism', 'give the mechanism file (mechanism = "press.toml") '
                         "or a variant (variant = 3), one of them")
     elif has_file:
-        mpath = data["mechanism"]
-        if not isinstance(mpath, str) or not mpath:
-            problems.add("mechanism", f"must be a file name, got {quote(mpath)}")
-        else:
-            p = Path(mpath)
-            if not p.is_absolute() and folder is not None:
-                p = folder / p
-            if not p.is_file():
-                problems.add("mechanism", f"{mpath}: no such file (paths are relative to "
-                                "the measurement file)")
-            else:
-                mech = p
+        mech = _input_file(data["mechanism"], "mechanism", folder, problems)
     else:
         var = data["variant"]
         if isinstance(var, bool) or not isinstance(var, int):
             problems.add("variant", f"must be a whole number, got {quote(var, 20)}")
         else:
             mech = var
-    table = data.get("table")
-    if table is not None:
-        if not isinstance(table, str):
-            problems.add("table", "must be a file name")
-            table = None
-        elif folder is not None and not Path(table).is_absolute():
-            table = str(folder / table)
+    table = None  # the table of variants: None for the built-in one
+    if "table" in data:
+        if has_file and not has_var:
+            problems.add("table", "goes with variant = N (a row of that table of variants); "
+                            "with a mechanism file leave it out")
+        else:
+            table = _input_file(data["table"], "table", folder, problems)
+            if table is None and isinstance(mech, int):
+                mech = None  # not the built-in table instead
     angle = None
     if "angle_deg" in data:
         angle = _num(data["angle_deg"], "angle_deg", problems, unit="°")
@@ -256,6 +246,10 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
     if not raw_segments and not raw_values:
         problems.add("segments", "nothing to check: give the measured segments, e.g. "
                         "[segments] pa3 = 55")
+    if isinstance(mech, int):
+        rows = _table_of(mech, table, problems)
+        if rows is None:
+            mech = None
     if mech is None:
         if not problems:
             problems.add("mechanism", "missing")
@@ -264,7 +258,7 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
     # other keys have problems, so that every problem is reported at once) -------------
     try:
         if isinstance(mech, int):
-            m = variants.variant(mech, table)
+            m = rows.variant(mech)
         else:
             m = mechmod.load(mech)
         if angle is not None:
@@ -306,6 +300,50 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
     read = [source] + [str(p) for p in (mech if not isinstance(mech, int) else table,) if p]
     return Measurement(source, m, sol, sol.mu,
                        tuple(items), tol, title, angle, tuple(read), frozenset(mu))
+
+
+def _input_file(value: Any, key: str, folder: Path | None, problems: Problems) -> Path | None:
+    """The file that ``key`` (mechanism, table) names, relative to the measurement file;
+    None, and a problem of that key, where it cannot be read."""
+    if not isinstance(value, str) or not value:
+        problems.add(key, f"must be a file name, got {quote(value)}")
+        return None
+    p = Path(value)
+    if not p.is_absolute() and folder is not None:
+        p = folder / p
+    name = quote(value, 80)[1:-1]
+    if p.is_dir():
+        problems.add(key, f"{name}: is a folder, not a file")
+        return None
+    if not p.is_file():
+        problems.add(key, f"{name}: no such file (paths are relative to the measurement file)")
+        return None
+    try:
+        with open(p, "rb"):
+            pass
+    except OSError as exc:
+        problems.add(key, f"{name}: cannot read the file: {exc.strerror or exc}")
+        return None
+    return p
+
+
+def _table_of(n: int, table: Path | None, problems: Problems):
+    """The table of variants (:class:`plans.variants.Table`) that has row ``n``; None, and
+    a problem of the key ``variant``, where it has no such row. A table that cannot be
+    used at all is its own file's problem (raised after the measurement file's own)."""
+    from . import variants
+
+    try:
+        rows = variants.read_table(table)
+        have = rows.numbers
+    except InputError:
+        problems.raise_if_any()
+        raise
+    if n in have:
+        return rows
+    listed = ", ".join(map(str, have)) if len(have) <= 30 else f"{have[0]}…{have[-1]}, {len(have)} rows"
+    problems.add("variant", f"{n} is not in {rows.source} (it has {listed})")
+    return None
 
 
 def _splits(text: str, names) -> list[tuple[str, str]]:

@@ -555,6 +555,13 @@ BAD = [
      'values.V_Q: unknown value "V_Q"'),
     ('mechanism = "M"\ntolerance = "lots"\n[scales]\nmu_v = 0.05\n[segments]\npa = 60\n', "tolerance:"),
     ('mechanism = "M"\n', "segments: nothing to check"),
+    # the variant and the table are the measurement file's keys, located like the others
+    ('variant = 99\n[scales]\nmu_v = 0.05\n[segments]\npb = 1\n',
+     "line 1: variant: 99 is not in Table 2 (built in) (it has 0, 1, 2"),
+    ('variant = 5\ntable = "nofile.toml"\n[scales]\nmu_v = 0.05\n[segments]\npb = 1\n',
+     "line 2: table: nofile.toml: no such file (paths are relative to the measurement file)"),
+    ('mechanism = "M"\ntable = "nofile.toml"\n[scales]\nmu_v = 0.05\n[segments]\npa = 60\n',
+     "line 2: table: goes with variant = N"),
     ('mechanism = "M"\n[segments\n', "TOML"),
 ]
 
