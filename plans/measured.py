@@ -31,7 +31,27 @@ PLANS = ("positions", "velocity", "acceleration")
 MU_KEY = {"positions": "mu_l", "velocity": "mu_v", "acceleration": "mu_a"}
 #: the scale factor of each plan as the note writes it
 MU_SYMBOL = {"positions": "μl", "velocity": "μv", "acceleration": "μa"}
-SENSE_WORDS = {"ccw": 1, "cw": -1, "против": 1, "по": -1}
+#: the sense of an ω or ε as a student writes it after the magnitude, +1 ccw, −1 cw
+SENSE_WORDS = {
+    "ccw": 1, "cw": -1, "counterclockwise": 1, "counter-clockwise": 1, "anticlockwise": 1,
+    "anti-clockwise": 1, "clockwise": -1,
+    "против часовой стрелки": 1, "против часовой": 1, "против ч.с.": 1, "против ч. с.": 1,
+    "против чс": 1, "против": 1,
+    "по часовой стрелке": -1, "по часовой": -1, "по ч.с.": -1, "по ч. с.": -1, "по чс": -1,
+    "по": -1,
+}
+#: the senses a hint names
+SENSE_HINT = "ccw, cw, против часовой стрелки, по часовой стрелке, против ч.с., по ч.с."
+#: the units a quoted value may carry, by kind (Item.kind, "value" by its plan)
+VALUE_UNITS = {
+    "velocity": ("m/s", ("m/s", "м/с")),
+    "acceleration": ("m/s²", ("m/s²", "м/с²")),
+    "omega": ("rad/s", ("rad/s", "рад/с", "1/s", "1/с", "s⁻¹", "с⁻¹")),
+    "epsilon": ("rad/s²", ("rad/s²", "рад/с²", "1/s²", "1/с²", "s⁻²", "с⁻²")),
+}
+_WHAT = {"velocity": "a velocity", "acceleration": "an acceleration",
+         "omega": "an angular velocity", "epsilon": "an angular acceleration"}
+_NUMBER = r"[-+−]?(?:\d+(?:[.,]\d*)?|[.,]\d+)(?:[eE][-+]?\d+)?"
 
 
 # ---------------------------------------------------------------------------------------
@@ -151,10 +171,28 @@ def load(path: str | Path) -> Measurement:
     return from_dict(data, str(path), path.parent, text=text)
 
 
+def comma_number(value: Any) -> float | None:
+    """A number written in quotes with a decimal comma, as in Russian ("55,4"), else None:
+    a bare TOML number cannot hold a comma, so the quotes are how it is written.
+
+    >>> comma_number("55,4"), comma_number(" -0,05 "), comma_number("55.4"), comma_number(55.4)
+    (55.4, -0.05, None, None)
+    """
+    if isinstance(value, str) and re.fullmatch(r"\s*[-+−]?\d+,\d+\s*", value):
+        return float(value.strip().replace("−", "-").replace(",", "."))
+    return None
+
+
 def _num(value: Any, where: str, problems: Problems, *, positive=False, nonneg=False,
          unit: str = "mm", what: str = "a length on the drawing") -> float | None:
-    """A number of the file (``fileformat.read_number``); ``what`` (a length on the
-    drawing, a magnitude) is not negative."""
+    """A number of the file (``fileformat.read_number``), or one in quotes with a decimal
+    comma; ``what`` (a length on the drawing, a magnitude) is not negative."""
+    if (comma := comma_number(value)) is not None:
+        value = comma
+    elif isinstance(value, str) and (m := re.fullmatch(r"\s*([-+−]?\d+,\d+)\s*\S.*", value)):
+        problems.add(where, f'must be a number, got {quote(value)}: write "{m.group(1)}" '
+                            f'or {m.group(1).replace(",", ".")}, without the unit')
+        return None
     x = read_number(value, where, problems, positive=positive, unit=unit)
     if x is not None and nonneg and x < 0:
         problems.add(where, f"{what} cannot be negative, got {x:g}")
@@ -421,7 +459,7 @@ class _Names:
                 problems.add(where, f"there is no link {link} (links: "
                                 f"{', '.join(map(str, sorted(sol.mechanism.links)))})")
                 return None
-            mag, sense = _magnitude_sense(value, where, problems, allow_sense=True)
+            mag, sense = _magnitude_sense(value, where, problems, allow_sense=True, kind=kind)
             if mag is None:
                 return None
             plan = "velocity" if kind == "omega" else "acceleration"
@@ -438,7 +476,7 @@ class _Names:
             problems.add(where, f"unknown value \"{name}\"; known: {', '.join(dict.fromkeys(labels))}")
             return None
         plan, x, y, label = hit
-        mag, _ = _magnitude_sense(value, where, problems, allow_sense=False)
+        mag, _ = _magnitude_sense(value, where, problems, allow_sense=False, kind=plan)
         if mag is None:
             return None
         return Item(key, label, "value", plan, mag, x, y,
@@ -474,26 +512,81 @@ def _cyrillic(name: str) -> str:
     return f", with {type_in_latin(name)}" if type_in_latin(name) else ""
 
 
-def _magnitude_sense(value, key, problems, *, allow_sense):
+def normal_unit(text: str) -> str:
+    """A unit as a student types it, in one spelling: lower case, no spaces, powers as
+    superscripts ("m/s^2", "m/s2", "м/с²" → "m/s²", "м/с²"; "s^-1", "с-1" → "s⁻¹", "с⁻¹").
+
+    >>> [normal_unit(u) for u in ("M/S^2", "м/с2", "rad / s", "c^-1", "1/s**2")]
+    ['m/s²', 'м/с²', 'rad/s', 'с⁻¹', '1/s²']
+    """
+    u = "".join(text.lower().split()).replace("**", "^")
+    u = re.sub(r"(?<=[sсc])\^?-1$", "⁻¹", u)
+    u = re.sub(r"(?<=[sсc])\^?-2$", "⁻²", u)
+    u = re.sub(r"(?<=[sсc])\^?2$", "²", u)
+    if re.search(r"[а-я]", u):  # "м/c" typed with a Latin c
+        u = u.replace("c", "с")
+    elif u in ("c⁻¹", "c⁻²"):
+        u = "с" + u[1:]
+    return u
+
+
+def _split_sense(rest: str) -> tuple[str, int]:
+    """The words after a magnitude as (unit, sense): the sense (SENSE_WORDS) before or
+    after the unit, or alone."""
+    r = " ".join(rest.lower().split())
+    for phrase in sorted(SENSE_WORDS, key=len, reverse=True):
+        if r == phrase:
+            return "", SENSE_WORDS[phrase]
+        if r.endswith(" " + phrase):
+            return r[: -len(phrase) - 1], SENSE_WORDS[phrase]
+        if r.startswith(phrase + " "):
+            return r[len(phrase) + 1:], SENSE_WORDS[phrase]
+    return r, 0
+
+
+def _magnitude_sense(value, key, problems, *, allow_sense, kind="velocity"):
+    """The magnitude and sense (+1 ccw, −1 cw, 0 not given) of a value of [values]: a
+    number, or in quotes a number (decimal point or comma) with its unit and, for ω and
+    ε (``allow_sense``), a sense: "4,82 рад/с против часовой стрелки"."""
     sense = 0
-    if isinstance(value, str) and allow_sense:
-        parts = value.replace(",", ".").split()
-        try:
-            mag = float(parts[0]) if parts else None
-        except ValueError:
-            mag = None
-        word = parts[1].lower() if len(parts) > 1 else ""
-        if mag is None or len(parts) > 3 or (word and word not in SENSE_WORDS):
-            problems.add(key, f'write a magnitude and a sense, e.g. "4.82 ccw" or "4.82 cw", '
-                            f"got {quote(value)}")
+    main, units = VALUE_UNITS[kind]
+    if isinstance(value, str):
+        if allow_sense:
+            example = (f'e.g. "4.82 ccw" or "4,82 {units[1]} против часовой стрелки" '
+                       f"(senses: {SENSE_HINT})")
+            bad = f"write a magnitude and a sense, {example}, got {quote(value)}"
+        else:
+            example = f'e.g. 2.77, "2,77" or "2.77 {main}"'
+            bad = f"must be a number, got {quote(value)}: write {_WHAT[kind]} in {main}, {example}"
+        m = re.fullmatch(rf"\s*({_NUMBER})\s*(.*?)\s*", value, re.S)
+        if m is None:
+            problems.add(key, bad)
             return None, 0
-        sense = SENSE_WORDS.get(word, 0)
+        unit, sense = _split_sense(m.group(2))
+        if sense and not allow_sense:
+            problems.add(key, f"{bad} (a sense is given for ω and ε only)")
+            return None, 0
+        if unit and normal_unit(unit) not in {normal_unit(u) for u in units}:
+            other = next((k for k, (_, us) in VALUE_UNITS.items()
+                          if normal_unit(unit) in {normal_unit(u) for u in us}), None)
+            if other is not None:
+                problems.add(key, f"{quote(value)} is in {unit}, the unit of {_WHAT[other]}: "
+                                  f"{_WHAT[kind]} is in {' or '.join(units[:2])}")
+            elif allow_sense:
+                problems.add(key, f"{bad}: {quote(unit, 20)} is neither a sense nor a unit of "
+                                  f"{_WHAT[kind]} ({', '.join(units)})")
+            else:
+                problems.add(key, f"must be a number, got {quote(value)}: {quote(unit, 20)} is not "
+                                  f"a unit of {_WHAT[kind]}; write it in {' or '.join(units)}, "
+                                  f"{example}")
+            return None, 0
+        mag = float(m.group(1).replace("−", "-").replace(",", "."))
         value = mag
-        if mag < 0 and not word:
+        if allow_sense and mag < 0 and not sense:
             sense, value = -1, -mag  # "-4.82": clockwise, as a number would be
     elif allow_sense and isinstance(value, int | float) and not isinstance(value, bool) and value < 0:
         sense, value = -1, -value  # ω3 = -4.82: clockwise, as the engine signs it
-    x = _num(value, key, problems, nonneg=True, unit="",
+    x = _num(value, key, problems, nonneg=True, unit=main,
              what="a magnitude with a sense word" if allow_sense else "a magnitude")
     if x is None:
         return None, 0

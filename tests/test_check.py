@@ -23,6 +23,7 @@ from support import run
 
 from plans import check as ck
 from plans import mechanism
+from plans.errors import InputError
 from plans.kinematics import Solver
 from plans.plan import solve_position
 from plans.scenes import SCENES
@@ -533,6 +534,58 @@ def test_values_and_senses(tmp_path, press):
     for name in ("V_A3", "V_A3A", "a^k_A3A", "a_C", "a^t_DC", "ε3"):
         assert by[name].ok, name
     assert by["a^k_A3A"].computed == pytest.approx(11.07, abs=0.01)
+
+
+def test_decimal_commas_units_and_russian_senses(tmp_path, capsys, press):
+    """One rule for a decimal comma: in quotes, anywhere a number is (omega3 = "4,82" and
+    the tolerance took one, while V_A3 = "2,77", pa3 = "55,4" and mu_v = "0,05" were
+    refused); a value may carry its own unit (not another's); ω and ε take their sense
+    in Russian too ("51,9 против часовой стрелки" was refused with an English hint)."""
+    path = tmp_path / "ru.toml"
+    path.write_text(
+        f'mechanism = {json.dumps(str(PRESS))}\nangle_deg = "30,0"\ntolerance = "5%; 1,0 мм"\n'
+        '[scales]\nmu_l = "0,01"\nmu_v = "0,05"\nmu_a = 1\n[segments]\npa3 = "55,4"\npia3 = 17.9\n'
+        '[values]\nV_A3 = "2,77"\na_C = "23,3 м/с²"\nV_A3A = "1.15 m/s"\n'
+        'omega3 = "4,82 рад/с против часовой стрелки"\nomega4 = "1,6 по ч.с."\n'
+        'epsilon3 = "20.7 rad/s^2 ccw"\nepsilon4 = "51,9 против часовой стрелки"\n'
+        '"a^k_A3A" = "11,07 m/s2"\n"a^t_DC" = "15,6 с^-2"\n', encoding="utf-8")
+    with pytest.raises(InputError) as info:  # a^t is an acceleration, not an ε
+        ck.load(path)
+    assert info.value.problems == ['line 20: values."a^t_DC": "15,6 с^-2" is in с^-2, the unit '
+                                   "of an angular acceleration: an acceleration is in m/s² or м/с²"]
+    path.write_text(path.read_text("utf-8").replace("с^-2", "м/с^2"), encoding="utf-8")
+    meas = ck.load(path)
+    assert (meas.mu["mu_l"], meas.mu["mu_v"]) == (0.01, 0.05)
+    assert meas.tolerance == ck.Tolerance(5.0, 1.0)
+    got = {it.name: (it.measured, it.sense) for it in meas.items}
+    assert got == {"pa3": (55.4, 0), "πa3": (17.9, 0), "V_A3": (2.77, 0), "a_C": (23.3, 0),
+                   "V_A3A": (1.15, 0), "ω3": (4.82, 1), "ω4": (1.6, -1), "ε3": (20.7, 1),
+                   "ε4": (51.9, 1), "a^k_A3A": (11.07, 0), "a^t_DC": (15.6, 0)}
+    res = ck.check(meas)
+    assert all(d.ok for d in res.deviations if d.item.name != "ω4")
+    bad = tmp_path / "bad.toml"
+    bad.write_text(
+        f'mechanism = {json.dumps(str(PRESS))}\n[scales]\nmu_v = 0.05\n[segments]\n'
+        'pa3 = "55,4 mm"\n[values]\nV_A3 = "2.77 m/s²"\na_C = "23,3 km"\nomega3 = "4,82 sideways"\n'
+        'omega4 = "1,66 m/s"\nV_C = "3,6 ccw"\n', encoding="utf-8")
+    code, out, err = run(capsys, "check", bad)
+    assert code == 2 and out == ""
+    assert err.splitlines() == [f"plans check: {bad}: {line}" for line in (
+        'line 5: segments.pa3: must be a number, got "55,4 mm": write "55,4" or 55.4, without '
+        "the unit",
+        'line 7: values.V_A3: "2.77 m/s²" is in m/s², the unit of an acceleration: a velocity '
+        "is in m/s or м/с",
+        'line 8: values.a_C: must be a number, got "23,3 km": "km" is not a unit of an '
+        'acceleration; write it in m/s² or м/с², e.g. 2.77, "2,77" or "2.77 m/s²"',
+        'line 9: values.omega3: write a magnitude and a sense, e.g. "4.82 ccw" or "4,82 рад/с '
+        'против часовой стрелки" (senses: ccw, cw, против часовой стрелки, по часовой стрелке, '
+        'против ч.с., по ч.с.), got "4,82 sideways": "sideways" is neither a sense nor a unit '
+        "of an angular velocity (rad/s, рад/с, 1/s, 1/с, s⁻¹, с⁻¹)",
+        'line 10: values.omega4: "1,66 m/s" is in m/s, the unit of a velocity: an angular '
+        "velocity is in rad/s or рад/с",
+        'line 11: values.V_C: must be a number, got "3,6 ccw": write a velocity in m/s, e.g. '
+        '2.77, "2,77" or "2.77 m/s" (a sense is given for ω and ε only)',
+    )]
 
 
 BAD = [

@@ -763,10 +763,17 @@ def test_a_table_is_read_once_and_its_other_rows_problems_are_capped(capsys, tmp
     assert code == 0 and len(reads) == 1
 
 
-def test_a_decimal_comma_in_quotes_is_told_to_take_a_point(capsys, tmp_path):
-    """A Russian keyboard writes "0,05": the message said only "must be a number"."""
+def test_a_decimal_comma_in_quotes_is_read(capsys, tmp_path):
+    """A Russian keyboard writes "0,05": the message said only "must be a number", then
+    "write 0.05 without quotes, with a decimal point" while the same file's omega3 = "4,82"
+    and tolerance = "0,5mm" were read. One rule now: a measurement file reads a decimal
+    comma in quotes wherever a number goes (a bare TOML number cannot hold one); with a
+    unit after it, it is told what to write."""
     meas = tmp_path / "m.toml"
     meas.write_text(f'mechanism = "{PRESS}"\n[scales]\nmu_v = "0,05"\n[segments]\npa3 = 55\n', "utf-8")
+    code, out, err = run(capsys, "check", meas)
+    assert code == 0 and err == "" and "μv = 0.05 (m/s)/mm" in out
+    meas.write_text(f'mechanism = "{PRESS}"\n[scales]\nmu_v = 0.05\n[segments]\npa3 = "55,4 мм"\n', "utf-8")
     code, _, err = run(capsys, "check", meas)
-    assert code == 2 and err == (f'plans check: {meas}: line 3: scales.mu_v: must be a number, '
-                                 'got "0,05": write 0.05 without quotes, with a decimal point\n')
+    assert code == 2 and err == (f'plans check: {meas}: line 5: segments.pa3: must be a number, '
+                                 'got "55,4 мм": write "55,4" or 55.4, without the unit\n')
