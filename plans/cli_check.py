@@ -23,6 +23,9 @@ def configure(p) -> None:
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.add_argument("--svg", metavar="OUT.svg",
                    help="also draw the student's plan over the computed one")
+    p.add_argument("--png", metavar="OUT.png",
+                   help="the same drawing as a PNG (needs cairosvg: pip install "
+                        "'vector-plans[export]')")
     p.add_argument("--lang", choices=("en", "ru"), default="en",
                    help="language of the report (ru: decimal commas)")
     p.add_argument("-o", "--output", metavar="FILE", help="write the report to FILE instead of stdout")
@@ -33,6 +36,12 @@ def run(args) -> int:
     from .cli import claim_inputs
 
     claim_inputs(args, [args.file])
+    for opt, path, suffix in (("--svg", args.svg, ".svg"), ("--png", args.png, ".png")):
+        _picture_name(opt, path, suffix)
+    if args.png:
+        from drawing import export
+
+        export.require()  # before anything is computed
     meas = ck.load(args.file)
     claim_inputs(args, meas.inputs[1:])
     tol = meas.tolerance
@@ -42,11 +51,17 @@ def run(args) -> int:
         except ValueError as exc:
             raise InputError("command line", f"--tolerance: {exc}") from None
     result = ck.check(meas, tol)
-    files = []  # both built before either is written
-    if args.svg:
+    files = []  # all built before any is written
+    if args.svg or args.png:
         from drawing.check_overlay import overlay_svg
 
-        files.append((args.svg, overlay_svg(result, lang=args.lang)))
+        svg = overlay_svg(result, lang=args.lang)
+        if args.svg:
+            files.append((args.svg, svg))
+        if args.png:
+            from drawing import export
+
+            files.append((args.png, export.png_bytes(svg, scale=PNG_SCALE)))
     if args.json:
         text = json.dumps(to_json(result, args.lang), ensure_ascii=False, indent=2) + "\n"
     else:
@@ -54,6 +69,28 @@ def run(args) -> int:
     for path, data in [(args.output, text), *files]:
         write_output(path, data)
     return EXIT_OK if result.ok else EXIT_DEVIATIONS
+
+
+#: the PNG of the drawing: two pixels for each px of the SVG
+PNG_SCALE = 2.0
+
+
+def _picture_name(opt: str, path: str | None, suffix: str) -> None:
+    """Refuse an output name that does not end in ``suffix`` (x.png given to --svg would
+    hold SVG text): one line, before anything is computed or written. stdout ('-') and a
+    device (/dev/null) are taken as they are."""
+    from pathlib import Path
+
+    if path in (None, "-") or Path(path).suffix.lower() == suffix:
+        return
+    p = Path(path)
+    if p.exists() and not p.is_file() and not p.is_dir():  # /dev/null, a pipe
+        return
+    other = {".svg": ("--png", ".png"), ".png": ("--svg", ".svg")}[suffix]
+    hint = (f"; for {'a PNG' if other[1] == '.png' else 'an SVG'} give {other[0]} {path}"
+            if p.suffix.lower() == other[1] else "")
+    raise InputError("command line", f"{opt} {path}: the name must end in {suffix} ({opt} "
+                     f"writes {suffix[1:].upper()}){hint}")
 
 
 # ---------------------------------------------------------------------------------------

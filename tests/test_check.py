@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import json
 import math
+import os
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
@@ -707,6 +708,29 @@ def test_svg_overlay(tmp_path, capsys, press, case, lang):
             w = min(a[2], b[2]) - max(a[0], b[0])
             h = min(a[3], b[3]) - max(a[1], b[1])
             assert not (w > 0.5 and h > 0.5), "overlapping labels"
+
+
+def test_a_picture_is_written_in_the_format_its_name_says(tmp_path, capsys):
+    """--svg x.png wrote SVG text into a .png file, silently. A name that does not end in
+    the option's format is refused, one line, before anything is written; --png (as
+    plans sheet has it) draws the overlay as a PNG."""
+    sample = SAMPLES / "check_press.toml"
+    for opt, name, want in (("--svg", "x.png", "; for a PNG give --png {p}"),
+                            ("--png", "x.svg", "; for an SVG give --svg {p}"),
+                            ("--svg", "x", "")):
+        path = tmp_path / name
+        path.write_bytes(b"kept")
+        code, out, err = run(capsys, "check", sample, opt, path)
+        fmt = opt[2:].upper()
+        assert code == 2 and out == "" and path.read_bytes() == b"kept"
+        assert err == (f"plans check: command line: {opt} {path}: the name must end in "
+                       f".{fmt.lower()} ({opt} writes {fmt}){want.format(p=path)}\n")
+    code, _, err = run(capsys, "check", sample, "--svg", tmp_path / "o.SVG", "-o", os.devnull)
+    assert code == 1 and err == "" and (tmp_path / "o.SVG").read_text("utf-8").startswith("<?xml")
+    pytest.importorskip("cairosvg")
+    png = tmp_path / "o.png"
+    code, _, err = run(capsys, "check", sample, "--png", png, "-o", os.devnull)
+    assert code == 1 and err == "" and png.read_bytes().startswith(b"\x89PNG\r\n")
 
 
 def test_rebuild_places_measured_points(press):
