@@ -132,8 +132,35 @@ def _toml_problem(message: str, text: str) -> str:
         key = at if any(c in LOOKALIKES for c in at) else here.split("=", 1)[0]
     if type_in_latin(key):  # "АВ = 0.06" typed on a Russian keyboard: a bare key is Latin only
         hint = f"the name has {type_in_latin(key)}"
+    elif m and m.group("line") and not here.lstrip().startswith("[") and "=" in here:
+        hint = _bare_key_hint(key) or hint
     msg = one_line(msg[:1].lower() + msg[1:], 120)
     return f"{where}: TOML syntax error: {msg}" + (f" ({hint})" if hint else "")
+
+
+#: Greek letters of the method's names, as a bare key writes them
+_GREEK = {"π": "pi", "ω": "omega", "ε": "epsilon"}
+
+
+def _bare_key_hint(key: str) -> str:
+    """What to write for a bare key with letters TOML does not take bare (πk = 5), else "".
+
+    >>> _bare_key_hint("πk ")
+    'write π as pi (pik) or quote the key ("πk")'
+    >>> _bare_key_hint("β2")
+    'a key with letters other than A–Z, a–z is quoted: "β2"'
+    """
+    key = key.strip()
+    parts = key.split(".")
+    if not key or any(c in key for c in "\"'#") or all(_BARE.fullmatch(p) for p in parts):
+        return ""
+    quoted = ".".join(p if _BARE.fullmatch(p) else json.dumps(p, ensure_ascii=False)
+                      for p in parts)
+    latin = "".join(_GREEK.get(c, c) for c in key)
+    if latin != key and all(_BARE.fullmatch(p) for p in latin.split(".")):
+        said = ", ".join(f"{g} as {a}" for g, a in _GREEK.items() if g in key)
+        return f"write {said} ({latin}) or quote the key ({quoted})"
+    return f"a key with letters other than A–Z, a–z is quoted: {quoted}"
 
 
 def one_line(text: str, limit: int = 200) -> str:

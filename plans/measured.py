@@ -16,8 +16,10 @@ from typing import Any
 
 from .errors import InputError, PlansError
 from .fileformat import (
+    LOOKALIKES,
     Problems,
     check_keys,
+    close_match,
     key_text,
     quote,
     read_number,
@@ -412,6 +414,17 @@ class _Names:
             k for p in ("velocity", "acceleration") for k in self.recorded[p]]
         return ", ".join(names)
 
+    def suggest(self, name: str) -> str:
+        """'did you mean "pa3"? ' for a near miss (Pa3, pA3, PIa3, pa33), π as the file
+        can write it bare (pia3); Cyrillic look-alikes are said by the caller."""
+        names = self.known().split(", ")
+        allowed = set(names) | {n.replace("π", "pi") for n in names}
+        latin = "".join(LOOKALIKES.get(c, c) for c in name)
+        hit = close_match(latin, allowed)
+        if "π" in hit and "π" not in name:
+            hit = hit.replace("π", "pi")
+        return hit
+
     def segment(self, key, where, scope, name, mm, problems) -> Item | None:
         """The item ``key`` (located in the file by ``where``) measuring segment ``name``."""
         spellings = [name]
@@ -433,7 +446,8 @@ class _Names:
             if len({c[0] for c in rec}) == 1:
                 cands = rec
         if not cands:
-            problems.add(where, f"unknown segment \"{name}\"{_cyrillic(name)}; known: {self.known()} "
+            problems.add(where, f"unknown segment \"{name}\"{_cyrillic(name)}; "
+                            f"{self.suggest(name)}known: {self.known()} "
                             "(or any two points of one plan; write π as pi)")
             return None
         if len(cands) > 1:

@@ -617,6 +617,14 @@ BAD = [
     ('mechanism = "M"\ntable = "nofile.toml"\n[scales]\nmu_v = 0.05\n[segments]\npa = 60\n',
      "line 2: table: goes with variant = N"),
     ('mechanism = "M"\n[segments\n', "TOML"),
+    # a near miss of a segment's name is named; π as a bare key can write it
+    *[(f'mechanism = "M"\n[scales]\nmu_v = 0.05\nmu_a = 1\n[segments]\n{typed} = 17.9\n',
+       f'segments.{typed}: unknown segment "{typed}"; did you mean "{meant}"? known: OB, OA')
+      for typed, meant in (("Pa3", "pa3"), ("pA3", "pa3"), ("PIa3", "pia3"), ("pa33", "pa3"))],
+    # a bare key with a π is a TOML syntax error, which says what to write
+    ('mechanism = "M"\n[scales]\nmu_a = 1\n[segments]\nπk = 5\n',
+     'line 5, column 1: TOML syntax error: invalid statement (write π as pi (pik) or quote '
+     'the key ("πk"))'),
 ]
 
 
