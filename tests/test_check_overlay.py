@@ -1,0 +1,141 @@
+"""``plans check --svg``: the overlay's texts stay in the drawing, never overlap, and
+every deviation beyond tolerance is labelled on its plan.
+
+The reviewer's files (tests/overlay_cases) had the diagnosis run past the right edge and
+cut ("…the acceleration plan is drawn 20", «…крупнее (при»), the velocity plan's list
+of deviations run into the acceleration plan's, labels on the plan without their value
+(πc, πa3) or missing (dn2, n1c, n2c), and the Russian SVG an English title with a raw
+"a^k_A3A". The layout's own boxes (:class:`drawing.check_overlay.Overlay`) are checked
+with shapely, and they are checked against what DejaVu Sans (what "sans-serif" renders
+with here) draws.
+"""
+
+from __future__ import annotations
+
+import io
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+import shapely
+from support import run
+
+from drawing.check_overlay import Overlay, _mark, overlay
+from plans import check as ck
+
+HERE = Path(__file__).resolve().parent
+CASES = HERE / "overlay_cases"
+FILES = [CASES / "p_muswap.toml", CASES / "f_lineB_par.toml", CASES / "m_cor_pd15.toml",
+         HERE.parent / "samples" / "check_press.toml"]
+SVG = "{http://www.w3.org/2000/svg}"
+
+
+@pytest.fixture(scope="module")
+def results():
+    return {path.stem: ck.check(ck.load(path)) for path in FILES}
+
+
+def _layouts(results):
+    return {(name, lang): overlay(res, lang) for name, res in results.items()
+            for lang in ("en", "ru")}
+
+
+@pytest.fixture(scope="module")
+def layouts(results) -> dict[tuple[str, str], Overlay]:
+    return _layouts(results)
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+@pytest.mark.parametrize("name", [p.stem for p in FILES])
+def test_no_text_leaves_the_drawing_or_overlaps_another(layouts, name, lang):
+    ov = layouts[name, lang]
+    frame = shapely.box(0, 0, ov.width, ov.height)
+    boxes = [shapely.box(*b) for _, b, _ in ov.texts]
+    for (text, b, role), poly in zip(ov.texts, boxes, strict=True):
+        assert frame.contains(poly), f"{role} {text!r} leaves the drawing: {b}"
+    tree = shapely.STRtree(boxes)
+    left, right = tree.query(boxes, predicate="intersects")
+    for i, j in zip(left, right, strict=True):
+        if i < j and boxes[i].intersection(boxes[j]).area > 0.01:
+            raise AssertionError(f"{ov.texts[i][:1]} ({ov.texts[i][2]}) overlaps "
+                                 f"{ov.texts[j][:1]} ({ov.texts[j][2]})")
+
+
+@pytest.mark.parametrize("name", [p.stem for p in FILES])
+def test_every_deviation_beyond_tolerance_is_labelled_on_its_plan(results, layouts, name):
+    res = results[name]
+    for lang in ("en", "ru"):
+        ov = layouts[name, lang]
+        labels = [t for t, _, role in ov.texts if role == "deviation"]
+        listed = " ".join(t for t, _, role in ov.texts if role == "list")
+        marks = [_mark(d.item.name, d.deviation, lang) for d in res.failed
+                 if d.item.kind == "segment"]
+        assert sorted(labels) == sorted(marks), lang  # each with its value, none bare
+        for m in marks:  # and each in the list under its panel, whole on one line
+            assert m in listed, (lang, m)
+
+
+def test_the_boxes_hold_what_dejavu_sans_draws(layouts):
+    """Each text's box is at least as wide as DejaVu Sans (Book, Bold) renders the text,
+    indices at their size; the SVG holds the texts the layout placed, in its order."""
+    ImageFont = pytest.importorskip("PIL.ImageFont")
+    fonts = {}
+    for bold, file in ((False, "DejaVuSans.ttf"), (True, "DejaVuSans-Bold.ttf")):
+        try:
+            fonts[bold] = ImageFont.truetype(file, 100)
+        except OSError:
+            try:
+                fonts[bold] = ImageFont.truetype(f"/usr/share/fonts/truetype/dejavu/{file}", 100)
+            except OSError:
+                pytest.skip("needs the DejaVu Sans fonts")
+    for (name, lang), ov in layouts.items():
+        root = ET.fromstring(ov.tostring())
+        els = list(root.iter(f"{SVG}text"))
+        assert len(els) == len(ov.texts), (name, lang)
+        for el, (text, box, role) in zip(els, ov.texts, strict=True):
+            assert "".join(el.itertext()) == text
+            size = float(el.get("font-size"))
+            font = fonts[el.get("font-weight") == "bold"]
+            drawn = (font.getlength(el.text or "") * size / 100
+                     + sum(font.getlength(sp.text or "") * float(sp.get("font-size") or size) / 100
+                           for sp in el.iter(f"{SVG}tspan")))
+            assert float(el.get("x")) == pytest.approx(box[0], abs=0.01)
+            assert drawn <= box[2] - box[0] + 0.01, (name, lang, role, text)
+
+
+def test_the_overlay_speaks_the_reports_language_and_notation(tmp_path, capsys):
+    """--lang ru: the title was English ("plans check: …") and the diagnosis showed the
+    raw a^k_A3A; both follow the language now, the components written as on the plans:
+    a with k above and A3A below, μ with its v."""
+    for lang, title, words in (("en", "Check of a hand-drawn plan: ", "Coriolis"),
+                               ("ru", "Проверка плана, построенного вручную: ", "Кориолиса")):
+        out = tmp_path / f"{lang}.svg"
+        code, _, err = run(capsys, "check", CASES / "m_cor_pd15.toml", "--lang", lang, "--svg", out)
+        assert code == 1, err
+        root = ET.parse(out).getroot()
+        texts = ["".join(el.itertext()) for el in root.iter(f"{SVG}text")]
+        assert texts[0] == title + str(CASES / "m_cor_pd15.toml")
+        diagnosis = next(el for el in root.iter(f"{SVG}text") if words in "".join(el.itertext()))
+        assert "^" not in "".join(texts) and "a^k" not in "".join(texts)
+        spans = [(sp.text, float(sp.get("font-size") or diagnosis.get("font-size")))
+                 for sp in diagnosis.iter(f"{SVG}tspan")]
+        assert ("k", pytest.approx(11 * 0.7)) in spans and ("A3A", pytest.approx(11 * 0.7)) in spans
+        caption = next(el for el in root.iter(f"{SVG}text") if "(m/s)/mm" in "".join(el.itertext())
+                       or "(м/с)/мм" in "".join(el.itertext()))
+        assert [sp.text for sp in caption.iter(f"{SVG}tspan")][:1] == ["v"]
+
+
+def test_the_rendered_drawing_has_no_ink_at_its_edges(results):
+    """The picture as cairosvg renders it (with DejaVu Sans here): nothing drawn in the
+    margin at the right or at the bottom, where the cut diagnosis was."""
+    cairosvg = pytest.importorskip("cairosvg")
+    Image = pytest.importorskip("PIL.Image")
+    for lang in ("en", "ru"):
+        ov = overlay(results["p_muswap"], lang)
+        png = cairosvg.svg2png(bytestring=ov.tostring().encode("utf-8"))
+        im = Image.open(io.BytesIO(png)).convert("L")
+        w, h = im.size
+        assert (w, h) == (round(ov.width), round(ov.height))
+        right = im.crop((w - 16, 0, w, h)).getextrema()
+        bottom = im.crop((0, h - 12, w, h)).getextrema()
+        assert right[0] > 200 and bottom[0] > 200, (lang, right, bottom)
