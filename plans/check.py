@@ -25,6 +25,13 @@ turned the other way. ε is then read off the student's (so mistaken) accelerati
 as a^t / l with the sense of a^t, which is where a reversed ε comes from. Without a
 reported sense of ωk this mistake draws the same plans as "Coriolis vector reversed";
 both are then named.
+
+Reading of "ω1 with the wrong sense": the student lays off the crank's V_A the other way
+round. Every velocity is proportional to ω1, so the whole velocity plan is reflected
+through p (no length changes) and every ω read off it turns the other way; the
+accelerations are those of ω1² and ε1, and the student keeps ε1 as given (0 for a
+uniformly turning crank), so the acceleration plan and every ε are the exact ones. Only
+the senses of the ω written down show this mistake.
 """
 
 from __future__ import annotations

@@ -85,6 +85,21 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
         return (f"{mk.target} taken with the wrong sense",
                 f"the sense of {mk.target} is that of the relative velocity on the velocity plan"
                 f"{extra}")
+    if k == "crank-sense":
+        X, Y = g("X"), g("Y")
+        if ru:
+            sense = "против часовой стрелки" if g("sense") == "ccw" else "по часовой стрелке"
+            return (f"{mk.target} (V_{X}) взята с обратным направлением",
+                    f"отложите V_{X} ⊥ {Y}{X} в сторону вращения кривошипа ({mk.target} "
+                    f"{sense}, как задано); с обратной {mk.target} все скорости и все ω "
+                    "меняют направление (план скоростей отражён относительно полюса p), "
+                    "ускорения и ε остаются прежними")
+        sense = "counter-clockwise" if g("sense") == "ccw" else "clockwise"
+        return (f"{mk.target} (V_{X}) drawn with the wrong sense",
+                f"lay off V_{X} ⊥ {Y}{X} in the sense the crank turns ({mk.target} {sense}, as "
+                f"given); with {mk.target} reversed every velocity and every ω turns the other "
+                "way (the velocity plan is reflected through the pole p), while the "
+                "accelerations and ε stay as they are")
     if k == "line-swapped":
         plan = PLAN_WORDS[lang][mk.plan]
         if ru:

@@ -64,8 +64,8 @@ class Mistake:
     """One common mistake, located: which term, line, point, group or plan.
 
     kind: coriolis-reversed, coriolis-omitted, coriolis-half, term-scale,
-    normal-reversed, normal-omitted, omega-sense, line-swapped, branch, scale,
-    scale-swapped, similarity-ratio, similarity-mirrored.
+    normal-reversed, normal-omitted, omega-sense, crank-sense, line-swapped, branch,
+    scale, scale-swapped, similarity-ratio, similarity-mirrored.
     """
 
     kind: str
@@ -82,6 +82,7 @@ class Mistake:
         return {"coriolis-reversed": "coriolis", "coriolis-omitted": "coriolis",
                 "coriolis-half": "coriolis", "normal-reversed": "normal",
                 "normal-omitted": "normal", "omega-sense": "omega",
+                "crank-sense": "omega",
                 "line-swapped": "line", "branch": "branch", "scale": "scale",
                 "scale-swapped": "scale", "term-scale": "scale",
                 "similarity-ratio": "similarity",
@@ -177,12 +178,29 @@ class _Replayer:
         s = self.sol
         if mk is None:
             return self.exact()
+        if mk.kind == "crank-sense":
+            return self._crank_reversed()
         flip = {mk.link} if mk.kind == "omega-sense" else set()
         vel = self._plan(s.velocity, mk, None, None)
         omega = self._omega(vel, flip)
         acc = self._plan(s.acceleration, mk, vel, omega)
         eps = self._epsilon(acc)
         return State(dict(self.pos), vel, acc, omega, eps)
+
+    def _crank_reversed(self) -> State:
+        """The plans of a student who lays off the crank's V_A in the sense opposite to
+        ω1: a mechanism of one degree of freedom has every velocity proportional to ω1,
+        so every velocity is negated (the velocity plan is point-reflected through p) and
+        every ω read off it turns the other way. The accelerations are those of ω1² and
+        ε1: a^n = V²/l does not change, a^k = 2·ω·V_rel neither (both factors change
+        sign), and ε1 is taken as the mechanism gives it (0 for a crank turning
+        uniformly, which is every crank a mechanism file describes; were it not 0, the
+        student who keeps its given sense draws the same a^t_A). So the acceleration
+        plan, and every ε read off it, is the exact one."""
+        st = self.exact()
+        vel = {n: -z for n, z in st.velocity.items()}
+        omega = {lid: -w for lid, w in st.omega.items()}
+        return State(st.positions, vel, st.acceleration, omega, st.epsilon)
 
     def _applies(self, mk: Mistake, kind: str) -> bool:
         return mk.plan in (kind, "both")
@@ -296,6 +314,9 @@ def hypotheses(sol: Solution, plans: set[str] | None = None) -> list[Mistake]:
     for t in cor:
         out.append(Mistake("omega-sense", "acceleration", f"ω{rep.guide_link(t)}",
                            link=rep.guide_link(t), info=(("coriolis", t.label),)))
+    out.append(Mistake("crank-sense", "velocity", f"ω{drv.link}", link=drv.link,
+                       info=(("X", drv.tip), ("Y", drv.pivot),
+                             ("sense", "ccw" if drv.omega > 0 else "cw"))))
     guides = {rep.guide_link(t) for t in cor}
     for lid in sorted(sol.mechanism.links):
         if lid != drv.link and lid not in guides and abs(sol.omega[lid]) > 0:

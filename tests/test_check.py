@@ -873,3 +873,43 @@ def test_a_value_look_alike_is_judged_at_the_plans_scale(tmp_path, press):
         res = ck.check(ck.load(write_meas(tmp_path / "m.toml", PRESS, seg, MU_PRESS)))
         got = [(lk.item, lk.kind, lk.other) for lk in res.diagnosis.lookalikes]
         assert got == ([("pa3", "value", "V_A3")] if offered else []), written
+
+
+# ---------------------------------------------------------------------------------------
+# mistakes a review found unnamed or misworded
+# ---------------------------------------------------------------------------------------
+
+
+def _sense_of(x: float) -> str:
+    return f"{abs(x):.3g} {'ccw' if x > 0 else 'cw'}"
+
+
+@pytest.mark.parametrize("which, links, tip", [(PRESS, (3, 4), "A"), (FOURBAR, (2, 3), "B")])
+def test_the_crank_taken_the_wrong_way_round_is_named(tmp_path, capsys, which, links, tip):
+    """ω1 reversed: every velocity negates (the same lengths), every ω turns the other way,
+    the accelerations and ε stay. It had been "no single mistake", closest "ω4 taken with
+    the wrong sense; it explains ω4 but not ω3"."""
+    sol = solve_position(mechanism.load(which), mu=MU_PRESS if which == PRESS else None)
+    mu = {"mu_l": sol.mu_l, "mu_v": sol.mu_v, "mu_a": sol.mu_a}
+    exact = ck.simulate(sol, None)
+    values = {}
+    for lid in links:
+        values[f"omega{lid}"] = _sense_of(-sol.omega[lid])
+        values[f"epsilon{lid}"] = _sense_of(sol.epsilon[lid])
+    segs = {it.name: ck.expected(it, exact, mu) for it in plan_segments(sol)}
+    res = diagnose(tmp_path, which, segs, mu, values)
+    assert [d.item.name for d in res.failed] == [f"ω{lid}" for lid in links]
+    got = named(res)
+    assert (got.kind, got.target, got.link) == ("crank-sense", "ω1", 1)
+    assert got.describe() == f"ω1 (V_{tip}) drawn with the wrong sense"
+    assert got.describe("ru") == f"ω1 (V_{tip}) взята с обратным направлением"
+    assert res.diagnosis.best.explained == tuple(f"ω{lid}" for lid in links)
+    assert not res.diagnosis.best.broken
+    # the student's plan: the velocity plan point-reflected through p, the rest as it is
+    st = ck.simulate(sol, got, mu)
+    for n, z in exact.velocity.items():
+        assert st.velocity[n] == pytest.approx(-z, abs=1e-12)
+    assert st.acceleration == exact.acceleration and st.epsilon == exact.epsilon
+    assert all(st.omega[lid] == pytest.approx(-w) for lid, w in exact.omega.items())
+    code, out, _ = run(capsys, "check", tmp_path / "m.toml")
+    assert code == 1 and f"Diagnosis: ω1 (V_{tip}) drawn with the wrong sense." in out
