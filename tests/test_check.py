@@ -913,3 +913,36 @@ def test_the_crank_taken_the_wrong_way_round_is_named(tmp_path, capsys, which, l
     assert all(st.omega[lid] == pytest.approx(-w) for lid, w in exact.omega.items())
     code, out, _ = run(capsys, "check", tmp_path / "m.toml")
     assert code == 1 and f"Diagnosis: ω1 (V_{tip}) drawn with the wrong sense." in out
+
+
+def test_a_look_alike_is_a_segment_the_student_drew(tmp_path, press):
+    """n1a3 = 17.11 mm (all else exact) had been offered as "the length of n1s4 (17.24 mm):
+    measured from the wrong point?": n1 is a construction point, and its distance to the
+    centre of mass s4 is nothing a student draws or measures. One segment of the exact
+    plans scaled by a random factor had drawn such an offer in one run in seven."""
+    exact = ck.simulate(press, None)
+    segs = {it.name: round(ck.expected(it, exact, MU_PRESS), 2) for it in plan_segments(press)}
+    res = diagnose(tmp_path, PRESS, segs | {"n1a3": 17.11}, MU_PRESS)
+    assert res.diagnosis.best is None and res.diagnosis.lookalikes == ()
+    # a vector from the pole measured from a joint is still one: the four-bar's pe from b
+    fb = solve_position(mechanism.load(FOURBAR))
+    mu = {"mu_l": fb.mu_l, "mu_v": fb.mu_v, "mu_a": fb.mu_a}
+    segs = {it.name: round(ck.expected(it, ck.simulate(fb, None), mu), 2) for it in plan_segments(fb)}
+    be = abs(fb.velocity.value("e") - fb.velocity.value("b")) / fb.mu_v
+    res = diagnose(tmp_path, FOURBAR, segs | {"pe": be + 0.3}, mu)
+    assert [(lk.item, lk.kind, lk.other) for lk in res.diagnosis.lookalikes] == [("pe", "segment", "be")]
+    rng = np.random.default_rng(11)
+    offers = []
+    for which in (press, solve_position(mechanism.load(FOURBAR))):
+        mu = {"mu_l": which.mu_l, "mu_v": which.mu_v, "mu_a": which.mu_a}
+        its = plan_segments(which)
+        st0 = ck.simulate(which, None)
+        for _ in range(30):
+            k = rng.integers(len(its))
+            f = float(rng.choice([rng.uniform(0.3, 0.8), rng.uniform(1.25, 3.0)]))
+            items = tuple(ck.Item(it.key, it.name, it.kind, it.plan,
+                                  round(float(ck.expected(it, st0, mu) * (f if i == k else 1)), 2),
+                                  it.start, it.end) for i, it in enumerate(its))
+            got = ck.check(ck.Measurement("t", which.mechanism, which, mu, items))
+            offers += [(lk.item, lk.other) for lk in got.diagnosis.lookalikes if lk.kind == "segment"]
+    assert len(offers) <= 1, offers
