@@ -946,3 +946,22 @@ def test_a_look_alike_is_a_segment_the_student_drew(tmp_path, press):
             got = ck.check(ck.Measurement("t", which.mechanism, which, mu, items))
             offers += [(lk.item, lk.other) for lk in got.diagnosis.lookalikes if lk.kind == "segment"]
     assert len(offers) <= 1, offers
+
+
+def test_a_look_alike_is_sought_on_the_plan_of_the_mistake_named(tmp_path, press, capsys):
+    """The Coriolis vector reversed, and πc measured from a on that plan (43.63 mm, |a′c′|
+    of the student's plan): the look-alike was sought on the exact plan, where ac is
+    38.72 mm, and none was offered. And πd 15 % off the student's plan was offered as
+    "the length of πk (56.69 mm)", a point of the exact plan the student never drew."""
+    wrong = ck.simulate(press, find(press, "coriolis-reversed"), MU_PRESS)
+    segs = {it.name: round(ck.expected(it, wrong, MU_PRESS), 2) for it in plan_segments(press)}
+    ac = abs(wrong.acceleration["c"] - wrong.acceleration["a"]) / MU_PRESS["mu_a"]
+    assert ac == pytest.approx(43.63, abs=0.01)
+    res = diagnose(tmp_path, PRESS, segs | {"πc": round(ac, 2)}, MU_PRESS)
+    assert named(res).kind == "coriolis-reversed" and res.diagnosis.best.unexplained == ("πc",)
+    assert [(lk.item, lk.kind, lk.other) for lk in res.diagnosis.lookalikes] == [("πc", "segment", "ac")]
+    code, out, _ = run(capsys, "check", tmp_path / "m.toml")
+    assert "  πc = 43.63 mm is the length of ac (43.63 mm): measured from the wrong point?" in out
+    res = diagnose(tmp_path, PRESS, segs | {"πd": round(segs["πd"] * 1.15, 2)}, MU_PRESS)
+    assert named(res).kind == "coriolis-reversed" and res.diagnosis.best.unexplained == ("πd",)
+    assert res.diagnosis.lookalikes == ()
