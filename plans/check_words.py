@@ -185,6 +185,14 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
                         f"по теореме подобия: {eq} (отрезок плана / отрезок звена одинаковы для всех точек звена)")
             return (f"{mk.target} on the {plan} found with the ratio of the wrong segments (inverted)",
                     f"by similarity: {eq} (plan segment / link segment is the same for every point of the link)")
+        if how == "end":
+            if ru:
+                return (f"точка {mk.target} ({plan}) отложена от другого конца отрезка "
+                        f"{g('base')}{g('other')}: от {g('other')}, а не от {g('base')}",
+                        f"по теореме подобия: {eq}, отсчитывая от {g('base')}")
+            return (f"{mk.target} on the {plan} laid off from the wrong end of "
+                    f"{g('base')}{g('other')}: from {g('other')}, not from {g('base')}",
+                    f"by similarity: {eq}, measured from {g('base')}")
         if how == "side":
             if ru:
                 return (f"точка {mk.target} ({plan}) отложена по другую сторону от {g('base')}",

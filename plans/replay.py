@@ -372,6 +372,9 @@ def _similarity_mistakes(sol: Solution) -> list[Mistake]:
             if abs(r) > 1e-12 and abs(abs(r) - 1) > 1e-6:
                 cands.append(("similarity-ratio", 1 / r, "inverse"))
             cands.append(("similarity-mirrored", -r, "side"))
+            # the ratio laid off from the other end: other + r·(base − other)
+            if abs((1 - r) - r) > 1e-9 and all(abs((1 - r) - c[1]) > 1e-9 for c in cands):
+                cands.append(("similarity-ratio", 1 - r, "end"))
         else:
             cands.append(("similarity-mirrored", r.conjugate(), "mirror"))
             cands.append(("similarity-ratio", r / abs(r) ** 2, "inverse"))

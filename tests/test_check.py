@@ -343,6 +343,8 @@ CASES = [
     (FOURBAR, "similarity-ratio", "e", "acceleration", {"how": "inverse"}),
     ("triangle", "similarity-mirrored", "e", "both", {"how": "mirror"}),
     ("triangle", "similarity-mirrored", "e", "acceleration", {"how": "mirror"}),
+    (PRESS, "similarity-ratio", "s3", "both", {"how": "end"}),
+    (FOURBAR, "similarity-ratio", "s2", "acceleration", {"how": "end"}),
 ]
 
 
@@ -965,3 +967,50 @@ def test_a_look_alike_is_sought_on_the_plan_of_the_mistake_named(tmp_path, press
     res = diagnose(tmp_path, PRESS, segs | {"πd": round(segs["πd"] * 1.15, 2)}, MU_PRESS)
     assert named(res).kind == "coriolis-reversed" and res.diagnosis.best.unexplained == ("πd",)
     assert res.diagnosis.lookalikes == ()
+
+
+CRANK_SLIDER = """
+name = "Offset crank-slider"
+[frame]
+O = [0.0, 0.0]
+[driver]
+link = 1
+angle_deg = 50
+omega = 30
+sense = "cw"
+[links.1]
+axis = ["O", "A"]
+points = { A = 0.1 }
+[links.2]
+axis = ["A", "B"]
+points = { B = 0.35, S2 = 0.12 }
+[links.3]
+points = { B = 0 }
+[[sliders]]
+link = 3
+guide = { link = 0, through = [0.0, 0.04], angle_deg = 0 }
+[assembly]
+B = "right of A"
+"""
+
+
+def test_similarity_from_the_wrong_end_is_named(tmp_path, capsys):
+    """S2 at 0.12 m of the rod's 0.35 from A, laid off from B (ratio 1 − r, 0.657 for
+    0.343) on both plans: it had been "no single mistake explains this"."""
+    source = tmp_path / "cs.toml"
+    source.write_text(CRANK_SLIDER, encoding="utf-8")
+    mu = {"mu_l": 0.004, "mu_v": 0.05, "mu_a": 2.5}
+    sol = solve_position(mechanism.load(source), mu=mu)
+    exact = ck.simulate(sol, None)
+    segs = {it.name: round(ck.expected(it, exact, mu), 2) for it in plan_segments(sol)}
+    for plan, pole, key in ((sol.velocity, "p", "mu_v"), (sol.acceleration, "π", "mu_a")):
+        a, b = plan.value("a"), plan.value("b")
+        segs[f"{pole}s2"] = round(abs(b + 0.12 / 0.35 * (a - b)) / mu[key], 2)
+    res = diagnose(tmp_path, source, segs, mu)
+    got = named(res)
+    assert (got.kind, got.target, got.plan, got.get("how")) == ("similarity-ratio", "s2", "both", "end")
+    assert got.factor == pytest.approx(1 - 0.12 / 0.35)
+    assert set(res.diagnosis.best.explained) == {"ps2", "πs2"} and not res.diagnosis.best.unexplained
+    assert got.describe().endswith("laid off from the wrong end of ab: from b, not from a")
+    assert got.correction() == "by similarity: as2 = ab·AS2/AB, measured from a"
+    assert got.describe("ru").endswith("отложена от другого конца отрезка ab: от b, а не от a")
