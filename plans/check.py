@@ -63,6 +63,7 @@ from .replay import (  # noqa: F401
     cons_point,
     expected,
     hypotheses,
+    scale_example,
     simulate,
 )
 from .scales import series
@@ -352,7 +353,8 @@ def _fitted_scales(meas: Measurement, devs: tuple[Deviation, ...]) -> list[Mista
             near = min(series(fits / 1.2, fits * 1.2), key=lambda m: abs(m / fits - 1), default=fits)
             if abs(near / fits - 1) < 0.015:
                 fits, r = near, stated / near
-            out.append(Mistake("scale", plan, plan, r, info=((plan, repr(r)), ("fits", repr(fits)))))
+            out.append(Mistake("scale", plan, plan, r, info=((plan, repr(r)), ("fits", repr(fits)),
+                                                             *scale_example(meas.solution, plan))))
     return out
 
 

@@ -123,6 +123,7 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
 
         facs = dict(mk.info)
         fits = facs.pop("fits", None)
+        example = facs.pop("example", None)
         parts = []
         for plan, f in facs.items():
             f = float(f)
@@ -148,12 +149,21 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
                          else ", that is, the values in SI units are written, not the lengths in mm")
         if k == "scale-swapped":
             what = ("μv и μa перепутаны: " if ru else "μv and μa swapped: ") + what
+        positions = set(facs) == {"positions"}
         if fits is not None:
+            value = ("длина" if ru else "length") if positions else ("величина" if ru else "value")
             if ru:
-                return (what, f"постройте план при записанном {mu} (отрезок = величина / {mu}) "
+                return (what, f"постройте план при записанном {mu} (отрезок = {value} / {mu}) "
                               f"или запишите тот {mu}, при котором он построен")
-            return (what, f"draw the plan at the {mu} written down (segment = value / {mu}), or "
+            return (what, f"draw the plan at the {mu} written down (segment = {value} / {mu}), or "
                           f"write down the {mu} it was drawn at")
+        if positions:
+            ex = example or "AB"
+            if ru:
+                return (what, f"отрезок плана положений = длина звена / μl: {ex} = l_{ex}/μl, "
+                              "в мм; проверьте степень 10")
+            return (what, f"a segment of the plan of positions is the link's length divided by "
+                          f"μl: {ex} = l_{ex}/μl, in mm; check the power of 10")
         if ru:
             return (what, "длина отрезка = величина / масштабный коэффициент: pa = V_A/μv, "
                           "πa = a_A/μa, в мм; проверьте степень 10 и какой μ к какому плану")

@@ -284,7 +284,7 @@ def simulate(sol: Solution, mk: Mistake | None, mu: dict[str, float] | None = No
         st = _Replayer(sol).exact()
         factor = dict.fromkeys(PLANS, 1.0)
         for plan, f in mk.info:
-            if plan in factor:  # ("fits", μ): words only
+            if plan in factor:  # ("fits", μ), ("example", OA): words only
                 factor[plan] = float(f)
         return State(st.positions, st.velocity, st.acceleration, st.omega, st.epsilon, factor)
     return _Replayer(sol).run(mk)
@@ -337,7 +337,8 @@ def hypotheses(sol: Solution, plans: set[str] | None = None) -> list[Mistake]:
     for plan in ("velocity", "acceleration", "positions"):
         if plan in plans:
             for f in (10.0, 0.1):
-                out.append(Mistake("scale", plan, plan, f, info=((plan, repr(f)),)))
+                out.append(Mistake("scale", plan, plan, f, info=((plan, repr(f)),
+                                                                 *scale_example(sol, plan))))
     mv, ma = sol.mu_v, sol.mu_a
     if mv != ma and {"velocity", "acceleration"} & plans:
         out.append(Mistake("scale-swapped", "both", "μv↔μa",
@@ -355,6 +356,13 @@ def hypotheses(sol: Solution, plans: set[str] | None = None) -> list[Mistake]:
             out.append(Mistake("term-scale", "acceleration", t.label, f))
     out += _similarity_mistakes(sol)
     return out
+
+
+def scale_example(sol: Solution, plan: str) -> tuple[tuple[str, str], ...]:
+    """For a scale mistake on the plan of positions, the segment its correction shows
+    (the crank, OA): the words only."""
+    drv = sol.mechanism.driver
+    return (("example", f"{drv.pivot}{drv.tip}"),) if plan == "positions" else ()
 
 
 def cons_point(g) -> str:

@@ -1014,3 +1014,25 @@ def test_similarity_from_the_wrong_end_is_named(tmp_path, capsys):
     assert got.describe().endswith("laid off from the wrong end of ab: from b, not from a")
     assert got.correction() == "by similarity: as2 = ab·AS2/AB, measured from a"
     assert got.describe("ru").endswith("отложена от другого конца отрезка ab: от b, а не от a")
+
+
+@pytest.mark.parametrize("factor, fits", [(10.0, None), (2.5, "0.004")])
+def test_a_plan_of_positions_at_another_scale_is_corrected_as_one(tmp_path, capsys, press, factor, fits):
+    """BA3, BC, CD drawn 10 times too large were rightly named, but the correction spoke
+    of the other plans: "pa = V_A/μv, πa = a_A/μa"."""
+    segs = {k: round(press.lengths[k] / MU_PRESS["mu_l"] * factor, 2) for k in ("BA3", "BC", "CD")}
+    segs |= {k: round(press.segments[k], 2) for k in ("pa3", "pc")}
+    res = diagnose(tmp_path, PRESS, segs, MU_PRESS)
+    got = named(res)
+    assert (got.kind, got.plan) == ("scale", "positions")
+    if fits is None:
+        assert got.describe() == "the plan of positions is drawn 10 times too large for the stated μl"
+        assert got.correction() == ("a segment of the plan of positions is the link's length divided "
+                                    "by μl: OA = l_OA/μl, in mm; check the power of 10")
+        assert got.correction("ru") == ("отрезок плана положений = длина звена / μl: OA = l_OA/μl, "
+                                        "в мм; проверьте степень 10")
+    else:
+        assert got.describe().endswith(f"its segments fit μl = {fits} m/mm")
+        assert got.correction() == ("draw the plan at the μl written down (segment = length / μl), "
+                                    "or write down the μl it was drawn at")
+    assert "V_A" not in got.correction() and "V_A" not in got.correction("ru")
