@@ -85,6 +85,22 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
         return (f"{mk.target} taken with the wrong sense",
                 f"the sense of {mk.target} is that of the relative velocity on the velocity plan"
                 f"{extra}")
+    if k == "value-sense":
+        X, Y = g("X"), g("Y")
+        omega = g("value") == "omega"
+        vec = f"V_{X}{Y}" if omega else f"a^t_{X}{Y}"
+        if ru:
+            what = (f"угловая скорость {mk.target} записана" if omega
+                    else f"угловое ускорение {mk.target} записано")
+            plan = "скоростей" if omega else "ускорений"
+            return (f"{what} с обратным направлением; планы построены верно",
+                    f"направление {mk.target} определяется по плану {plan}: это направление, "
+                    f"в котором вектор {vec}, перенесённый в точку {X}, поворачивает звено "
+                    f"вокруг точки {Y}")
+        plan = "velocity" if omega else "acceleration"
+        return (f"{mk.target} written with the wrong sense; the plans are right",
+                f"read the sense of {mk.target} off the {plan} plan: it is the sense in which "
+                f"{vec}, placed at {X}, turns the link about {Y}")
     if k == "crank-sense":
         X, Y = g("X"), g("Y")
         if ru:

@@ -64,8 +64,8 @@ class Mistake:
     """One common mistake, located: which term, line, point, group or plan.
 
     kind: coriolis-reversed, coriolis-omitted, coriolis-half, term-scale,
-    normal-reversed, normal-omitted, omega-sense, crank-sense, line-swapped, branch,
-    scale, scale-swapped, similarity-ratio, similarity-mirrored.
+    normal-reversed, normal-omitted, omega-sense, crank-sense, value-sense, line-swapped,
+    branch, scale, scale-swapped, similarity-ratio, similarity-mirrored.
     """
 
     kind: str
@@ -82,7 +82,7 @@ class Mistake:
         return {"coriolis-reversed": "coriolis", "coriolis-omitted": "coriolis",
                 "coriolis-half": "coriolis", "normal-reversed": "normal",
                 "normal-omitted": "normal", "omega-sense": "omega",
-                "crank-sense": "omega",
+                "crank-sense": "omega", "value-sense": "sense",
                 "line-swapped": "line", "branch": "branch", "scale": "scale",
                 "scale-swapped": "scale", "term-scale": "scale",
                 "similarity-ratio": "similarity",
@@ -180,6 +180,11 @@ class _Replayer:
             return self.exact()
         if mk.kind == "crank-sense":
             return self._crank_reversed()
+        if mk.kind == "value-sense":  # the plans as they are, one ω or ε written reversed
+            st = self.exact()
+            values = st.omega if mk.get("value") == "omega" else st.epsilon
+            values[mk.link] = -values[mk.link]
+            return st
         flip = {mk.link} if mk.kind == "omega-sense" else set()
         vel = self._plan(s.velocity, mk, None, None)
         omega = self._omega(vel, flip)
@@ -314,10 +319,22 @@ def hypotheses(sol: Solution, plans: set[str] | None = None) -> list[Mistake]:
     for t in cor:
         out.append(Mistake("omega-sense", "acceleration", f"ω{rep.guide_link(t)}",
                            link=rep.guide_link(t), info=(("coriolis", t.label),)))
+    # one ω or ε written with the sense reversed, the plans right (before the crank: one
+    # value wrong is that value's slip, not the whole velocity plan turned round). The ω
+    # of a link that turns no Coriolis vector is the "omega-sense" mistake below already.
+    guides = {rep.guide_link(t) for t in cor}
+    for key, sym, plan, values in (("omega", "ω", "velocity", sol.omega),
+                                   ("epsilon", "ε", "acceleration", sol.epsilon)):
+        for lid in sorted(sol.mechanism.links):
+            if key == "omega" and lid not in guides:
+                continue
+            if lid in rep.pairs and abs(values.get(lid, 0.0)) > 0:
+                X, Y = rep.pairs[lid]
+                out.append(Mistake("value-sense", plan, f"{sym}{lid}", link=lid,
+                                   info=(("value", key), ("X", X), ("Y", Y))))
     out.append(Mistake("crank-sense", "velocity", f"ω{drv.link}", link=drv.link,
                        info=(("X", drv.tip), ("Y", drv.pivot),
                              ("sense", "ccw" if drv.omega > 0 else "cw"))))
-    guides = {rep.guide_link(t) for t in cor}
     for lid in sorted(sol.mechanism.links):
         if lid != drv.link and lid not in guides and abs(sol.omega[lid]) > 0:
             out.append(Mistake("omega-sense", "velocity", f"ω{lid}", link=lid))

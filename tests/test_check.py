@@ -1036,3 +1036,27 @@ def test_a_plan_of_positions_at_another_scale_is_corrected_as_one(tmp_path, caps
         assert got.correction() == ("draw the plan at the μl written down (segment = length / μl), "
                                     "or write down the μl it was drawn at")
     assert "V_A" not in got.correction() and "V_A" not in got.correction("ru")
+
+
+@pytest.mark.parametrize("key, sym, plan", [("epsilon3", "ε3", "acceleration"), ("omega3", "ω3", "velocity")])
+def test_a_value_written_with_the_wrong_sense_alone_is_named(tmp_path, capsys, press, key, sym, plan):
+    """The plans exact and ε3 (or ω3) written with the sense reversed: the table said
+    "BEYOND (wrong sense)", the diagnosis "no single mistake explains this" (the ω3
+    hypothesis always turns the Coriolis vector too)."""
+    exact = ck.simulate(press, None)
+    segs = {it.name: round(ck.expected(it, exact, MU_PRESS), 2) for it in plan_segments(press)}
+    value = (exact.epsilon if key.startswith("epsilon") else exact.omega)[3]
+    res = diagnose(tmp_path, PRESS, segs, MU_PRESS, {key: _sense_of(-value)})
+    got = named(res)
+    assert (got.kind, got.target, got.plan, got.link) == ("value-sense", sym, plan, 3)
+    assert res.diagnosis.best.explained == (sym,)
+    assert got.describe() == f"{sym} written with the wrong sense; the plans are right"
+    vec = "V_A3B" if sym == "ω3" else "a^t_A3B"
+    assert got.correction() == (f"read the sense of {sym} off the {plan} plan: it is the sense in "
+                                f"which {vec}, placed at A3, turns the link about B")
+    assert got.describe("ru").endswith("с обратным направлением; планы построены верно")
+    code, out, _ = run(capsys, "check", tmp_path / "m.toml")
+    assert f"Diagnosis: {sym} written with the wrong sense; the plans are right." in out
+    # ω3 alone is also what a velocity plan turned round (ω1 reversed) gives: said, second
+    alts = [f.mistake.kind for f in res.diagnosis.alternatives]
+    assert alts == (["crank-sense"] if sym == "ω3" else [])
