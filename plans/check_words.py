@@ -17,10 +17,31 @@ PLAN_WORDS = {
 }
 
 
+#: "on the plan" in Russian: the plan's name in the prepositional case
+PLAN_ON_RU = {"velocity": "на плане скоростей", "acceleration": "на плане ускорений",
+              "positions": "на плане положений", "both": "на обоих планах"}
+
+
 def _fnum(x: float, lang: str) -> str:
     from .fmt import num
 
     return num(float(x), 3, lang)
+
+
+def _times_ru(x: float) -> str:
+    """"в 2 раза", "в 5 раз", "в 21 раз", "в 1,25 раза": раз agrees with the numeral as
+    it is written; a fraction takes the genitive singular.
+
+    >>> [_times_ru(x) for x in (2, 4, 5, 10, 11, 12, 20, 21, 22, 25, 1.25, 2.5)]
+    ['в 2 раза', 'в 4 раза', 'в 5 раз', 'в 10 раз', 'в 11 раз', 'в 12 раз', 'в 20 раз',
+     'в 21 раз', 'в 22 раза', 'в 25 раз', 'в 1,25 раза', 'в 2,5 раза']
+    """
+    text = _fnum(x, "ru")
+    if not text.isdigit():  # a fraction, or an exponent
+        return f"в {text} раза"
+    n = int(text)
+    few = n % 10 in (2, 3, 4) and n % 100 not in (12, 13, 14)
+    return f"в {text} {'раза' if few else 'раз'}"
 
 
 def _text(mk: Mistake, lang: str) -> tuple[str, str]:
@@ -119,7 +140,7 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
     if k == "line-swapped":
         plan = PLAN_WORDS[lang][mk.plan]
         if ru:
-            return (f"на плане ({plan}) линия {mk.target} проведена {g('wrong')} вместо {g('relation')}",
+            return (f"{PLAN_ON_RU[mk.plan]} линия {mk.target} проведена {g('wrong')} вместо {g('relation')}",
                     f"через точку {g('through')} проведите линию {g('relation')} "
                     f"(линия вектора {mk.target}), а не {g('wrong')}")
         return (f"on the {plan} the line of {mk.target} is drawn {g('wrong')} instead of {g('relation')}",
@@ -145,9 +166,9 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
             f = float(f)
             mu = MU_SYMBOL[plan]
             if ru:
-                parts.append(f"{PLAN_WORDS[lang][plan]} в {_fnum(f, lang)} раза крупнее "
+                parts.append(f"{PLAN_WORDS[lang][plan]} {_times_ru(f)} крупнее "
                              f"(при указанном {mu})" if f > 1 else
-                             f"{PLAN_WORDS[lang][plan]} в {_fnum(1 / f, lang)} раза мельче "
+                             f"{PLAN_WORDS[lang][plan]} {_times_ru(1 / f)} мельче "
                              f"(при указанном {mu})")
             else:
                 parts.append(f"the {PLAN_WORDS[lang][plan]} is drawn {_fnum(f, lang)} times too large "
@@ -188,7 +209,7 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
     if k == "term-scale":
         f = float(mk.factor.real)
         if ru:
-            return (f"{mk.target} отложено в {_fnum(max(f, 1 / f), lang)} раза "
+            return (f"{mk.target} отложено {_times_ru(max(f, 1 / f))} "
                     + ("длиннее" if f > 1 else "короче"),
                     f"вычислите {mk.target} в единицах СИ (длины в м: l = отрезок·μl) и разделите на μa")
         return (f"{mk.target} is drawn {_fnum(max(f, 1 / f), lang)} times too "
@@ -201,19 +222,19 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
         if how.startswith("sibling:"):
             other = how.split(":", 1)[1]
             if ru:
-                return (f"точка {mk.target} ({plan}) найдена по отношению для точки {other}",
+                return (f"точка {mk.target} {PLAN_ON_RU[mk.plan]} найдена по отношению для точки {other}",
                         f"по теореме подобия: {eq}")
             return (f"{mk.target} on the {plan} found with the ratio meant for {other}",
                     f"by similarity: {eq}")
         if how == "inverse":
             if ru:
-                return (f"точка {mk.target} ({plan}) найдена по обратному отношению отрезков",
+                return (f"точка {mk.target} {PLAN_ON_RU[mk.plan]} найдена по обратному отношению отрезков",
                         f"по теореме подобия: {eq} (отрезок плана / отрезок звена одинаковы для всех точек звена)")
             return (f"{mk.target} on the {plan} found with the ratio of the wrong segments (inverted)",
                     f"by similarity: {eq} (plan segment / link segment is the same for every point of the link)")
         if how == "end":
             if ru:
-                return (f"точка {mk.target} ({plan}) отложена от другого конца отрезка "
+                return (f"точка {mk.target} {PLAN_ON_RU[mk.plan]} отложена от другого конца отрезка "
                         f"{g('base')}{g('other')}: от {g('other')}, а не от {g('base')}",
                         f"по теореме подобия: {eq}, отсчитывая от {g('base')}")
             return (f"{mk.target} on the {plan} laid off from the wrong end of "
@@ -221,12 +242,12 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
                     f"by similarity: {eq}, measured from {g('base')}")
         if how == "side":
             if ru:
-                return (f"точка {mk.target} ({plan}) отложена по другую сторону от {g('base')}",
+                return (f"точка {mk.target} {PLAN_ON_RU[mk.plan]} отложена по другую сторону от {g('base')}",
                         f"по теореме подобия: {eq}, в ту же сторону, что и на звене")
             return (f"{mk.target} on the {plan} laid off on the wrong side of {g('base')}",
                     f"by similarity: {eq}, in the same direction as on the link")
         if ru:
-            return (f"фигура для точки {mk.target} ({plan}) построена зеркально",
+            return (f"фигура для точки {mk.target} {PLAN_ON_RU[mk.plan]} построена зеркально",
                     f"по теореме подобия: {eq}; обход букв на плане тот же, что на звене, "
                     "фигура не зеркальная")
         return (f"the figure for {mk.target} on the {plan} is mirrored",

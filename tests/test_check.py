@@ -1060,3 +1060,28 @@ def test_a_value_written_with_the_wrong_sense_alone_is_named(tmp_path, capsys, p
     # ω3 alone is also what a velocity plan turned round (ω1 reversed) gives: said, second
     alts = [f.mistake.kind for f in res.diagnosis.alternatives]
     assert alts == (["crank-sense"] if sym == "ω3" else [])
+
+
+def test_russian_words_agree_with_their_numbers(tmp_path, capsys, press):
+    """"в 20 раза мельче", "в 10 раза короче": раз agrees with the numeral (в 2, 22 раза;
+    в 5–20, 21, 25 раз; в 1,25 раза). "на плане (план скоростей) линия" named the plan in
+    the nominative inside brackets."""
+    scale = find(press, "scale", plan="velocity")
+    assert (scale.factor, scale.describe("ru")) == (10.0, "план скоростей в 10 раз крупнее (при указанном μv)")
+    for f, words in ((1 / 20, "в 20 раз мельче"), (1.25, "в 1,25 раза крупнее"),
+                     (22.0, "в 22 раза крупнее"), (21.0, "в 21 раз крупнее"), (2.0, "в 2 раза крупнее"),
+                     (1 / 16, "в 16 раз мельче")):
+        mk = ck.Mistake("scale", "acceleration", "acceleration", f, info=(("acceleration", repr(f)),))
+        assert mk.describe("ru") == f"план ускорений {words} (при указанном μa)"
+    short = ck.Mistake("term-scale", "acceleration", "a^n_A3B", 0.1)
+    assert short.describe("ru") == "a^n_A3B отложено в 10 раз короче"
+    line = find(press, "line-swapped", "V_DC", "velocity")
+    assert line.describe("ru") == "на плане скоростей линия V_DC проведена ∥ DC вместо ⊥ DC"
+    sim = find(press, "similarity-ratio", "c", "both", how="inverse")
+    assert sim.describe("ru") == "точка c на обоих планах найдена по обратному отношению отрезков"
+    # the plan drawn at μv = 0.0025, 20 times too large, on the command line
+    segs = {it.name: press.segments[it.name] * (20 if it.plan == "velocity" else 1)
+            for it in plan_segments(press)}
+    path = write_meas(tmp_path / "m.toml", PRESS, segs, MU_PRESS)
+    code, out, _ = run(capsys, "check", path, "--lang", "ru")
+    assert "Диагноз: план скоростей в 20 раз крупнее (при указанном μv)" in out
