@@ -17,9 +17,14 @@ PLAN_WORDS = {
 }
 
 
-#: "on the plan" in Russian: the plan's name in the prepositional case
-PLAN_ON_RU = {"velocity": "на плане скоростей", "acceleration": "на плане ускорений",
-              "positions": "на плане положений", "both": "на обоих планах"}
+#: "on the plan": in Russian the plan's name in the prepositional case; both plans take no
+#: article
+PLAN_ON = {
+    "en": {"velocity": "on the velocity plan", "acceleration": "on the acceleration plan",
+           "positions": "on the plan of positions", "both": "on both plans"},
+    "ru": {"velocity": "на плане скоростей", "acceleration": "на плане ускорений",
+           "positions": "на плане положений", "both": "на обоих планах"},
+}
 
 
 def _fnum(x: float, lang: str) -> str:
@@ -138,12 +143,12 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
                 "way (the velocity plan is reflected through the pole p), while the "
                 "accelerations and ε stay as they are")
     if k == "line-swapped":
-        plan = PLAN_WORDS[lang][mk.plan]
+        on = PLAN_ON[lang][mk.plan]
         if ru:
-            return (f"{PLAN_ON_RU[mk.plan]} линия {mk.target} проведена {g('wrong')} вместо {g('relation')}",
+            return (f"{on} линия {mk.target} проведена {g('wrong')} вместо {g('relation')}",
                     f"через точку {g('through')} проведите линию {g('relation')} "
                     f"(линия вектора {mk.target}), а не {g('wrong')}")
-        return (f"on the {plan} the line of {mk.target} is drawn {g('wrong')} instead of {g('relation')}",
+        return (f"{on} the line of {mk.target} is drawn {g('wrong')} instead of {g('relation')}",
                 f"through {g('through')} draw the line {g('relation')} (the line of {mk.target}), "
                 f"not {g('wrong')}")
     if k == "branch":
@@ -218,39 +223,39 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
     if k.startswith("similarity"):
         how = g("how")
         eq = g("equation")
-        plan = PLAN_WORDS[lang][mk.plan]
+        on = PLAN_ON[lang][mk.plan]
         if how.startswith("sibling:"):
             other = how.split(":", 1)[1]
             if ru:
-                return (f"точка {mk.target} {PLAN_ON_RU[mk.plan]} найдена по отношению для точки {other}",
+                return (f"точка {mk.target} {on} найдена по отношению для точки {other}",
                         f"по теореме подобия: {eq}")
-            return (f"{mk.target} on the {plan} found with the ratio meant for {other}",
+            return (f"{mk.target} {on} found with the ratio meant for {other}",
                     f"by similarity: {eq}")
         if how == "inverse":
             if ru:
-                return (f"точка {mk.target} {PLAN_ON_RU[mk.plan]} найдена по обратному отношению отрезков",
+                return (f"точка {mk.target} {on} найдена по обратному отношению отрезков",
                         f"по теореме подобия: {eq} (отрезок плана / отрезок звена одинаковы для всех точек звена)")
-            return (f"{mk.target} on the {plan} found with the ratio of the wrong segments (inverted)",
+            return (f"{mk.target} {on} found with the ratio of the wrong segments (inverted)",
                     f"by similarity: {eq} (plan segment / link segment is the same for every point of the link)")
         if how == "end":
             if ru:
-                return (f"точка {mk.target} {PLAN_ON_RU[mk.plan]} отложена от другого конца отрезка "
+                return (f"точка {mk.target} {on} отложена от другого конца отрезка "
                         f"{g('base')}{g('other')}: от {g('other')}, а не от {g('base')}",
                         f"по теореме подобия: {eq}, отсчитывая от {g('base')}")
-            return (f"{mk.target} on the {plan} laid off from the wrong end of "
+            return (f"{mk.target} {on} laid off from the wrong end of "
                     f"{g('base')}{g('other')}: from {g('other')}, not from {g('base')}",
                     f"by similarity: {eq}, measured from {g('base')}")
         if how == "side":
             if ru:
-                return (f"точка {mk.target} {PLAN_ON_RU[mk.plan]} отложена по другую сторону от {g('base')}",
+                return (f"точка {mk.target} {on} отложена по другую сторону от {g('base')}",
                         f"по теореме подобия: {eq}, в ту же сторону, что и на звене")
-            return (f"{mk.target} on the {plan} laid off on the wrong side of {g('base')}",
+            return (f"{mk.target} {on} laid off on the wrong side of {g('base')}",
                     f"by similarity: {eq}, in the same direction as on the link")
         if ru:
-            return (f"фигура для точки {mk.target} {PLAN_ON_RU[mk.plan]} построена зеркально",
+            return (f"фигура для точки {mk.target} {on} построена зеркально",
                     f"по теореме подобия: {eq}; обход букв на плане тот же, что на звене, "
                     "фигура не зеркальная")
-        return (f"the figure for {mk.target} on the {plan} is mirrored",
+        return (f"the figure for {mk.target} {on} is mirrored",
                 f"by similarity: {eq}, with the letters in the same order round the figure as "
                 "on the link, not mirrored")
     return (k, "")

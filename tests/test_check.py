@@ -1085,3 +1085,16 @@ def test_russian_words_agree_with_their_numbers(tmp_path, capsys, press):
     path = write_meas(tmp_path / "m.toml", PRESS, segs, MU_PRESS)
     code, out, _ = run(capsys, "check", path, "--lang", "ru")
     assert "Диагноз: план скоростей в 20 раз крупнее (при указанном μv)" in out
+
+
+def test_a_mistake_on_both_plans_is_said_without_an_article(tmp_path, press):
+    """"e on the both plans laid off on the wrong side of b": both plans take no article."""
+    sol = solve_position(mechanism.load(FOURBAR))
+    side = find(sol, "similarity-mirrored", "e", "both", how="side")
+    assert side.describe() == "e on both plans laid off on the wrong side of b"
+    inverse = find(press, "similarity-ratio", "c", "velocity", how="inverse")
+    assert inverse.describe() == "c on the velocity plan found with the ratio of the wrong segments (inverted)"
+    line = find(press, "line-swapped", "a^t_DC", "acceleration")
+    assert line.describe() == "on the acceleration plan the line of a^t_DC is drawn ∥ DC instead of ⊥ DC"
+    for mk in ck.hypotheses(press) + ck.hypotheses(sol):
+        assert "the both" not in mk.describe() + mk.correction(), mk
