@@ -318,10 +318,16 @@ def diagnose(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance) -> 
     accepted = [f for f in findings if not f.broken and len(f.unexplained) <= allowed]
     accepted.sort(key=lambda f: (len(f.unexplained), f.score))
     if accepted:
-        best = accepted[0]
+        # mistakes that draw the same plans score the same but for the last digits: the
+        # order of preference of the hypotheses chooses among them, not the rounding
+        first = accepted[0]
+        order = {id(f): i for i, f in enumerate(findings)}
+        best = min((f for f in accepted if len(f.unexplained) == len(first.unexplained)
+                    and f.score <= first.score * (1 + 1e-9) + 1e-12), key=lambda f: order[id(f)])
         alts = tuple(
-            f for f in accepted[1:]
-            if len(f.unexplained) == len(best.unexplained) and f.score <= best.score * 1.25 + 0.25
+            f for f in accepted
+            if f is not best and len(f.unexplained) == len(best.unexplained)
+            and f.score <= best.score * 1.25 + 0.25
         )[:3]
         return Diagnosis(best, alts, None, tried)
     near = [f for f in findings if not f.broken]

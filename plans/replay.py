@@ -319,9 +319,10 @@ def hypotheses(sol: Solution, plans: set[str] | None = None) -> list[Mistake]:
     for t in cor:
         out.append(Mistake("omega-sense", "acceleration", f"ω{rep.guide_link(t)}",
                            link=rep.guide_link(t), info=(("coriolis", t.label),)))
-    # one ω or ε written with the sense reversed, the plans right (before the crank: one
-    # value wrong is that value's slip, not the whole velocity plan turned round). The ω
-    # of a link that turns no Coriolis vector is the "omega-sense" mistake below already.
+    # one ω or ε written with the sense reversed, the plans right (before the crank, as the
+    # ω of another link below: one value wrong is that value's slip, not the whole
+    # velocity plan turned round). The ω of a link that turns no Coriolis vector is the
+    # "omega-sense" mistake below already.
     guides = {rep.guide_link(t) for t in cor}
     for key, sym, plan, values in (("omega", "ω", "velocity", sol.omega),
                                    ("epsilon", "ε", "acceleration", sol.epsilon)):
@@ -332,12 +333,12 @@ def hypotheses(sol: Solution, plans: set[str] | None = None) -> list[Mistake]:
                 X, Y = rep.pairs[lid]
                 out.append(Mistake("value-sense", plan, f"{sym}{lid}", link=lid,
                                    info=(("value", key), ("X", X), ("Y", Y))))
-    out.append(Mistake("crank-sense", "velocity", f"ω{drv.link}", link=drv.link,
-                       info=(("X", drv.tip), ("Y", drv.pivot),
-                             ("sense", "ccw" if drv.omega > 0 else "cw"))))
     for lid in sorted(sol.mechanism.links):
         if lid != drv.link and lid not in guides and abs(sol.omega[lid]) > 0:
             out.append(Mistake("omega-sense", "velocity", f"ω{lid}", link=lid))
+    out.append(Mistake("crank-sense", "velocity", f"ω{drv.link}", link=drv.link,
+                       info=(("X", drv.tip), ("Y", drv.pivot),
+                             ("sense", "ccw" if drv.omega > 0 else "cw"))))
     for gi, g in enumerate(m.groups):
         for kind, cons in (("velocity", g.velocity), ("acceleration", g.acceleration)):
             pt = sol.velocity.points[plan_name(cons.point)] if kind == "velocity" else \

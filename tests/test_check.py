@@ -1098,3 +1098,21 @@ def test_a_mistake_on_both_plans_is_said_without_an_article(tmp_path, press):
     assert line.describe() == "on the acceleration plan the line of a^t_DC is drawn ∥ DC instead of ⊥ DC"
     for mk in ck.hypotheses(press) + ck.hypotheses(sol):
         assert "the both" not in mk.describe() + mk.correction(), mk
+
+
+def test_mistakes_that_draw_the_same_plans_are_named_in_order_of_preference(tmp_path):
+    """ω2 of a crank-slider's rod written reversed, all else exact: "ω2 taken with the
+    wrong sense" and "ω1 (V_A) drawn with the wrong sense" draw the same items and score
+    the same but for the 17th digit, which had chosen between them. The hypotheses' order
+    of preference does: one value wrong is that value's slip first."""
+    source = tmp_path / "cs.toml"
+    source.write_text(CRANK_SLIDER, encoding="utf-8")
+    mu = {"mu_l": 0.004, "mu_v": 0.05, "mu_a": 2.5}
+    sol = solve_position(mechanism.load(source), mu=mu)
+    exact = ck.simulate(sol, None)
+    segs = {it.name: round(ck.expected(it, exact, mu), 2) for it in plan_segments(sol)}
+    res = diagnose(tmp_path, source, segs, mu,
+                   {"omega2": _sense_of(-round(sol.omega[2], 2)), "epsilon2": _sense_of(sol.epsilon[2])})
+    got = named(res)
+    assert (got.kind, got.target) == ("omega-sense", "ω2")
+    assert [(f.mistake.kind, f.mistake.target) for f in res.diagnosis.alternatives] == [("crank-sense", "ω1")]
