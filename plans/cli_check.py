@@ -113,12 +113,13 @@ WORDS = {
         "bad": "BEYOND",
         "sense": "wrong sense",
         "all_ok": "Overall: all {n} {items} within tolerance.",
-        "some": "Overall: {k} of {n} items beyond tolerance: {names}.",
+        "some": "Overall: {k} of {n} {items} beyond tolerance: {names}.",
         "diag": "Diagnosis",
         "none": "no single mistake explains this.",
         "closest": "closest: {what}; it explains {ex} but not {un}",
         "explains": "explains",
         "all_of": "all {k} {items} beyond tolerance",
+        "one_of": "the one item beyond tolerance",
         "like_segment": "{item} = {m} mm is the length of {other} ({exact} mm): measured from the wrong point?",
         "like_swapped": "{item} = {m} mm is the length of {other} ({exact} mm): are {item} and {other} swapped?",
         "like_value": "{item} = {m} is {other} in {unit} ({exact}): a segment is {other}/{mu}, in mm",
@@ -154,6 +155,7 @@ WORDS = {
         "closest": "ближе всего: {what}; объясняет {ex}, но не {un}",
         "explains": "объясняет",
         "all_of": "все {k} {items} вне допуска",
+        "one_of": "единственная величина вне допуска",
         "k_of": "{e} из {k} величин вне допуска; не объясняет {un}",
         "correction": "исправление",
         "also": "столь же хорошо объясняет",
@@ -262,7 +264,8 @@ def to_text(result, lang: str = "en") -> str:
     if not failed:
         out.append(w["all_ok"].format(n=n, items=_items(n, lang)))
     else:
-        out.append(w["some"].format(k=len(failed), n=n, names=", ".join(d.item.name for d in failed)))
+        out.append(w["some"].format(k=len(failed), n=n, items=_items(n, lang),
+                                    names=", ".join(d.item.name for d in failed)))
         out += diagnosis_lines(result, lang)
     from .report import warnings
 
@@ -287,6 +290,8 @@ def diagnosis_lines(result, lang: str = "en") -> list[str]:
     lines = [f"{w['diag']}: {b.mistake.describe(lang)}."]
     if b.unexplained:
         ex = w["k_of"].format(e=len(b.explained), k=k, un=", ".join(b.unexplained))
+    elif k == 1:
+        ex = w["one_of"]
     else:
         ex = w["all_of"].format(k=k, items=_items(k, lang))
     lines.append(f"  {w['explains']}: {', '.join(b.explained)} ({ex})")

@@ -1116,3 +1116,34 @@ def test_mistakes_that_draw_the_same_plans_are_named_in_order_of_preference(tmp_
     got = named(res)
     assert (got.kind, got.target) == ("omega-sense", "ω2")
     assert [(f.mistake.kind, f.mistake.target) for f in res.diagnosis.alternatives] == [("crank-sense", "ω1")]
+
+
+@pytest.mark.parametrize(("lang", "overall", "explains"), [
+    ("en", "Overall: 1 of 1 item beyond tolerance: pd.",
+     "explains: pd (the one item beyond tolerance)"),
+    ("ru", "Итог: 1 из 1 вне допуска: pd.",
+     "объясняет: pd (единственная величина вне допуска)"),
+])
+def test_one_item_beyond_tolerance_is_worded_as_one(tmp_path, press, capsys, lang, overall,
+                                                    explains):
+    """"Overall: 1 of 1 items", "explains: pd (all 1 item beyond tolerance)", "все 1
+    величина вне допуска": the plural words were used for one item."""
+    path = write_meas(tmp_path / "m.toml", PRESS, {"pd": press.segments["pd"] * 10}, MU_PRESS)
+    code, out, err = run(capsys, "check", path, "--lang", lang)
+    assert code == 1, err
+    assert overall in out and explains in out
+
+
+def test_a_measurement_built_with_numpy_numbers_is_checked(tmp_path, press):
+    """A plan at another scale factor records its ratio with repr: a numpy float wrote
+    'np.float64(…)', which the replay could not read back."""
+    segs = {it.name: np.float64(press.segments[it.name] * (0.05 / 0.04 if it.plan == "velocity"
+                                                         else 1.0))
+            for it in plan_segments(press)}
+    from dataclasses import replace
+
+    meas = ck.load(write_meas(tmp_path / "m.toml", PRESS, segs, MU_PRESS))
+    meas = replace(meas, mu={k: np.float64(v) for k, v in meas.mu.items()})
+    got = named(ck.check(meas))
+    assert (got.kind, got.plan) == ("scale", "velocity")
+    assert "fit μv = 0.04" in got.describe()
