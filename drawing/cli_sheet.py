@@ -96,7 +96,6 @@ def _parse_plans(text: str | None, n: int) -> list[int] | None:
 def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
                 plans: list[int] | None = None, title: list[str] = ()):
     """(scene, sheet, info) for ``mech``; info holds the solutions drawn."""
-    from drawing.layout import LayoutError
     from drawing.sheet import Sheet
     from plans.cycle import analyse_cycle
     from plans.kinematics import Solver
@@ -111,36 +110,24 @@ def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
     cycle = analyse_cycle(mech, n_positions, solver=solver)
     chosen = _parse_plans(None if plans is None else ",".join(map(str, plans)), len(cycle.positions))
     fixed = _views_of_any_size(mech, solver, cycle, lang)
-    extent = fixed.shown.extent
-    # the plans, for their μv and μa: sheet_scales reads nothing else. μl is given only so
-    # that solve_position does not size a plan of positions of its own
+    # the plans drawn, for their μv and μa. μl is given only so that solve_position does
+    # not size a plan of positions of its own
+    mu0 = {"mu_l": mech.scales.get("mu_l") or choose_mu_l(fixed.shown.extent)}
     try:
-        first = solve_position(mech, solver=solver,
-                               mu={"mu_l": mech.scales.get("mu_l") or choose_mu_l(extent)})
+        given = solve_position(mech, solver=solver, mu=mu0)
     except SingularPlanError as exc:  # the given position is drawn whatever --plans asks
         raise SingularPlanError(f"{exc} (the sheet draws the given position: choose another "
                                 "with --angle)", sine=exc.sine, source=exc.source) from None
-    # the largest views that fit: scales the file leaves free are chosen for the sheet
-    error, tried = None, []
-    for size in SIZES:
-        mu = sheet_scales(mech, first, extent, size)
-        if mu in tried:  # the file fixes the scales this size would change: same sheet
-            continue
-        tried.append(mu)
-        try:
-            return _compose(mech, sheet, solver, cycle, chosen, mu, lang, title, fixed)
-        except LayoutError as exc:
-            error = exc
-            if not exc.option:  # the file's own μl: no size of the sheet's changes it
-                break
-    raise error
+    sheet_ = _Sheet1(mech, sheet, solver, cycle, chosen, lang, fixed, given, mu0)
+    mu, placed = sheet_.fill()
+    return _compose(mech, sheet, cycle, mu, lang, title, placed, sheet_.titled(mu))
 
 
 class _AnySize(NamedTuple):
     """What the sheet draws whatever the scale factors, worked out once, not per size."""
 
     shown: object  # the positions the plan of positions draws (plans.positions.Drawn)
-    diagrams: list  # the kinematic diagrams, or none …
+    curves: object  # the kinematic diagrams' curves (views.diagram_curves), or None …
     notes: list  # … and the note that says why
 
 
@@ -149,66 +136,161 @@ def _views_of_any_size(mech, solver, cycle, lang) -> _AnySize:
     from plans.positions import drawn
 
     shown = drawn(solver, cycle)
-    diag = V.diagrams_view(mech, cycle, lang, solver=solver)
-    if diag is not None:
-        return _AnySize(shown, [diag], [])
+    curves = V.diagram_curves(mech, cycle, solver)
+    if curves is not None:
+        return _AnySize(shown, curves, [])
     from plans.report import no_full_turn
 
     why = (no_full_turn(cycle, lang, mech.driver) if not cycle.full_turn else
            "no stroke of the output" if lang == "en" else "нет хода выходного звена")
-    return _AnySize(shown, [], [V.WORDS[lang]["no_diagrams"] + why[0].lower() + why[1:]])
+    return _AnySize(shown, None, [V.WORDS[lang]["no_diagrams"] + why[0].lower() + why[1:]])
 
 
-#: view sizes tried, as multiples of the engine's default drawing sizes (largest first)
-SIZES = (3.0, 2.5, 2.0, 1.6, 1.25, 1.0, 0.8, 0.6, 0.5)
+#: mm: the kinematic diagrams' widths tried (one turn of the crank), with the height of
+#: each of the three; 180 mm is 15 mm per position of twelve, 360 mm 1° per mm
+DIAGRAMS = {360.0: 60.0, 300.0: 55.0, 240.0: 50.0, 180.0: 40.0}
 
 
-def sheet_scales(mech, sol, extent: float, size: float) -> dict[str, float]:
-    """μl, μv, μa from the standard series for views ``size`` times the default size;
-    the factors the mechanism file fixes are kept."""
-    from plans.plan import plan_mu, plan_name
-    from plans.scales import choose_mu_l
+class _Sheet1:
+    """The views of one sheet and the scale factors they are drawn at
+    (:class:`drawing.fit.Fit` chooses those the file leaves free)."""
 
-    mu = {}
-    if "mu_l" not in mech.scales:
-        mu["mu_l"] = choose_mu_l(extent, max_mm=150 * size)
-    for key, plan in (("mu_v", sol.velocity), ("mu_a", sol.acceleration)):
-        if key not in mech.scales:
-            mu[key] = plan_mu(plan.points, plan.value(plan_name(mech.driver.tip)), size)
-    return mu
+    def __init__(self, mech, sheet, solver, cycle, chosen, lang, fixed, given, mu0):
+        self.mech, self.sheet, self.solver, self.cycle = mech, sheet, solver, cycle
+        self.chosen, self.lang, self.fixed, self.given = chosen, lang, fixed, given
+        self.mu0 = mu0
+        self._sols: dict[tuple, list] = {}
+
+    def solutions(self, mu: dict[str, float]) -> list:
+        """The solutions the sheet draws plans for, at ``mu``."""
+        from plans.plan import solve_position
+
+        key = tuple(sorted(mu.items()))
+        got = self._sols.get(key)
+        if got is None:
+            if self.chosen is None:
+                got = [solve_position(self.mech, solver=self.solver, mu=mu)]
+            else:
+                got = [solve_position(self.mech, self.cycle.positions[k], solver=self.solver, mu=mu)
+                       for k in self.chosen]
+            self._sols[key] = got
+        return got
+
+    def titled(self, mu: dict[str, float]) -> list[tuple[str, str, object]]:
+        """(tag, caption label, solution) of each position the sheet draws plans for."""
+        from drawing import views as V
+        from plans.fmt import angle, num
+
+        sols = self.solutions(mu)
+        if self.chosen is None:
+            return [("g", f"φ_1 = {num(self.mech.driver.angle_deg, 6, self.lang)}°", sols[0])]
+        out = []
+        for k, sol in zip(self.chosen, sols, strict=True):
+            deg = self.mech.driver.file_angle(self.cycle.positions[k])
+            out.append((str(k), f"{V.WORDS[self.lang]['position']} {k}, φ_1 = "
+                                f"{angle(deg, 4, self.lang)}°", sol))
+        return out
+
+    def factors(self) -> list[tuple[str, list[float], list[float]]]:
+        """The free scale factors, their candidates (largest views first) and the size
+        of the views at each, as a multiple of the engine's default size (a plan of
+        positions 150 mm across, a plan's crank vector 80 mm or its longest 150 mm)."""
+        from drawing.fit import SIZES
+        from plans.plan import plan_name
+        from plans.scales import GOST_MU_L, choose_mu, choose_mu_l, series
+
+        out = []
+        extent = self.fixed.shown.extent
+        if "mu_l" not in self.mech.scales:
+            from drawing.layout import field
+
+            (x0, y0, x1, y1), _ = field(self.sheet)  # up to the field's longer side
+            hi = choose_mu_l(extent, max_mm=max(x1 - x0, y1 - y0, 150 * SIZES[0]))
+            lo = choose_mu_l(extent, max_mm=150 * SIZES[1])
+            values = [m for m in GOST_MU_L if hi <= m <= lo] or [hi]
+            out.append(("mu_l", values, [extent / m / 150 for m in values]))
+        sols = self.solutions(self.mu0)
+        for key, kind in (("mu_v", "velocity"), ("mu_a", "acceleration")):
+            if key in self.mech.scales:
+                continue
+            plans = [getattr(sol, kind) for sol in sols]  # every position drawn, not one
+            tip = max(abs(p.value(plan_name(self.mech.driver.tip))) for p in plans)
+            largest = max(abs(q.value) for p in plans for q in p.points.values())
+            hi, lo = (choose_mu(tip, largest, crank_mm=80.0 * k, max_mm=150.0 * k) for k in SIZES)
+            values = sorted(set(series(hi, lo)) | {hi, lo})
+            out.append((key, values, [max(tip / m / 80, largest / m / 150) for m in values]))
+        if self.fixed.curves is not None:
+            widths = sorted(DIAGRAMS, reverse=True)
+            out.append(("diagrams", widths, [w / 180 for w in widths]))
+        return out
+
+    def draw(self, key: str, value: float, mu: dict[str, float] | None = None) -> list:
+        """The views the factor ``key`` sizes, drawn at ``value``."""
+        from drawing import views as V
+
+        if key == "diagrams":
+            return [V.diagrams_view(self.mech, self.cycle, self.lang, value, DIAGRAMS[value],
+                                    curves=self.fixed.curves)]
+        mu = dict(mu or self.mu0, **{key: value})
+        if key == "mu_l":
+            from plans.plan import solve_position
+
+            return [V.positions_view(solve_position(self.mech, solver=self.solver, mu=mu),
+                                     self.cycle, self.lang)]
+        kind = "velocity" if key == "mu_v" else "acceleration"
+        return [V.plan_view(sol, kind, tag, self.lang, label)
+                for tag, label, sol in self.titled(mu)]
+
+    def others(self, mu: dict[str, float]) -> list:
+        """The views no free factor sizes: those of the factors the file fixes (at its
+        values), the diagrams, the tables (at ``mu``) and the note."""
+        from drawing import views as V
+
+        out = []
+        for key in ("mu_l", "mu_v", "mu_a"):
+            if key in self.mech.scales:
+                out += self.draw(key, self.mech.scales[key], mu)
+        tabsols = [(tag if tag != "g" else "φ", sol) for tag, _, sol in self.titled(mu)]
+        out.append(V.segments_table_view(tabsols, self.lang))
+        out.append(V.omega_table_view(tabsols, self.lang))
+        if self.fixed.notes:
+            out.append(V.note_view(self.fixed.notes))
+        return out
+
+    def order(self) -> list[str]:
+        tags = ["g"] if self.chosen is None else [str(k) for k in self.chosen]
+        return (["positions"] + [f"{kind}-{t}" for t in tags for kind in ("velocity", "acceleration")]
+                + ["diagrams", "segments", "angular", "note"])
+
+    def fill(self):
+        """(μ of every factor, the views placed)."""
+        from drawing.fit import Fit
+        from drawing.layout import place_views, spread
+
+        factors = self.factors()
+        mu_free = {k: v[-1] for k, v, _ in factors}
+        fit = Fit(self.sheet, factors, self.draw, self.others(dict(self.mu0, **mu_free)),
+                  self.order(), exact={"diagrams"})
+        chosen = fit.best()
+        views = [v for k, value in chosen.items() for v in fit.views(k, value)]
+        mu = {k: v for k, v in chosen.items() if k != "diagrams"}
+        full = dict(self.mu0, **{k: v for k, v in self.mech.scales.items() if k in ("mu_l", "mu_v", "mu_a")},
+                    **mu)
+        placed = place_views(self.sheet, fit.arranged(views + self.others(full)))
+        if not any(k in self.mech.scales for k in ("mu_l", "mu_v", "mu_a")):
+            # at their largest and still leaving room: spread over the field. Views at
+            # the scales a file fixes stay together, the share they take said in a note
+            placed = spread(self.sheet, placed)
+        return mu, placed
 
 
-def _compose(mech, sheet, solver, cycle, chosen, mu, lang, title, fixed):
-
-    from drawing import views as V
-    from drawing.layout import place_views
+def _compose(mech, sheet, cycle, mu, lang, title, placed, sols):
     from drawing.scene import Layer, Scene
     from drawing.sheet import TitleBlock, frame_scene
-    from plans.fmt import angle, num
     from plans.plan import solve_position
     from plans.scales import gost_scale
 
-    given = solve_position(mech, solver=solver, mu=mu)
-    sols: list[tuple[str, str, object]] = []
-    if chosen is None:
-        deg = mech.driver.angle_deg
-        sols.append(("g", f"φ_1 = {num(deg, 6, lang)}°", given))
-    else:
-        for k in chosen:
-            deg = mech.driver.file_angle(cycle.positions[k])
-            label = f"{V.WORDS[lang]['position']} {k}, φ_1 = {angle(deg, 4, lang)}°"
-            sols.append((str(k), label, solve_position(mech, cycle.positions[k], solver=solver, mu=mu)))
-    views = [V.positions_view(given, cycle, lang)]
-    for tag, label, sol in sols:
-        views.append(V.plan_view(sol, "velocity", tag, lang, label))
-        views.append(V.plan_view(sol, "acceleration", tag, lang, label))
-    views += fixed.diagrams
-    tabsols = [(tag if tag != "g" else "φ", sol) for tag, _, sol in sols]  # columns by number
-    views.append(V.segments_table_view(tabsols, lang))
-    views.append(V.omega_table_view(tabsols, lang))
-    if fixed.notes:
-        views.append(V.note_view(fixed.notes))
-    placed = place_views(sheet, views)
+    given = solve_position(mech, solver=sols[0][2].solver, mu=mu)
     tb = TitleBlock(**_title_fields(mech, title, gost_scale(given.mu_l, lang), lang))
     scene = frame_scene(sheet, tb, lang=lang)
     scene = scene + Scene((Layer("views", tuple(p.group() for p in placed)),))

@@ -1,27 +1,31 @@
-"""Placing the views of a sheet: first fit on a 5 mm grid inside the drawing area.
+"""Placing the views of a sheet: rectangles packed into the drawing area.
 
 Each view is a box (0, 0)–(w, h) of local sheet mm (:class:`drawing.views.View`).
-A view is put at the first grid position, top to bottom and left to right,
-where its box, widened by ``GAP``, stays inside the free field of the sheet
-(frame less the title block and field 26, less ``MARGIN``) and meets no box
-placed before it.  Nothing is scaled.
+The free field is the frame less the title block and field 26, less ``MARGIN``;
+views keep ``GAP`` mm from each other.  :func:`pack` puts boxes in, one after the
+other, each at the topmost (or leftmost) spot where it meets nothing placed before
+it: the spots tried are the corners the field and the boxes already placed make.
+Several orders are tried (the order given, largest first, tallest first, widest
+first), so that a set of views that fits one way is not refused for the order it
+came in.  Nothing is scaled: what sizes the views is :mod:`drawing.cli_sheet`.
 """
 
 from __future__ import annotations
 
+import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 from shapely.geometry import box
-from shapely.prepared import prep
 
 from drawing.scene import Group, Rect
 from drawing.sheet import Sheet
 
-__all__ = ["LayoutError", "Placed", "place_views", "share_used"]
+__all__ = ["LayoutError", "Placed", "pack", "place_views", "share_covered", "share_used",
+           "spread"]
 
 GAP = 6.0
 MARGIN = 4.0
-STEP = 5.0
 
 
 class LayoutError(ValueError):
@@ -43,36 +47,116 @@ class Placed:
         return Group(tuple(self.view.items), (self.rect.x, self.rect.y), name=f"view {self.view.name}")
 
 
-def place_views(sheet: Sheet, views) -> list[Placed]:
-    """Positions for ``views`` in their order, each at the first free spot scanning the
-    sheet row by row; :class:`LayoutError` if one does not fit.
+Box = tuple[float, float, float, float]  # x0, y0, x1, y1
 
-    The boxes placed are kept widened by ``GAP``, so that a candidate is tested against
-    them by plain arithmetic (touching counts as meeting); only a spot clear of them is
-    tested against the free field with shapely."""
-    area = sheet.drawing_area().buffer(-MARGIN)
-    free = prep(area)
-    x0, y0, x1, y1 = area.bounds
-    placed: list[Placed] = []
-    wide: list[tuple[float, float, float, float]] = []
-    for v in views:
-        spot = None
-        xs = [x0 + STEP * i for i in range(int((x1 - x0 - v.w) / STEP) + 1)]
-        ys = [y0 + STEP * j for j in range(int((y1 - y0 - v.h) / STEP) + 1)]
-        for x, y in ((x, y) for y in ys for x in xs):
-            if any(x <= bx1 and bx0 <= x + v.w and y <= by1 and by0 <= y + v.h
-                   for bx0, by0, bx1, by1 in wide):
-                continue
-            if free.contains(box(x, y, x + v.w, y + v.h)):
-                spot = (x, y)
+
+def field(sheet: Sheet) -> tuple[Box, list[Box]]:
+    """The rectangle the views stay in, and the boxes they keep out of (the title block
+    and field 26, widened by ``MARGIN``)."""
+    f = sheet.frame
+    inner = (f.x + MARGIN, f.y + MARGIN, f.x1 - MARGIN, f.y1 - MARGIN)
+    out = [(r.x - MARGIN, r.y - MARGIN, r.x1 + MARGIN, r.y1 + MARGIN)
+           for r in (sheet.title_block, sheet.field26)]
+    return inner, out
+
+
+def _first_fit(inner: Box, blocked: list[Box], sizes: Sequence[tuple[float, float]],
+               order: Sequence[int], rows: bool) -> list[tuple[float, float]] | None:
+    """Spots for the boxes ``sizes`` put in ``order``, each at the topmost then leftmost
+    free spot (``rows``) or the leftmost then topmost one; None if one has none."""
+    x0, y0, x1, y1 = inner
+    hard = list(blocked)  # obstacles, exact
+    wide: list[Box] = []  # boxes placed, widened by GAP
+    spots: list[tuple[float, float] | None] = [None] * len(sizes)
+    for i in order:
+        w, h = sizes[i]
+        if w > x1 - x0 + 1e-9 or h > y1 - y0 + 1e-9:
+            return None
+        edges = [*hard, *wide]
+        xs = sorted(x for x in {x0, x1 - w, *(b[2] for b in edges), *(b[0] - w for b in edges)}
+                    if x0 - 1e-9 <= x and x + w <= x1 + 1e-9)
+        ys = sorted(y for y in {y0, y1 - h, *(b[3] for b in edges), *(b[1] - h for b in edges)}
+                    if y0 - 1e-9 <= y and y + h <= y1 + 1e-9)
+        best = None
+        for a in (ys if rows else xs):
+            for b in (xs if rows else ys):
+                x, y = (b, a) if rows else (a, b)
+                if not any(x < e[2] - 1e-9 and e[0] < x + w - 1e-9 and y < e[3] - 1e-9
+                           and e[1] < y + h - 1e-9 for e in edges):
+                    best = (x, y)
+                    break
+            if best is not None:
                 break
-        if spot is None:
-            raise LayoutError(*_why_not(sheet, v))
-        r = Rect(spot[0], spot[1], v.w, v.h)
-        placed.append(Placed(v, r))
-        bx0, by0, bx1, by1 = r.bounds
-        wide.append((bx0 - GAP, by0 - GAP, bx1 + GAP, by1 + GAP))
-    return placed
+        if best is None:
+            return None
+        x, y = best
+        spots[i] = (x, y)
+        wide.append((x - GAP, y - GAP, x + w + GAP, y + h + GAP))
+    return spots  # type: ignore[return-value]
+
+
+def pack(sheet: Sheet, sizes: Sequence[tuple[float, float]]) -> list[tuple[float, float]] | None:
+    """Top-left corners for boxes of ``sizes`` (w, h mm) on ``sheet``, none meeting
+    another (``GAP`` apart) nor the title block and field 26; None if no order tried
+    fits them all. The order given is tried first, so that the plan of positions, put
+    first, is at the top left where it fits there."""
+    inner, blocked = field(sheet)
+    n = len(sizes)
+    given = list(range(n))
+    area = sorted(given, key=lambda i: -sizes[i][0] * sizes[i][1])
+    tall = sorted(given, key=lambda i: (-sizes[i][1], -sizes[i][0]))
+    wide = sorted(given, key=lambda i: (-sizes[i][0], -sizes[i][1]))
+    first = [0, *(i for i in area if i)]  # the first view top left, then the largest
+    tried = set()
+    for order, rows in ((given, True), (given, False), (first, True), (first, False),
+                        (area, True), (area, False), (tall, False), (wide, True),
+                        (tall, True), (wide, False)):
+        if (tuple(order), rows) in tried:
+            continue
+        tried.add((tuple(order), rows))
+        spots = _first_fit(inner, blocked, sizes, order, rows)
+        if spots is not None:
+            return spots
+    return None
+
+
+def place_views(sheet: Sheet, views) -> list[Placed]:
+    """Positions for ``views`` (see :func:`pack`); :class:`LayoutError` if they do not
+    all fit."""
+    spots = pack(sheet, [(v.w, v.h) for v in views])
+    if spots is None:
+        raise LayoutError(*_why_not(sheet, views))
+    return [Placed(v, Rect(x, y, v.w, v.h)) for v, (x, y) in zip(views, spots, strict=True)]
+
+
+def spread(sheet: Sheet, placed: list[Placed]) -> list[Placed]:
+    """The views moved apart to use the whole field: each one's distance from the field's
+    top edge stretched by one factor, as large as keeps every view inside the field and
+    clear of the title block, then the same across from the left edge. Views apart stay
+    apart (their gaps only grow), and none changes its size; a sheet whose views, at
+    their largest, still leave room is not left with its lower half blank."""
+    (x0, y0, x1, y1), (tb, _) = field(sheet)
+    rects = [p.rect for p in placed]
+
+    def most(starts, sizes, lo, hi, block, across):
+        """The largest stretch of the ``starts`` away from ``lo`` keeping each box within
+        ``hi``, or short of ``block`` (the title block's near edge) where its ``across``
+        span meets the block's."""
+        k = math.inf
+        for a, size, (c0, c1) in zip(starts, sizes, across, strict=True):
+            if a - lo <= 1e-9:
+                continue
+            limit = block[0] if c0 < block[2] and c1 > block[1] else hi
+            k = min(k, (limit - size - lo) / (a - lo))
+        return max(1.0, k) if k < math.inf else 1.0
+
+    ky = most([r.y for r in rects], [r.h for r in rects], y0, y1, (tb[1], tb[0], tb[2]),
+              [(r.x, r.x1) for r in rects])
+    rects = [Rect(r.x, y0 + (r.y - y0) * ky, r.w, r.h) for r in rects]
+    kx = most([r.x for r in rects], [r.w for r in rects], x0, x1, (tb[0], tb[1], tb[3]),
+              [(r.y, r.y1) for r in rects])
+    rects = [Rect(x0 + (r.x - x0) * kx, r.y, r.w, r.h) for r in rects]
+    return [Placed(p.view, r) for p, r in zip(placed, rects, strict=True)]
 
 
 def share_used(sheet: Sheet, placed: list[Placed]) -> float:
@@ -86,17 +170,26 @@ def share_used(sheet: Sheet, placed: list[Placed]) -> float:
     return used.intersection(area).area / area.area
 
 
-def _why_not(sheet: Sheet, v) -> tuple[str, str]:
-    """Why a view found no place, and the option to change (see :class:`LayoutError`)."""
-    size = f"the view {v.name!r} ({v.w:.0f} × {v.h:.0f} mm)"
+def share_covered(sheet: Sheet, placed: list[Placed]) -> float:
+    """The share of the sheet's free field that the views' own boxes cover (they do not
+    overlap): what the drawings, tables and their captions take of the sheet."""
+    return sum(p.rect.w * p.rect.h for p in placed) / sheet.drawing_area().area
+
+
+def _why_not(sheet: Sheet, views) -> tuple[str, str]:
+    """Why the views found no place, and the option to change (see
+    :class:`LayoutError`)."""
     x0, y0, x1, y1 = Sheet("A0").drawing_area().bounds
-    if min(v.w, v.h) > min(x1 - x0, y1 - y0) or max(v.w, v.h) > max(x1 - x0, y1 - y0):
-        if v.name == "positions":  # the sheet's own μl always fits: the file fixed it
-            return (f"{size} is larger than any sheet, A0 included, at the μl the file "
-                    "fixes: give a larger mu_l in [scales], or leave it out for the sheet "
-                    "to choose"), ""
-        return (f"{size} is larger than any sheet, A0 included: the plans' scale factors "
-                "are chosen at the given position, and this position needs far larger ones; "
-                "choose other --plans or give mu_v and mu_a in [scales]"), "--plans"
-    return (f"{size} does not fit on {sheet.name} beside the others; try a larger --format "
-            "or fewer --plans"), "--format"
+    for v in views:
+        size = f"the view {v.name!r} ({v.w:.0f} × {v.h:.0f} mm)"
+        if min(v.w, v.h) > min(x1 - x0, y1 - y0) or max(v.w, v.h) > max(x1 - x0, y1 - y0):
+            if v.name == "positions":  # the sheet's own μl always fits: the file fixed it
+                return (f"{size} is larger than any sheet, A0 included, at the μl the file "
+                        "fixes: give a larger mu_l in [scales], or leave it out for the sheet "
+                        "to choose"), ""
+            return (f"{size} is larger than any sheet, A0 included: the plans' scale factors "
+                    "are chosen at the given position, and this position needs far larger ones; "
+                    "choose other --plans or give mu_v and mu_a in [scales]"), "--plans"
+    v = max(views, key=lambda v: v.w * v.h)
+    return (f"the view {v.name!r} ({v.w:.0f} × {v.h:.0f} mm) does not fit on {sheet.name} "
+            "beside the others; try a larger --format or fewer --plans"), "--format"

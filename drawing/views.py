@@ -59,6 +59,11 @@ __all__ = [
 
 PAD = 6.0  # room around a drawing inside its view box, for labels
 CAPTION = 5.0  # caption size, mm
+#: mm: a caption wider than its drawing by more than this is set at SMALL_CAPTION, so
+#: that a small plan's view is not as wide as its long title ("План скоростей
+#: (положение 2, φ1 = 210°), μv = 0,02 (м/с)/мм" is 190 mm at 5 mm)
+CAPTION_OVER = 20.0
+SMALL_CAPTION = 3.5
 LETTER = 3.5  # letters of points, mm
 JOINT_R = 1.0
 BLANK_PAD = 0.5  # the break in thin lines around a dimension's value, mm
@@ -131,6 +136,10 @@ class View:
     items: list[Item] = field(default_factory=list)
     w: float = 0.0
     h: float = 0.0
+    #: mm: the drawing with its letters, without the caption and the lines under it
+    #: (what grows with the scale); and the width those texts need whatever the scale
+    body: tuple[float, float] = (0.0, 0.0)
+    texts: tuple[float, float] = (0.0, 0.0)  # the caption's width, the widest line under
 
 
 def _markup(name: str) -> str:
@@ -254,16 +263,31 @@ def _finish(
     items = list(drawing) + texts
     x0, y0, x1, y1 = _bbox(items)
     top = y0 - 2.0
-    cap = centred(((x0 + x1) / 2, top), caption, CAPTION)
+    cap = centred(((x0 + x1) / 2, top), caption, caption_size(caption, x1 - x0))
     cap = translate(cap, 0.0, y0 - 1.5 - text_box(cap).bounds[3])
     items.append(cap)
+    widths = [0.0]
     y = y1 + 2.0
     for line in under:
         y += 3.5 + 2.0
         items.append(Text((x0, y), notation(line), size=2.5, markup=True, baseline="alphabetic"))
+        widths.append(text_box(items[-1]).bounds[2] - x0)
     bx0, by0, bx1, by1 = _bbox(items)
     items = _shift(items, -bx0 + 1, -by0 + 1)
-    return View(name, items, bx1 - bx0 + 2, by1 - by0 + 2)
+    return View(name, items, bx1 - bx0 + 2, by1 - by0 + 2, (x1 - x0, y1 - y0),
+                (_width(centred((0, 0), caption, CAPTION)), max(widths)))
+
+
+def caption_size(caption: str, width: float) -> float:
+    """The size of a view's caption over a drawing ``width`` mm wide: :data:`CAPTION`,
+    or :data:`SMALL_CAPTION` where that is much wider than the drawing."""
+    wide = _width(centred((0, 0), caption, CAPTION))
+    return CAPTION if wide <= width + CAPTION_OVER else SMALL_CAPTION
+
+
+def _width(t: Text) -> float:
+    b = text_box(t).bounds
+    return b[2] - b[0]
 
 
 # ----------------------------------------------------------------- plans
@@ -645,10 +669,23 @@ def _swing_arc(pivot: complex, a: complex, b: complex, mu_l: float) -> list[Item
 
 
 def diagrams_view(mech, cycle, lang: str = "ru", width: float = 180.0, height: float = 40.0,
-                  solver=None) -> View | None:
+                  solver=None, curves=None) -> View | None:
     """s(φ), v(φ), a(φ) of the output over one turn from the first position; ψ(φ), ω(φ),
     ε(φ) of an output link that rocks, or that turns all the way round (a rotating slotted
-    link: ψ then grows by a full turn)."""
+    link: ψ then grows by a full turn). ``curves``: :func:`diagram_curves`, worked out
+    before (a sheet draws the diagrams at several sizes)."""
+    if curves is None:
+        curves = diagram_curves(mech, cycle, solver)
+    if curves is None:
+        return None
+    s, v, a = curves
+    out = cycle.output
+    return _draw_diagrams(mech, cycle, lang, width, height, out.kind == "linear", s, v, a)
+
+
+def diagram_curves(mech, cycle, solver=None):
+    """The output's (s, v, a) (or ψ, ω, ε) at 361 crank angles over one turn from the
+    first position, or None where there are no diagrams to draw."""
     from plans.kinematics import Solver
 
     solver = solver or Solver(mech)
@@ -678,7 +715,10 @@ def diagrams_view(mech, cycle, lang: str = "ru", width: float = 180.0, height: f
         k = np.arange(len(phis))
         v[~ok] = np.interp(k[~ok], k[ok], v[ok])
         a[~ok] = np.interp(k[~ok], k[ok], a[ok])
-    linear = out.kind == "linear"
+    return s, v, a
+
+
+def _draw_diagrams(mech, cycle, lang, width, height, linear, s, v, a) -> View:
     w = WORDS[lang]
     units = (w["m"], w["ms"], w["ms2"]) if linear else (w["rad"], w["rads"], w["rads2"])
     names = ("s", "v", "a") if linear else ("ψ", "ω", "ε")

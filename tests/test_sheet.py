@@ -569,7 +569,9 @@ def test_a_russian_sheet_names_and_measures_in_russian():
 def test_a_gost_scale_has_a_decimal_comma_on_a_russian_sheet():
     from plans.scenes import SCENES
 
-    scene, sheet, info = build_sheet(SCENES["yoke_on_rocker"].mechanism(), "A1", "ru")
+    # a sheet whose μl the sheet chooses as 1:2.5 (the yoke on A1 was, before each scale
+    # factor was chosen on its own: it is now 1:2)
+    scene, sheet, info = build_sheet(SCENES["slotted_general"].mechanism(), "A2", "ru")
     _, texts = _texts(to_svg(scene, sheet, embed_font=False))
     assert info["solutions"][0][2].mu_l == 0.0025
     assert "1:2,5" in texts and "1:2.5" not in texts
@@ -720,3 +722,61 @@ def test_an_output_link_that_turns_all_the_way_gets_its_diagrams():
     rise = (curve.points[0][1] - curve.points[-1][1]) * mu  # the sheet's y points down
     assert abs(rise) == pytest.approx(2 * math.pi, rel=1e-6)
     assert curve.points[0][1] == pytest.approx(axis.p1[1])  # ψ starts at 0
+
+
+#: the share of an A1 sheet's free field that the views' own boxes cover where the sheet
+#: chooses every scale factor. Sheet 1 is six views of shapes fixed by the mechanism (the
+#: plan of positions, two plans, the diagrams, two tables), each with its caption; packed
+#: they leave gaps, and a plan of positions grows only in GOST steps (1:1 to 2:1 doubles
+#: it), so a full sheet covers 45–75 %. With every view going down a size step together
+#: until the largest fitted, the variants covered 27–52 %, all in a band at the top of the
+#: sheet (variant 5: 27 %, the lower 62 % blank): 40 % is under every full sheet and over
+#: every half-empty one.
+FILLED = 0.4
+
+
+def _boxes_clear(sheet, placed):
+    """Each view's box inside the free field, and clear of every other view's."""
+    from shapely.geometry import box
+
+    from drawing.layout import GAP
+
+    boxes = [box(*p.rect.bounds) for p in placed]
+    area = sheet.drawing_area()
+    assert all(area.contains(b) for b in boxes)
+    for i, a in enumerate(boxes):
+        for b in boxes[i + 1:]:
+            assert a.distance(b) >= GAP - 1e-6
+
+
+@pytest.mark.parametrize("key", ["fourbar", *variant_numbers()])
+def test_the_views_fill_a_sheet_whose_scales_are_free(key):
+    """The views of a sheet whose scale factors the file leaves free take the sheet: each
+    factor is chosen on its own (a plan of positions that fits at 1:1 keeps it where the
+    acceleration plan needs a step down), and the views are packed in whatever order
+    fits, not only the order they are drawn in."""
+    mech, _, sheet, info, _ = _sheet(key)
+    assert not mech.scales
+    placed = info["placed"]
+    covered = sum(p.rect.w * p.rect.h for p in placed) / sheet.drawing_area().area
+    assert covered >= FILLED, f"the views cover {covered:.0%} of the field"
+    _boxes_clear(sheet, placed)
+
+
+@pytest.mark.parametrize("name", ["slotted_rotating", "yoke_on_rocker"])
+def test_plans_of_two_positions_are_drawn_large_on_a2(name):
+    """With --plans 2,7 on A2 the sheet shrank every view together: the yoke's plans had a
+    30 mm crank vector, its plan of positions a 15 mm crank. The plans' factors are now
+    chosen for every position drawn and packed beside each other."""
+    from plans.scenes import SCENES
+
+    mech = SCENES[name].mechanism()
+    _, sheet, info = build_sheet(mech, "A2", "ru", 12, [2, 7])
+    tip = mech.driver.tip
+    for _, _, sol in info["solutions"]:
+        assert sol.velocity.mm("p", tip.lower()) >= 50  # pa of 50–150 mm, as taught
+        assert sol.acceleration.mm("π", tip.lower()) >= 50
+    assert abs(mech.links[mech.driver.link].points[tip]) / info["given"].mu_l >= 25
+    placed = info["placed"]
+    assert sum(p.rect.w * p.rect.h for p in placed) / sheet.drawing_area().area >= 0.5
+    _boxes_clear(sheet, placed)

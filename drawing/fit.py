@@ -1,0 +1,145 @@
+"""The scale factors of sheet 1: as large as the sheet holds, each on its own.
+
+The scale factors the mechanism file leaves free are chosen for the sheet: μl for the
+plan of positions, μv for the velocity plans, μa for the acceleration plans. Each
+runs through its own standard series (:mod:`plans.scales`), from views 3 times the
+engine's default size (a plan's longest vector 450 mm, the plan of positions 450 mm
+across) down to half of it (75 mm).
+
+A factor does not wait for the others: a plan of positions that fits at μl = 0.001
+keeps it where the acceleration plan needs a step down, instead of every view going
+down a step together until the largest fits. The combinations are tried best first:
+the one whose smallest view (as a multiple of its default size) is largest, then by the
+next smallest, and so on, so that no view is shrunk for another to grow; then by the
+area the views cover. The kinematic diagrams are one more factor (their width), never
+larger than the largest plan. Each combination is packed as foreseen
+(:func:`drawing.layout.pack`): a view's size at any scale is foreseen from the view drawn
+at the factor's largest and smallest candidates (its drawing grows as 1/μ, its caption
+and equations do not). The first combination that packs is drawn and packed for real;
+a combination whose views are none smaller than those of one that did not pack is not
+tried.
+"""
+
+from __future__ import annotations
+
+import itertools
+
+from drawing.layout import LayoutError, pack, place_views
+from drawing.views import CAPTION, CAPTION_OVER, SMALL_CAPTION
+
+__all__ = ["SIZES", "Fit"]
+
+#: the views' sizes tried, as multiples of the engine's default drawing sizes (a plan's
+#: crank vector 80 mm and its longest vector 150 mm, the plan of positions 150 mm
+#: across): the largest and the smallest. The plan of positions may be larger still,
+#: up to the field's longer side
+SIZES = (3.0, 0.5)
+#: mm added to a view's foreseen size, for letters that land otherwise at another scale
+SLACK = 3.0
+
+
+class Fit:
+    """The views of one sheet at the scale factors that fill it (see the module).
+
+    ``draw(key, value)`` draws the views the factor ``key`` ("mu_l", "mu_v", "mu_a")
+    sizes at ``value``; ``fixed`` are the views no free factor sizes; ``factors`` gives
+    each free factor's candidates, largest views first, with the size of its views at
+    each (as a multiple of the engine's default size); ``order``, the views' names in
+    the order they are packed (the plan of positions first: top left where it fits).
+    """
+
+    def __init__(self, sheet, factors: list[tuple[str, list[float], list[float]]], draw,
+                 fixed: list, order: list[str], exact: set[str] = frozenset()):
+        self.sheet, self.factors, self.draw, self.fixed = sheet, factors, draw, fixed
+        self.exact = exact  # the factors whose views are drawn at every candidate
+        self.order = order  # the views' names in the order they are packed
+        self._drawn: dict[tuple[str, float], list] = {}
+
+    def views(self, key: str, value: float) -> list:
+        """The views ``key`` sizes, drawn at ``value`` (each drawn once)."""
+        got = self._drawn.get((key, value))
+        if got is None:
+            got = self._drawn[(key, value)] = self.draw(key, value)
+        return got
+
+    def foreseen(self, key: str, values: list[float]) -> list[list[tuple[float, float]]]:
+        """For each candidate, the (w, h) of each view the factor sizes."""
+        if key in self.exact or len(values) <= 2:
+            return [[(v.w, v.h) for v in self.views(key, value)] for value in values]
+        big, small = self.views(key, values[0]), self.views(key, values[-1])
+        k0, k1 = 1 / values[0], 1 / values[-1]
+        out = []
+        for value in values:
+            if value in (values[0], values[-1]):
+                out.append([(v.w, v.h) for v in self.views(key, value)])
+                continue
+            t = (1 / value - k1) / (k0 - k1)  # 1 at the largest views, 0 at the smallest
+            sizes = []
+            for a, b in zip(big, small, strict=True):
+                bw, bh = (q + t * (p - q) for p, q in zip(a.body, b.body, strict=True))
+                cap, under = a.texts  # the caption's width at CAPTION
+                if cap > bw + CAPTION_OVER:
+                    cap *= SMALL_CAPTION / CAPTION
+                # the caption is centred on the drawing, the equations start at its left
+                w = max(bw, (bw + cap) / 2, under) - min(0.0, (bw - cap) / 2) + 2.0
+                h = bh + max(a.h - a.body[1], b.h - b.body[1])
+                sizes.append((w + SLACK, h + SLACK))
+            out.append(sizes)
+        return out
+
+    def best(self) -> dict[str, float]:
+        """The free factors' values; :class:`LayoutError` (why, from the smallest
+        views) when even those do not fit."""
+        sizes = [self.foreseen(k, vals) for k, vals, _ in self.factors]
+        rest = [(v.w, v.h) for v in self.fixed]
+        field = self.sheet.drawing_area().area
+        combos = []
+        keys = [k for k, _, _ in self.factors]
+        for idx in itertools.product(*(range(len(v)) for _, v, _ in self.factors)):
+            if "diagrams" in keys:  # no larger than the largest plan, nor than the default
+                d = keys.index("diagrams")
+                plans = [size[i] for f, ((_, _, size), i) in enumerate(zip(self.factors, idx, strict=True)) if f != d]
+                if self.factors[d][2][idx[d]] > max([1.0, *plans]) + 1e-9:
+                    continue
+            # the smallest view's size first, then the next: no view is given up for another
+            rank = tuple(-s for s in sorted(round(size[i], 6) for (_, _, size), i in
+                                            zip(self.factors, idx, strict=True)))
+            boxes = self._ordered(idx, sizes, rest)
+            area = sum(w * h for w, h in boxes)
+            combos.append((rank, -area, idx, boxes))
+        combos.sort(key=lambda c: c[:2])
+        failed: list[tuple[int, ...]] = []
+        for _, area, idx, boxes in combos:
+            if any(all(i <= j for i, j in zip(idx, f, strict=True)) for f in failed):
+                continue  # no view smaller than in one that did not pack
+            if -area > field or pack(self.sheet, boxes) is None:
+                failed.append(idx)
+                continue
+            mu = self._values(idx)
+            try:
+                place_views(self.sheet, self._all(mu))
+            except LayoutError:  # foreseen too small: drawn, it does not pack
+                failed.append(idx)
+                continue
+            return mu
+        mu = self._values(tuple(len(v) - 1 for _, v, _ in self.factors))
+        place_views(self.sheet, self._all(mu))  # the smallest views: why they do not fit
+        return mu  # they do, foreseen larger than they are
+
+    def _ordered(self, idx, sizes, rest) -> list[tuple[float, float]]:
+        """The foreseen boxes of a combination, in packing order."""
+        named = [(v.name, box) for f, ((key, vals, _), i) in enumerate(zip(self.factors, idx, strict=True))
+                 for v, box in zip(self.views(key, vals[0]), sizes[f][i], strict=True)]
+        named += [(v.name, box) for v, box in zip(self.fixed, rest, strict=True)]
+        return [box for _, box in sorted(named, key=lambda nb: self.order.index(nb[0]))]
+
+    def _values(self, idx) -> dict[str, float]:
+        return {k: vals[i] for (k, vals, _), i in zip(self.factors, idx, strict=True)}
+
+    def arranged(self, views: list) -> list:
+        """``views`` in the order they are packed."""
+        return sorted(views, key=lambda v: self.order.index(v.name))
+
+    def _all(self, mu: dict[str, float]) -> list:
+        return self.arranged([v for k, value in mu.items() for v in self.views(k, value)]
+                             + list(self.fixed))
