@@ -147,8 +147,9 @@ def _views_of_any_size(mech, solver, cycle, lang) -> _AnySize:
 
 
 #: mm: the kinematic diagrams' widths tried (one turn of the crank), with the height of
-#: each of the three; 180 mm is 15 mm per position of twelve, 360 mm 1° per mm
-DIAGRAMS = {360.0: 60.0, 300.0: 55.0, 240.0: 50.0, 180.0: 40.0}
+#: each of the three; 180 mm is 15 mm per position of twelve, 360 mm 1° per mm, 120 mm
+#: what an A3 sheet beside the plans has room for
+DIAGRAMS = {360.0: 60.0, 300.0: 55.0, 240.0: 50.0, 180.0: 40.0, 144.0: 32.0, 120.0: 28.0}
 
 
 class _Sheet1:
@@ -222,23 +223,28 @@ class _Sheet1:
         if self.fixed.curves is not None:
             widths = sorted(DIAGRAMS, reverse=True)
             out.append(("diagrams", widths, [w / 180 for w in widths]))
+        out.append(("segments", [1, 2], [1.0, 1.0]))  # one table, or its rows in two halves
         return out
 
-    def draw(self, key: str, value: float, mu: dict[str, float] | None = None) -> list:
-        """The views the factor ``key`` sizes, drawn at ``value``."""
+    def draw(self, key: str, value: float, mu: dict[str, float] | None = None,
+             sizing: bool = False) -> list:
+        """The views the factor ``key`` sizes, drawn at ``value`` (``sizing``: without
+        their letters, as large as those could make them)."""
         from drawing import views as V
 
         if key == "diagrams":
             return [V.diagrams_view(self.mech, self.cycle, self.lang, value, DIAGRAMS[value],
                                     curves=self.fixed.curves)]
+        if key == "segments":
+            return [V.segments_table_view(self._tabsols(mu or self.mu0), self.lang, value)]
         mu = dict(mu or self.mu0, **{key: value})
         if key == "mu_l":
             from plans.plan import solve_position
 
             return [V.positions_view(solve_position(self.mech, solver=self.solver, mu=mu),
-                                     self.cycle, self.lang)]
+                                     self.cycle, self.lang, sizing=sizing)]
         kind = "velocity" if key == "mu_v" else "acceleration"
-        return [V.plan_view(sol, kind, tag, self.lang, label)
+        return [V.plan_view(sol, kind, tag, self.lang, label, sizing=sizing)
                 for tag, label, sol in self.titled(mu)]
 
     def others(self, mu: dict[str, float]) -> list:
@@ -250,38 +256,83 @@ class _Sheet1:
         for key in ("mu_l", "mu_v", "mu_a"):
             if key in self.mech.scales:
                 out += self.draw(key, self.mech.scales[key], mu)
-        tabsols = [(tag if tag != "g" else "φ", sol) for tag, _, sol in self.titled(mu)]
-        out.append(V.segments_table_view(tabsols, self.lang))
-        out.append(V.omega_table_view(tabsols, self.lang))
+        out.append(V.omega_table_view(self._tabsols(mu), self.lang))
         if self.fixed.notes:
-            out.append(V.note_view(self.fixed.notes))
+            from drawing.layout import field
+
+            (x0, _, x1, _), _ = field(self.sheet)  # wrapped to the field, 180 mm at most
+            out.append(V.note_view(self.fixed.notes, width=min(180.0, x1 - x0)))
         return out
+
+    def _tabsols(self, mu: dict[str, float]) -> list[tuple[str, object]]:
+        """The tables' columns: each position by its number ("φ" for the given one)."""
+        return [(tag if tag != "g" else "φ", sol) for tag, _, sol in self.titled(mu)]
 
     def order(self) -> list[str]:
         tags = ["g"] if self.chosen is None else [str(k) for k in self.chosen]
         return (["positions"] + [f"{kind}-{t}" for t in tags for kind in ("velocity", "acceleration")]
                 + ["diagrams", "segments", "angular", "note"])
 
-    def fill(self):
-        """(μ of every factor, the views placed)."""
+    def fill(self, suggest: bool = True):
+        """(μ of every factor, the views placed). Where even the smallest views do not
+        fit, :class:`LayoutError` says what they need, and (``suggest``) which larger
+        format holds them."""
         from drawing.fit import Fit
-        from drawing.layout import place_views, spread
+        from drawing.layout import LayoutError, place_views, spread
 
         factors = self.factors()
         mu_free = {k: v[-1] for k, v, _ in factors}
+        mu_free = {k: v for k, v in mu_free.items() if k in ("mu_l", "mu_v", "mu_a")}
         fit = Fit(self.sheet, factors, self.draw, self.others(dict(self.mu0, **mu_free)),
-                  self.order(), exact={"diagrams"})
-        chosen = fit.best()
-        views = [v for k, value in chosen.items() for v in fit.views(k, value)]
-        mu = {k: v for k, v in chosen.items() if k != "diagrams"}
+                  self.order(), plain={"segments"})
+        try:
+            chosen = fit.best()
+        except LayoutError as exc:
+            if exc.option != "--format" or not suggest:
+                raise
+            raise LayoutError(self._no_room(fit), "--format") from None
+        mu = {k: v for k, v in chosen.items() if k in ("mu_l", "mu_v", "mu_a")}
         full = dict(self.mu0, **{k: v for k, v in self.mech.scales.items() if k in ("mu_l", "mu_v", "mu_a")},
                     **mu)
+        views = [v for k, value in chosen.items()
+                 for v in (self.draw(k, value, full) if k == "segments" else fit.views(k, value))]
         placed = place_views(self.sheet, fit.arranged(views + self.others(full)))
         if not any(k in self.mech.scales for k in ("mu_l", "mu_v", "mu_a")):
             # at their largest and still leaving room: spread over the field. Views at
             # the scales a file fixes stay together, the share they take said in a note
             placed = spread(self.sheet, placed)
         return mu, placed
+
+
+    def _no_room(self, fit) -> str:
+        """Why sheet 1 does not fit this format: what its views need at their smallest,
+        and the smallest format that holds them."""
+        from drawing.layout import describe, field
+        from drawing.sheet import FORMATS, Sheet
+
+        smallest = {k: v[0] if k in fit.plain else v[-1] for k, v, _ in fit.factors}
+        views = fit.arranged([v for k, value in smallest.items() for v in fit.views(k, value)]
+                             + list(fit.fixed))
+        (x0, y0, x1, y1), _ = field(self.sheet)
+        need = ", ".join(f"{describe(v)} {v.w:.0f} × {v.h:.0f} mm" for v in views)
+        names = list(FORMATS)
+        holds = None
+        for name in reversed(names[:names.index(self.sheet.name)]):  # the next larger first
+            other = _Sheet1(self.mech, Sheet(name), self.solver, self.cycle, self.chosen,
+                            self.lang, self.fixed, self.given, self.mu0)
+            try:
+                other.fill(suggest=False)
+            except Exception:  # noqa: BLE001 - any failure there: that format does not hold it
+                continue
+            holds = name
+            break
+        fewer = (" or draw fewer positions' plans (--plans)"
+                 if self.chosen is not None and len(self.chosen) > 1 else "")
+        where = (f"{holds} holds it: use --format {holds}{fewer}" if holds
+                 else f"no format holds it{fewer}")
+        return (f"sheet 1 does not fit on {self.sheet.name}, whose field is {x1 - x0:.0f} × "
+                f"{y1 - y0:.0f} mm less the 185 × 55 mm title block: at their smallest scales "
+                f"its views need {need}; {where}")
 
 
 def _compose(mech, sheet, cycle, mu, lang, title, placed, sols):
@@ -312,8 +363,8 @@ def render(mech, args) -> tuple[str, str | None]:
     try:
         scene, sheet, info = build_sheet(mech, args.format, args.lang, args.positions, plans,
                                          args.title_block)
-    except LayoutError as exc:
-        raise InputError(exc.option or mech.source, str(exc)) from None
+    except LayoutError as exc:  # named by its file (or its table's variant), not an option
+        raise InputError(mech.source, str(exc)) from None
     if (note := sparse_note(mech, sheet, info["placed"])) is not None:
         print(f"plans sheet: note: {mech.source}: {note}", file=sys.stderr)
     for _, _, sol in info["solutions"]:  # a plan drawn near a dead point is said so
@@ -414,8 +465,10 @@ def _batch(args) -> int:
             _write(render(mech, a), a)
         except (PlansError, ValueError, ArithmeticError) as exc:
             source = getattr(exc, "source", "")  # an input error names its source itself
-            failed.append((n, str(exc) if isinstance(exc, InputError) or not source
-                           else f"{source}: {exc}"))
+            msg = str(exc) if isinstance(exc, InputError) or not source else f"{source}: {exc}"
+            if f"variant {n}:" not in msg.split("\n")[0]:  # named by an option (--plans)
+                msg = "\n".join(f"variant {n}: {line}" for line in msg.split("\n"))
+            failed.append((n, msg))
     if tty:
         print(file=sys.stderr)
     for _, msg in failed:

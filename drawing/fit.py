@@ -13,9 +13,9 @@ the one whose smallest view (as a multiple of its default size) is largest, then
 next smallest, and so on, so that no view is shrunk for another to grow; then by the
 area the views cover. The kinematic diagrams are one more factor (their width), never
 larger than the largest plan. Each combination is packed as foreseen
-(:func:`drawing.layout.pack`): a view's size at any scale is foreseen from the view drawn
-at the factor's largest and smallest candidates (its drawing grows as 1/μ, its caption
-and equations do not). The first combination that packs is drawn and packed for real;
+(:func:`drawing.layout.pack`): a view's size at each candidate is that of the view drawn
+without its letters, with the room they may take around the drawing (placing them is
+what takes the time). The first combination that packs is drawn and packed for real;
 a combination whose views are none smaller than those of one that did not pack is not
 tried.
 """
@@ -25,7 +25,6 @@ from __future__ import annotations
 import itertools
 
 from drawing.layout import LayoutError, pack, place_views
-from drawing.views import CAPTION, CAPTION_OVER, SMALL_CAPTION
 
 __all__ = ["SIZES", "Fit"]
 
@@ -34,26 +33,27 @@ __all__ = ["SIZES", "Fit"]
 #: across): the largest and the smallest. The plan of positions may be larger still,
 #: up to the field's longer side
 SIZES = (3.0, 0.5)
-#: mm added to a view's foreseen size, for letters that land otherwise at another scale
-SLACK = 3.0
+#: the factors whose views are lettered: drawn without their letters to be sized
+LETTERED = ("mu_l", "mu_v", "mu_a")
 
 
 class Fit:
     """The views of one sheet at the scale factors that fill it (see the module).
 
-    ``draw(key, value)`` draws the views the factor ``key`` ("mu_l", "mu_v", "mu_a")
-    sizes at ``value``; ``fixed`` are the views no free factor sizes; ``factors`` gives
+    ``draw(key, value, sizing=False)`` draws the views the factor ``key`` sizes at
+    ``value`` (``sizing``: without their letters, as large as those could make them); ``fixed`` are the views no free factor sizes; ``factors`` gives
     each free factor's candidates, largest views first, with the size of its views at
     each (as a multiple of the engine's default size); ``order``, the views' names in
     the order they are packed (the plan of positions first: top left where it fits).
     """
 
     def __init__(self, sheet, factors: list[tuple[str, list[float], list[float]]], draw,
-                 fixed: list, order: list[str], exact: set[str] = frozenset()):
+                 fixed: list, order: list[str], plain: set[str] = frozenset()):
         self.sheet, self.factors, self.draw, self.fixed = sheet, factors, draw, fixed
-        self.exact = exact  # the factors whose views are drawn at every candidate
+        self.plain = plain  # the factors that only change a view's shape: the first that packs
         self.order = order  # the views' names in the order they are packed
         self._drawn: dict[tuple[str, float], list] = {}
+        self._names: dict[str, list[str]] = {}
 
     def views(self, key: str, value: float) -> list:
         """The views ``key`` sizes, drawn at ``value`` (each drawn once)."""
@@ -63,28 +63,16 @@ class Fit:
         return got
 
     def foreseen(self, key: str, values: list[float]) -> list[list[tuple[float, float]]]:
-        """For each candidate, the (w, h) of each view the factor sizes."""
-        if key in self.exact or len(values) <= 2:
-            return [[(v.w, v.h) for v in self.views(key, value)] for value in values]
-        big, small = self.views(key, values[0]), self.views(key, values[-1])
-        k0, k1 = 1 / values[0], 1 / values[-1]
+        """For each candidate, the (w, h) of each view the factor sizes: as large as its
+        letters could make it, drawn without them (placing letters is what takes time)."""
         out = []
         for value in values:
-            if value in (values[0], values[-1]):
-                out.append([(v.w, v.h) for v in self.views(key, value)])
-                continue
-            t = (1 / value - k1) / (k0 - k1)  # 1 at the largest views, 0 at the smallest
-            sizes = []
-            for a, b in zip(big, small, strict=True):
-                bw, bh = (q + t * (p - q) for p, q in zip(a.body, b.body, strict=True))
-                cap, under = a.texts  # the caption's width at CAPTION
-                if cap > bw + CAPTION_OVER:
-                    cap *= SMALL_CAPTION / CAPTION
-                # the caption is centred on the drawing, the equations start at its left
-                w = max(bw, (bw + cap) / 2, under) - min(0.0, (bw - cap) / 2) + 2.0
-                h = bh + max(a.h - a.body[1], b.h - b.body[1])
-                sizes.append((w + SLACK, h + SLACK))
-            out.append(sizes)
+            if key in LETTERED:
+                drawn = self.draw(key, value, sizing=True)
+            else:  # no letters to leave out: drawn once for both
+                drawn = self.views(key, value)
+            self._names[key] = [v.name for v in drawn]
+            out.append([(v.w, v.h) for v in drawn])
         return out
 
     def best(self) -> dict[str, float]:
@@ -95,23 +83,27 @@ class Fit:
         field = self.sheet.drawing_area().area
         combos = []
         keys = [k for k, _, _ in self.factors]
+        ranked = [f for f, k in enumerate(keys) if k not in self.plain]
         for idx in itertools.product(*(range(len(v)) for _, v, _ in self.factors)):
+            sized = [self.factors[f][2][idx[f]] for f in ranked]
             if "diagrams" in keys:  # no larger than the largest plan, nor than the default
                 d = keys.index("diagrams")
-                plans = [size[i] for f, ((_, _, size), i) in enumerate(zip(self.factors, idx, strict=True)) if f != d]
+                plans = [size for f, size in zip(ranked, sized, strict=True) if f != d]
                 if self.factors[d][2][idx[d]] > max([1.0, *plans]) + 1e-9:
                     continue
             # the smallest view's size first, then the next: no view is given up for another
-            rank = tuple(-s for s in sorted(round(size[i], 6) for (_, _, size), i in
-                                            zip(self.factors, idx, strict=True)))
+            rank = tuple(-s for s in sorted(round(x, 6) for x in sized))
+            shape = tuple(i for f, i in enumerate(idx) if f not in ranked)
             boxes = self._ordered(idx, sizes, rest)
             area = sum(w * h for w, h in boxes)
-            combos.append((rank, -area, idx, boxes))
+            combos.append(((rank, shape), -area, idx, boxes))
         combos.sort(key=lambda c: c[:2])
         failed: list[tuple[int, ...]] = []
+        ranks = [f in ranked for f in range(len(keys))]
         for _, area, idx, boxes in combos:
-            if any(all(i <= j for i, j in zip(idx, f, strict=True)) for f in failed):
-                continue  # no view smaller than in one that did not pack
+            if any(all(i <= j if r else i == j for i, j, r in zip(idx, f, ranks, strict=True))
+                   for f in failed):
+                continue  # no view smaller than in one of its shape that did not pack
             if -area > field or pack(self.sheet, boxes) is None:
                 failed.append(idx)
                 continue
@@ -128,8 +120,8 @@ class Fit:
 
     def _ordered(self, idx, sizes, rest) -> list[tuple[float, float]]:
         """The foreseen boxes of a combination, in packing order."""
-        named = [(v.name, box) for f, ((key, vals, _), i) in enumerate(zip(self.factors, idx, strict=True))
-                 for v, box in zip(self.views(key, vals[0]), sizes[f][i], strict=True)]
+        named = [(name, box) for f, ((key, _, _), i) in enumerate(zip(self.factors, idx, strict=True))
+                 for name, box in zip(self._names[key], sizes[f][i], strict=True)]
         named += [(v.name, box) for v, box in zip(self.fixed, rest, strict=True)]
         return [box for _, box in sorted(named, key=lambda nb: self.order.index(nb[0]))]
 

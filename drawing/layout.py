@@ -21,8 +21,8 @@ from shapely.geometry import box
 from drawing.scene import Group, Rect
 from drawing.sheet import Sheet
 
-__all__ = ["LayoutError", "Placed", "pack", "place_views", "share_covered", "share_used",
-           "spread"]
+__all__ = ["LayoutError", "Placed", "describe", "pack", "place_views", "share_covered",
+           "share_used", "spread"]
 
 GAP = 6.0
 MARGIN = 4.0
@@ -176,20 +176,33 @@ def share_covered(sheet: Sheet, placed: list[Placed]) -> float:
     return sum(p.rect.w * p.rect.h for p in placed) / sheet.drawing_area().area
 
 
+def describe(view) -> str:
+    """A view as the user knows it: "the velocity plan of position 2"."""
+    kind, _, tag = view.name.partition("-")
+    of = "" if tag in ("", "g") else f" of position {tag}"
+    words = {"positions": "the plan of positions", "velocity": "the velocity plan",
+             "acceleration": "the acceleration plan", "diagrams": "the kinematic diagrams",
+             "segments": "the table of plan segments", "angular": "the table of ω and ε",
+             "note": "the note"}
+    return words.get(kind, f"the view {view.name!r}") + of
+
+
 def _why_not(sheet: Sheet, views) -> tuple[str, str]:
     """Why the views found no place, and the option to change (see
     :class:`LayoutError`)."""
     x0, y0, x1, y1 = Sheet("A0").drawing_area().bounds
     for v in views:
-        size = f"the view {v.name!r} ({v.w:.0f} × {v.h:.0f} mm)"
+        size = f"{describe(v)} ({v.w:.0f} × {v.h:.0f} mm)"
         if min(v.w, v.h) > min(x1 - x0, y1 - y0) or max(v.w, v.h) > max(x1 - x0, y1 - y0):
             if v.name == "positions":  # the sheet's own μl always fits: the file fixed it
                 return (f"{size} is larger than any sheet, A0 included, at the μl the file "
                         "fixes: give a larger mu_l in [scales], or leave it out for the sheet "
                         "to choose"), ""
-            return (f"{size} is larger than any sheet, A0 included: the plans' scale factors "
-                    "are chosen at the given position, and this position needs far larger ones; "
-                    "choose other --plans or give mu_v and mu_a in [scales]"), "--plans"
-    v = max(views, key=lambda v: v.w * v.h)
-    return (f"the view {v.name!r} ({v.w:.0f} × {v.h:.0f} mm) does not fit on {sheet.name} "
-            "beside the others; try a larger --format or fewer --plans"), "--format"
+            return (f"{size} is larger than any sheet, A0 included, at the scale factors the "
+                    "file fixes: give larger mu_v and mu_a in [scales] (or leave them out for "
+                    "the sheet to choose), or choose other --plans"), "--plans"
+    (fx0, fy0, fx1, fy1), _ = field(sheet)
+    need = ", ".join(f"{describe(v)} {v.w:.0f} × {v.h:.0f} mm" for v in views)
+    return (f"the views do not fit together on {sheet.name}, whose field is {fx1 - fx0:.0f} × "
+            f"{fy1 - fy0:.0f} mm less the 185 × 55 mm title block ({need}): take a larger "
+            "--format"), "--format"

@@ -237,13 +237,18 @@ def _finish(
     under: list[str] = (),
     pad: float = PAD,
     over: list[Item] = (),
+    sizing: bool = False,
 ) -> View:
     """Frame ``drawing`` with room for its labels, letter it, caption on top,
     ``under`` (equations) below; shift everything to the box (0, 0)–(w, h). ``over``:
-    thin lines that no break cuts (a dimension's own arc), drawn after the breaks."""
+    thin lines that no break cuts (a dimension's own arc), drawn after the breaks.
+    ``sizing``: no letters placed, the view as large as they could make it (they stay
+    within ``pad`` of the drawing), for a sheet that tries many scales."""
     drawing = list(drawing)
     x0, y0, x1, y1 = _bbox(drawing + list(over))
     region = shp_box(x0 - pad, y0 - pad, x1 + pad, y1 + pad)
+    if sizing:
+        return _captioned(name, list(drawing) + list(over), region.bounds, caption, under)
     thin = (LineType.THIN, LineType.DASHED, LineType.DASH_DOUBLE_DOT_THIN)
     is_soft = [isinstance(it, Segment | Polyline) and it.line in thin for it in drawing]
     drawing += over
@@ -261,7 +266,12 @@ def _finish(
         drawing = ([it for it, s in zip(drawing, is_soft, strict=True) if s] + blanks
                    + [it for it, s in zip(drawing, is_soft, strict=True) if not s])
     items = list(drawing) + texts
-    x0, y0, x1, y1 = _bbox(items)
+    return _captioned(name, items, _bbox(items), caption, under)
+
+
+def _captioned(name: str, items: list[Item], bounds, caption: str, under: list[str]) -> View:
+    """The view of ``items`` (within ``bounds``) under ``caption``, ``under`` below."""
+    x0, y0, x1, y1 = bounds
     top = y0 - 2.0
     cap = centred(((x0 + x1) / 2, top), caption, caption_size(caption, x1 - x0))
     cap = translate(cap, 0.0, y0 - 1.5 - text_box(cap).bounds[3])
@@ -273,6 +283,7 @@ def _finish(
         items.append(Text((x0, y), notation(line), size=2.5, markup=True, baseline="alphabetic"))
         widths.append(text_box(items[-1]).bounds[2] - x0)
     bx0, by0, bx1, by1 = _bbox(items)
+    bx0, by0, bx1, by1 = min(bx0, x0), min(by0, y0), max(bx1, x1), max(by1, y1)
     items = _shift(items, -bx0 + 1, -by0 + 1)
     return View(name, items, bx1 - bx0 + 2, by1 - by0 + 2, (x1 - x0, y1 - y0),
                 (_width(centred((0, 0), caption, CAPTION)), max(widths)))
@@ -298,7 +309,8 @@ def _plan_xy(value: complex, mu: float) -> tuple[float, float]:
     return (z.real, -z.imag)
 
 
-def plan_view(sol, kind: str, tag: str, lang: str = "ru", label: str | None = None) -> View:
+def plan_view(sol, kind: str, tag: str, lang: str = "ru", label: str | None = None,
+              sizing: bool = False) -> View:
     """The velocity (``kind="velocity"``) or acceleration plan of ``sol``.
 
     ``tag`` distinguishes the position (``"3"``) in the ids of its vectors.
@@ -351,7 +363,7 @@ def plan_view(sol, kind: str, tag: str, lang: str = "ru", label: str | None = No
     for p in plan.points.values():
         if p.source.kind == "intersection" and p.source.equation:
             eqs.append(p.source.equation)
-    return _finish(f"{kind}-{tag}", items, reqs, caption, eqs)
+    return _finish(f"{kind}-{tag}", items, reqs, caption, eqs, sizing=sizing)
 
 
 # ----------------------------------------------------------------- positions
@@ -489,7 +501,7 @@ def _support(xy: tuple[float, float]) -> list[Item]:
     ]
 
 
-def positions_view(sol, cycle, lang: str = "ru") -> View:
+def positions_view(sol, cycle, lang: str = "ru", sizing: bool = False) -> View:
     """Plan of positions at μl: the given position heavy, the cycle's positions
     and the two extreme ones thin, trajectories, pivots, sliders, stroke H; the positions
     drawn are the engine's (:func:`plans.positions.drawn`, worked out once per solver)."""
@@ -589,7 +601,8 @@ def positions_view(sol, cycle, lang: str = "ru") -> View:
     caption = f"{w['positions']}, μ_l = {num(mu_l, 4, lang)} {w['m']}/{w['mm']}"
     under = [w["left_off"].format(k=", ".join(map(str, shown.left_off)),
                                   d=num(shown.limit, 2, lang))] if shown.left_off else []
-    return _finish("positions", items, labels, caption, under, pad=8.0, over=over)
+    return _finish("positions", items, labels, caption, under, pad=8.0, over=over,
+                   sizing=sizing)
 
 
 def _stroke_dimension(items, p1, p2, direction: complex, value: str) -> list[Item]:
@@ -765,7 +778,29 @@ def _nice(x: float) -> float:
 
 
 def _table(name: str, caption: str, header: list[str], rows: list[list[str]],
-           widths: list[float], row_h: float = 7.0) -> View:
+           widths: list[float], row_h: float = 7.0, parts: int = 1) -> View:
+    """A table under its caption; ``parts`` > 1 sets its rows in that many tables side
+    by side, each under the header (a tall table on a small sheet)."""
+    items: list[Item] = []
+    total_w = sum(widths)
+    per = -(-len(rows) // max(1, parts))  # rows of each part, the last one's fewer
+    chunks = [rows[i:i + per] for i in range(0, len(rows), per)] or [[]]
+    for k, chunk in enumerate(chunks):
+        items += _shift(_grid(header, chunk, widths, row_h), k * (total_w + PART_GAP), 0.0)
+    span = len(chunks) * total_w + (len(chunks) - 1) * PART_GAP
+    cap = centred((span / 2, -2.0), caption, caption_size(caption, span))
+    items.append(translate(cap, 0.0, -1.5 - text_box(cap).bounds[3]))
+    bx0, by0, bx1, by1 = _bbox(items)
+    items = _shift(items, -bx0 + 1, -by0 + 1)
+    return View(name, items, bx1 - bx0 + 2, by1 - by0 + 2)
+
+
+#: mm between the parts of a table set side by side
+PART_GAP = 6.0
+
+
+def _grid(header: list[str], rows: list[list[str]], widths: list[float], row_h: float) -> list[Item]:
+    """The lines and cells of one table, its top-left corner at (0, 0)."""
     items: list[Item] = []
     total_w = sum(widths)
     n = len(rows) + 1
@@ -786,15 +821,12 @@ def _table(name: str, caption: str, header: list[str], rows: list[list[str]],
                 t = centred(pos, cell, size, "middle", max(0.5, (wd - 1.5) / (bw[2] - bw[0])))
             items.append(t)
             x += wd
-    cap = centred((total_w / 2, -2.0), caption, CAPTION)
-    items.append(translate(cap, 0.0, -1.5 - text_box(cap).bounds[3]))
-    bx0, by0, bx1, by1 = _bbox(items)
-    items = _shift(items, -bx0 + 1, -by0 + 1)
-    return View(name, items, bx1 - bx0 + 2, by1 - by0 + 2)
+    return items
 
 
-def segments_table_view(sols: list[tuple[str, object]], lang: str = "ru") -> View:
-    """Segments of both plans (mm) and their values (SI) for the chosen positions."""
+def segments_table_view(sols: list[tuple[str, object]], lang: str = "ru", parts: int = 1) -> View:
+    """Segments of both plans (mm) and their values (SI) for the chosen positions, in
+    ``parts`` tables side by side."""
     w = WORDS[lang]
     header = [w["segment"]]
     for tag, _ in sols:
@@ -821,7 +853,7 @@ def segments_table_view(sols: list[tuple[str, object]], lang: str = "ru") -> Vie
                 row += ["—", "—"]
         rows.append(row)
     widths = [40.0] + [22.0, 28.0] * len(sols)
-    return _table("segments", w["segments"], header, rows, widths, row_h=6.0)
+    return _table("segments", w["segments"], header, rows, widths, row_h=6.0, parts=parts)
 
 
 def omega_table_view(sols: list[tuple[str, object]], lang: str = "ru") -> View:
@@ -850,12 +882,29 @@ def _signed(x: float, lang: str) -> str:
 
 
 def note_view(lines: list[str], width: float = 180.0) -> View:
+    """Lines of text at 3.5 mm, each broken at spaces into lines ``width`` mm long at
+    most."""
     items: list[Item] = []
     y = 0.0
     for line in lines:
-        y += 5.0
-        items.append(Text((0, y), line, size=3.5))
+        for part in _wrapped(line, 3.5, width - 2.0):
+            y += 3.5 * 1.7
+            items.append(Text((0, y), part, size=3.5))
     bx0, by0, bx1, by1 = _bbox(items)
     items = _shift(items, -bx0 + 1, -by0 + 1)
     return View("note", items, bx1 - bx0 + 2, by1 - by0 + 2)
 
+
+def _wrapped(text: str, size: float, width: float) -> list[str]:
+    """``text`` broken at spaces into lines no wider than ``width`` (a word longer than
+    that stands alone on its line)."""
+    out: list[str] = []
+    for word in text.split():
+        if out and text_width(f"{out[-1]} {word}", size) + SLANT_ROOM * size <= width:
+            out[-1] = f"{out[-1]} {word}"
+        else:
+            out.append(word)
+    return out or [""]
+
+
+SLANT_ROOM = 0.27  # tan 15°, the lean of the last letter, in h

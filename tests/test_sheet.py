@@ -413,7 +413,7 @@ def test_a_view_no_sheet_can_hold_is_blamed_on_the_mechanism_not_the_format(caps
     out = tmp_path / "t.svg"
     code, _, err = run(capsys, "sheet", path, "-o", out, "--format", "A0")
     assert code == 2 and not out.exists()
-    assert err.startswith(f"plans sheet: {path}: the view 'positions' (")
+    assert err.startswith(f"plans sheet: {path}: the plan of positions (")  # not its id
     assert "is larger than any sheet, A0 included, at the μl the file fixes" in err
     assert "--format" not in err
 
@@ -780,3 +780,55 @@ def test_plans_of_two_positions_are_drawn_large_on_a2(name):
     placed = info["placed"]
     assert sum(p.rect.w * p.rect.h for p in placed) / sheet.drawing_area().area >= 0.5
     _boxes_clear(sheet, placed)
+
+
+@pytest.mark.parametrize("key", [3, 8])
+def test_a3_holds_sheet_1_its_diagrams_and_tables_sized_to_the_field(key):
+    """On A3 six of the ten variants were refused: the diagrams were 190 mm wide whatever
+    the sheet, the segments table one 92 × 124 mm block. The diagrams now narrow to the
+    field (down to 120 mm) and a tall table may set its rows side by side."""
+    _, scene, sheet, info, _ = _sheet(key, "A3")
+    _boxes_clear(sheet, info["placed"])
+    assert overlaps([it for it in scene.items() if isinstance(it, Text)]) == []
+
+
+def test_a_long_note_is_wrapped_to_the_sheet(tmp_path):
+    """The four-bar's one-line note (why there are no diagrams) was 430 mm long and never
+    wrapped: the A3 sheet was refused for it."""
+    _, scene, sheet, info, _ = _sheet("fourbar", "A3")
+    (note,) = [p for p in info["placed"] if p.view.name == "note"]
+    assert note.rect.w <= 182 and len([t for t in note.view.items if isinstance(t, Text)]) > 1
+    _boxes_clear(sheet, info["placed"])
+
+
+def test_a4_says_in_one_line_what_sheet_1_needs_and_which_format_holds_it(capsys, tmp_path):
+    """A4 (a 177 mm wide field over a full-width title block) cannot hold sheet 1: the
+    error named the internal view 'diagrams', blamed --plans no one gave and named no
+    format. It now says what the views need and that A3 holds them, in one line."""
+    from support import run
+
+    out = tmp_path / "s.svg"
+    code, _, err = run(capsys, "sheet", "--variant", "6", "--format", "A4", "-o", out)
+    assert code == 2 and not out.exists() and len(err.splitlines()) == 1
+    assert err.startswith("plans sheet: Table 2 (built in), variant 6: sheet 1 does not fit "
+                          "on A4, whose field is 177 × 279 mm less the 185 × 55 mm title block: ")
+    for words in ("the plan of positions", "the velocity plan", "the acceleration plan",
+                  "the kinematic diagrams", "the table of plan segments"):
+        assert words in err
+    assert err.endswith("; A3 holds it: use --format A3\n")
+    assert "'" not in err and "--plans" not in err
+
+
+def test_every_failed_sheet_of_a_batch_names_its_variant(capsys, tmp_path):
+    """sheet --variant all --format A4 printed ten errors without saying whose."""
+    from support import run
+
+    table = tmp_path / "t.toml"
+    table.write_text("[[variant]]\nn = 1\nAB = 0.06\nBC = 0.16\nCD = 0.12\nAD = 0.11\n"
+                     "phi_deg = 50\nrpm = 115\n", "utf-8")
+    code, _, err = run(capsys, "sheet", "--variant", "all", "--table", table, "--format",
+                       "A4", "-o", f"{tmp_path}/s/")
+    assert code == 2
+    first, last = err.splitlines()
+    assert first.startswith("plans sheet: ") and "variant 1: sheet 1 does not fit on A4" in first
+    assert last == "plans sheet: 1 of 1 sheets failed"
