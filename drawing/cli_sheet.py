@@ -30,11 +30,15 @@ from plans.errors import InputError, PlansError, SingularPlanError
 
 FIELDS = {
     "name": "name", "designation": "designation", "student": "developer",
-    "developer": "developer", "group": "organisation", "organisation": "organisation",
+    "developer": "developer", "group": "group", "organisation": "organisation",
     "organization": "organisation", "university": "organisation", "checker": "checker",
     "sheet": "sheet", "sheets": "sheets", "date": "date", "material": "material",
     "literal": "literal", "approver": "approver", "scale": "scale",
 }  # fmt: skip
+#: the smallest letters of a title-block entry, mm: GOST 2.304's 1.8 (2.5 is the rule,
+#: 1.8 the size it allows where room is short). An entry that does not fit its cell in
+#: them, condensed to 80 %, is refused, not shrunk further
+TITLE_FLOOR = 1.8
 
 
 #: how many positions of the cycle a sheet may draw
@@ -65,19 +69,64 @@ def configure(p) -> None:
 
 
 def _title_fields(mech, pairs, scale: str, lang: str = "ru") -> dict[str, str]:
+    """The title block's fields: the file's [title], then --title-block over them. Two
+    names of one field given different values in one place ("university" and
+    "organisation") are refused: neither is dropped without a word."""
     out = {"name": mech.name_in(lang), "scale": scale}
-    items = list((mech.title or {}).items())
+    for where, items in ((mech.source, list((mech.title or {}).items())),
+                         ("--title-block", _pairs(pairs))):
+        given: dict[str, tuple[str, str]] = {}
+        for k, v in items:
+            key = FIELDS.get(k.lower())
+            if key is None:
+                raise InputError(where, f"unknown title-block field {k!r}; known: "
+                                        f"{', '.join(sorted(FIELDS))}")
+            if key in given and given[key][1] != str(v):
+                raise InputError(where, f"{given[key][0]}={given[key][1]!r} and {k}={v!r} "
+                                        f"both fill the title block's {key}: give one")
+            given[key] = (k, str(v))
+        out.update({key: v for key, (_, v) in given.items()})
+    return out
+
+
+def _pairs(pairs) -> list[tuple[str, str]]:
+    out = []
     for pair in pairs:
         if "=" not in pair:
             raise InputError("--title-block", f"{pair!r} is not KEY=VALUE")
         k, v = pair.split("=", 1)
-        items.append((k.strip(), v))
-    for k, v in items:
-        key = FIELDS.get(k.lower())
-        if key is None:
-            raise InputError("--title-block", f"unknown field {k!r}; known: {', '.join(sorted(FIELDS))}")
-        out[key] = str(v)
+        out.append((k.strip(), v))
     return out
+
+
+#: the GOST 2.104 field each title-block entry fills
+FIELD_NO = {"name": 1, "designation": 2, "material": 3, "literal": 4, "scale": 6, "sheet": 7,
+            "sheets": 8, "organisation": 9, "group": 9, "developer": 11, "checker": 11,
+            "approver": 11, "date": 13}
+
+
+def _title_block(mech, sheet, title, scale: str, lang: str):
+    """The title block, each entry in letters of at least TITLE_FLOOR mm."""
+    from drawing.sheet import TitleBlock, title_block_texts
+
+    fields = _title_fields(mech, title, scale, lang)
+    tb = TitleBlock(**fields)
+    named = {FIELDS.get(k.lower()): (k, "--title-block") for k, _ in _pairs(title)}
+    for k in (mech.title or {}):
+        named.setdefault(FIELDS.get(k.lower()), (k, mech.source))
+    for key, value in fields.items():
+        alone = TitleBlock(**{key: value, "literal": "", "sheets": ""})
+        if key == "group":  # field 9 holds both
+            alone = TitleBlock(organisation=fields.get("organisation", ""), group=value,
+                               literal="", sheets="")
+        for text, cell in title_block_texts(sheet, alone, lang):
+            if text.size < TITLE_FLOOR - 1e-9:
+                k, where = named.get(key, (key, mech.source))
+                raise InputError(where, f"{k}={value!r} does not fit its {cell.w:.0f} × "
+                                        f"{cell.h:.0f} mm cell of the title block (field "
+                                        f"{FIELD_NO.get(key, '?')}) even in {TITLE_FLOOR} mm "
+                                        "letters condensed to 80 %: shorten it")
+    return tb
 
 
 def _parse_plans(text: str | None, n: int) -> list[int] | None:
@@ -337,12 +386,12 @@ class _Sheet1:
 
 def _compose(mech, sheet, cycle, mu, lang, title, placed, sols):
     from drawing.scene import Layer, Scene
-    from drawing.sheet import TitleBlock, frame_scene
+    from drawing.sheet import frame_scene
     from plans.plan import solve_position
     from plans.scales import gost_scale
 
     given = solve_position(mech, solver=sols[0][2].solver, mu=mu)
-    tb = TitleBlock(**_title_fields(mech, title, gost_scale(given.mu_l, lang), lang))
+    tb = _title_block(mech, sheet, title, gost_scale(given.mu_l, lang), lang)
     scene = frame_scene(sheet, tb, lang=lang)
     scene = scene + Scene((Layer("views", tuple(p.group() for p in placed)),))
     return scene, sheet, {"solutions": sols, "given": given, "cycle": cycle, "placed": placed}

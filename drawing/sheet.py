@@ -33,11 +33,13 @@ from drawing.styles import LineType, Style
 
 __all__ = [
     "FORMATS",
+    "GROUP",
     "LABELS",
     "THICK_LINES",
     "THIN_LINES",
     "Sheet",
     "TitleBlock",
+    "field9",
     "frame_scene",
     "title_block_texts",
 ]
@@ -149,8 +151,10 @@ class TitleBlock:
     upside down in field 26), ``material`` (3), ``literal`` (4: "У" marks a
     student's drawing), ``mass`` (5), ``scale`` (6, e.g. "1:10"), ``sheet``
     (7: left blank on a one-sheet document), ``sheets`` (8), ``organisation``
-    (9: university and group), the signers' surnames (11) and the date of the
-    developer's signature (13).  Numbers may be given as ``int``.
+    (9: the university), ``group`` (the student's group, written in field 9 after
+    the organisation, "МГТУ, гр. ТМ-21", as course projects fill it), the signers'
+    surnames (11) and the date of the developer's signature (13).  Numbers may be
+    given as ``int``.
     """
 
     name: str = ""
@@ -162,6 +166,7 @@ class TitleBlock:
     sheet: str = ""
     sheets: str = "1"
     organisation: str = ""
+    group: str = ""
     developer: str = ""
     checker: str = ""
     tech_control: str = ""
@@ -178,6 +183,23 @@ class TitleBlock:
                 raise TypeError(
                     f"TitleBlock.{f.name} must be a str, got {type(value).__name__}"
                 )
+
+
+#: the word before a group's name in field 9
+GROUP = {"ru": "гр.", "en": "group"}
+
+
+def field9(organisation: str, group: str, lang: str = "ru") -> str:
+    """Field 9: the organisation, then the group ("МГТУ, гр. ТМ-21"); a group given with
+    its own word ("группа РК3-51", "gr. 5") is written as it is.
+
+    >>> field9("МГТУ", "ТМ-21"), field9("", "группа 5"), field9("MIT", "5", "en")
+    ('МГТУ, гр. ТМ-21', 'группа 5', 'MIT, group 5')
+    """
+    group = group.strip()
+    if group and not group.lower().startswith(("гр", "gr")):
+        group = f"{GROUP[lang]} {group}"
+    return ", ".join(part for part in (organisation.strip(), group) if part)
 
 
 def _block_to_sheet(block: Rect, x0: float, y0: float, x1: float, y1: float) -> Rect:
@@ -253,7 +275,7 @@ def title_block_texts(
     put(tb.designation, 65, 40, 185, 55, largest=7)
     put(tb.name, 65, 15, 135, 40, largest=7, lines=3)
     put(tb.material, 65, 0, 135, 15, largest=5)
-    put(tb.organisation, 135, 0, 185, 15, largest=5, lines=2)
+    put(field9(tb.organisation, tb.group, lang), 135, 0, 185, 15, largest=5, lines=2)
     put(words["lit"], 135, 35, 150, 40)
     put(words["mass"], 150, 35, 167, 40)
     put(words["scale"], 167, 35, 185, 40)

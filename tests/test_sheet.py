@@ -832,3 +832,42 @@ def test_every_failed_sheet_of_a_batch_names_its_variant(capsys, tmp_path):
     first, last = err.splitlines()
     assert first.startswith("plans sheet: ") and "variant 1: sheet 1 does not fit on A4" in first
     assert last == "plans sheet: 1 of 1 sheets failed"
+
+
+def test_the_group_is_written_with_the_organisation_in_field_9():
+    """group, university and organisation all filled field 9, the last given winning: the
+    group vanished. Field 9 now reads "МГТУ, гр. ТМ-21", as course projects fill it."""
+    scene, sheet, _ = build_sheet(_mech(3), "A1", "ru", 12, None,
+                                  ["student=Иванов", "group=ТМ-21", "university=МГТУ"])
+    _, texts = _texts(to_svg(scene, sheet, embed_font=False))
+    assert "МГТУ, гр. ТМ-21" in texts and "Иванов" in texts
+    scene, sheet, _ = build_sheet(_mech(3), "A1", "en", 12, None, ["group=TM-21"])
+    assert "group TM-21" in _texts(to_svg(scene, sheet, embed_font=False))[1]
+
+
+@pytest.mark.parametrize(("pairs", "words"), [
+    (["university=МГТУ", "organisation=МИФИ"],
+     "--title-block: university='МГТУ' and organisation='МИФИ' both fill the title block's "
+     "organisation: give one"),
+    (["student=Константинопольский-Преображенский"],
+     "--title-block: student='Константинопольский-Преображенский' does not fit its 23 × 5 mm "
+     "cell of the title block (field 11) even in 1.8 mm letters condensed to 80 %: shorten it"),
+])
+def test_a_title_block_entry_is_never_dropped_nor_shrunk_below_1_8_mm(capsys, tmp_path, pairs, words):
+    """Two names of field 9 with different values: the first was dropped without a word. A
+    surname too long for its cell was shrunk to 1.45 mm at 80 % width, under GOST 2.304's
+    1.8 mm: it is now refused, in one line, and nothing is written."""
+    from support import run
+
+    out = tmp_path / "s.svg"
+    code, _, err = run(capsys, "sheet", "--variant", "3", "-o", out, "--title-block", *pairs)
+    assert code == 2 and not out.exists()
+    assert err == f"plans sheet: {words}\n"
+
+
+def test_a_long_surname_that_fits_in_1_8_mm_letters_is_kept():
+    scene, sheet, _ = build_sheet(_mech(3), "A1", "ru", 12, None, ["student=Преображенский П.П."])
+    texts = [it for it in scene.items("title-block") if isinstance(it, Text)]
+    (t,) = [it for it in texts if it.text == "Преображенский П.П."]
+    assert 1.8 <= t.size < 2.5
+    assert all(it.size >= 1.8 for it in texts)
