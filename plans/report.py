@@ -28,6 +28,9 @@ T = {
         "positions": "Plan of positions",
         "mul": "Scale factor of the plan of positions:",
         "seg": "Segments of the links on the drawing:",
+        "seg_given": "Segments of the links on the drawing, in the position given (φ1 = {deg}°, drawn in heavy lines):",
+        "seg_at": "Segments whose length changes with the position, in the position of the plans below ({title}):",
+        "seg_same": "In the position of the plans below ({title}) the segments are as above.",
         "stroke": "Stroke of the output point {p}:",
         "swing": "Swing of the output link {l}:",
         "kth": "Crank angle between the extreme positions, θ, and the time ratio K:",
@@ -72,6 +75,9 @@ T = {
         "positions": "План положений механизма",
         "mul": "Масштабный коэффициент плана положений:",
         "seg": "Длины отрезков, изображающих звенья на чертеже:",
+        "seg_given": "Длины отрезков, изображающих звенья на чертеже, в заданном положении (φ1 = {deg}°, выделено основными линиями):",
+        "seg_at": "Отрезки, длина которых меняется с положением, в положении, для которого ниже построены планы ({title}):",
+        "seg_same": "В положении, для которого ниже построены планы ({title}), длины отрезков те же.",
         "stroke": "Ход выходной точки {p}:",
         "swing": "Угол размаха выходного звена {l}:",
         "kth": "Угол между положениями кривошипа в крайних положениях механизма θ и коэффициент изменения средней скорости K:",
@@ -160,11 +166,27 @@ def note(sol: Solution, lang: str = "en", cycle=None,
     out += [f"## 2. {t['positions']}", "", t["mul"], ""]
     out.append(Step(f"μl = l_{d.pivot}{d.tip} / {d.pivot}{d.tip}", f"{n(d.length)} / {n(crank_mm)}",
                     n(mu_l), u["mu_l"]).markdown())
-    out += ["", t["seg"], ""]
+    # with plans of other positions, the plan of positions draws the given one heavy, and
+    # each of theirs among the thin ones: the segments that change (BA3 of a slotted
+    # link) are given at each, as their plans' similarity steps use them
+    given = t["seg_given"].format(deg=n(d.angle_deg, 6)) if plans else t["seg"]
+    out += ["", given, ""]
+
+    def segment(k, v):
+        return Step(f"{k} = l_{k} / μl", f"{n(v, 5)} / {n(mu_l)}", n(v / mu_l), u["mm"]).markdown()
+
     for k, v in sol.lengths.items():
         if k == d.pivot + d.tip or v == 0:  # the crank is above; a point on another: no segment
             continue
-        out.append(Step(f"{k} = l_{k} / μl", f"{n(v, 5)} / {n(mu_l)}", n(v / mu_l), u["mm"]).markdown())
+        out.append(segment(k, v))
+    for title, s in plans:
+        changed = [(k, v) for k, v in s.lengths.items() if k != d.pivot + d.tip and v != 0
+                   and not math.isclose(v, sol.lengths.get(k, math.nan), rel_tol=1e-9)]
+        if not changed:
+            out += ["", t["seg_same"].format(title=title)]
+            continue
+        out += ["", t["seg_at"].format(title=title), ""]
+        out += [segment(k, v) for k, v in changed]
     if cycle is not None:
         out.append("")
         if cycle.change_points:

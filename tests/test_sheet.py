@@ -660,6 +660,27 @@ def test_the_notes_plan_of_positions_is_the_given_position_whatever_the_plans(tm
     assert "- `BA3 = l_BA3 / μl = 0,57482 / 0,01 = 57,48 мм`" in section2
 
 
+def test_the_notes_plan_of_positions_gives_the_segments_of_each_position_drawn(tmp_path):
+    """With --plans 1,4 section 2 gave BA3 only at the file's own angle (57,48 mm), and
+    the plans of positions 1 and 4 then divided by their own BA3 (48,906 and 58,827 mm)
+    that the note never gave. Section 2 now says which position its segments are of (the
+    given one, drawn heavy) and gives those that change at each position drawn with plans."""
+    from plans.cli import main
+
+    md = tmp_path / "p.md"
+    assert main(["sheet", str(ROOT / "samples" / "press.toml"), "--plans", "1,4", "-o",
+                 str(tmp_path / "p.svg"), "--note", str(md)]) == 0
+    text = md.read_text("utf-8")
+    section2 = text.split("## 2.")[1].split("## 3.")[0]
+    assert "в заданном положении (φ1 = 30°, выделено основными линиями):" in section2
+    at = section2.split("построены планы (положение ")[1:]
+    assert [a.split(",")[0] for a in at] == ["1", "4"]
+    assert "- `BA3 = l_BA3 / μl = 0,48906 / 0,01 = 48,91 мм`" in at[0]
+    assert "- `BA3 = l_BA3 / μl = 0,58827 / 0,01 = 58,83 мм`" in at[1]
+    assert "BC / BA3 = 27,839·75 / 48,906 = " in text.split("## 3.")[1].split("## 4.")[0]
+    assert "BC / BA3 = 59,485·75 / 58,827 = " in text.split("## 5.")[1].split("## 6.")[0]
+
+
 @pytest.mark.parametrize("scene", ["yoke_inclined", "crank_slider_offset"])
 def test_the_stroke_is_dimensioned_along_its_guide_at_its_true_length(scene):
     """The inclined yoke's guide is at 20°: H was drawn horizontally, the horizontal
