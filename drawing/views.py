@@ -399,7 +399,37 @@ def _link_segments(mech, pos: dict[str, complex], mu_l: float, line: LineType) -
         for n in names:
             if n != root and abs(pos[n] - pos[root]) > 1e-12:
                 out.append(Segment(_sheet(pos[root], mu_l), _sheet(pos[n], mu_l), line))
+        # a rigid link of three points or more not in line is a plate: its outline closed
+        # (the coupler ABE is a triangle, not the bars AB and AE)
+        hull = _hull([pos[n] for n in names])
+        for a, b in zip(hull, hull[1:] + hull[:1], strict=True):
+            if len(hull) >= 3 and pos[root] not in (a, b):
+                out.append(Segment(_sheet(a, mu_l), _sheet(b, mu_l), line))
     return out
+
+
+def _hull(points: list[complex]) -> list[complex]:
+    """The corners of the convex hull of ``points``, counter-clockwise; fewer than three
+    where they are in line (within 1e-9 of their spread)."""
+    pts = sorted(set(points), key=lambda z: (z.real, z.imag))
+    if len(pts) < 3:
+        return pts
+    spread = max(abs(p - q) for p in pts for q in pts)
+
+    def turn(o, a, b):  # twice the signed area of o, a, b, over the spread
+        return ((a - o).conjugate() * (b - o)).imag / spread
+
+    def half(seq):
+        chain: list[complex] = []
+        for p in seq:
+            while len(chain) >= 2 and turn(chain[-2], chain[-1], p) <= 1e-9 * spread:
+                chain.pop()
+            chain.append(p)
+        return chain
+
+    lower, upper = half(pts), half(reversed(pts))
+    hull = lower[:-1] + upper[:-1]
+    return hull if len(hull) >= 3 else []
 
 
 def _block(center: tuple[float, float], direction: complex, line: LineType,

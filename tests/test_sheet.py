@@ -892,3 +892,26 @@ def test_a_long_surname_that_fits_in_1_8_mm_letters_is_kept():
     (t,) = [it for it in texts if it.text == "Преображенский П.П."]
     assert 1.8 <= t.size < 2.5
     assert all(it.size >= 1.8 for it in texts)
+
+
+def test_a_link_of_three_points_not_in_line_is_drawn_as_a_triangle():
+    """The coupler AB with its point E was drawn as the bars AB and AE, the rocker DB with
+    its point F as DB and DF: the closing sides BE and BF were missing. A point on the
+    link's axis still makes no triangle."""
+    from drawing import views as V
+
+    mech, (*_, pos) = _drawn_at("crank_rocker")
+
+    def sides(mech, pos):
+        out = set()
+        for s in V._link_segments(mech, pos, 1e-3, V.LineType.MAIN):
+            out.add(frozenset(n for n in pos if V._sheet(pos[n], 1e-3) in (s.p1, s.p2)))
+        return out
+
+    got = sides(mech, pos)
+    for link in ({"A", "B", "E"}, {"D", "B", "F"}):
+        a, b, c = sorted(link)
+        assert {frozenset((a, b)), frozenset((b, c)), frozenset((a, c))} <= got, (link, got)
+    mech = _mech("fourbar")  # its E lies on the coupler's axis BC, beyond C: one bar B–E
+    _, (*_, pos) = _drawn_at(mech)
+    assert frozenset(("C", "E")) not in sides(mech, pos)
