@@ -30,6 +30,7 @@ from typing import Literal
 
 import numpy as np
 import shapely
+import shapely.ops
 from shapely.geometry import LineString, Polygon
 from shapely.geometry.base import BaseGeometry
 
@@ -270,7 +271,10 @@ class LabelRequest:
     ``also``: further anchors the label may stand at, tried after ``anchor`` at each
     distance (the value of a dimension may go anywhere along its arc).  ``blank``: a
     dimension's value, under which thin lines are broken (GOST 2.307), see
-    :class:`drawing.scene.Blank`.
+    :class:`drawing.scene.Blank`. ``cross``: the label may cross thin lines close to its
+    point rather than stand clear further off (a letter among the other positions' lines
+    on a plan of positions); a plan's letter (``cross=False``) keeps off its construction
+    lines wherever it has room within the distances tried.
     """
 
     anchor: Point
@@ -281,6 +285,7 @@ class LabelRequest:
     optional: bool = False
     also: tuple[Point, ...] = ()
     blank: bool = False
+    cross: bool = True
 
     def __post_init__(self) -> None:
         if self.prefer not in _COMPASS:
@@ -290,11 +295,15 @@ class LabelRequest:
 @dataclass(frozen=True, slots=True)
 class Placement:
     """Where a label went; ``clear`` is False when every candidate collided
-    and the least-overlapping one was taken."""
+    and the least-overlapping one was taken (or, with ``leader``, when it stands clear
+    but across a line from its point)."""
 
     text: Text
     box: Polygon
     clear: bool
+    #: (point, box's nearest point): a thin leader line to draw between them, where the
+    #: label could stand clear only beyond another line
+    leader: tuple[Point, Point] | None = None
 
 
 _UNIT = {
@@ -331,6 +340,9 @@ def _directions(prefer: str) -> list[str]:
     return [_COMPASS[(i + k) % 8] for k in order]
 
 
+#: mm: the shortest leader line worth drawing to a label across a line from its point
+LEADER = 3.0
+
 #: mm a label keeps clear of the labels of other points placed before it, so that "11"
 #: and "O" do not read as "11O", nor "g₁" and "g₃" as "g₁g₃"
 GAP = 1.0
@@ -356,7 +368,11 @@ def place_labels(
     are avoided too, but a letter within ``near`` mm of its point that crosses only
     soft lines (at most ``max_soft`` of them, any number for a ``blank`` one, the fewest)
     beats a clear one further away: a letter far from its point is read as another
-    point's.  A label keeps :data:`GAP` mm from the labels of other points.  If
+    point's.  A label with ``cross=False`` stands on its point's side of every drawn
+    line: the shortest way from its point to its box crosses no obstacle but those at
+    the point itself (a letter beyond a vector reads as that vector's point); where it
+    has no such spot, it takes the nearest clear one beyond a line with a ``leader``
+    line to its point (GOST 2.316).  A label keeps :data:`GAP` mm from the labels of other points.  If
     none is free, the candidate with the least overlap area is taken and reported with
     ``clear=False`` (an ``optional`` one is then meant to be left out, and later labels
     may take its place).
@@ -379,6 +395,7 @@ def place_labels(
     for req in requests:
         chosen: tuple[Text, Polygon] | None = None
         fallback: tuple[float, Text, Polygon] | None = None
+        across: tuple[tuple, Text, Polygon, Point] | None = None  # clear, but beyond a line
         spots = [(anchor, direction) for anchor in (req.anchor, *req.also)
                  for direction in _directions(req.prefer)]
         boxes = np.asarray(placed, dtype=object)  # the labels before this one, once
@@ -399,6 +416,15 @@ def place_labels(
                         mask &= shapely.intersects(box, boxes) | others
                         hits += [p for p, m in zip(placed, mask, strict=True) if m]
                     outside = 0.0 if region is None else _outside(box, region, region_box)
+                    if not (hits or req.cross or hard_tree is None or outside > 1e-9):
+                        if _beyond(anchor, box, hard, hard_tree):  # on its point's far side
+                            # for a leader that reads as one: oblique, a few mm long
+                            n_soft = 0 if soft_tree is None else len(
+                                soft_tree.query(box, predicate="intersects"))
+                            key = (n_soft, gap < LEADER, len(direction) == 1)
+                            if across is None or key < across[0]:
+                                across = (key, text, box, anchor)
+                            continue
                     if hits or outside > 1e-9:
                         cost = sum(box.intersection(g).area for g in hits) + outside + 1e-6 * len(hits)
                         if fallback is None or cost < fallback[0]:
@@ -412,7 +438,8 @@ def place_labels(
                         chosen = (text, box)
                         break
                     # a letter on a break in the thin lines may cross any number of them
-                    if (n_soft <= max_soft or req.blank) and (relaxed is None or n_soft < relaxed[0]):
+                    if req.cross and (n_soft <= max_soft or req.blank) and (
+                            relaxed is None or n_soft < relaxed[0]):
                         relaxed = (n_soft, text, box)
                 if chosen:
                     break
@@ -420,18 +447,36 @@ def place_labels(
                 chosen = relaxed[1:]
             if chosen:
                 break
+        leader = None
+        if chosen is None and across is not None:  # clear, with a leader to its point
+            _, text, box, anchor = across
+            chosen = (text, box)
+            near = shapely.ops.nearest_points(shapely.Point(anchor), box)[1]
+            leader = (anchor, (near.x, near.y))
         if chosen is not None:
             text, box = chosen
-            clear = True
+            clear = leader is None
         else:
             assert fallback is not None  # distances and directions are never empty
             _, text, box = fallback
             clear = False
-        if clear or not req.optional:  # an optional label left out takes no room
+        if clear or leader or not req.optional:  # an optional label left out takes no room
             placed.append(box)
             placed_at.append(req.anchor)
-        out.append(Placement(text, box, clear=clear))
+        out.append(Placement(text, box, clear=clear, leader=leader))
     return out
+
+
+def _beyond(anchor: Point, box: Polygon, hard: list, tree) -> list:
+    """The obstacles between ``anchor`` and ``box``: those the shortest segment from the
+    point to the box meets, but for those at the point itself (its own vectors)."""
+    a = shapely.Point(anchor)
+    near = shapely.ops.nearest_points(a, box)[1]
+    if a.distance(near) < 1e-9:
+        return []
+    sight = LineString([anchor, (near.x, near.y)])
+    return [hard[i] for i in tree.query(sight, predicate="intersects")
+            if hard[i].distance(a) > 1e-9]
 
 
 def _is_box(g: BaseGeometry) -> bool:

@@ -258,7 +258,10 @@ def _finish(
                           region=region, distances=(1.0, 2.0, 3.0, 4.5, 6.0, 8.0),
                           soft=obstacles_of([it for it, s in zip(drawing, is_soft, strict=True) if s]))
     texts = [_start_anchored(p.text) for p, r in zip(placed, labels, strict=True)
-             if p.clear or not r.optional]  # numbers of positions are dropped, not crowded
+             if p.clear or p.leader or not r.optional]  # numbers of positions: dropped
+    leaders = [_leader(*p.leader) for p in placed if p.leader]
+    drawing += leaders
+    is_soft += [True] * len(leaders)
     blanks = [Blank((x0 - BLANK_PAD, y0 - BLANK_PAD), (x1 + BLANK_PAD, y1 + BLANK_PAD))
               for p, r in zip(placed, labels, strict=True) if r.blank
               for x0, y0, x1, y1 in [p.box.bounds]]
@@ -267,6 +270,14 @@ def _finish(
                    + [it for it, s in zip(drawing, is_soft, strict=True) if not s])
     items = list(drawing) + texts
     return _captioned(name, items, _bbox(items), caption, under)
+
+
+def _leader(point, end) -> Segment:
+    """A thin leader line from near ``point`` (clear of its dot) to a label's box."""
+    d = math.dist(point, end)
+    k = min(0.8, d / 2) / d if d > 0 else 0.0
+    start = (point[0] + (end[0] - point[0]) * k, point[1] + (end[1] - point[1]) * k)
+    return Segment(start, end, LineType.THIN)
 
 
 def _captioned(name: str, items: list[Item], bounds, caption: str, under: list[str]) -> View:
@@ -354,7 +365,8 @@ def plan_view(sol, kind: str, tag: str, lang: str = "ru", label: str | None = No
     for xy, names in groups:
         ang = math.degrees(math.atan2(-(xy[1] - cy), xy[0] - cx)) % 360
         prefer = ("e", "ne", "n", "nw", "w", "sw", "s", "se")[int(((ang + 22.5) % 360) // 45)]
-        reqs.append(LabelRequest(xy, ",".join(_markup(n) for n in names), LETTER, prefer, blank=True))
+        reqs.append(LabelRequest(xy, ",".join(_markup(n) for n in names), LETTER, prefer,
+                                 blank=True, cross=False))
     title = WORDS[lang][kind]
     unit = _per_mm(WORDS[lang]["ms" if kind == "velocity" else "ms2"], lang)
     mu_name = "μ_v" if kind == "velocity" else "μ_a"

@@ -915,3 +915,86 @@ def test_a_link_of_three_points_not_in_line_is_drawn_as_a_triangle():
     mech = _mech("fourbar")  # its E lies on the coupler's axis BC, beyond C: one bar B–E
     _, (*_, pos) = _drawn_at(mech)
     assert frozenset(("C", "E")) not in sides(mech, pos)
+
+
+SIX = """
+name = "Six-link press"
+output = "F"
+[frame]
+O = [0.0, 0.0]
+D = [0.32, 0.05]
+[driver]
+link = 1
+angle_deg = 17
+from = "+y"
+measured = "cw"
+rpm = 95
+sense = "ccw"
+[links.1]
+axis = ["O", "A"]
+points = { A = 0.08 }
+[links.2]
+axis = ["A", "B"]
+points = { B = 0.28, S2 = 0.14 }
+[links.3]
+axis = ["D", "B"]
+points = { B = 0.2, E = [0.1, -0.05], S3 = 0.1 }
+[links.4]
+axis = ["E", "F"]
+points = { F = 0.3, S4 = 0.15 }
+[links.5]
+points = { F = 0 }
+[[sliders]]
+link = 5
+guide = { link = 0, through = [0.2, -0.2], angle_deg = 75 }
+[assembly]
+B = "above OD"
+F = "below E"
+"""
+
+
+@pytest.mark.parametrize("key", [5, "six"])
+def test_a_plans_letter_stays_on_its_points_side_and_off_construction_lines(key, tmp_path,
+                                                                            monkeypatch):
+    """Variant 5's s₃ stood beyond the vector pe, reading as a point of pe; the six-link
+    press's f stood on the construction line ⊥FE, which broke under it and left a stray
+    dash. A plan's letter now takes a spot clear of the construction lines wherever it
+    has one, and one from which the way to its point crosses no vector; where none is
+    clear, a leader line joins it to its point."""
+    from shapely.geometry import Point
+
+    from drawing import labels as L
+    from drawing import views as V
+
+    if key == "six":
+        path = tmp_path / "six.toml"
+        path.write_text(SIX, "utf-8")
+        mech = load(path)
+    else:
+        mech = _mech(key)
+    calls = []
+    real = V.place_labels
+
+    def spy(requests, obstacles=(), *args, **kw):
+        got = real(requests, obstacles, *args, **kw)
+        calls.append((requests, obstacles, kw.get("soft", ()), got))
+        return got
+
+    monkeypatch.setattr(V, "place_labels", spy)
+    build_sheet(mech, "A1", "ru")  # the plans at the sheet's own scale factors
+    plans = [c for c in calls if c[0] and not any(r.cross for r in c[0])]
+    assert len(plans) >= 2
+    names = set()
+    for requests, hard, soft, placed in plans:
+        for req, p in zip(requests, placed, strict=True):
+            names.add(req.text)
+            a = Point(req.anchor)
+            sight = L.LineString([req.anchor, L.shapely.ops.nearest_points(a, p.box)[1].coords[0]])
+            across = [g for g in hard if sight.intersects(g) and g.distance(a) > 1e-9]
+            if p.leader is None:  # on its point's side, off the construction lines
+                assert p.clear and not across, req.text
+                assert not any(p.box.intersects(g) for g in soft), req.text
+            else:  # clear of every line, joined to its point
+                assert not any(p.box.intersects(g) for g in hard), req.text
+                assert p.leader[0] == req.anchor
+    assert ("s_{3}" if key == 5 else "f") in names
