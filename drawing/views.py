@@ -733,14 +733,17 @@ def diagrams_view(mech, cycle, lang: str = "ru", width: float = 180.0, height: f
         curves = diagram_curves(mech, cycle, solver)
     if curves is None:
         return None
-    s, v, a = curves
+    s, v, a, flip = curves
     out = cycle.output
-    return _draw_diagrams(mech, cycle, lang, width, height, out.kind == "linear", s, v, a)
+    return _draw_diagrams(mech, cycle, lang, width, height, out.kind == "linear", s, v, a, flip)
 
 
 def diagram_curves(mech, cycle, solver=None):
     """The output's (s, v, a) (or ψ, ω, ε) at 361 crank angles over one turn from the
-    first position, or None where there are no diagrams to draw."""
+    first position, positive the way the working stroke goes (so that s or ψ rises from
+    0 at the extreme position it starts from), and that way: 1.0 where it is the
+    world's positive sense (ccw for an angle), -1.0 where it is the other; None where
+    there are no diagrams to draw."""
     from plans.kinematics import Solver
 
     solver = solver or Solver(mech)
@@ -770,10 +773,10 @@ def diagram_curves(mech, cycle, solver=None):
         k = np.arange(len(phis))
         v[~ok] = np.interp(k[~ok], k[ok], v[ok])
         a[~ok] = np.interp(k[~ok], k[ok], a[ok])
-    return s, v, a
+    return s, v, a, flip
 
 
-def _draw_diagrams(mech, cycle, lang, width, height, linear, s, v, a) -> View:
+def _draw_diagrams(mech, cycle, lang, width, height, linear, s, v, a, flip=1.0) -> View:
     w = WORDS[lang]
     units = (w["m"], w["ms"], w["ms2"]) if linear else (w["rad"], w["rads"], w["rads2"])
     names = ("s", "v", "a") if linear else ("ψ", "ω", "ε")
@@ -800,6 +803,11 @@ def _draw_diagrams(mech, cycle, lang, width, height, linear, s, v, a) -> View:
                 items.append(Text((x, y_zero + 1.5), str(k % len(cycle.positions) if k else 0),
                                   size=2.5, anchor="middle", baseline="hanging", italic=True))
         items.append(Text((2, y - 6), f"{name}, {unit}", size=3.5, baseline="hanging"))
+        if not linear:  # an angle's positive sense, after its name: the tables give ω and
+            # ε by their senses, and the working stroke of a rocker may turn either way
+            after = 2 + text_width(f"{name}, {unit}", 3.5) + 2.5
+            items.append(Text((after, y - 6), f"(+ {w['ccw'] if flip > 0 else w['cw']})",
+                              size=3.5, baseline="hanging"))
         items.append(Text((width + 6, y_zero - 1.5), "φ", size=3.5, anchor="end"))
         items.append(_start_anchored(Text((width - 2, y - 6), f"μ_{{{name}}} = {num(mu, 3, lang)} {_per_mm(unit, lang)}",
                           size=2.5, anchor="end", baseline="hanging", markup=True)))

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from drawing.cli_sheet import build_sheet
-from drawing.labels import overlaps
+from drawing.labels import overlaps, text_box
 from drawing.scene import Text
 from drawing.svg import to_svg
 from plans.mechanism import load
@@ -998,3 +998,75 @@ def test_a_plans_letter_stays_on_its_points_side_and_off_construction_lines(key,
                 assert not any(p.box.intersects(g) for g in hard), req.text
                 assert p.leader[0] == req.anchor
     assert ("s_{3}" if key == 5 else "f") in names
+
+
+CR4 = """
+name = "Crank-rocker four-bar"
+trace = ["E"]
+output = "B"
+[frame]
+O = [0.0, 0.0]
+D = [0.2, 0.0]
+[driver]
+link = 1
+angle_deg = 137
+from = "+y"
+measured = "cw"
+omega = 12.5
+sense = "cw"
+[links.1]
+axis = ["O", "A"]
+points = { A = 0.05 }
+[links.2]
+axis = ["A", "B"]
+points = { B = 0.2, E = [0.1, 0.06], S2 = 0.1 }
+[links.3]
+axis = ["D", "B"]
+points = { B = 0.15, S3 = 0.075 }
+[assembly]
+B = "above OD"
+"""
+
+
+@pytest.mark.parametrize("name", ["crank_rocker", "cr4"])
+def test_the_angular_diagrams_say_which_sense_is_positive(name, tmp_path):
+    """ψ, ω and ε of a rocker are drawn positive the way its working stroke turns, so
+    that ψ rises from 0 at the extreme position it starts from; for a crank-rocker
+    driven clockwise that was clockwise while the ω and ε table read counter-clockwise
+    positive, and the diagram did not say so. Each axis now names its positive sense,
+    and ω read off the diagram with it has the sign of ω in the table."""
+    import numpy as np
+
+    from drawing.views import WORDS, diagram_curves, diagrams_view
+    from plans.cycle import analyse_cycle
+    from plans.kinematics import Solver
+    from plans.plan import solve_position
+    from plans.scenes import SCENES
+
+    if name == "cr4":
+        path = tmp_path / "cr4.toml"
+        path.write_text(CR4, "utf-8")
+        mech = load(path)
+    else:
+        mech = SCENES[name].mechanism()
+    solver = Solver(mech)
+    cycle = analyse_cycle(mech, 12, solver=solver)
+    s, v, _, flip = diagram_curves(mech, cycle, solver)
+    assert s.min() >= -1e-9  # ψ from the extreme position it starts from
+    words = WORDS["ru"]
+    sense = words["ccw"] if flip > 0 else words["cw"]
+    texts = [t for t in diagrams_view(mech, cycle, "ru", solver=solver).items
+             if isinstance(t, Text)]
+    for axis in ("ψ, рад", "ω, рад/с", "ε, рад/с²"):  # each axis's name, its sense after it
+        (name,) = [t for t in texts if t.text == axis]
+        (after,) = [t for t in texts if t.pos[1] == name.pos[1] and t.pos[0] > name.pos[0]
+                    and t.text.startswith("(+")]
+        assert after.text == f"(+ {sense})"
+        assert text_box(name).bounds[2] < text_box(after).bounds[0] < text_box(name).bounds[2] + 4
+    link = cycle.output.link
+    for k, phi in enumerate(cycle.positions):
+        omega = solve_position(mech, phi, solver=solver).omega[link]
+        if abs(omega) > 1e-6:
+            assert np.sign(v[30 * k]) * flip == np.sign(omega), k
+    if name == "cr4":
+        assert sense == "по ч.с."  # the working stroke turns the rocker clockwise
