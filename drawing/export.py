@@ -116,10 +116,16 @@ def write_svg(svg: str, path: str | os.PathLike[str]) -> Path:
     return write_bytes_atomic(svg.encode("utf-8"), path)
 
 
+#: a PNG's background: a sheet is paper, and black lines on a transparent PNG are black
+#: on black in a viewer with a dark background
+PAPER = "white"
+
+
 def png_bytes(svg: str, dpi: float = 150, scale: float = 1.0) -> bytes:
-    """The SVG rendered to a PNG at ``dpi`` (an A1 sheet at 150 dpi is 4967 × 3508 px);
-    ``scale`` enlarges a drawing sized in px, which ``dpi`` leaves as it is."""
-    return _render(_cairosvg().svg2png, svg, dpi=dpi, scale=scale)
+    """The SVG rendered to a PNG at ``dpi`` (an A1 sheet at 150 dpi is 4967 × 3508 px),
+    on white paper, not transparent; ``scale`` enlarges a drawing sized in px, which
+    ``dpi`` leaves as it is."""
+    return _render(_cairosvg().svg2png, svg, dpi=dpi, scale=scale, background_color=PAPER)
 
 
 def pdf_bytes(svg: str) -> bytes:

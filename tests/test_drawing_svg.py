@@ -491,3 +491,19 @@ def test_every_character_of_a_sheet_is_in_the_projects_font(tmp_path, capsys, ar
     assert must in text
     missing = sorted({c for c in text if not c.isspace() and ord(c) not in cmap})
     assert missing == []
+
+
+def test_a_png_is_drawn_on_white_paper(tmp_path):
+    """The PNG was black ink on a transparent background: black on black in a viewer with
+    a dark background. Every pixel of it is now opaque, white where nothing is drawn."""
+    pytest.importorskip("PIL")
+    from PIL import Image
+
+    try:
+        png = write_png(sheet_svg("A4"), tmp_path / "s.png", dpi=25.4)
+    except ExportUnavailableError as exc:
+        pytest.skip(str(exc))
+    im = Image.open(png).convert("RGBA")
+    alpha = im.getchannel("A")
+    assert alpha.getextrema() == (255, 255)
+    assert im.getpixel((100, 100))[:3] == (255, 255, 255)  # the drawing field, blank
