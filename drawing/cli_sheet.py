@@ -198,7 +198,7 @@ def _views_of_any_size(mech, solver, cycle, lang) -> _AnySize:
 #: mm: the kinematic diagrams' widths tried (one turn of the crank), with the height of
 #: each of the three; 180 mm is 15 mm per position of twelve, 360 mm 1° per mm, 120 mm
 #: what an A3 sheet beside the plans has room for
-DIAGRAMS = {360.0: 60.0, 300.0: 55.0, 240.0: 50.0, 180.0: 40.0, 144.0: 32.0, 120.0: 28.0}
+DIAGRAMS = {360.0: 60.0, 240.0: 50.0, 180.0: 40.0, 120.0: 28.0}
 
 
 class _Sheet1:
@@ -285,7 +285,8 @@ class _Sheet1:
             return [V.diagrams_view(self.mech, self.cycle, self.lang, value, DIAGRAMS[value],
                                     curves=self.fixed.curves)]
         if key == "segments":
-            return [V.segments_table_view(self._tabsols(mu or self.mu0), self.lang, value)]
+            return [V.segments_table_view(self._tabsols(mu or self.mu0), self.lang, value,
+                                          sizing=sizing)]
         mu = dict(mu or self.mu0, **{key: value})
         if key == "mu_l":
             from plans.plan import solve_position

@@ -11,11 +11,13 @@ keeps it where the acceleration plan needs a step down, instead of every view go
 down a step together until the largest fits. The combinations are tried best first:
 the one whose smallest view (as a multiple of its default size) is largest, then by the
 next smallest, and so on, so that no view is shrunk for another to grow; then by the
-area the views cover. The kinematic diagrams are one more factor (their width), never
-larger than the largest plan. Each combination is packed as foreseen
-(:func:`drawing.layout.pack`): a view's size at each candidate is that of the view drawn
+area the views cover. The kinematic diagrams are one more factor (their width), sized
+with the room the plans leave beyond their default 180 mm (up to it, they count as a
+plan does), never larger than the largest plan. Each combination is
+packed as foreseen (:func:`drawing.layout.pack`): a view's size at each candidate is that of the view drawn
 without its letters, with the room they may take around the drawing (placing them is
-what takes the time). The first combination that packs is drawn and packed for real;
+what takes the time), at the factor's largest and smallest candidates, and between
+them on the straight line, which is never under it. The first combination that packs is drawn and packed for real;
 a combination whose views are none smaller than those of one that did not pack is not
 tried.
 """
@@ -25,6 +27,7 @@ from __future__ import annotations
 import itertools
 
 from drawing.layout import LayoutError, pack, place_views
+from drawing.views import CAPTION, CAPTION_OVER, SMALL_CAPTION
 
 __all__ = ["SIZES", "Fit"]
 
@@ -33,8 +36,13 @@ __all__ = ["SIZES", "Fit"]
 #: across): the largest and the smallest. The plan of positions may be larger still,
 #: up to the field's longer side
 SIZES = (3.0, 0.5)
-#: the factors whose views are lettered: drawn without their letters to be sized
-LETTERED = ("mu_l", "mu_v", "mu_a")
+#: the factors whose views are lettered: drawn without their letters to be sized (the
+#: tables without their cells' texts, which are fitted into the cells)
+LETTERED = ("mu_l", "mu_v", "mu_a", "segments")
+#: the scale factors, whose views' drawings grow as 1/μ
+SCALED = ("mu_l", "mu_v", "mu_a")
+#: the factors sized with the room the scale factors' views leave
+SECONDARY = ("diagrams",)
 
 
 class Fit:
@@ -64,15 +72,33 @@ class Fit:
 
     def foreseen(self, key: str, values: list[float]) -> list[list[tuple[float, float]]]:
         """For each candidate, the (w, h) of each view the factor sizes: as large as its
-        letters could make it, drawn without them (placing letters is what takes time)."""
+        letters could make it, drawn without them (placing letters is what takes time).
+        A scale factor's views are drawn so at its largest and smallest candidates only:
+        in between, each side of a drawing is a largest of terms linear in 1/μ (lines
+        that scale, marks that do not), so the straight line between the two is never
+        under it; the caption and the equations do not scale."""
+        def drawn(value):
+            got = self.draw(key, value, sizing=True) if key in LETTERED else self.views(key, value)
+            self._names[key] = [v.name for v in got]
+            return got
+
+        if key not in SCALED or len(values) <= 2:
+            return [[(v.w, v.h) for v in drawn(value)] for value in values]
+        big, small = drawn(values[0]), drawn(values[-1])
+        k0, k1 = 1 / values[0], 1 / values[-1]
         out = []
         for value in values:
-            if key in LETTERED:
-                drawn = self.draw(key, value, sizing=True)
-            else:  # no letters to leave out: drawn once for both
-                drawn = self.views(key, value)
-            self._names[key] = [v.name for v in drawn]
-            out.append([(v.w, v.h) for v in drawn])
+            t = (1 / value - k1) / (k0 - k1)  # 1 at the largest views, 0 at the smallest
+            sizes = []
+            for a, b in zip(big, small, strict=True):
+                bw, bh = (q + t * (p - q) for p, q in zip(a.body, b.body, strict=True))
+                cap, under = a.texts  # the caption's width at CAPTION
+                if cap > bw + CAPTION_OVER:
+                    cap *= SMALL_CAPTION / CAPTION
+                # the caption is centred on the drawing, the equations start at its left
+                w = max(bw, (bw + cap) / 2, under) - min(0.0, (bw - cap) / 2) + 2.0
+                sizes.append((w, bh + max(a.h - a.body[1], b.h - b.body[1])))
+            out.append(sizes)
         return out
 
     def best(self) -> dict[str, float]:
@@ -91,8 +117,13 @@ class Fit:
                 plans = [size for f, size in zip(ranked, sized, strict=True) if f != d]
                 if self.factors[d][2][idx[d]] > max([1.0, *plans]) + 1e-9:
                     continue
-            # the smallest view's size first, then the next: no view is given up for another
-            rank = tuple(-s for s in sorted(round(x, 6) for x in sized))
+            # the smallest view's size first, then the next: no view is given up for
+            # another. The diagrams count up to their default size (180 mm): beyond it,
+            # they take the room the plans leave
+            rank = tuple(-s for s in sorted(
+                round(min(x, 1.0) if keys[f] in SECONDARY else x, 6)
+                for f, x in zip(ranked, sized, strict=True)))
+            rank += tuple(idx[f] for f in ranked if keys[f] in SECONDARY)
             shape = tuple(i for f, i in enumerate(idx) if f not in ranked)
             boxes = self._ordered(idx, sizes, rest)
             area = sum(w * h for w, h in boxes)
@@ -101,10 +132,15 @@ class Fit:
         failed: list[tuple[int, ...]] = []
         ranks = [f in ranked for f in range(len(keys))]
         for _, area, idx, boxes in combos:
+            if -area > field:  # more than the field holds, however packed
+                continue
             if any(all(i <= j if r else i == j for i, j, r in zip(idx, f, ranks, strict=True))
                    for f in failed):
                 continue  # no view smaller than in one of its shape that did not pack
-            if -area > field or pack(self.sheet, boxes) is None:
+            if pack(self.sheet, boxes) is None and (
+                    not self._interpolated(idx)
+                    or pack(self.sheet, self._ordered(idx, self._drawn_sizes(idx, sizes), rest))
+                    is None):  # foreseen between two drawings: drawn, for a close call
                 failed.append(idx)
                 continue
             mu = self._values(idx)
@@ -117,6 +153,19 @@ class Fit:
         mu = self._values(tuple(len(v) - 1 for _, v, _ in self.factors))
         place_views(self.sheet, self._all(mu))  # the smallest views: why they do not fit
         return mu  # they do, foreseen larger than they are
+
+    def _interpolated(self, idx) -> bool:
+        """Whether a combination's sizes were foreseen between two drawings."""
+        return any(key in SCALED and 0 < i < len(values) - 1
+                   for (key, values, _), i in zip(self.factors, idx, strict=True))
+
+    def _drawn_sizes(self, idx, sizes):
+        """``sizes`` with the combination's own views drawn (without their letters)."""
+        out = [list(per) for per in sizes]
+        for f, ((key, values, _), i) in enumerate(zip(self.factors, idx, strict=True)):
+            if key in SCALED and 0 < i < len(values) - 1:
+                out[f][i] = [(v.w, v.h) for v in self.draw(key, values[i], sizing=True)]
+        return out
 
     def _ordered(self, idx, sizes, rest) -> list[tuple[float, float]]:
         """The foreseen boxes of a combination, in packing order."""

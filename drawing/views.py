@@ -256,7 +256,8 @@ def _finish(
     placed = place_labels(labels,
                           obstacles_of([it for it, s in zip(drawing, is_soft, strict=True) if not s]),
                           region=region, distances=(1.0, 2.0, 3.0, 4.5, 6.0, 8.0),
-                          soft=obstacles_of([it for it, s in zip(drawing, is_soft, strict=True) if s]))
+                          soft=obstacles_of([it for it, s in zip(drawing, is_soft, strict=True) if s])
+                          ) if labels else []  # the diagrams: nothing to letter
     texts = [_start_anchored(p.text) for p, r in zip(placed, labels, strict=True)
              if p.clear or p.leader or not r.optional]  # numbers of positions: dropped
     leaders = [_leader(*p.leader) for p in placed if p.leader]
@@ -828,15 +829,16 @@ def _nice(x: float) -> float:
 
 
 def _table(name: str, caption: str, header: list[str], rows: list[list[str]],
-           widths: list[float], row_h: float = 7.0, parts: int = 1) -> View:
+           widths: list[float], row_h: float = 7.0, parts: int = 1, sizing: bool = False) -> View:
     """A table under its caption; ``parts`` > 1 sets its rows in that many tables side
-    by side, each under the header (a tall table on a small sheet)."""
+    by side, each under the header (a tall table on a small sheet). ``sizing``: its lines
+    only (every cell's text is fitted into its cell), for its size."""
     items: list[Item] = []
     total_w = sum(widths)
     per = -(-len(rows) // max(1, parts))  # rows of each part, the last one's fewer
     chunks = [rows[i:i + per] for i in range(0, len(rows), per)] or [[]]
     for k, chunk in enumerate(chunks):
-        items += _shift(_grid(header, chunk, widths, row_h), k * (total_w + PART_GAP), 0.0)
+        items += _shift(_grid(header, chunk, widths, row_h, sizing), k * (total_w + PART_GAP), 0.0)
     span = len(chunks) * total_w + (len(chunks) - 1) * PART_GAP
     cap = centred((span / 2, -2.0), caption, caption_size(caption, span))
     items.append(translate(cap, 0.0, -1.5 - text_box(cap).bounds[3]))
@@ -849,7 +851,8 @@ def _table(name: str, caption: str, header: list[str], rows: list[list[str]],
 PART_GAP = 6.0
 
 
-def _grid(header: list[str], rows: list[list[str]], widths: list[float], row_h: float) -> list[Item]:
+def _grid(header: list[str], rows: list[list[str]], widths: list[float], row_h: float,
+          lines_only: bool = False) -> list[Item]:
     """The lines and cells of one table, its top-left corner at (0, 0)."""
     items: list[Item] = []
     total_w = sum(widths)
@@ -860,7 +863,7 @@ def _grid(header: list[str], rows: list[list[str]], widths: list[float], row_h: 
     for wd in [0.0, *widths]:
         x += wd
         items.append(Segment((x, 0), (x, n * row_h), LineType.MAIN))
-    for r, row in enumerate([header, *rows]):
+    for r, row in enumerate([] if lines_only else [header, *rows]):
         x = 0.0
         for cell, wd in zip(row, widths, strict=True):
             size = 2.5 if r else 3.5
@@ -874,7 +877,8 @@ def _grid(header: list[str], rows: list[list[str]], widths: list[float], row_h: 
     return items
 
 
-def segments_table_view(sols: list[tuple[str, object]], lang: str = "ru", parts: int = 1) -> View:
+def segments_table_view(sols: list[tuple[str, object]], lang: str = "ru", parts: int = 1,
+                        sizing: bool = False) -> View:
     """Segments of both plans (mm) and their values (SI) for the chosen positions, in
     ``parts`` tables side by side."""
     w = WORDS[lang]
@@ -903,7 +907,8 @@ def segments_table_view(sols: list[tuple[str, object]], lang: str = "ru", parts:
                 row += ["—", "—"]
         rows.append(row)
     widths = [40.0] + [22.0, 28.0] * len(sols)
-    return _table("segments", w["segments"], header, rows, widths, row_h=6.0, parts=parts)
+    return _table("segments", w["segments"], header, rows, widths, row_h=6.0, parts=parts,
+                  sizing=sizing)
 
 
 def omega_table_view(sols: list[tuple[str, object]], lang: str = "ru") -> View:
