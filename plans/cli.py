@@ -139,6 +139,26 @@ def check_outputs(args) -> None:
 
 
 
+KINDS = {".svg": "an SVG", ".png": "a PNG", ".pdf": "a PDF"}
+
+
+def picture_name(opt: str, path: str | None, suffix: str, options: dict[str, str]) -> None:
+    """Refuse an output name that does not end in ``suffix`` (x.png given to an option
+    that writes SVG would hold SVG text): one line, before anything is computed or
+    written. ``options``: the command's option for each picture format, for the hint.
+    stdout ('-') and a device (/dev/null) are taken as they are."""
+    if path in (None, "-") or Path(path).suffix.lower() == suffix:
+        return
+    p = Path(path)
+    if p.exists() and not p.is_file() and not p.is_dir():  # /dev/null, a pipe
+        return
+    other = p.suffix.lower()
+    hint = (f"; for {KINDS[other]} give {options[other]} {path}"
+            if other in options and options[other] != opt else "")
+    raise InputError("command line", f"{opt} {path}: the name must end in {suffix} ({opt} "
+                     f"writes {suffix[1:].upper()}){hint}")
+
+
 def _arg(value, limit: int = 200) -> str:
     """A command-line value for a message: one line, cut short."""
     text = "".join(c if c.isprintable() else "?" for c in str(value)[: limit + 1])

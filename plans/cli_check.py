@@ -33,11 +33,12 @@ def configure(p) -> None:
 
 def run(args) -> int:
     from . import check as ck
-    from .cli import claim_inputs
+    from .cli import claim_inputs, picture_name
 
     claim_inputs(args, [args.file])
+    pictures = {".svg": "--svg", ".png": "--png"}
     for opt, path, suffix in (("--svg", args.svg, ".svg"), ("--png", args.png, ".png")):
-        _picture_name(opt, path, suffix)
+        picture_name(opt, path, suffix, pictures)
     if args.png:
         from drawing import export
 
@@ -73,24 +74,6 @@ def run(args) -> int:
 
 #: the PNG of the drawing: two pixels for each px of the SVG
 PNG_SCALE = 2.0
-
-
-def _picture_name(opt: str, path: str | None, suffix: str) -> None:
-    """Refuse an output name that does not end in ``suffix`` (x.png given to --svg would
-    hold SVG text): one line, before anything is computed or written. stdout ('-') and a
-    device (/dev/null) are taken as they are."""
-    from pathlib import Path
-
-    if path in (None, "-") or Path(path).suffix.lower() == suffix:
-        return
-    p = Path(path)
-    if p.exists() and not p.is_file() and not p.is_dir():  # /dev/null, a pipe
-        return
-    other = {".svg": ("--png", ".png"), ".png": ("--svg", ".svg")}[suffix]
-    hint = (f"; for {'a PNG' if other[1] == '.png' else 'an SVG'} give {other[0]} {path}"
-            if p.suffix.lower() == other[1] else "")
-    raise InputError("command line", f"{opt} {path}: the name must end in {suffix} ({opt} "
-                     f"writes {suffix[1:].upper()}){hint}")
 
 
 # ---------------------------------------------------------------------------------------

@@ -1070,3 +1070,27 @@ def test_the_angular_diagrams_say_which_sense_is_positive(name, tmp_path):
             assert np.sign(v[30 * k]) * flip == np.sign(omega), k
     if name == "cr4":
         assert sense == "по ч.с."  # the working stroke turns the rocker clockwise
+
+
+def test_a_sheet_is_written_in_the_format_its_name_says(tmp_path, capsys):
+    """-o x.png wrote the sheet's SVG text into a .png file, silently. A name that does not
+    end in its option's format is refused, one line, before anything is written."""
+    from support import run
+
+    for opt, name, want in (("-o", "x.png", "; for a PNG give --png {p}"),
+                            ("--png", "x.svg", "; for an SVG give -o {p}"),
+                            ("--pdf", "x.png", "; for a PNG give --png {p}"),
+                            ("-o", "x", "")):
+        path = tmp_path / name
+        path.write_bytes(b"kept")
+        extra = [] if opt == "-o" else ["-o", str(tmp_path / "s.svg")]
+        code, out, err = run(capsys, "sheet", "samples/press.toml", "--format", "A2", opt, path,
+                             *extra)
+        suffix = {"-o": ".svg", "--png": ".png", "--pdf": ".pdf"}[opt]
+        assert code == 2 and out == "" and path.read_bytes() == b"kept"
+        assert not (tmp_path / "s.svg").exists()
+        assert err == (f"plans sheet: command line: {opt} {path}: the name must end in {suffix} "
+                       f"({opt} writes {suffix[1:].upper()}){want.format(p=path)}\n")
+    code, _, err = run(capsys, "sheet", "samples/press.toml", "--format", "A2", "-o",
+                       tmp_path / "o.SVG")
+    assert code == 0 and (tmp_path / "o.SVG").read_text("utf-8").startswith("<?xml")
