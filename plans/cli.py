@@ -140,19 +140,25 @@ def check_outputs(args) -> None:
 
 
 KINDS = {".svg": "an SVG", ".png": "a PNG", ".pdf": "a PDF"}
+#: names of other picture formats, which no command writes
+PICTURE_SUFFIXES = {*KINDS, ".jpg", ".jpeg", ".gif", ".bmp", ".tif", ".tiff", ".webp", ".eps",
+                    ".ps", ".dxf"}
 
 
 def picture_name(opt: str, path: str | None, suffix: str, options: dict[str, str]) -> None:
-    """Refuse an output name that does not end in ``suffix`` (x.png given to an option
-    that writes SVG would hold SVG text): one line, before anything is computed or
-    written. ``options``: the command's option for each picture format, for the hint.
-    stdout ('-') and a device (/dev/null) are taken as they are."""
-    if path in (None, "-") or Path(path).suffix.lower() == suffix:
+    """Refuse an output name of another picture format than ``suffix`` (x.png given to
+    an option that writes SVG would hold SVG text): one line, before anything is
+    computed or written. ``options``: the command's option for each picture format, for
+    the hint. A name of no picture format (``-o sheet1``), stdout ('-') and a device
+    (/dev/null) are taken as they are."""
+    if path in (None, "-"):
         return
     p = Path(path)
+    other = p.suffix.lower()
+    if other == suffix or other not in PICTURE_SUFFIXES:
+        return
     if p.exists() and not p.is_file() and not p.is_dir():  # /dev/null, a pipe
         return
-    other = p.suffix.lower()
     hint = (f"; for {KINDS[other]} give {options[other]} {path}"
             if other in options and options[other] != opt else "")
     raise InputError("command line", f"{opt} {path}: the name must end in {suffix} ({opt} "

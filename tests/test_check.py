@@ -727,7 +727,7 @@ def test_a_picture_is_written_in_the_format_its_name_says(tmp_path, capsys):
     sample = SAMPLES / "check_press.toml"
     for opt, name, want in (("--svg", "x.png", "; for a PNG give --png {p}"),
                             ("--png", "x.svg", "; for an SVG give --svg {p}"),
-                            ("--svg", "x", "")):
+                            ("--svg", "x.jpg", "")):
         path = tmp_path / name
         path.write_bytes(b"kept")
         code, out, err = run(capsys, "check", sample, opt, path)

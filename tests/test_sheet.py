@@ -1080,7 +1080,7 @@ def test_a_sheet_is_written_in_the_format_its_name_says(tmp_path, capsys):
     for opt, name, want in (("-o", "x.png", "; for a PNG give --png {p}"),
                             ("--png", "x.svg", "; for an SVG give -o {p}"),
                             ("--pdf", "x.png", "; for a PNG give --png {p}"),
-                            ("-o", "x", "")):
+                            ("-o", "x.jpg", "")):
         path = tmp_path / name
         path.write_bytes(b"kept")
         extra = [] if opt == "-o" else ["-o", str(tmp_path / "s.svg")]
@@ -1091,6 +1091,7 @@ def test_a_sheet_is_written_in_the_format_its_name_says(tmp_path, capsys):
         assert not (tmp_path / "s.svg").exists()
         assert err == (f"plans sheet: command line: {opt} {path}: the name must end in {suffix} "
                        f"({opt} writes {suffix[1:].upper()}){want.format(p=path)}\n")
-    code, _, err = run(capsys, "sheet", "samples/press.toml", "--format", "A2", "-o",
-                       tmp_path / "o.SVG")
-    assert code == 0 and (tmp_path / "o.SVG").read_text("utf-8").startswith("<?xml")
+    for name in ("o.SVG", "sheet1"):  # a name of no picture format is written as asked
+        code, _, err = run(capsys, "sheet", "samples/press.toml", "--format", "A2", "-o",
+                           tmp_path / name)
+        assert code == 0 and (tmp_path / name).read_text("utf-8").startswith("<?xml")
