@@ -358,13 +358,12 @@ class _Sheet1:
     def _no_room(self, fit) -> str:
         """Why sheet 1 does not fit this format: what its views need at their smallest,
         and the smallest format that holds them."""
-        from drawing.layout import describe, field
+        from drawing.layout import describe
         from drawing.sheet import FORMATS, Sheet
 
         smallest = {k: v[0] if k in fit.plain else v[-1] for k, v, _ in fit.factors}
         views = fit.arranged([v for k, value in smallest.items() for v in fit.views(k, value)]
                              + list(fit.fixed))
-        (x0, y0, x1, y1), _ = field(self.sheet)
         need = ", ".join(f"{describe(v)} {v.w:.0f} × {v.h:.0f} mm" for v in views)
         names = list(FORMATS)
         holds = None
@@ -381,8 +380,9 @@ class _Sheet1:
                  if self.chosen is not None and len(self.chosen) > 1 else "")
         where = (f"{holds} holds it: use --format {holds}{fewer}" if holds
                  else f"no format holds it{fewer}")
-        return (f"sheet 1 does not fit on {self.sheet.name}, whose field is {x1 - x0:.0f} × "
-                f"{y1 - y0:.0f} mm less the 185 × 55 mm title block: at their smallest scales "
+        f = self.sheet.frame
+        return (f"sheet 1 does not fit on {self.sheet.name}, whose frame is {f.x1 - f.x:.0f} × "
+                f"{f.y1 - f.y:.0f} mm with the 185 × 55 mm title block in it: at their smallest scales "
                 f"its views need {need}; {where}")
 
 

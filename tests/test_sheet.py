@@ -832,7 +832,7 @@ def test_a4_says_in_one_line_what_sheet_1_needs_and_which_format_holds_it(capsys
     code, _, err = run(capsys, "sheet", "--variant", "6", "--format", "A4", "-o", out)
     assert code == 2 and not out.exists() and len(err.splitlines()) == 1
     assert err.startswith("plans sheet: Table 2 (built in), variant 6: sheet 1 does not fit "
-                          "on A4, whose field is 177 × 279 mm less the 185 × 55 mm title block: ")
+                          "on A4, whose frame is 185 × 287 mm with the 185 × 55 mm title block in it: ")
     for words in ("the plan of positions", "the velocity plan", "the acceleration plan",
                   "the kinematic diagrams", "the table of plan segments"):
         assert words in err
