@@ -168,7 +168,15 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
     ``solver``, the motion's, names the change points among the angles."""
     import numpy as np
 
-    from .records import SINGULAR_SINE, WARN_SINE, near_pivot, on_pivot, pivot_figure
+    from .records import (
+        SINGULAR_SINE,
+        WARN_SINE,
+        is_pivot,
+        near_pivot,
+        on_pivot,
+        pivot_figure,
+        pivot_key,
+    )
 
     n = len(motion.phi)
     crank_pivot = mech.frame[mech.driver.pivot]
@@ -204,7 +212,7 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
                 fails.append(str(g.failure(k, at(k))))
                 figures[label] = sine[k] if placed[k] else math.nan  # in line: about 0
                 if pivot is not None:  # every row has every figure: the CSV's columns
-                    figures[f"{label} pivot"] = pivot[k] if placed[k] else math.nan
+                    figures[pivot_key(label)] = pivot[k] if placed[k] else math.nan
                 continue
             figures[label] = sine[k]
             if low[k]:
@@ -214,13 +222,13 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
                     warnings.append(warning)
             if pivot is not None:
                 q = pivot[k]
-                figures[f"{label} pivot"] = q
+                figures[pivot_key(label)] = q
                 if q < WARN_SINE:  # worded (and the angle with it) only where flagged
                     if (err := on_pivot(g, q, at(k), below=under_q)) is not None:
                         fails.append(str(err))
                     else:
                         warnings.append(near_pivot(g, q, at(k), below=under_q))
-        sines = [v for key, v in figures.items() if not key.endswith(" pivot")]
+        sines = [v for key, v in figures.items() if not is_pivot(key)]
         if not sines:
             min_sine = 1.0
         elif all(math.isfinite(v) for v in sines):
@@ -349,13 +357,11 @@ def _json_rows(t: CycleTable):
 
 
 def _csv_header(t: CycleTable) -> list[str]:
+    from .records import PIVOT, is_pivot
+
     head = ["index", "phi_deg", "angle_deg", "solved", "placed", "min_sine"]
     for label in figure_labels(t):
-        head.append(
-            f"pivot {label[: -len(' pivot')]}"
-            if label.endswith(" pivot")
-            else f"sine {label}"
-        )
+        head.append(f"pivot {label.removesuffix(PIVOT)}" if is_pivot(label) else f"sine {label}")
     if t.output_values is not None:  # s in m along the guide, or ψ in rad
         o = t.cycle.output
         head.append(f"output {o.point} ({'m' if o.kind == 'linear' else 'rad'})")
@@ -437,6 +443,8 @@ def _table(title: str, head: list[str], rows: list[list[str]]) -> list[str]:
 
 def to_text(t: CycleTable) -> str:
     import numpy as np
+
+    from .records import is_pivot
 
     m, mech, c = t.motion, t.mechanism, t.cycle
     d = mech.driver
@@ -560,7 +568,7 @@ def to_text(t: CycleTable) -> str:
     lines += _table(
         "Conditioning (sine of the angle between the intersected lines)", head, rows
     )
-    if any(x.endswith(" pivot") for x in labels):
+    if any(is_pivot(x) for x in labels):
         lines.append("  QP: how far a slotted link's block P is from the rocker's pivot Q, "
                      "|QP| / (|OQ| + |OP|), O the crank's pivot")
     order = ("error", "singular", "warning")
@@ -579,6 +587,8 @@ def to_text(t: CycleTable) -> str:
 
 def _short(label: str) -> str:
     """'group 2–3 (RPR)' → 'sin 2–3'; 'group 2–3 (RPR) pivot' → 'QP 2–3'."""
+    from .records import is_pivot
+
     parts = label.split()
     links = parts[1] if len(parts) > 1 else label
-    return f"QP {links}" if label.endswith(" pivot") else f"sin {links}"
+    return f"QP {links}" if is_pivot(label) else f"sin {links}"

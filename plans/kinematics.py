@@ -194,7 +194,7 @@ class Solver:
             figures = [(g.velocity.sine, pivot_figure(g, m.position, crank)) for g in m.groups]
         else:  # a sweep: its figures by the group's label, the pivot's worked out here
             pivots = m.pivot
-            figures = [(m.sine[g.label], pivots.get(f"{g.label} pivot"))
+            figures = [(m.sine[g.label], pivots.get(records.pivot_key(g.label)))
                        for g in self.structure.groups]
         for i, (sine, q) in enumerate(figures):
             beside = np.zeros(phi.shape, dtype=bool)

@@ -201,6 +201,21 @@ def pivot_figure(g: GroupSolution, position: dict, crank_pivot: complex):
     return pivot_ratio(position[g.group.P], position[g.group.Q], crank_pivot)
 
 
+#: what the pivot figure's key adds to its group's label ("group 2–3 (RPR) pivot"), in a
+#: sweep's :attr:`plans.sweep.Sweep.pivot` and a cycle row's figures alike
+PIVOT = " pivot"
+
+
+def pivot_key(label: str) -> str:
+    """The key of group ``label``'s pivot figure."""
+    return label + PIVOT
+
+
+def is_pivot(key: str) -> bool:
+    """Whether a figure's key is a pivot figure's (else it is a group's lines' sine)."""
+    return key.endswith(PIVOT)
+
+
 def pivot_ratio(P, Q, O):
     """|QP| / (|OQ| + |OP|) of a block P, a rocker's pivot Q and the crank's pivot O
     (arrays or Python numbers); 0 where all three coincide."""

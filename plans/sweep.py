@@ -26,7 +26,7 @@ import numpy as np
 from . import kernels
 from .groups import setup
 from .kinematics import Solver
-from .records import pivot_ratio
+from .records import pivot_key, pivot_ratio
 from .structure import DyadKind
 
 #: angles per block: 8192 complex numbers are 128 KiB an array, so the few arrays a step
@@ -121,7 +121,7 @@ def sweep(sv: Solver, phi, block: int = BLOCK, into: Sweep | None = None) -> Swe
                 sine[label][i:j] = v
             valid[i:j] = part.valid
     mech = sv.mech
-    slots = tuple((f"{g.label} pivot", g.P, g.Q, mech.frame[mech.driver.pivot])
+    slots = tuple((pivot_key(g.label), g.P, g.Q, mech.frame[mech.driver.pivot])
                   for g in sv.structure.groups if g.kind == DyadKind.RPR)
     return Sweep(phi, out["pos"], out["vel"], out["acc"], omega, epsilon, sine, valid, slots)
 
