@@ -245,9 +245,9 @@ def _same(positions: dict, name: str) -> bool:
     return abs(a - b) <= 1e-9 * (1.0 + abs(a) + abs(b))
 
 
-def _at_both(positions: dict, name: str) -> str:
+def _at_both(positions: dict, name: str, joint: str = " and ") -> str:
     """Where the two assemblies put point ``name``, for messages."""
-    return " and ".join(f"({X.real:.4g}, {X.imag:.4g})" for X in (
+    return joint.join(f"({X.real:.4g}, {X.imag:.4g})" for X in (
         complex(positions[sigma].position[name][0]) for sigma in (1, -1)))
 
 
@@ -350,25 +350,20 @@ def _choose(mech: Mechanism, structure: Structure, meet: bool = True) -> tuple[i
                 f"{g.label} at {mech.driver.at(mech.driver.phi)}, so a hint on it chooses "
                 f"neither: write one on {key}, which stands at {_at_both(positions, key)}")
         if not mine:
-            cands = []
-            for sigma in (1, -1):
-                X = complex(positions[sigma].position[key][0])
-                cands.append(f"({X.real:.4g}, {X.imag:.4g})")
             raise InputError(
                 mech.source,
                 f"assembly: {g.label} closes two ways at {mech.driver.at(mech.driver.phi)}, with {key} at "
-                f"{cands[0]} or {cands[1]}: add a hint such as [assembly] {key} = "
+                f"{_at_both(positions, key, ' or ')}: add a hint such as [assembly] {key} = "
                 f'"above {g.P or ""}{g.Q or ""}"',
             )
         hints_ = ", ".join(f"{k} = {mech.assembly[k]!r}" for k in mine)
         if ok:  # both: say where the two are, so that the hint can be chosen between them
-            spots = _at_both(positions, key)
             raise InputError(
                 mech.source,
                 f"assembly: the {'hint' if len(mine) == 1 else 'hints'} {hints_} "
                 f"{'fits' if len(mine) == 1 else 'fit'} both "
                 f"assemblies of {g.label} at {mech.driver.at(mech.driver.phi)}, with {key} at "
-                f"{spots}: name a point or line that parts them")
+                f"{_at_both(positions, key)}: name a point or line that parts them")
         raise InputError(
             mech.source,
             f"assembly: the {'hint' if len(mine) == 1 else 'hints'} {hints_} "

@@ -214,10 +214,9 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
     # the crank cannot pass, though both sides close (found by the sine's sign, not by a
     # sample that happens to fall on it)
     sides = _guide_sides(m)
-    for side, g in zip(sides, (g for g in m.groups if g.group.kind == DyadKind.PRP),
-                       strict=True):
+    for label, side in sides.items():
         if (side != side[0]).any():
-            notes.append(f"{g.group.label}: its two guides turn parallel at a limit of the "
+            notes.append(f"{label}: its two guides turn parallel at a limit of the "
                          "crank's range, where the point on both runs off to infinity")
         closes &= side == side[0]
     # the given angle on a limit of the crank's range ends it; on a change point where a
@@ -229,7 +228,7 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
         if not closes[0]:  # the given angle itself does not close: say why, as solve does
             solver.solve_one(phi0)
         lo, hi = _limits(solver, *_interval_around(grid, closes), grid[1] - grid[0],
-                         [side[0] for side in sides])
+                         {label: side[0] for label, side in sides.items()})
         span = lo + (hi - lo) * (np.arange(n_positions) + 0.5) / n_positions
         return Cycle(out, False, (lo, hi), None, None, None, tuple(span), grashof,
                      tuple(notes), (lo, hi), changes)
@@ -340,16 +339,16 @@ def _refine(solver: Solver, out: Output, mech: Mechanism, a: float, b: float,
     return 0.5 * (a + b)
 
 
-def _guide_sides(m: Motion) -> list[np.ndarray]:
-    """Per PRP group, the sign of the sine between its two guides at each angle of ``m``:
-    it changes where they turn parallel and their common point passes through infinity,
-    a limit the crank cannot pass."""
-    return [np.sign(np.asarray(g.velocity.sine, dtype=float))
-            for g in m.groups if g.group.kind == DyadKind.PRP]
+def _guide_sides(m: Motion) -> dict[str, np.ndarray]:
+    """Per PRP group (by label), the sign of the sine between its two guides at each angle
+    of ``m``: it changes where they turn parallel and their common point passes through
+    infinity, a limit the crank cannot pass."""
+    return {g.group.label: np.sign(np.asarray(g.velocity.sine, dtype=float))
+            for g in m.groups if g.group.kind == DyadKind.PRP}
 
 
 def _limits(solver: Solver, lo: float, hi: float, step: float,
-            sides: list = ()) -> tuple[float, float]:
+            sides: dict | None = None) -> tuple[float, float]:
     """The crank's limit positions, refined from the last samples ``lo`` and ``hi`` that
     close (``step`` before ``lo`` and after ``hi`` it does not) to 1e-13 rad by bisection,
     both at once; each on the side where the mechanism closes. ``sides``: the sign of each
@@ -361,8 +360,8 @@ def _limits(solver: Solver, lo: float, hi: float, step: float,
         with np.errstate(all="ignore"):
             got = solver.solve(mid)
             ok = got.valid
-            for side, keep in zip(_guide_sides(got), sides, strict=True):
-                ok = ok & (side == keep)
+            for label, side in _guide_sides(got).items() if sides else ():
+                ok = ok & (side == sides[label])
         inside, outside = np.where(ok, mid, inside), np.where(ok, outside, mid)
         if np.all(np.abs(outside - inside) < 1e-13):
             break
