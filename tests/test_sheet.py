@@ -17,6 +17,7 @@ from drawing.labels import overlaps, text_box
 from drawing.scene import Text
 from drawing.svg import to_svg
 from plans.mechanism import load
+from plans.scenes import SCENES
 from plans.variants import variant, variant_numbers
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -1000,32 +1001,10 @@ def test_a_plans_letter_stays_on_its_points_side_and_off_construction_lines(key,
     assert ("s_{3}" if key == 5 else "f") in names
 
 
-CR4 = """
-name = "Crank-rocker four-bar"
-trace = ["E"]
-output = "B"
-[frame]
-O = [0.0, 0.0]
-D = [0.2, 0.0]
-[driver]
-link = 1
-angle_deg = 137
-from = "+y"
-measured = "cw"
-omega = 12.5
-sense = "cw"
-[links.1]
-axis = ["O", "A"]
-points = { A = 0.05 }
-[links.2]
-axis = ["A", "B"]
-points = { B = 0.2, E = [0.1, 0.06], S2 = 0.1 }
-[links.3]
-axis = ["D", "B"]
-points = { B = 0.15, S3 = 0.075 }
-[assembly]
-B = "above OD"
-"""
+#: the scenes' crank-rocker given from +y, measured and turning clockwise
+CR4 = SCENES["crank_rocker"].toml.replace(
+    "angle_deg = 60\nomega = 10",
+    'angle_deg = 137\nfrom = "+y"\nmeasured = "cw"\nomega = 12.5\nsense = "cw"')
 
 
 @pytest.mark.parametrize("name", ["crank_rocker", "cr4"])
@@ -1045,6 +1024,7 @@ def test_the_angular_diagrams_say_which_sense_is_positive(name, tmp_path):
 
     if name == "cr4":
         path = tmp_path / "cr4.toml"
+        assert 'sense = "cw"' in CR4  # the scene's driver was replaced
         path.write_text(CR4, "utf-8")
         mech = load(path)
     else:
