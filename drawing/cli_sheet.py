@@ -169,7 +169,7 @@ def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
         raise SingularPlanError(f"{exc} (the sheet draws the given position: choose another "
                                 "with --angle)", sine=exc.sine, source=exc.source) from None
     sheet_ = _Sheet1(mech, sheet, solver, cycle, chosen, lang, fixed, given, mu0)
-    mu, placed = sheet_.fill()
+    mu, placed = sheet_.fill()  # every μ: the file's and those chosen
     return _compose(mech, sheet, cycle, mu, lang, title, placed, sheet_.titled(mu))
 
 
@@ -211,6 +211,8 @@ class _Sheet1:
         self.chosen, self.lang, self.fixed, self.given = chosen, lang, fixed, given
         self.mu0 = mu0
         self._sols: dict[tuple, list] = {}
+        if chosen is None:  # the given position at mu0, solved already
+            self._sols[tuple(sorted(mu0.items()))] = [given]
 
     def solutions(self, mu: dict[str, float]) -> list:
         """The solutions the sheet draws plans for, at ``mu``."""
@@ -302,9 +304,10 @@ class _Sheet1:
         """The views no free factor sizes: those of the factors the file fixes (at its
         values), the diagrams, the tables (at ``mu``) and the note."""
         from drawing import views as V
+        from drawing.fit import SCALED
 
         out = []
-        for key in ("mu_l", "mu_v", "mu_a"):
+        for key in SCALED:
             if key in self.mech.scales:
                 out += self.draw(key, self.mech.scales[key], mu)
         out.append(V.omega_table_view(self._tabsols(mu), self.lang))
@@ -328,12 +331,12 @@ class _Sheet1:
         """(μ of every factor, the views placed). Where even the smallest views do not
         fit, :class:`LayoutError` says what they need, and (``suggest``) which larger
         format holds them."""
-        from drawing.fit import Fit
+        from drawing.fit import SCALED, Fit
         from drawing.layout import LayoutError, place_views, spread
 
         factors = self.factors()
-        mu_free = {k: v[-1] for k, v, _ in factors}
-        mu_free = {k: v for k, v in mu_free.items() if k in ("mu_l", "mu_v", "mu_a")}
+        mu_free = {k: v[-1] for k, v, _ in factors if k in SCALED}
+        # the views no free factor sizes are the same at any of their values: drawn once
         fit = Fit(self.sheet, factors, self.draw, self.others(dict(self.mu0, **mu_free)),
                   self.order(), plain={"segments"})
         try:
@@ -342,23 +345,22 @@ class _Sheet1:
             if exc.option != "--format" or not suggest:
                 raise
             raise LayoutError(self._no_room(fit), "--format") from None
-        mu = {k: v for k, v in chosen.items() if k in ("mu_l", "mu_v", "mu_a")}
-        full = dict(self.mu0, **{k: v for k, v in self.mech.scales.items() if k in ("mu_l", "mu_v", "mu_a")},
-                    **mu)
+        full = dict(self.mu0, **{k: v for k, v in self.mech.scales.items() if k in SCALED},
+                    **{k: v for k, v in chosen.items() if k in SCALED})
         views = [v for k, value in chosen.items()
                  for v in (self.draw(k, value, full) if k == "segments" else fit.views(k, value))]
-        placed = place_views(self.sheet, fit.arranged(views + self.others(full)))
-        if not any(k in self.mech.scales for k in ("mu_l", "mu_v", "mu_a")):
+        placed = place_views(self.sheet, fit.arranged(views + list(fit.fixed)))
+        if not any(k in self.mech.scales for k in SCALED):
             # at their largest and still leaving room: spread over the field. Views at
             # the scales a file fixes stay together, the share they take said in a note
             placed = spread(self.sheet, placed)
-        return mu, placed
+        return full, placed
 
 
     def _no_room(self, fit) -> str:
         """Why sheet 1 does not fit this format: what its views need at their smallest,
         and the smallest format that holds them."""
-        from drawing.layout import describe
+        from drawing.layout import LayoutError, describe
         from drawing.sheet import FORMATS, Sheet
 
         smallest = {k: v[0] if k in fit.plain else v[-1] for k, v, _ in fit.factors}
@@ -372,7 +374,7 @@ class _Sheet1:
                             self.lang, self.fixed, self.given, self.mu0)
             try:
                 other.fill(suggest=False)
-            except Exception:  # noqa: BLE001 - any failure there: that format does not hold it
+            except LayoutError:  # that format does not hold it either
                 continue
             holds = name
             break

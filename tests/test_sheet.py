@@ -14,6 +14,7 @@ import pytest
 
 from drawing.cli_sheet import build_sheet
 from drawing.labels import overlaps, text_box
+from drawing.layout import share_covered
 from drawing.scene import Text
 from drawing.svg import to_svg
 from plans.mechanism import load
@@ -780,7 +781,7 @@ def test_the_views_fill_a_sheet_whose_scales_are_free(key):
     mech, _, sheet, info, _ = _sheet(key)
     assert not mech.scales
     placed = info["placed"]
-    covered = sum(p.rect.w * p.rect.h for p in placed) / sheet.drawing_area().area
+    covered = share_covered(sheet, placed)
     assert covered >= FILLED, f"the views cover {covered:.0%} of the field"
     _boxes_clear(sheet, placed)
 
