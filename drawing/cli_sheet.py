@@ -250,7 +250,14 @@ class _Sheet1:
         positions 150 mm across, a plan's crank vector 80 mm or its longest 150 mm)."""
         from drawing.fit import SIZES
         from plans.plan import plan_name
-        from plans.scales import GOST_MU_L, choose_mu, choose_mu_l, series
+        from plans.scales import (
+            CRANK_MM,
+            GOST_MU_L,
+            PLAN_MM,
+            choose_mu,
+            choose_mu_l,
+            series,
+        )
 
         out = []
         extent = self.fixed.shown.extent
@@ -258,10 +265,10 @@ class _Sheet1:
             from drawing.layout import field
 
             (x0, y0, x1, y1), _ = field(self.sheet)  # up to the field's longer side
-            hi = choose_mu_l(extent, max_mm=max(x1 - x0, y1 - y0, 150 * SIZES[0]))
-            lo = choose_mu_l(extent, max_mm=150 * SIZES[1])
+            hi = choose_mu_l(extent, max_mm=max(x1 - x0, y1 - y0, PLAN_MM * SIZES[0]))
+            lo = choose_mu_l(extent, max_mm=PLAN_MM * SIZES[1])
             values = [m for m in GOST_MU_L if hi <= m <= lo] or [hi]
-            out.append(("mu_l", values, [extent / m / 150 for m in values]))
+            out.append(("mu_l", values, [extent / m / PLAN_MM for m in values]))
         sols = self.solutions(self.mu0)
         for key, kind in (("mu_v", "velocity"), ("mu_a", "acceleration")):
             if key in self.mech.scales:
@@ -269,9 +276,11 @@ class _Sheet1:
             plans = [getattr(sol, kind) for sol in sols]  # every position drawn, not one
             tip = max(abs(p.value(plan_name(self.mech.driver.tip))) for p in plans)
             largest = max(abs(q.value) for p in plans for q in p.points.values())
-            hi, lo = (choose_mu(tip, largest, crank_mm=80.0 * k, max_mm=150.0 * k) for k in SIZES)
+            hi, lo = (choose_mu(tip, largest, crank_mm=CRANK_MM * k, max_mm=PLAN_MM * k)
+                      for k in SIZES)
             values = sorted(set(series(hi, lo)) | {hi, lo})
-            out.append((key, values, [max(tip / m / 80, largest / m / 150) for m in values]))
+            out.append((key, values,
+                        [max(tip / m / CRANK_MM, largest / m / PLAN_MM) for m in values]))
         if self.fixed.curves is not None:
             widths = sorted(DIAGRAMS, reverse=True)
             out.append(("diagrams", widths, [w / 180 for w in widths]))

@@ -536,13 +536,6 @@ def _compile(kind: str, pole: str, tip: str, steps, ends):
     return follow
 
 
-def plan_mu(points: dict[str, PlanPoint], tip: complex, size: float = 1.0) -> float:
-    """The plan's scale factor from the standard series: the crank's vector at most
-    80 mm and every vector at most 150 mm, times ``size`` (a sheet may draw larger)."""
-    largest = max(abs(p.value) for p in points.values())
-    return choose_mu(abs(tip), largest, crank_mm=80.0 * size, max_mm=150.0 * size)
-
-
 def _term_formula(t) -> str:
     x, y = t.about
     if t.kind == "normal":

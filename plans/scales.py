@@ -36,7 +36,14 @@ def series(lo: float, hi: float):
         n += 1
 
 
-def choose_mu(value: float, largest: float, crank_mm: float = 80.0, max_mm: float = 150.0) -> float:
+#: mm: the default size of a drawing: a plan's crank vector (CRANK_MM), its longest vector
+#: and a plan of positions across (PLAN_MM); a sheet may draw them larger or smaller
+CRANK_MM = 80.0
+PLAN_MM = 150.0
+
+
+def choose_mu(value: float, largest: float, crank_mm: float = CRANK_MM,
+              max_mm: float = PLAN_MM) -> float:
     """The smallest standard μ that keeps the driver's vector ≤ ``crank_mm`` and every
     vector of the plan ≤ ``max_mm``."""
     need = max(abs(value) / crank_mm, abs(largest) / max_mm, 1e-300)
@@ -55,7 +62,7 @@ def choose_mu(value: float, largest: float, crank_mm: float = 80.0, max_mm: floa
         n += 1
 
 
-def choose_mu_l(extent: float, max_mm: float = 150.0) -> float:
+def choose_mu_l(extent: float, max_mm: float = PLAN_MM) -> float:
     """The smallest GOST μl at which the mechanism's extent (m) fits in ``max_mm``."""
     for mu in GOST_MU_L:
         if extent / mu <= max_mm:
