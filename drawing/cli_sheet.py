@@ -23,7 +23,7 @@ from plans.cli import (
     add_source,
     mechanism_from,
     number,
-    picture_name,
+    picture_names,
     warn,
     write_output,
 )
@@ -483,16 +483,14 @@ def _write(rendered: tuple[str, str | None], args) -> None:
         write_output(path, data)
 
 
-#: the option that writes each picture format, for the hint of a name in another one
-PICTURES = {".svg": "-o", ".png": "--png", ".pdf": "--pdf"}
+#: the option (and its attribute) that writes each picture format
+PICTURES = {".svg": ("-o", "output"), ".png": ("--png", "png"), ".pdf": ("--pdf", "pdf")}
 
 
 def run(args) -> int:
     if str(args.variant).strip().lower() == "all" and args.file is None:
         return _batch(args)
-    for opt, path in (("-o", args.output), ("--png", args.png), ("--pdf", args.pdf)):
-        suffix = next(k for k, v in PICTURES.items() if v == opt)
-        picture_name(opt, path, suffix, PICTURES)  # x.png given to -o would hold SVG text
+    picture_names(args, PICTURES)  # x.png given to -o would hold SVG text
     mech = mechanism_from(args)
     if args.png or args.pdf:
         from drawing import export

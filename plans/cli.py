@@ -145,24 +145,26 @@ PICTURE_SUFFIXES = {*KINDS, ".jpg", ".jpeg", ".gif", ".bmp", ".tif", ".tiff", ".
                     ".ps", ".dxf"}
 
 
-def picture_name(opt: str, path: str | None, suffix: str, options: dict[str, str]) -> None:
-    """Refuse an output name of another picture format than ``suffix`` (x.png given to
-    an option that writes SVG would hold SVG text): one line, before anything is
-    computed or written. ``options``: the command's option for each picture format, for
-    the hint. A name of no picture format (``-o sheet1``), stdout ('-') and a device
-    (/dev/null) are taken as they are."""
-    if path in (None, "-"):
-        return
-    p = Path(path)
-    other = p.suffix.lower()
-    if other == suffix or other not in PICTURE_SUFFIXES:
-        return
-    if p.exists() and not p.is_file() and not p.is_dir():  # /dev/null, a pipe
-        return
-    hint = (f"; for {KINDS[other]} give {options[other]} {path}"
-            if other in options and options[other] != opt else "")
-    raise InputError("command line", f"{opt} {path}: the name must end in {suffix} ({opt} "
-                     f"writes {suffix[1:].upper()}){hint}")
+def picture_names(args, pictures: dict[str, tuple[str, str]]) -> None:
+    """Refuse an output name of another picture format than its option writes (x.png
+    given to an option that writes SVG would hold SVG text): one line, before anything
+    is computed or written. ``pictures``: the command's option and attribute for each
+    format it writes, by suffix ({".svg": ("-o", "output"), …}), which also name the
+    option to use instead. A name of no picture format (``-o sheet1``), stdout ('-') and
+    a device (/dev/null) are taken as they are."""
+    for suffix, (opt, attr) in pictures.items():
+        path = getattr(args, attr)
+        if path in (None, "-"):
+            continue
+        p = Path(path)
+        other = p.suffix.lower()
+        if other == suffix or other not in PICTURE_SUFFIXES:
+            continue
+        if p.exists() and not p.is_file() and not p.is_dir():  # /dev/null, a pipe
+            continue
+        hint = f"; for {KINDS[other]} give {pictures[other][0]} {path}" if other in pictures else ""
+        raise InputError("command line", f"{opt} {path}: the name must end in {suffix} ({opt} "
+                         f"writes {suffix[1:].upper()}){hint}")
 
 
 def _arg(value, limit: int = 200) -> str:

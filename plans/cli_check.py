@@ -33,12 +33,10 @@ def configure(p) -> None:
 
 def run(args) -> int:
     from . import check as ck
-    from .cli import claim_inputs, picture_name
+    from .cli import claim_inputs, picture_names
 
     claim_inputs(args, [args.file])
-    pictures = {".svg": "--svg", ".png": "--png"}
-    for opt, path, suffix in (("--svg", args.svg, ".svg"), ("--png", args.png, ".png")):
-        picture_name(opt, path, suffix, pictures)
+    picture_names(args, {".svg": ("--svg", "svg"), ".png": ("--png", "png")})
     if args.png:
         from drawing import export
 
