@@ -44,9 +44,9 @@ def _times_ru(x: float) -> str:
     text = _fnum(x, "ru")
     if not text.isdigit():  # a fraction, or an exponent
         return f"в {text} раза"
-    n = int(text)
-    few = n % 10 in (2, 3, 4) and n % 100 not in (12, 13, 14)
-    return f"в {text} {'раза' if few else 'раз'}"
+    from .fmt import ru_plural
+
+    return f"в {text} {ru_plural(int(text), 'раз', 'раза', 'раз')}"
 
 
 def _text(mk: Mistake, lang: str) -> tuple[str, str]:
@@ -128,15 +128,16 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
                 f"read the sense of {mk.target} off the {plan} plan: it is the sense in which "
                 f"{vec}, placed at {X}, turns the link about {Y}")
     if k == "crank-sense":
+        from .fmt import SENSE
+
         X, Y = g("X"), g("Y")
+        sense = SENSE[lang][1 if g("sense") == "ccw" else -1]
         if ru:
-            sense = "против часовой стрелки" if g("sense") == "ccw" else "по часовой стрелке"
             return (f"{mk.target} (V_{X}) взята с обратным направлением",
                     f"отложите V_{X} ⊥ {Y}{X} в сторону вращения кривошипа ({mk.target} "
                     f"{sense}, как задано); с обратной {mk.target} все скорости и все ω "
                     "меняют направление (план скоростей отражён относительно полюса p), "
                     "ускорения и ε остаются прежними")
-        sense = "counter-clockwise" if g("sense") == "ccw" else "clockwise"
         return (f"{mk.target} (V_{X}) drawn with the wrong sense",
                 f"lay off V_{X} ⊥ {Y}{X} in the sense the crank turns ({mk.target} {sense}, as "
                 f"given); with {mk.target} reversed every velocity and every ω turns the other "

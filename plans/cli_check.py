@@ -10,7 +10,7 @@ import math
 
 from .cli import EXIT_DEVIATIONS, EXIT_OK, write_output
 from .errors import InputError
-from .fmt import angle, from_x, num, signed
+from .fmt import angle, from_x, num, ru_plural, signed
 
 
 def configure(p) -> None:
@@ -161,11 +161,7 @@ def _items(n: int, lang: str) -> str:
     """
     if lang != "ru":
         return "item" if n == 1 else "items"
-    if n % 10 == 1 and n % 100 != 11:
-        return "величина"
-    if n % 10 in (2, 3, 4) and n % 100 not in (12, 13, 14):
-        return "величины"
-    return "величин"
+    return ru_plural(n, "величина", "величины", "величин")
 
 
 def _pct(x: float, lang: str) -> str:

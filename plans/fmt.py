@@ -34,6 +34,20 @@ SENSE = {
 }
 
 
+def ru_plural(n: int, one: str, few: str, many: str) -> str:
+    """The Russian noun form that agrees with the whole number ``n``: 1, 21 … take
+    ``one``, 2–4, 22–24 … ``few``, the rest (5–20, 11–14, 25 …) ``many``.
+
+    >>> [ru_plural(n, "величина", "величины", "величин") for n in (1, 2, 5, 11, 12, 21, 22)]
+    ['величина', 'величины', 'величин', 'величин', 'величин', 'величина', 'величины']
+    """
+    if n % 10 == 1 and n % 100 != 11:
+        return one
+    if n % 10 in (2, 3, 4) and n % 100 not in (12, 13, 14):
+        return few
+    return many
+
+
 def from_x(phi: float) -> float:
     """A crank angle (rad) in degrees counter-clockwise from +x, in [0, 360)."""
     return math.degrees(phi) % 360.0
