@@ -359,7 +359,7 @@ def _fitted_scales(meas: Measurement, devs: tuple[Deviation, ...]) -> list[Mista
             near = min(series(fits / 1.2, fits * 1.2), key=lambda m: abs(m / fits - 1), default=fits)
             if abs(near / fits - 1) < 0.015:
                 fits, r = near, stated / near
-            out.append(Mistake("scale", plan, plan, r, info=((plan, repr(float(r))), ("fits", repr(float(fits))),
+            out.append(Mistake("scale", plan, plan, r, info=((plan, r), ("fits", fits),
                                                              *scale_example(meas.solution, plan))))
     return out
 

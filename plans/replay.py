@@ -75,7 +75,14 @@ class Mistake:
     link: int = 0
     group: int = -1
     route: int = -1
-    info: tuple[tuple[str, str], ...] = ()
+    info: tuple[tuple[str, str], ...] = ()  # words; a number given here is kept as its repr
+
+    def __post_init__(self):
+        # info is words: a number given there (a scale ratio, a fitted μ) is written as
+        # the repr of a Python float, which simulate reads back, whatever type it came as
+        if any(not isinstance(v, str) for _, v in self.info):
+            object.__setattr__(self, "info", tuple(
+                (k, v if isinstance(v, str) else repr(float(v))) for k, v in self.info))
 
     @property
     def family(self) -> str:
@@ -355,16 +362,16 @@ def hypotheses(sol: Solution, plans: set[str] | None = None) -> list[Mistake]:
     for plan in ("velocity", "acceleration", "positions"):
         if plan in plans:
             for f in (10.0, 0.1):
-                out.append(Mistake("scale", plan, plan, f, info=((plan, repr(f)),
+                out.append(Mistake("scale", plan, plan, f, info=((plan, f),
                                                                  *scale_example(sol, plan))))
     mv, ma = sol.mu_v, sol.mu_a
     if mv != ma and {"velocity", "acceleration"} & plans:
         out.append(Mistake("scale-swapped", "both", "μv↔μa",
-                           info=(("velocity", repr(mv / ma)), ("acceleration", repr(ma / mv)))))
+                           info=(("velocity", mv / ma), ("acceleration", ma / mv))))
         out.append(Mistake("scale-swapped", "velocity", "μa",
-                           info=(("velocity", repr(mv / ma)),)))
+                           info=(("velocity", mv / ma),)))
         out.append(Mistake("scale-swapped", "acceleration", "μv",
-                           info=(("acceleration", repr(ma / mv)),)))
+                           info=(("acceleration", ma / mv),)))
     for t in cor:
         out.append(Mistake("coriolis-half", "acceleration", t.label, 0.5, rep.guide_link(t),
                            info=(("rel", f"V_{t.about[0]}{t.about[1]}"),
