@@ -315,24 +315,27 @@ def diagnose(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance) -> 
         score += sum(4.0 for d in sim if d.sense_ok is False)
         findings.append(Finding(mk, explained, unexplained, broken, float(score), st))
     allowed = (len(bad) - 1) // 4
-    accepted = [f for f in findings if not f.broken and len(f.unexplained) <= allowed]
-    accepted.sort(key=lambda f: (len(f.unexplained), f.score))
+    # mistakes that draw the same plans score the same but for the last digits: scores are
+    # compared to 9 digits, and the sorts being stable, the hypotheses' order of
+    # preference chooses among equals, not the rounding
+    accepted = sorted((f for f in findings if not f.broken and len(f.unexplained) <= allowed),
+                      key=lambda f: (len(f.unexplained), _score(f)))
     if accepted:
-        # mistakes that draw the same plans score the same but for the last digits: the
-        # order of preference of the hypotheses chooses among them, not the rounding
-        first = accepted[0]
-        order = {id(f): i for i, f in enumerate(findings)}
-        best = min((f for f in accepted if len(f.unexplained) == len(first.unexplained)
-                    and f.score <= first.score * (1 + 1e-9) + 1e-12), key=lambda f: order[id(f)])
+        best = accepted[0]
         alts = tuple(
-            f for f in accepted
-            if f is not best and len(f.unexplained) == len(best.unexplained)
+            f for f in accepted[1:]
+            if len(f.unexplained) == len(best.unexplained)
             and f.score <= best.score * 1.25 + 0.25
         )[:3]
         return Diagnosis(best, alts, None, tried)
-    near = [f for f in findings if not f.broken]
-    near.sort(key=lambda f: (-len(f.explained), f.score))
+    near = sorted((f for f in findings if not f.broken),
+                  key=lambda f: (-len(f.explained), _score(f)))
     return Diagnosis(None, (), near[0] if near else None, tried)
+
+
+def _score(f: Finding) -> float:
+    """A finding's score to 9 digits, for ranking: equal plans tie."""
+    return float(f"{f.score:.9g}")
 
 
 def _fitted_scales(meas: Measurement, devs: tuple[Deviation, ...]) -> list[Mistake]:
