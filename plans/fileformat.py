@@ -245,6 +245,16 @@ class Problems:
             raise InputError(self.source, self.lines())
 
 
+#: a number as a person writes one in quotes: a decimal point or comma, a sign (− too),
+#: an exponent
+DECIMAL = r"[-+−]?(?:\d+(?:[.,]\d*)?|[.,]\d+)(?:[eE][-+]?\d+)?"
+
+
+def decimal(text: str) -> float:
+    """The value of a :data:`DECIMAL` ("−4,82" is -4.82)."""
+    return float(text.strip().replace("−", "-").replace(",", "."))
+
+
 def read_number(value: Any, where: str, problems: Problems, *, positive=False, default=None,
             unit: str = "m", low: float | None = None, high: float = MAX_ABS):
     """A finite number within range, else ``None`` and a problem.

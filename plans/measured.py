@@ -16,10 +16,12 @@ from typing import Any
 
 from .errors import InputError, PlansError
 from .fileformat import (
+    DECIMAL,
     LOOKALIKES,
     Problems,
     check_keys,
     close_match,
+    decimal,
     key_text,
     quote,
     read_number,
@@ -53,7 +55,6 @@ VALUE_UNITS = {
 }
 _WHAT = {"velocity": "a velocity", "acceleration": "an acceleration",
          "omega": "an angular velocity", "epsilon": "an angular acceleration"}
-_NUMBER = r"[-+−]?(?:\d+(?:[.,]\d*)?|[.,]\d+)(?:[eE][-+]?\d+)?"
 
 
 # ---------------------------------------------------------------------------------------
@@ -177,11 +178,13 @@ def comma_number(value: Any) -> float | None:
     """A number written in quotes with a decimal comma, as in Russian ("55,4"), else None:
     a bare TOML number cannot hold a comma, so the quotes are how it is written.
 
-    >>> comma_number("55,4"), comma_number(" -0,05 "), comma_number("55.4"), comma_number(55.4)
-    (55.4, -0.05, None, None)
+    >>> comma_number("55,4"), comma_number(" −0,05 "), comma_number("0,5e1"), comma_number(",5")
+    (55.4, -0.05, 5.0, 0.5)
+    >>> comma_number("55.4"), comma_number(55.4), comma_number("55,4 мм")
+    (None, None, None)
     """
-    if isinstance(value, str) and re.fullmatch(r"\s*[-+−]?\d+,\d+\s*", value):
-        return float(value.strip().replace("−", "-").replace(",", "."))
+    if isinstance(value, str) and "," in value and re.fullmatch(rf"\s*{DECIMAL}\s*", value):
+        return decimal(value)
     return None
 
 
@@ -191,7 +194,8 @@ def _num(value: Any, where: str, problems: Problems, *, positive=False, nonneg=F
     comma; ``what`` (a length on the drawing, a magnitude) is not negative."""
     if (comma := comma_number(value)) is not None:
         value = comma
-    elif isinstance(value, str) and (m := re.fullmatch(r"\s*([-+−]?\d+,\d+)\s*\S.*", value)):
+    elif isinstance(value, str) and (m := re.fullmatch(rf"\s*({DECIMAL})\s*\S.*", value)) \
+            and "," in m.group(1):
         problems.add(where, f'must be a number, got {quote(value)}: write "{m.group(1)}" '
                             f'or {m.group(1).replace(",", ".")}, without the unit')
         return None
@@ -572,7 +576,7 @@ def _magnitude_sense(value, key, problems, *, allow_sense, kind="velocity"):
         else:
             example = f'e.g. 2.77, "2,77" or "2.77 {main}"'
             bad = f"must be a number, got {quote(value)}: write {_WHAT[kind]} in {main}, {example}"
-        m = re.fullmatch(rf"\s*({_NUMBER})\s*(.*?)\s*", value, re.S)
+        m = re.fullmatch(rf"\s*({DECIMAL})\s*(.*?)\s*", value, re.S)
         if m is None:
             problems.add(key, bad)
             return None, 0
@@ -594,7 +598,7 @@ def _magnitude_sense(value, key, problems, *, allow_sense, kind="velocity"):
                                   f"a unit of {_WHAT[kind]}; write it in {' or '.join(units)}, "
                                   f"{example}")
             return None, 0
-        mag = float(m.group(1).replace("−", "-").replace(",", "."))
+        mag = decimal(m.group(1))
         value = mag
         if allow_sense and mag < 0 and not sense:
             sense, value = -1, -mag  # "-4.82": clockwise, as a number would be
