@@ -1076,3 +1076,49 @@ def test_a_sheet_is_written_in_the_format_its_name_says(tmp_path, capsys):
         code, _, err = run(capsys, "sheet", "samples/press.toml", "--format", "A2", "-o",
                            tmp_path / name)
         assert code == 0 and (tmp_path / name).read_text("utf-8").startswith("<?xml")
+
+
+@pytest.mark.parametrize("key", [5, "fourbar"])
+def test_views_at_free_scales_are_spread_to_the_fields_edges(key):
+    """At their largest the views of a sheet with free scales still leave room; packed to
+    the top left they left the lower half blank. layout.spread stretches their distances
+    from the field's top and left edges by as much as keeps them inside: so one view ends
+    at the field's bottom (or on the title block) and one at its right edge, none resized
+    and none overlapping."""
+    from drawing.layout import field
+
+    mech, _, sheet, info, _ = _sheet(key)
+    assert not mech.scales
+    placed = info["placed"]
+    (x0, y0, x1, y1), (tb, _) = field(sheet)
+    rects = [p.rect for p in placed]
+    assert any(abs(r.y1 - y1) < 1e-6 or (r.x < tb[2] and r.x1 > tb[0] and abs(r.y1 - tb[1]) < 1e-6)
+               for r in rects)
+    assert any(abs(r.x1 - x1) < 1e-6 or (r.y < tb[3] and r.y1 > tb[1] and abs(r.x1 - tb[0]) < 1e-6)
+               for r in rects)
+    _boxes_clear(sheet, placed)
+
+
+def test_a_tall_segments_table_is_set_in_two_halves_where_the_sheet_needs_it():
+    """The two moving guides' segments table is 180 mm tall, more than an A3 sheet has
+    beside the plans: there its rows are set in two halves side by side, each with its
+    head, every row once; on A1 it is one table."""
+    from drawing.scene import Text
+    from plans.scenes import SCENES
+
+    def texts(items):
+        for it in items:
+            if isinstance(it, Text):
+                yield it.text
+            elif hasattr(it, "items"):
+                yield from texts(it.items)
+
+    mech = SCENES["prp_two_moving"].mechanism()
+    got = {}
+    for fmt in ("A3", "A1"):
+        _, _, info = build_sheet(mech, fmt, "ru", 12, None)
+        (table,) = [p for p in info["placed"] if p.view.name == "segments"]
+        got[fmt] = list(texts(table.view.items))
+    assert got["A3"].count("Отрезок") == 2 and got["A1"].count("Отрезок") == 1
+    rows = {fmt: sorted(t for t in texts if ": " in t) for fmt, texts in got.items()}  # "pa: V_A"
+    assert len(rows["A1"]) == len(set(rows["A1"])) == 24 and rows["A3"] == rows["A1"]  # each once
