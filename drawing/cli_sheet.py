@@ -100,33 +100,24 @@ def _pairs(pairs) -> list[tuple[str, str]]:
     return out
 
 
-#: the GOST 2.104 field each title-block entry fills
-FIELD_NO = {"name": 1, "designation": 2, "material": 3, "literal": 4, "scale": 6, "sheet": 7,
-            "sheets": 8, "organisation": 9, "group": 9, "developer": 11, "checker": 11,
-            "approver": 11, "date": 13}
-
-
 def _title_block(mech, sheet, title, scale: str, lang: str):
     """The title block, each entry in letters of at least TITLE_FLOOR mm."""
-    from drawing.sheet import TitleBlock, title_block_texts
+    from drawing.sheet import FIELD_NO, TitleBlock, title_block_entries
 
     fields = _title_fields(mech, title, scale, lang)
     tb = TitleBlock(**fields)
     named = {FIELDS.get(k.lower()): (k, "--title-block") for k, _ in _pairs(title)}
     for k in (mech.title or {}):
         named.setdefault(FIELDS.get(k.lower()), (k, mech.source))
-    for key, value in fields.items():
-        alone = TitleBlock(**{key: value, "literal": "", "sheets": ""})
-        if key == "group":  # field 9 holds both
-            alone = TitleBlock(organisation=fields.get("organisation", ""), group=value,
-                               literal="", sheets="")
-        for text, cell in title_block_texts(sheet, alone, lang):
-            if text.size < TITLE_FLOOR - 1e-9:
-                k, where = named.get(key, (key, mech.source))
-                raise InputError(where, f"{k}={value!r} does not fit its {cell.w:.0f} × "
-                                        f"{cell.h:.0f} mm cell of the title block (field "
-                                        f"{FIELD_NO.get(key, '?')}) even in {TITLE_FLOOR} mm "
-                                        "letters condensed to 80 %: shorten it")
+    for text, cell, entries in title_block_entries(sheet, tb, lang):
+        if text.size < TITLE_FLOOR - 1e-9 and (given := [e for e in entries if fields.get(e)]):
+            where = named.get(given[-1], (given[-1], mech.source))[1]
+            what = " and ".join(f"{named.get(e, (e,))[0]}={fields[e]!r}" for e in given)
+            raise InputError(where, f"{what} {'does' if len(given) == 1 else 'do'} not fit "
+                                    f"{'its' if len(given) == 1 else 'their'} {cell.w:.0f} × "
+                                    f"{cell.h:.0f} mm cell of the title block (field "
+                                    f"{FIELD_NO[given[0]]}) even in {TITLE_FLOOR} mm "
+                                    "letters condensed to 80 %: shorten it")
     return tb
 
 
@@ -156,6 +147,7 @@ def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
         raise InputError("--positions", f"give {POSITIONS[0]} to {POSITIONS[1]} positions, "
                          f"got {n_positions}")
     sheet = Sheet(fmt)
+    _title_block(mech, sheet, title, "", lang)  # refused before the views are fitted
     solver = Solver(mech)
     cycle = analyse_cycle(mech, n_positions, solver=solver)
     chosen = _parse_plans(None if plans is None else ",".join(map(str, plans)), len(cycle.positions))

@@ -213,6 +213,12 @@ def _sizes(style: Style, largest: float) -> tuple[float, ...]:
     )
 
 
+#: the GOST 2.104 field of each TitleBlock entry (the group is written in field 9)
+FIELD_NO = {"name": 1, "designation": 2, "material": 3, "literal": 4, "mass": 5, "scale": 6,
+            "sheet": 7, "sheets": 8, "organisation": 9, "group": 9, "developer": 11,
+            "checker": 11, "tech_control": 11, "norm_control": 11, "approver": 11, "date": 13}
+
+
 def title_block_texts(
     sheet: Sheet,
     title_block: TitleBlock,
@@ -223,10 +229,21 @@ def title_block_texts(
 
     The cell is what the text must stay inside; tests and views can check it.
     """
+    return tuple((t, cell) for t, cell, _ in title_block_entries(sheet, title_block, lang, style))
+
+
+def title_block_entries(
+    sheet: Sheet,
+    title_block: TitleBlock,
+    lang: Literal["ru", "en"] = "ru",
+    style: Style | None = None,
+) -> tuple[tuple[Text, Rect, tuple[str, ...]], ...]:
+    """As :func:`title_block_texts`, each text with the TitleBlock entries it writes
+    (none for the form's own words; field 9 writes the organisation and the group)."""
     style = style or Style()
     words = LABELS[lang]
     blk = sheet.title_block
-    out: list[tuple[Text, Rect]] = []
+    out: list[tuple[Text, Rect, tuple[str, ...]]] = []
     # keep clear of the cell's own lines: half a main line plus 0.1 mm
     room = {"pad": style.s / 2 + 0.1, "inset": 1.0, "slant": style.slant_tan}
 
@@ -239,6 +256,7 @@ def title_block_texts(
         largest: float = 2.5,
         lines: int = 1,
         align: Literal["start", "middle"] = "middle",
+        entries: tuple[str, ...] = (),
     ) -> None:
         cell = _block_to_sheet(blk, x0, y0, x1, y1)
         for t in fit_text(
@@ -249,7 +267,7 @@ def title_block_texts(
             align=align,
             **room,
         ):
-            out.append((t, cell))
+            out.append((t, cell, entries))
 
     # left part: header row, then the six signature rows
     for label, (x0, x1) in zip(
@@ -257,36 +275,31 @@ def title_block_texts(
     ):
         put(label, x0, 30, x1, 35)
     tb = title_block
-    signers = (
-        tb.developer,
-        tb.checker,
-        tb.tech_control,
-        "",
-        tb.norm_control,
-        tb.approver,
-    )
-    for i, (label, surname) in enumerate(zip(words["signers"], signers, strict=True)):
+    signers = ("developer", "checker", "tech_control", "", "norm_control", "approver")
+    for i, (label, key) in enumerate(zip(words["signers"], signers, strict=True)):
         top = 30 - 5 * i
         put(label, 0, top - 5, 17, top, align="start")
-        put(surname, 17, top - 5, 40, top, align="start")
-    put(tb.date, 55, 25, 65, 30)
+        put(getattr(tb, key) if key else "", 17, top - 5, 40, top, align="start",
+            entries=(key,) if key else ())
+    put(tb.date, 55, 25, 65, 30, entries=("date",))
 
     # right part
-    put(tb.designation, 65, 40, 185, 55, largest=7)
-    put(tb.name, 65, 15, 135, 40, largest=7, lines=3)
-    put(tb.material, 65, 0, 135, 15, largest=5)
-    put(field9(tb.organisation, tb.group, lang), 135, 0, 185, 15, largest=5, lines=2)
+    put(tb.designation, 65, 40, 185, 55, largest=7, entries=("designation",))
+    put(tb.name, 65, 15, 135, 40, largest=7, lines=3, entries=("name",))
+    put(tb.material, 65, 0, 135, 15, largest=5, entries=("material",))
+    put(field9(tb.organisation, tb.group, lang), 135, 0, 185, 15, largest=5, lines=2,
+        entries=("organisation", "group"))
     put(words["lit"], 135, 35, 150, 40)
     put(words["mass"], 150, 35, 167, 40)
     put(words["scale"], 167, 35, 185, 40)
     for k, ch in enumerate(tb.literal[:3]):
-        put(ch, 135 + 5 * k, 20, 140 + 5 * k, 35, largest=3.5)
-    put(tb.mass, 150, 20, 167, 35, largest=5)
-    put(tb.scale, 167, 20, 185, 35, largest=5)
+        put(ch, 135 + 5 * k, 20, 140 + 5 * k, 35, largest=3.5, entries=("literal",))
+    put(tb.mass, 150, 20, 167, 35, largest=5, entries=("mass",))
+    put(tb.scale, 167, 20, 185, 35, largest=5, entries=("scale",))
     put(words["sheet"], 135, 15, 146, 20, align="start")
-    put(tb.sheet, 146, 15, 155, 20)
+    put(tb.sheet, 146, 15, 155, 20, entries=("sheet",))
     put(words["sheets"], 155, 15, 170, 20, align="start")
-    put(tb.sheets, 170, 15, 185, 20)
+    put(tb.sheets, 170, 15, 185, 20, entries=("sheets",))
 
     # field 26: the designation upside down in the top-left corner of the frame
     f26 = sheet.field26
@@ -298,6 +311,7 @@ def title_block_texts(
                     t, pos=(2 * cx - t.pos[0], 2 * cy - t.pos[1]), rotate_deg=180.0
                 ),
                 f26,
+                ("designation",),
             )
         )
 
@@ -308,7 +322,7 @@ def title_block_texts(
         (f"{words['format']} {sheet.name}", 145, 185),
     ):
         cell = Rect(blk.x + x0, blk.y1, x1 - x0, MARGIN_BOTTOM)
-        out.append((Text((cell.x, y), text, size=2.5, baseline="middle"), cell))
+        out.append((Text((cell.x, y), text, size=2.5, baseline="middle"), cell, ()))
     return tuple(out)
 
 

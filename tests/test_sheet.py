@@ -876,12 +876,20 @@ def test_the_group_is_written_with_the_organisation_in_field_9():
      "--title-block: student='Константинопольский-Преображенский' does not fit its 23 × 5 mm "
      "cell of the title block (field 11) even in 1.8 mm letters condensed to 80 %: shorten it"),
 ])
-def test_a_title_block_entry_is_never_dropped_nor_shrunk_below_1_8_mm(capsys, tmp_path, pairs, words):
+def test_a_title_block_entry_is_never_dropped_nor_shrunk_below_1_8_mm(capsys, tmp_path,
+                                                                      monkeypatch, pairs, words):
     """Two names of field 9 with different values: the first was dropped without a word. A
     surname too long for its cell was shrunk to 1.45 mm at 80 % width, under GOST 2.304's
-    1.8 mm: it is now refused, in one line, and nothing is written."""
+    1.8 mm: it is now refused, in one line, and nothing is written; before the views are
+    fitted (1.5 s of a sheet, paid for every variant of --variant all)."""
     from support import run
 
+    from drawing import cli_sheet
+
+    def no_fit(self, suggest=True):
+        raise AssertionError("the views were fitted before the title block was checked")
+
+    monkeypatch.setattr(cli_sheet._Sheet1, "fill", no_fit)
     out = tmp_path / "s.svg"
     code, _, err = run(capsys, "sheet", "--variant", "3", "-o", out, "--title-block", *pairs)
     assert code == 2 and not out.exists()
