@@ -32,7 +32,15 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from drawing.scene import INDEX_SIZE, SUB_SHIFT, SUP_SHIFT, Run, parse_markup
+from drawing.scene import (
+    INDEX_SIZE,
+    SUB_SHIFT,
+    SUP_SHIFT,
+    Run,
+    index_markup,
+    parse_markup,
+    wrap_words,
+)
 from plans.check import MU_KEY, CheckResult, rebuild, recorded_segments
 
 PANEL = 340.0  # user units (px) of one plan's square
@@ -126,8 +134,7 @@ def notation(text: str) -> tuple[Run, ...]:
     >>> [(r.text, r.level) for r in notation("a^k_A3A = 2·ω3·V_A3A; pa = V_A/μv")]
     [('a', 0), ('k', 1), ('A3A', -1), (' = 2·ω3·V', 0), ('A3A', -1), ('; pa = V', 0), ('A', -1), ('/μ', 0), ('v', -1)]
     """
-    s = text.replace("\\", "\\\\")
-    s = re.sub(r"_([A-Za-z0-9]{2,})", r"_{\1}", s)
+    s = index_markup(text.replace("\\", "\\\\"))
     s = re.sub(r"μ([vla])(?![A-Za-z0-9])", r"μ_\1", s)
     return parse_markup(s)
 
@@ -151,28 +158,7 @@ def _wrap(text: str, size: float, width: float, rich: bool, bold: bool = False,
     def wide(s: str) -> float:
         return runs_width(notation(s) if rich else (Run(s),), size, bold)
 
-    lines: list[str] = []
-    cur = ""
-    for word in text.split(" "):
-        room = width - (indent if lines else 0.0)
-        trial = f"{cur} {word}" if cur else word
-        if wide(trial) <= room:
-            cur = trial
-            continue
-        if cur:
-            lines.append(cur)
-            room = width - indent
-        cur = word
-        while wide(cur) > room and len(cur) > 1:  # a word wider than the line: cut it
-            k = len(cur)
-            while k > 1 and wide(cur[:k]) > room:
-                k -= 1
-            lines.append(cur[:k])
-            cur = cur[k:]
-            room = width - indent
-    if cur or not lines:
-        lines.append(cur)
-    return lines
+    return wrap_words(text, width, wide, indent)
 
 
 def _fit_left(text: str, size: float, width: float) -> str:

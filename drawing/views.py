@@ -16,13 +16,14 @@ from __future__ import annotations
 
 import itertools
 import math
-import re
 from dataclasses import dataclass, field
 
 import numpy as np
 from shapely.geometry import box as shp_box
 
 from drawing.labels import (
+    LINE_PITCH,
+    SLANT,
     LabelRequest,
     obstacles_of,
     place_labels,
@@ -40,7 +41,9 @@ from drawing.scene import (
     Segment,
     Text,
     flatten,
+    index_markup,
     translate,
+    wrap_words,
 )
 from drawing.styles import LineType
 from plans.cycle import at_rest
@@ -154,7 +157,7 @@ def _markup(name: str) -> str:
 
 def notation(s: str) -> str:
     """Engine notation as Text markup: ``V_A3A`` → ``V_{A3A}``, ``a^n_A3B`` → ``a^n_{A3B}``."""
-    return re.sub(r"_([A-Za-z0-9]{2,})", r"_{\1}", s).replace("∥", "||")
+    return index_markup(s).replace("∥", "||")
 
 
 def centred(pos, text: str, size: float, baseline: str = "alphabetic", stretch: float = 1.0) -> Text:
@@ -942,24 +945,12 @@ def note_view(lines: list[str], width: float = 180.0) -> View:
     items: list[Item] = []
     y = 0.0
     for line in lines:
-        for part in _wrapped(line, 3.5, width - 2.0):
-            y += 3.5 * 1.7
+        for part in wrap_words(line, width - 2.0, lambda s: (text_width(s, 3.5)
+                                                              + SLANT * 3.5), cut=False):
+            y += 3.5 * LINE_PITCH
             items.append(Text((0, y), part, size=3.5))
     bx0, by0, bx1, by1 = _bbox(items)
     items = _shift(items, -bx0 + 1, -by0 + 1)
     return View("note", items, bx1 - bx0 + 2, by1 - by0 + 2)
 
 
-def _wrapped(text: str, size: float, width: float) -> list[str]:
-    """``text`` broken at spaces into lines no wider than ``width`` (a word longer than
-    that stands alone on its line)."""
-    out: list[str] = []
-    for word in text.split():
-        if out and text_width(f"{out[-1]} {word}", size) + SLANT_ROOM * size <= width:
-            out[-1] = f"{out[-1]} {word}"
-        else:
-            out.append(word)
-    return out or [""]
-
-
-SLANT_ROOM = 0.27  # tan 15°, the lean of the last letter, in h
