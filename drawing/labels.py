@@ -16,7 +16,7 @@ Against osifont's real advances the rule is within about ±10 % on words.
 >>> text_width("Изм.", 2.5)
 6.625
 >>> text_box(Text((0, 0), "AB", size=10)).bounds
-(0.0, -10.0, 16.0, 3.0)
+(0.0, -10.0, 18.68, 3.0)
 """
 
 from __future__ import annotations
