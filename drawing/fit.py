@@ -27,7 +27,7 @@ from __future__ import annotations
 import itertools
 
 from drawing.layout import LayoutError, pack, place_views
-from drawing.views import CAPTION, CAPTION_OVER, SMALL_CAPTION
+from drawing.views import captioned_width
 
 __all__ = ["SIZES", "Fit"]
 
@@ -92,12 +92,8 @@ class Fit:
             sizes = []
             for a, b in zip(big, small, strict=True):
                 bw, bh = (q + t * (p - q) for p, q in zip(a.body, b.body, strict=True))
-                cap, under = a.texts  # the caption's width at CAPTION
-                if cap > bw + CAPTION_OVER:
-                    cap *= SMALL_CAPTION / CAPTION
-                # the caption is centred on the drawing, the equations start at its left
-                w = max(bw, (bw + cap) / 2, under) - min(0.0, (bw - cap) / 2) + 2.0
-                sizes.append((w, bh + max(a.h - a.body[1], b.h - b.body[1])))
+                sizes.append((captioned_width(bw, *a.texts),
+                              bh + max(a.h - a.body[1], b.h - b.body[1])))
             out.append(sizes)
         return out
 

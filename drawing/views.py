@@ -288,7 +288,8 @@ def _captioned(name: str, items: list[Item], bounds, caption: str, under: list[s
     """The view of ``items`` (within ``bounds``) under ``caption``, ``under`` below."""
     x0, y0, x1, y1 = bounds
     top = y0 - 2.0
-    cap = centred(((x0 + x1) / 2, top), caption, caption_size(caption, x1 - x0))
+    wide = _width(centred((0, 0), caption, CAPTION))
+    cap = centred(((x0 + x1) / 2, top), caption, _caption_at(wide, x1 - x0))
     cap = translate(cap, 0.0, y0 - 1.5 - text_box(cap).bounds[3])
     items.append(cap)
     widths = [0.0]
@@ -301,14 +302,27 @@ def _captioned(name: str, items: list[Item], bounds, caption: str, under: list[s
     bx0, by0, bx1, by1 = min(bx0, x0), min(by0, y0), max(bx1, x1), max(by1, y1)
     items = _shift(items, -bx0 + 1, -by0 + 1)
     return View(name, items, bx1 - bx0 + 2, by1 - by0 + 2, (x1 - x0, y1 - y0),
-                (_width(centred((0, 0), caption, CAPTION)), max(widths)))
+                (wide, max(widths)))
 
 
 def caption_size(caption: str, width: float) -> float:
     """The size of a view's caption over a drawing ``width`` mm wide: :data:`CAPTION`,
     or :data:`SMALL_CAPTION` where that is much wider than the drawing."""
-    wide = _width(centred((0, 0), caption, CAPTION))
+    return _caption_at(_width(centred((0, 0), caption, CAPTION)), width)
+
+
+def _caption_at(wide: float, width: float) -> float:
+    """The caption's size, ``wide`` mm at :data:`CAPTION`, over a drawing ``width`` wide."""
     return CAPTION if wide <= width + CAPTION_OVER else SMALL_CAPTION
+
+
+def captioned_width(body: float, caption: float, under: float) -> float:
+    """The width :func:`_captioned` gives a view whose drawing is ``body`` mm wide, its
+    caption ``caption`` mm at :data:`CAPTION` (set at :data:`SMALL_CAPTION` where that is
+    much wider than the drawing) and the widest line under it ``under`` mm: the caption
+    centred on the drawing, the lines from its left, 1 mm of margin each side."""
+    caption *= _caption_at(caption, body) / CAPTION
+    return max(body, (body + caption) / 2, under) - min(0.0, (body - caption) / 2) + 2.0
 
 
 def _width(t: Text) -> float:
