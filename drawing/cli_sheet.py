@@ -361,7 +361,7 @@ class _Sheet1:
     def _no_room(self, fit) -> str:
         """Why sheet 1 does not fit this format: what its views need at their smallest,
         and the smallest format that holds them."""
-        from drawing.layout import LayoutError, describe
+        from drawing.layout import LayoutError, describe, room
         from drawing.sheet import FORMATS, Sheet
 
         smallest = {k: v[0] if k in fit.plain else v[-1] for k, v, _ in fit.factors}
@@ -383,10 +383,8 @@ class _Sheet1:
                  if self.chosen is not None and len(self.chosen) > 1 else "")
         where = (f"{holds} holds it: use --format {holds}{fewer}" if holds
                  else f"no format holds it{fewer}")
-        f = self.sheet.frame
-        return (f"sheet 1 does not fit on {self.sheet.name}, whose frame is {f.x1 - f.x:.0f} × "
-                f"{f.y1 - f.y:.0f} mm with the 185 × 55 mm title block in it: at their smallest scales "
-                f"its views need {need}; {where}")
+        return (f"sheet 1 does not fit on {room(self.sheet)}: at their smallest scales its "
+                f"views need {need}; {where}")
 
 
 def _compose(mech, sheet, cycle, mu, lang, title, placed, sols):

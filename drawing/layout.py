@@ -201,8 +201,14 @@ def _why_not(sheet: Sheet, views) -> tuple[str, str]:
             return (f"{size} is larger than any sheet, A0 included, at the scale factors the "
                     "file fixes: give larger mu_v and mu_a in [scales] (or leave them out for "
                     "the sheet to choose), or choose other --plans"), "--plans"
-    (fx0, fy0, fx1, fy1), _ = field(sheet)
     need = ", ".join(f"{describe(v)} {v.w:.0f} × {v.h:.0f} mm" for v in views)
-    return (f"the views do not fit together on {sheet.name}, whose field is {fx1 - fx0:.0f} × "
-            f"{fy1 - fy0:.0f} mm less the 185 × 55 mm title block ({need}): take a larger "
+    return (f"the views do not fit together on {room(sheet)} ({need}): take a larger "
             "--format"), "--format"
+
+
+def room(sheet: Sheet) -> str:
+    """The sheet's room in words: "A4, whose frame is 185 × 287 mm with the 185 × 55 mm
+    title block in it"."""
+    f, tb = sheet.frame, sheet.title_block
+    return (f"{sheet.name}, whose frame is {f.w:.0f} × {f.h:.0f} mm with the {tb.w:.0f} × "
+            f"{tb.h:.0f} mm title block in it")
