@@ -432,15 +432,17 @@ def _link_segments(mech, pos: dict[str, complex], mu_l: float, line: LineType) -
         # a rigid link of three points or more not in line is a plate: its outline closed
         # (the coupler ABE is a triangle, not the bars AB and AE)
         hull = _hull([pos[n] for n in names])
-        for a, b in zip(hull, hull[1:] + hull[:1], strict=True):
-            if len(hull) >= 3 and pos[root] not in (a, b):
-                out.append(Segment(_sheet(a, mu_l), _sheet(b, mu_l), line))
+        if len(hull) >= 3:  # the sides the bars from the root do not draw
+            out += [Segment(_sheet(a, mu_l), _sheet(b, mu_l), line)
+                    for a, b in zip(hull, hull[1:] + hull[:1], strict=True)
+                    if pos[root] not in (a, b)]
     return out
 
 
 def _hull(points: list[complex]) -> list[complex]:
     """The corners of the convex hull of ``points``, counter-clockwise; fewer than three
-    where they are in line (within 1e-9 of their spread)."""
+    where they are in line (within 1e-9 of their spread: a coupler point on the link's
+    axis, as computed, makes no plate, which shapely's exact hull would)."""
     pts = sorted(set(points), key=lambda z: (z.real, z.imag))
     if len(pts) < 3:
         return pts
