@@ -385,8 +385,7 @@ def _table_of(n: int, table: Path | None, problems: Problems):
         raise
     if n in have:
         return rows
-    listed = ", ".join(map(str, have)) if len(have) <= 30 else f"{have[0]}…{have[-1]}, {len(have)} rows"
-    problems.add("variant", f"{n} is not in {rows.source} (it has {listed})")
+    problems.add("variant", f"{n} is not in {rows.source} ({rows.has()})")
     return None
 
 

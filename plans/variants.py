@@ -88,17 +88,23 @@ class Table(NamedTuple):
     def variant(self, n: int) -> Mechanism:
         """Row ``n`` as a mechanism; the problems of that row, or of the table as a whole,
         are an InputError, those of other rows are not (:meth:`others`)."""
-        have = self.numbers
+        self.numbers  # noqa: B018 - raises where the table cannot be used at all
         if n in self.rows_problems:
             own = Problems(self.source, self.text)
             own.items = list(self.rows_problems[n])
             own.raise_if_any()
         if n not in self.rows:
-            listed = ", ".join(map(str, have)) if len(have) <= 30 else f"{have[0]}…{have[-1]}, {len(have)} rows"
             raise InputError(self.source, [*self.located(n, every=True).lines(),
-                                           f"variant {n} is not in the table (it has {listed})"])
+                                           f"variant {n} is not in the table ({self.has()})"])
         return from_dict(variant_dict(self.rows[n], self.designation),
                          f"{self.source}, variant {n}")
+
+    def has(self) -> str:
+        """The numbered rows in words, for a message: "it has 0, 1, 2" (or "0…99, 100
+        rows" for a long table)."""
+        have = self.numbers
+        listed = ", ".join(map(str, have)) if len(have) <= 30 else f"{have[0]}…{have[-1]}, {len(have)} rows"
+        return f"it has {listed}"
 
     def others(self, n: int | None) -> list[str]:
         """The problems of the rows other than ``n`` (None: of the rows without a number
