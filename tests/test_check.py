@@ -1147,3 +1147,21 @@ def test_a_measurement_built_with_numpy_numbers_is_checked(tmp_path, press):
     got = named(ck.check(meas))
     assert (got.kind, got.plan) == ("scale", "velocity")
     assert "fit μv = 0.04" in got.describe()
+
+
+def test_a_wrong_point_on_a_plan_drawn_at_another_scale_is_read_at_that_scale(tmp_path, press):
+    """The velocity plan drawn 10 times too large, and on it pc measured from a: the scale
+    mistake explains all but pc, and pc is the length of ac on the student's plan, 10
+    times the exact plan's ac. The look-alike is read at the plan's own scale."""
+    names = ("pa3", "aa3", "pc", "cd", "pd", "ps3", "ps4", "ak", "bn1", "πa3", "πc", "πd")
+    seg = {k: press.segments[k] * (10 if not k.startswith(("π", "a", "b")) or k == "aa3"
+                                   else 1) for k in names}
+    v = press.velocity
+    seg["pc"] = 10 * abs(v.value("c") - v.value("a")) / press.mu_v
+    res = ck.check(ck.load(write_meas(tmp_path / "m.toml", PRESS, seg, MU_PRESS)))
+    best = named(res)
+    assert (best.kind, best.plan) == ("scale", "velocity") and best.factor == pytest.approx(10)
+    assert best is res.diagnosis.best.mistake and res.diagnosis.best.unexplained == ("pc",)
+    (lk,) = res.diagnosis.lookalikes
+    assert (lk.item, lk.kind, lk.other) == ("pc", "segment", "ac")
+    assert lk.exact == pytest.approx(seg["pc"], rel=1e-9)  # the student's ac, at 10 times
