@@ -412,15 +412,18 @@ class _Names:
         self.pos_names = set(sol.positions)
         self.rep = _Replayer(sol)
 
-    def known(self) -> str:
-        names = list(self.sol.lengths) + [
+    def names(self) -> list[str]:
+        """Every segment a file may name: the plan of positions', then the plans'."""
+        return list(self.sol.lengths) + [
             k for p in ("velocity", "acceleration") for k in self.recorded[p]]
-        return ", ".join(names)
+
+    def known(self) -> str:
+        return ", ".join(self.names())
 
     def suggest(self, name: str) -> str:
         """'did you mean "pa3"? ' for a near miss (Pa3, pA3, PIa3, pa33), π as the file
         can write it bare (pia3); Cyrillic look-alikes are said by the caller."""
-        names = self.known().split(", ")
+        names = self.names()
         allowed = set(names) | {n.replace("π", "pi") for n in names}
         latin = "".join(LOOKALIKES.get(c, c) for c in name)
         hit = close_match(latin, allowed)
