@@ -82,6 +82,32 @@ points = { B = 0.15, F = [0.05, -0.03] }
 B = "above OD"
 """
 
+# --- RRR, joints only: the same crank-rocker without E, S2 and F -------------------------
+# the workload of the peers' four-bar kernels (their joints' motion), so the bench compares
+# like with like; ``crank_rocker`` adds three points found by the similarity theorem
+FOURBAR_JOINTS = """
+name = { en = "Crank-rocker four-bar, joints only", ru = "Кривошипно-коромысловый механизм (только шарниры)" }
+output = "B"
+[frame]
+O = [0.0, 0.0]
+D = [0.2, 0.0]
+[driver]
+link = 1
+angle_deg = 60
+omega = 10
+[links.1]
+axis = ["O", "A"]
+points = { A = 0.05 }
+[links.2]
+axis = ["A", "B"]
+points = { B = 0.2 }
+[links.3]
+axis = ["D", "B"]
+points = { B = 0.15 }
+[assembly]
+B = "above OD"
+"""
+
 # --- RRP: offset crank-slider r = 0.1, l = 0.4, e = 0.05 ---------------------------------
 # θ = arcsin(e/(l−r)) − arcsin(e/(l+r)) = 3.855°, H = √((l+r)²−e²) − √((l−r)²−e²) = 0.20169 m
 CRANK_SLIDER_OFFSET = """
@@ -438,6 +464,7 @@ SCENES: dict[str, Scene] = {
     s.name: s
     for s in (
         Scene("crank_rocker", ("RRR",), 0.0, 360.0, CRANK_ROCKER),
+        Scene("fourbar_joints", ("RRR",), 0.0, 360.0, FOURBAR_JOINTS),
         Scene("crank_slider_offset", ("RRP",), 0.0, 360.0, CRANK_SLIDER_OFFSET),
         Scene("crank_slider_central", ("RRP",), 0.0, 360.0, CRANK_SLIDER_CENTRAL),
         Scene("slot_rrp_moving", ("RPR", "RRP"), 0.0, 360.0, SLOT_RRP_MOVING),

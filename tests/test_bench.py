@@ -139,3 +139,45 @@ def test_svg_chart_handles_zero_and_missing_errors():
     from drawing.bench_chart import svg_chart
 
     ET.fromstring(svg_chart(rows, "test"))
+
+
+def test_joints_only_four_bar_is_the_crank_rocker_without_its_extra_points():
+    """The bench reads the four-bar target on ``fourbar_joints``: it must be the very
+    crank-rocker of ``crank_rocker``, with only the points found by similarity dropped."""
+    from plans.sweep import sweep
+
+    full, bare = (Solver(SCENES[n].mechanism()) for n in ("crank_rocker", "fourbar_joints"))
+    phi = SCENES["crank_rocker"].angles(29)
+    a, b = sweep(full, phi), sweep(bare, phi)
+    assert set(a.position) - set(b.position) == {"E", "S2", "F"}
+    assert set(b.position) == {"O", "D", "A", "B"}
+    for kind in ("position", "velocity", "acceleration"):
+        for name in b.position:
+            np.testing.assert_array_equal(getattr(b, kind)[name], getattr(a, kind)[name])
+    for lid in (1, 2, 3):
+        np.testing.assert_array_equal(b.omega[lid], a.omega[lid])
+        np.testing.assert_array_equal(b.epsilon[lid], a.epsilon[lid])
+    assert "fourbar_joints" in bench.BENCH_SCENES
+
+
+def test_targets_read_each_rate_on_its_own_scenes():
+    rate = lambda per_s: 1 / per_s  # noqa: E731
+    rows = [
+        bench.Row("fourbar_joints", "vectorized", 100_000, rate(7e6), 5e-16),
+        bench.Row("fourbar_joints", "vectorized", 1_000_000, rate(5.5e6), 5e-16),
+        bench.Row("crank_rocker", "vectorized", 100_000, rate(5.2e6), 5e-16),
+        bench.Row("crank_rocker", "vectorized", 1_000_000, rate(3.6e6), 5e-16),
+        bench.Row("crank_rocker", "vectorized", 10_000, rate(9e6), 5e-16),  # N < 1e5
+        bench.Row("press", "vectorized", 1_000_000, rate(1.9e6), 9e-16),
+    ]
+    lines = bench.targets(rows)
+    joints = [ln for ln in lines if "joints only" in ln and "new arrays" in ln]
+    more = [ln for ln in lines if "more points" in ln and "new arrays" in ln]
+    press = [ln for ln in lines if "press ≥" in ln]
+    assert len(joints) == len(more) == len(press) == 1
+    assert joints[0].endswith("— met") and "5.5e+06 at N = 1e+06" in joints[0]
+    assert more[0].endswith("met at some N only") and "9e+06" not in more[0]
+    assert press[0].endswith("NOT met")
+    # no reused rows were given: their lines are left out, not reported as unmeasured
+    assert not any("reused" in ln for ln in lines)
+
