@@ -1,7 +1,8 @@
 """``plans bench``: run time per crank position and error against a high-precision reference.
 
-For each bench scene (the two samples and one scene of each dyad kind, from the source
-built-in scenes, ``plans/scenes.py``) and each number N of crank positions (12 … 10⁶), it measures
+For each bench scene (the two samples, one scene of each dyad kind, and the crank-rocker
+with its joints only, the work of the peers' four-bar kernels; the built-in scenes of
+``plans/scenes.py``) and each number N of crank positions (12 … 10⁶), it measures
 
 * ``vectorized`` — ``Solver.sweep`` over the N angles (positions, velocities and
   accelerations of every point, ω and ε of every link, the conditioning of every group:
