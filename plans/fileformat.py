@@ -267,18 +267,14 @@ def read_number(value: Any, where: str, problems: Problems, *, positive=False, d
             return default
         problems.add(where, "missing (a number is needed)")
         return None
+    if isinstance(value, str) and re.fullmatch(rf"\s*{DECIMAL}\s*", value):
+        value = decimal(value)  # "0,15" from a Russian keyboard, or "0.15": a number all the same
     if isinstance(value, bool) or not isinstance(value, int | float):
         hint = ""
-        if isinstance(value, str):
-            bare = re.sub(r"\s*(°|deg|rad/s|rpm|mm|m)$", "", value.strip()[:40])
-            point = bare.replace(",", ".") if re.fullmatch(r"-?\d+,\d+", bare) else bare
-            try:
-                float(point)
-                hint = (f": write {point} without quotes"
-                        + (" and units" if bare != value.strip() else "")
-                        + (", with a decimal point" if point != bare else ""))
-            except ValueError:
-                pass
+        if isinstance(value, str) and (m := re.fullmatch(rf"\s*({DECIMAL})\s*\S.*", value[:60])):
+            number = m.group(1)
+            hint = (f': write "{number}" or {number.replace(",", ".")}, without the unit'
+                    if "," in number else f": write {number} without the unit")
         problems.add(where, f"must be a number, got {quote(value)}{hint}")
         return None
     if isinstance(value, int) and abs(value) > high:  # also 10**400, which float() refuses

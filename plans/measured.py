@@ -174,31 +174,10 @@ def load(path: str | Path) -> Measurement:
     return from_dict(data, str(path), path.parent, text=text)
 
 
-def comma_number(value: Any) -> float | None:
-    """A number written in quotes with a decimal comma, as in Russian ("55,4"), else None:
-    a bare TOML number cannot hold a comma, so the quotes are how it is written.
-
-    >>> comma_number("55,4"), comma_number(" −0,05 "), comma_number("0,5e1"), comma_number(",5")
-    (55.4, -0.05, 5.0, 0.5)
-    >>> comma_number("55.4"), comma_number(55.4), comma_number("55,4 мм")
-    (None, None, None)
-    """
-    if isinstance(value, str) and "," in value and re.fullmatch(rf"\s*{DECIMAL}\s*", value):
-        return decimal(value)
-    return None
-
-
 def _num(value: Any, where: str, problems: Problems, *, positive=False, nonneg=False,
          unit: str = "mm", what: str = "a length on the drawing") -> float | None:
-    """A number of the file (``fileformat.read_number``), or one in quotes with a decimal
-    comma; ``what`` (a length on the drawing, a magnitude) is not negative."""
-    if (comma := comma_number(value)) is not None:
-        value = comma
-    elif isinstance(value, str) and (m := re.fullmatch(rf"\s*({DECIMAL})\s*\S.*", value)) \
-            and "," in m.group(1):
-        problems.add(where, f'must be a number, got {quote(value)}: write "{m.group(1)}" '
-                            f'or {m.group(1).replace(",", ".")}, without the unit')
-        return None
+    """A number of the file (``fileformat.read_number``: in quotes too, with a decimal point
+    or comma); ``what`` (a length on the drawing, a magnitude) is not negative."""
     x = read_number(value, where, problems, positive=positive, unit=unit)
     if x is not None and nonneg and x < 0:
         problems.add(where, f"{what} cannot be negative, got {x:g}")

@@ -775,10 +775,10 @@ def test_json_words_follow_the_language(tmp_path, capsys, press):
 
 def test_measurement_problems_are_located_and_hinted_like_a_mechanism_files(tmp_path, capsys):
     """A misspelt key gets a "did you mean", a key written with π is located to its own
-    line, a number in quotes is told to lose them."""
+    line, a number written with its unit is told to lose it."""
     path = tmp_path / "m.toml"
     path.write_text(f'mechanism = {json.dumps(str(PRESS))}\ntolerence = "5%"\n[scales]\n'
-                    'mu_v = 0.05\n[segments]\npa = 60\n"πa3" = "abc"\npb3 = "55"\n',
+                    'mu_v = 0.05\n[segments]\npa = 60\n"πa3" = "abc"\npb3 = "55 mm"\n',
                     encoding="utf-8")
     code, out, err = run(capsys, "check", path)
     assert code == 2 and out == ""
@@ -786,8 +786,8 @@ def test_measurement_problems_are_located_and_hinted_like_a_mechanism_files(tmp_
         f"plans check: {path}: line 2: tolerence: unknown key — did you mean \"tolerance\"? "
         "known: angle_deg, mechanism, scales, segments, table, title, tolerance, values, variant",
         f'plans check: {path}: line 7: segments."πa3": must be a number, got "abc"',
-        f'plans check: {path}: line 8: segments.pb3: must be a number, got "55": '
-        "write 55 without quotes",
+        f'plans check: {path}: line 8: segments.pb3: must be a number, got "55 mm": '
+        "write 55 without the unit",
     ]
 
 

@@ -3,6 +3,7 @@ traceback, and no file lost (never an input written, never a half-written output
 
 from __future__ import annotations
 
+import json
 import os
 import stat
 import subprocess
@@ -777,3 +778,34 @@ def test_a_decimal_comma_in_quotes_is_read(capsys, tmp_path):
     code, _, err = run(capsys, "check", meas)
     assert code == 2 and err == (f'plans check: {meas}: line 5: segments.pa3: must be a number, '
                                  'got "55,4 мм": write "55,4" or 55.4, without the unit\n')
+
+
+def test_a_number_in_quotes_is_read_in_every_file(capsys, tmp_path):
+    """The same rule in a mechanism file and a variant table as in a measurement file:
+    "0,15" (a Russian keyboard) and "0.15" are numbers. Before, a mechanism file and a
+    table refused both, with "write 0.15 without quotes", while a measurement file read
+    "30,0" and refused "30"."""
+    text = PRESS.read_text("utf-8")
+    quoted = (text.replace("angle_deg = 30", 'angle_deg = "30,0"')
+              .replace("B = [0.0, -0.44]", 'B = ["0", "−0,44"]'))
+    assert quoted != text and '"30,0"' in quoted and '"−0,44"' in quoted
+    mech = tmp_path / "press.toml"
+    mech.write_text(quoted, "utf-8")
+    code, out, err = run(capsys, "solve", mech, "--json")
+    assert code == 0 and err == "", err
+    code, ref, _ = run(capsys, "solve", PRESS, "--json")
+    assert out == ref
+
+    row = {"n": 0, "AB": 0.05, "BC": 0.15, "phi_deg": 15, "rpm": 100}
+    bare = tmp_path / "bare.toml"
+    bare.write_text("[[variant]]\n" + "".join(f"{k} = {v}\n" for k, v in row.items()), "utf-8")
+    commas = tmp_path / "commas.toml"
+    commas.write_text('[[variant]]\nn = 0\nAB = "0,05"\nBC = "0.15"\nphi_deg = "15"\n'
+                      'rpm = "100,0"\n', "utf-8")
+    outs = []
+    for table in (bare, commas):
+        code, out, err = run(capsys, "solve", "--variant", "0", "--table", table, "--json")
+        assert code == 0 and err == "", err
+        outs.append(out)
+    assert outs[0] == outs[1]
+    assert abs(complex(*json.loads(outs[0])["points"]["B"]["position"])) == pytest.approx(0.05, rel=1e-14)

@@ -101,12 +101,12 @@ def _problems_of_text(tmp_path, text: str, name: str = "m.toml") -> list[str]:
 
 def test_several_problems_are_reported_at_once_in_line_order(tmp_path):
     text = (
-        FOURBAR.replace("A = [0.0, 0.0]", 'A = [0.0, "0"]')
+        FOURBAR.replace("A = [0.0, 0.0]", 'A = [0.0, "zero"]')
         .replace("angle_deg = 40", "angle_deg = 40\nfrom = 'north'")
         .replace("points = { C = 0.1025, S3 = 0.05125 }", "points = { C = -0.1025 }")
     )
     lines = text.split("\n")
-    where = [lines.index(s) + 1 for s in ('A = [0.0, "0"]', "from = 'north'", "points = { C = -0.1025 }")]
+    where = [lines.index(s) + 1 for s in ('A = [0.0, "zero"]', "from = 'north'", "points = { C = -0.1025 }")]
     got = _problems_of_text(tmp_path, text)
     assert [p.split(":")[0] for p in got] == [f"line {n}" for n in where]
     assert "frame.A[1]" in got[0] and "driver.from" in got[1] and "negative length" in got[2]
