@@ -172,7 +172,7 @@ def lookalikes(meas: Measurement, devs: tuple[Deviation, ...], st: State, tol: T
         it = d.item
         if it.name in names and it.kind == "value" and it.plan in MU_KEY and _far(d):
             mu = meas.mu[MU_KEY[it.plan]]
-            if abs(mu - 1.0) > 1e-9 and _near(it.measured, abs(d.computed) / mu, tol):
+            if abs(mu - 1.0) > 1e-9 and _mixup(it.measured, abs(d.computed) / mu, tol):
                 out.append(Lookalike(it.name, "length", f"{it.start}{it.end}", abs(d.computed) / mu))
     # only an item far off its own length, matched closely: a measurement a little beyond
     # tolerance is drawing scatter
@@ -202,7 +202,7 @@ def lookalikes(meas: Measurement, devs: tuple[Deviation, ...], st: State, tol: T
         names_ = [mech_name.get(x) for x in (it.end, it.start) if x != pole]
         # a value for a segment between mechanism points (not a component's n or k), in
         # m/s: 1 mm of drawing is μ of it
-        if abs(mu - 1.0) > 1e-9 and None not in names_ and _near(it.measured, value, tol, per_mm=mu):
+        if abs(mu - 1.0) > 1e-9 and None not in names_ and _mixup(it.measured, value, tol, per_mm=mu):
             sym = "V" if it.plan == "velocity" else "a"
             out.append(Lookalike(it.name, "value", f"{sym}_{''.join(names_)}", value))
             continue
@@ -277,6 +277,15 @@ def _near(measured: float, exact: float, tol: Tolerance, share: float = 1.0,
     """Within ``share`` of the tolerance, as :func:`compare` judges an item whose 1 mm of
     drawing is ``per_mm`` of it."""
     return abs(measured - exact) <= share * tol.limit(exact, per_mm) * (1 + 1e-9) + 1e-12
+
+
+def _mixup(measured: float, exact: float, tol: Tolerance, per_mm: float = 1.0) -> bool:
+    """``measured`` is ``exact`` in the other unit (a value in m/s written as its segment's
+    mm, or a segment written as its value): within tolerance of it, and ``exact`` stands
+    clear of zero, at least twice the tolerance. Near zero the tolerance's fixed part
+    matches any small number: at a dead point V_C = 0.1 m/s is no more "the length of pc"
+    (0 mm, ±1 mm) than it is V_C (0 m/s)."""
+    return exact >= 2.0 * tol.limit(exact, per_mm) and _near(measured, exact, tol, per_mm=per_mm)
 
 
 def _far(d: Deviation) -> bool:

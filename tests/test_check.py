@@ -1165,3 +1165,29 @@ def test_a_wrong_point_on_a_plan_drawn_at_another_scale_is_read_at_that_scale(tm
     (lk,) = res.diagnosis.lookalikes
     assert (lk.item, lk.kind, lk.other) == ("pc", "segment", "ac")
     assert lk.exact == pytest.approx(seg["pc"], rel=1e-9)  # the student's ac, at 10 times
+
+
+def test_no_unit_mix_up_is_offered_around_a_zero(tmp_path, capsys):
+    """Variant 4 at 0° is a dead point: V_C = 0 and pc = 0 mm. V_C = 0.1 m/s had been
+    "the length of pc in mm (0 mm): the value is pc·μv", 0.1 lying within the 1 mm of
+    0 mm; and pc = 2 mm on a plan where 1 mm is 5 m/s, "V_C in m/s (0 m/s)". Both are
+    simply beyond tolerance of the exact 0."""
+    path = tmp_path / "dead.toml"
+    path.write_text("variant = 4\nangle_deg = 0\n[scales]\nmu_v = 0.02\n[segments]\n"
+                    "pb = 83.8\n[values]\nV_C = 0.1\n", encoding="utf-8")
+    res = ck.check(ck.load(path))
+    (bad,) = res.failed
+    assert (bad.item.name, bad.computed, bad.deviation) == ("V_C", 0.0, pytest.approx(0.1))
+    assert res.diagnosis.lookalikes == ()
+    code, out, _ = run(capsys, "check", path)
+    assert code == 1
+    assert "  V_C, m/s      0.1         0       +0.1  —  BEYOND\n" in out
+    assert "is the length of" not in out
+    assert out.rstrip().endswith("Overall: 1 of 2 items beyond tolerance: V_C.\n"
+                                 "Diagnosis: no single mistake explains this.")
+    path.write_text("variant = 4\nangle_deg = 0\n[scales]\nmu_v = 5\n[segments]\npc = 2\n",
+                    encoding="utf-8")
+    res = ck.check(ck.load(path))
+    assert [d.item.name for d in res.failed] == ["pc"] and res.diagnosis.lookalikes == ()
+    # away from zero the mix-up is named as before: V_C written as pc's 72.33 mm is
+    # test_a_segment_that_is_something_else_says_what's
