@@ -10,7 +10,7 @@ import math
 
 from .cli import EXIT_DEVIATIONS, EXIT_OK, write_output
 from .errors import InputError
-from .fmt import angle, from_x, num, ru_plural, signed
+from .fmt import from_x, json_angle, num, ru_plural, signed
 
 
 def configure(p) -> None:
@@ -80,7 +80,6 @@ WORDS = {
     "en": {
         "head": "Check of a hand-drawn plan",
         "mech": "Mechanism",
-        "from_x": "from +x",
         "scales": "Student's scale factors",
         "none_given": "none given",
         "tol": "Tolerance",
@@ -116,7 +115,6 @@ WORDS = {
     "ru": {
         "head": "Проверка плана, построенного вручную",
         "mech": "Механизм",
-        "from_x": "от +x",
         "scales": "Масштабные коэффициенты студента",
         "none_given": "не заданы",
         "tol": "Допуск",
@@ -215,7 +213,7 @@ def to_text(result, lang: str = "en") -> str:
     if meas.title:
         out.append(f"  {meas.title}")
     out.append(f"{w['mech']}: {mech.name_in(lang)} ({mech.source}), "
-               f"φ1 = {angle(math.degrees(sol.phi), 4, lang)}° {w['from_x']}")
+               f"φ1 = {mech.driver.both(sol.phi, lang)}")
     mu = meas.mu
     from .measured import MU_KEY, MU_SYMBOL
     from .report import UNITS
@@ -353,7 +351,8 @@ def to_json(result, lang: str = "en") -> dict:
     return {
         "file": meas.source,
         "mechanism": meas.mechanism.source,
-        "phi_deg": from_x(meas.solution.phi),
+        "phi_deg": json_angle(from_x(meas.solution.phi)),
+        "angle_deg": json_angle(meas.mechanism.driver.file_angle(meas.solution.phi)),
         "scales": {k: v for k, v in meas.mu.items() if k in meas.given},
         "tolerance": {"percent": result.tolerance.percent, "mm": result.tolerance.mm},
         "items": items,

@@ -3,10 +3,9 @@
 from __future__ import annotations
 
 import json
-import math
 
 from .cli import add_source, mechanism_from, warn, write_output
-from .fmt import angle, from_x, num
+from .fmt import from_x, json_angle, num
 
 
 def configure(p) -> None:
@@ -67,7 +66,8 @@ def to_json(sol) -> dict:
             "class": st.mechanism_class,
             "groups": [{"links": list(g.links), "kind": g.kind.name} for g in st.groups],
         },
-        "phi_deg": from_x(sol.phi),
+        "phi_deg": json_angle(from_x(sol.phi)),
+        "angle_deg": json_angle(sol.mechanism.driver.file_angle(sol.phi)),
         "warnings": list(sol.warnings),
     }
 
@@ -85,12 +85,9 @@ def to_text(sol, cycle=None) -> str:
         out.append(f"  {g.label}: kind {g.kind.value} ({g.kind.ru})")
     d = mech.driver
     # the file's own convention too, the one --angle and the cycle's lines below use
-    conv = d.convention()[2:-1]  # "from +y, cw" without its brackets
-    # six digits: the angle as the user typed it (270.01° had printed as 270°)
-    own = f" ({angle(d.file_angle(sol.phi), 6)}° {conv}, as the file gives it)" if conv else ""
     out.append(
         f"Crank: link {d.link}, l_{d.pivot}{d.tip} = {num(d.length)} m, "
-        f"φ1 = {angle(math.degrees(sol.phi), 6)}° from +x{own}, ω1 = {num(abs(d.omega))} rad/s{_sense(d.omega)}"
+        f"φ1 = {d.both(sol.phi)}, ω1 = {num(abs(d.omega))} rad/s{_sense(d.omega)}"
     )
     out.append(
         f"Scales: μl = {num(sol.mu_l)} m/mm, μv = {num(sol.mu_v)} (m/s)/mm, μa = {num(sol.mu_a)} (m/s²)/mm"

@@ -53,6 +53,19 @@ def from_x(phi: float) -> float:
     return math.degrees(phi) % 360.0
 
 
+def json_angle(deg: float) -> float:
+    """A crank angle of one position, in degrees in [0, 360), for JSON: to 1e-9°, far
+    finer than any angle typed, so that the noise of degrees → radians → degrees does not
+    show (30° from +y, clockwise, is 60.0 from +x, not 59.99999999999999); a rounding's
+    worth from a full turn is 0.
+
+    >>> json_angle(59.99999999999999), json_angle(-1e-13), json_angle(30.000000000000004)
+    (60.0, 0.0, 30.0)
+    """
+    x = round(deg % 360.0, 9)
+    return 0.0 if x >= 360.0 else x + 0.0  # + 0.0: no −0.0
+
+
 def angle(deg: float, digits: int = 4, lang: str = "en") -> str:
     """A crank angle in degrees, in [0, 360) as written: one that rounds to 360 is 0.
 

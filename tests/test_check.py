@@ -1191,3 +1191,22 @@ def test_no_unit_mix_up_is_offered_around_a_zero(tmp_path, capsys):
     assert [d.item.name for d in res.failed] == ["pc"] and res.diagnosis.lookalikes == ()
     # away from zero the mix-up is named as before: V_C written as pc's 72.33 mm is
     # test_a_segment_that_is_something_else_says_what's
+
+
+def test_the_crank_angle_is_given_as_solve_gives_it(capsys):
+    """The press measures φ1 from +y, clockwise, and its measurement file gives 30°. The
+    check printed only "φ1 = 60° from +x" and its JSON 59.99999999999999; it now words it
+    as solve does, in both languages, and the JSON holds both angles as solve's does."""
+    code, out, _ = run(capsys, "check", SAMPLES / "check_press.toml")
+    assert ", φ1 = 60° from +x (30° from +y, cw, as the file gives it)\n" in out
+    _, solve, _ = run(capsys, "solve", PRESS)
+    assert "φ1 = 60° from +x (30° from +y, cw, as the file gives it)," in solve
+    code, out, _ = run(capsys, "check", SAMPLES / "check_press.toml", "--lang", "ru")
+    assert ", φ1 = 60° от +x (30° от +y, по часовой стрелке, как задано в файле)\n" in out
+    _, js, _ = run(capsys, "check", SAMPLES / "check_press.toml", "--json")
+    data = json.loads(js)
+    _, js, _ = run(capsys, "solve", PRESS, "--json")
+    solved = json.loads(js)
+    assert (data["phi_deg"], data["angle_deg"]) == (60.0, 30.0)
+    assert (solved["phi_deg"], solved["angle_deg"]) == (60.0, 30.0)
+    assert "59.999" not in js
