@@ -212,7 +212,7 @@ def to_text(result, lang: str = "en") -> str:
     out = [f"{w['head']}: {meas.source}"]
     if meas.title:
         out.append(f"  {meas.title}")
-    out.append(f"{w['mech']}: {mech.name_in(lang)} ({mech.source}), "
+    out.append(f"{w['mech']}: {mech.name_in(lang)} ({mech.source_in(lang)}), "
                f"φ1 = {mech.driver.both(sol.phi, lang)}")
     mu = meas.mu
     from .measured import MU_KEY, MU_SYMBOL

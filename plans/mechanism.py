@@ -172,6 +172,9 @@ class Mechanism:
     source: str = "<mechanism>"
     #: the name in other languages ("ru": …), from ``name = { en = "…", ru = "…" }``
     names: dict[str, str] = field(default_factory=dict)
+    #: ``source`` in other languages, where it has words ("ru": "таблица 2 (встроенная),
+    #: вариант 3" for a row of the built-in table); a file's path has none
+    sources: dict[str, str] = field(default_factory=dict)
     #: the crank angle (rad from +x) the assembly hints are read at: the file's own, kept
     #: by :meth:`at_file_angle`; None: the driver's
     hints_at: float | None = None
@@ -180,6 +183,11 @@ class Mechanism:
         """The name for a note or sheet in ``lang``: the file's name in that language if
         it gives one, else its name."""
         return self.names.get(lang, self.name)
+
+    def source_in(self, lang: str) -> str:
+        """Where the mechanism comes from, for a report in ``lang``: "Table 2 (built in),
+        variant 3" is «таблица 2 (встроенная), вариант 3»; a file's path as it is."""
+        return self.sources.get(lang, self.source)
 
     # ---- derived, read-only views -------------------------------------------------
     def links_of(self, point: str) -> list[int]:

@@ -18,6 +18,7 @@ variant 7); the default is :data:`DESIGNATION`.
 
 from __future__ import annotations
 
+from dataclasses import replace
 from importlib import resources
 from pathlib import Path
 from typing import NamedTuple
@@ -36,6 +37,8 @@ from .fileformat import (
 from .mechanism import MIN_LINK, SPEED, Mechanism, from_dict
 
 BUILTIN = "Table 2 (built in)"
+#: :data:`BUILTIN` in Russian, for the reports in Russian that name a variant's source
+BUILTIN_RU = "таблица 2 (встроенная)"
 COLUMNS = ("AB", "BC", "CD", "AD", "phi_deg", "rpm")
 KINDS = ("crank-slider", "four-bar")
 MAX_ROWS = 10_000
@@ -96,8 +99,10 @@ class Table(NamedTuple):
         if n not in self.rows:
             raise InputError(self.source, [*self.located(n, every=True).lines(),
                                            f"variant {n} is not in the table ({self.has()})"])
-        return from_dict(variant_dict(self.rows[n], self.designation),
+        mech = from_dict(variant_dict(self.rows[n], self.designation),
                          f"{self.source}, variant {n}")
+        table_ru = BUILTIN_RU if self.path is None else self.source
+        return replace(mech, sources={"ru": f"{table_ru}, вариант {n}"})
 
     def has(self) -> str:
         """The numbered rows in words, for a message: "it has 0, 1, 2" (or "0…99, 100

@@ -1210,3 +1210,24 @@ def test_the_crank_angle_is_given_as_solve_gives_it(capsys):
     assert (data["phi_deg"], data["angle_deg"]) == (60.0, 30.0)
     assert (solved["phi_deg"], solved["angle_deg"]) == (60.0, 30.0)
     assert "59.999" not in js
+
+
+def test_a_variants_source_is_named_in_the_reports_language(tmp_path, capsys):
+    """--lang ru had read «(Table 2 (built in), variant 3)»: the built-in table is
+    «таблица 2 (встроенная)» in Russian; a table's file keeps its path, «вариант» its
+    row. English stays as it was."""
+    meas = tmp_path / "v3.toml"
+    meas.write_text("variant = 3\n[scales]\nmu_v = 0.01\n[segments]\npb = 136.7\n", "utf-8")
+    _, out, _ = run(capsys, "check", meas, "--lang", "ru")
+    assert "Механизм: Шарнирный четырёхзвенник, вариант 3 (таблица 2 (встроенная), вариант 3), " in out
+    head = out.splitlines()[1]
+    assert "Table" not in head and "variant" not in head
+    _, out, _ = run(capsys, "check", meas)
+    assert "Mechanism: Four-bar linkage, variant 3 (Table 2 (built in), variant 3), " in out
+    table = tmp_path / "t.toml"
+    table.write_text("[[variant]]\nn = 3\nAB = 0.06\nBC = 0.2\nCD = 0.15\nAD = 0.2\n"
+                     "phi_deg = 60\nrpm = 200\n", "utf-8")
+    meas.write_text('variant = 3\ntable = "t.toml"\n[scales]\nmu_v = 0.01\n[segments]\npb = 136.7\n',
+                    "utf-8")
+    _, out, _ = run(capsys, "check", meas, "--lang", "ru")
+    assert f"вариант 3 ({table}, вариант 3), " in out
