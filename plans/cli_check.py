@@ -92,14 +92,13 @@ WORDS = {
         "ok": "ok",
         "bad": "BEYOND",
         "sense": "wrong sense",
-        "all_ok": "Overall: all {n} {items} within tolerance.",
+        "all_ok": "Overall: {all} within tolerance.",
         "some": "Overall: {k} of {n} {items} beyond tolerance: {names}.",
         "diag": "Diagnosis",
         "none": "no single mistake explains this.",
         "closest": "closest: {what}; it explains {ex} but not {un}",
         "explains": "explains",
-        "all_of": "all {k} {items} beyond tolerance",
-        "one_of": "the one item beyond tolerance",
+        "all_of": "{all} beyond tolerance",
         "like_segment": "{item} = {m} mm is the length of {other} ({exact} mm): measured from the wrong point?",
         "like_swapped": "{item} = {m} mm is the length of {other} ({exact} mm): are {item} and {other} swapped?",
         "like_value": "{item} = {m} is {other} in {unit} ({exact}): a segment is {other}/{mu}, in mm",
@@ -127,14 +126,13 @@ WORDS = {
         "ok": "в допуске",
         "bad": "ВНЕ ДОПУСКА",
         "sense": "не то направление",
-        "all_ok": "Итог: все {n} {items} в допуске.",
+        "all_ok": "Итог: {all} в допуске.",
         "some": "Итог: {k} из {n} вне допуска: {names}.",
         "diag": "Диагноз",
         "none": "ни одна отдельная ошибка этого не объясняет.",
         "closest": "ближе всего: {what}; объясняет {ex}, но не {un}",
         "explains": "объясняет",
-        "all_of": "все {k} {items} вне допуска",
-        "one_of": "единственная величина вне допуска",
+        "all_of": "{all} вне допуска",
         "k_of": "{e} из {k} величин вне допуска; не объясняет {un}",
         "correction": "исправление",
         "also": "столь же хорошо объясняет",
@@ -160,6 +158,22 @@ def _items(n: int, lang: str) -> str:
     if lang != "ru":
         return "item" if n == 1 else "items"
     return ru_plural(n, "величина", "величины", "величин")
+
+
+def _all(n: int, lang: str) -> str:
+    """"All n items", as the number has it: the one item, both items, all 5 items; in
+    Russian agreeing with it (обе величины, все 5 величин, все 21 величина).
+
+    >>> [_all(n, "en") for n in (1, 2, 3)]
+    ['the one item', 'both items', 'all 3 items']
+    >>> [_all(n, "ru") for n in (1, 2, 3, 5, 21)]
+    ['единственная величина', 'обе величины', 'все 3 величины', 'все 5 величин', 'все 21 величина']
+    """
+    if n == 1:
+        return "единственная величина" if lang == "ru" else "the one item"
+    if n == 2:
+        return "обе величины" if lang == "ru" else "both items"
+    return f"{'все' if lang == 'ru' else 'all'} {n} {_items(n, lang)}"
 
 
 def _pct(x: float, lang: str) -> str:
@@ -237,7 +251,7 @@ def to_text(result, lang: str = "en") -> str:
     n = len(result.deviations)
     failed = result.failed
     if not failed:
-        out.append(w["all_ok"].format(n=n, items=_items(n, lang)))
+        out.append(w["all_ok"].format(all=_all(n, lang)))
     else:
         out.append(w["some"].format(k=len(failed), n=n, items=_items(n, lang),
                                     names=", ".join(d.item.name for d in failed)))
@@ -265,10 +279,8 @@ def diagnosis_lines(result, lang: str = "en") -> list[str]:
     lines = [f"{w['diag']}: {b.mistake.describe(lang)}."]
     if b.unexplained:
         ex = w["k_of"].format(e=len(b.explained), k=k, un=", ".join(b.unexplained))
-    elif k == 1:
-        ex = w["one_of"]
     else:
-        ex = w["all_of"].format(k=k, items=_items(k, lang))
+        ex = w["all_of"].format(all=_all(k, lang))
     lines.append(f"  {w['explains']}: {', '.join(b.explained)} ({ex})")
     lines.append(f"  {w['correction']}: {b.mistake.correction(lang)}")
     reported = {it.link for it in result.measurement.items if it.kind == "omega" and it.sense}

@@ -1231,3 +1231,25 @@ def test_a_variants_source_is_named_in_the_reports_language(tmp_path, capsys):
                     "utf-8")
     _, out, _ = run(capsys, "check", meas, "--lang", "ru")
     assert f"вариант 3 ({table}, вариант 3), " in out
+
+
+@pytest.mark.parametrize(("lang", "explains", "ok_one", "ok_two", "ok_five"), [
+    ("en", "explains: pe, πe (both items beyond tolerance)", "Overall: the one item within tolerance.",
+     "Overall: both items within tolerance.", "Overall: all 5 items within tolerance."),
+    ("ru", "объясняет: pe, πe (обе величины вне допуска)", "Итог: единственная величина в допуске.",
+     "Итог: обе величины в допуске.", "Итог: все 5 величин в допуске."),
+])
+def test_two_items_are_both(tmp_path, capsys, lang, explains, ok_one, ok_two, ok_five):
+    """e laid off from c on both plans of variant 3 had been explained as «все 2 величины
+    вне допуска» ("all 2 items"): two are both, one is the one, five are all 5."""
+    path = tmp_path / "v3.toml"
+    head = "variant = 3\n[scales]\nmu_l = 0.002\nmu_v = 0.01\nmu_a = 0.1\n[segments]\n"
+    path.write_text(head + "pb = 136.7\npc = 144.1\nbc = 40\npe = 137.2\npib = 207.5\n"
+                    "pic = 117\npie = 253.2\n", "utf-8")
+    code, out, _ = run(capsys, "check", path, "--lang", lang)
+    assert code == 1 and f"\n  {explains}\n" in out
+    for segs, line in (("pb = 136.7\n", ok_one), ("pb = 136.7\npc = 144.1\n", ok_two),
+                       ("pb = 136.7\npc = 144.1\nbc = 40\npib = 207.5\npic = 117\n", ok_five)):
+        path.write_text(head + segs, "utf-8")
+        code, out, _ = run(capsys, "check", path, "--lang", lang)
+        assert code == 0 and out.endswith(line + "\n"), out
