@@ -42,6 +42,7 @@ from drawing.scene import (
     wrap_words,
 )
 from plans.check import MU_KEY, CheckResult, rebuild, recorded_segments
+from plans.fmt import listing
 
 PANEL = 340.0  # user units (px) of one plan's square
 MARGIN = 24.0
@@ -430,7 +431,7 @@ def _deviation_list(result: CheckResult, kind: str, lang: str) -> list[str]:
         return []
     # broken between the marks, never inside one ("ka3 / +799.3")
     glued = [p.replace(" ", "\u00a0") for p in parts]
-    text = WORDS[lang]["list"] + " " + ", ".join(glued)
+    text = WORDS[lang]["list"] + " " + listing(glued, lang)
     return [line.replace("\u00a0", " ") for line in _wrap(text, SMALL, PANEL, rich=False)]
 
 

@@ -10,7 +10,7 @@ import math
 
 from .cli import EXIT_DEVIATIONS, EXIT_OK, write_output
 from .errors import InputError
-from .fmt import from_x, json_angle, num, ru_plural, signed
+from .fmt import from_x, json_angle, listing, num, ru_plural, signed
 
 
 def configure(p) -> None:
@@ -234,7 +234,7 @@ def to_text(result, lang: str = "en") -> str:
 
     given = [f"{MU_SYMBOL[plan]} = {num(mu[key], 4, lang)} {UNITS[lang][key]}"
              for plan, key in MU_KEY.items() if key in meas.given]
-    out.append(f"{w['scales']}: {', '.join(given) if given else w['none_given']}")
+    out.append(f"{w['scales']}: {listing(given, lang) if given else w['none_given']}")
     out.append(f"{w['tol']}: {result.tolerance.describe(lang)}")
     groups = [("positions", lambda it: it.kind == "segment" and it.plan == "positions"),
               ("velocity", lambda it: it.kind == "segment" and it.plan == "velocity"),

@@ -34,6 +34,17 @@ SENSE = {
 }
 
 
+def listing(parts, lang: str = "en") -> str:
+    """Items that hold numbers, in one line: in Russian, whose decimal mark is a comma,
+    separated by "; " (a comma between them would read as one more decimal mark), else
+    by ", ".
+
+    >>> listing(["n1a3 +22.1", "πa3 +18.6"]), listing(["n1a3 +22,1", "πa3 +18,6"], "ru")
+    ('n1a3 +22.1, πa3 +18.6', 'n1a3 +22,1; πa3 +18,6')
+    """
+    return ("; " if lang == "ru" else ", ").join(parts)
+
+
 def ru_plural(n: int, one: str, few: str, many: str) -> str:
     """The Russian noun form that agrees with the whole number ``n``: 1, 21 … take
     ``one``, 2–4, 22–24 … ``few``, the rest (5–20, 11–14, 25 …) ``many``.

@@ -139,3 +139,23 @@ def test_the_rendered_drawing_has_no_ink_at_its_edges(results):
         right = im.crop((w - 16, 0, w, h)).getextrema()
         bottom = im.crop((0, h - 12, w, h)).getextrema()
         assert right[0] > 200 and bottom[0] > 200, (lang, right, bottom)
+
+
+def test_a_russian_list_of_numbers_is_separated_by_semicolons(tmp_path, capsys):
+    """«вне допуска, мм: n1a3 +22,1, πa3 +18,6, …» had commas both as decimal marks and
+    between the items; in Russian the items take «; », in English ", " as before. The
+    report's line of scale factors is one such list too."""
+    meas = tmp_path / "cor.toml"
+    meas.write_text(f'mechanism = "{HERE.parent / "samples" / "press.toml"}"\nangle_deg = 30\n'
+                    "[scales]\nmu_l = 0.01\nmu_v = 0.05\nmu_a = 1.0\n[segments]\n"
+                    "ak = 11\nbn1 = 13.4\nn1a3 = 34\npia3 = 36.5\npic = 47.5\npid = 49\n", "utf-8")
+    res = ck.check(ck.load(meas))
+    for lang, text in (("ru", "вне допуска, мм: n1a3 +22,1; πa3 +18,6; πc +24,2; πd +28,2"),
+                       ("en", "beyond tolerance, mm: n1a3 +22.1, πa3 +18.6, πc +24.2, πd +28.2")):
+        listed = " ".join(t for t, _, role in overlay(res, lang).texts if role == "list")
+        assert listed == text
+    _, out, _ = run(capsys, "check", meas, "--lang", "ru")
+    assert ("Масштабные коэффициенты студента: μl = 0,01 м/мм; μv = 0,05 (м/с)/мм; "
+            "μa = 1 (м/с²)/мм\n") in out
+    _, out, _ = run(capsys, "check", meas)
+    assert "Student's scale factors: μl = 0.01 m/mm, μv = 0.05 (m/s)/mm, μa = 1 (m/s²)/mm\n" in out
