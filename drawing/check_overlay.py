@@ -39,6 +39,7 @@ from drawing.scene import (
     Run,
     index_markup,
     parse_markup,
+    shared_label,
     wrap_words,
 )
 from plans.check import MU_KEY, CheckResult, rebuild, recorded_segments
@@ -566,8 +567,10 @@ def _panel(doc: Overlay, origin, plan, mu, student, items, failed, lang, w):
     # point labels: the computed points, then the student's where they differ
     for z, ns in names.items():
         x, y = sc(z)
-        label([(x, y, outward(x, y))], "≡".join(ns) if len(ns) <= 3 else ns[0] + "…", FONT,
-              BLACK, "point", True)
+        text = shared_label(ns, plan.pole, markup=False)  # "p,o,b", as on the sheet
+        if len(ns) > 3:  # no room for them all: the first stands for them
+            text = text.split(",")[0] + "…"
+        label([(x, y, outward(x, y))], text, FONT, BLACK, "point", True)
     for n, (x, y) in moved:
         label([(x, y, outward(x, y))], n + "′", FONT, RED, "point", True)
     # the deviations beyond tolerance, at the student's segment, else at the computed one

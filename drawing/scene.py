@@ -289,6 +289,31 @@ def index_markup(s: str) -> str:
     return re.sub(r"_([A-Za-z0-9]{2,})", r"_{\1}", s)
 
 
+def name_markup(name: str) -> str:
+    """A point's name as markup, its index after the letters: ``a3`` → ``a_{3}``, ``S4``
+    → ``S_{4}``, ``n1`` → ``n_{1}``."""
+    i = len(name)
+    while i > 0 and name[i - 1].isdigit():
+        i -= 1
+    if 0 < i < len(name):
+        return f"{name[:i]}_{{{name[i:]}}}"
+    return name
+
+
+def shared_label(names: Sequence[str], pole: str | None = None, markup: bool = True) -> str:
+    """The one label of points that coincide on a plan, as the sheets letter them: the
+    pole first, then the others in their order, separated by commas: "p,o,b", "c,n₂".
+    ``markup``: each index as markup (``n_{2}``), else the names as written (``n2``).
+
+    >>> shared_label(["o", "b", "p"], "p"), shared_label(["c", "n2"])
+    ('p,o,b', 'c,n_{2}')
+    >>> shared_label(["a", "d", "π"], "π", markup=False), shared_label(["a3"], "π", markup=False)
+    ('π,a,d', 'a3')
+    """
+    order = sorted(names, key=lambda n: n != pole)  # stable: the others keep their order
+    return ",".join(name_markup(n) if markup else n for n in order)
+
+
 def wrap_words(text: str, width: float, measure, indent: float = 0.0,
                cut: bool = True) -> list[str]:
     """``text`` broken at its spaces (not at no-break spaces) into lines ``measure``

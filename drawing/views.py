@@ -42,6 +42,8 @@ from drawing.scene import (
     Text,
     flatten,
     index_markup,
+    name_markup,
+    shared_label,
     translate,
     wrap_words,
 )
@@ -143,16 +145,6 @@ class View:
     #: (what grows with the scale); and the width those texts need whatever the scale
     body: tuple[float, float] = (0.0, 0.0)
     texts: tuple[float, float] = (0.0, 0.0)  # the caption's width, the widest line under
-
-
-def _markup(name: str) -> str:
-    """``a3`` → ``a_3``, ``S4`` → ``S_4``, ``n1`` → ``n_1`` (index after the letters)."""
-    i = len(name)
-    while i > 0 and name[i - 1].isdigit():
-        i -= 1
-    if 0 < i < len(name):
-        return f"{name[:i]}_{{{name[i:]}}}"
-    return name
 
 
 def notation(s: str) -> str:
@@ -383,7 +375,7 @@ def plan_view(sol, kind: str, tag: str, lang: str = "ru", label: str | None = No
     for xy, names in groups:
         ang = math.degrees(math.atan2(-(xy[1] - cy), xy[0] - cx)) % 360
         prefer = ("e", "ne", "n", "nw", "w", "sw", "s", "se")[int(((ang + 22.5) % 360) // 45)]
-        reqs.append(LabelRequest(xy, ",".join(_markup(n) for n in names), LETTER, prefer,
+        reqs.append(LabelRequest(xy, shared_label(names, plan.pole), LETTER, prefer,
                                  blank=True, cross=False))
     title = WORDS[lang][kind]
     unit = _per_mm(WORDS[lang]["ms" if kind == "velocity" else "ms2"], lang)
@@ -638,7 +630,7 @@ def positions_view(sol, cycle, lang: str = "ru", sizing: bool = False) -> View:
     shared = _shared((_sheet(pos[n], mu_l), n) for n in mech.point_names() if n in pos)
     for xy, names in reversed(shared):
         # close to its point even among the other positions' lines, which break for it
-        labels.insert(0, LabelRequest(xy, ",".join(_markup(n) for n in names), LETTER, "nw",
+        labels.insert(0, LabelRequest(xy, shared_label(names), LETTER, "nw",
                                       blank=True))
     # stroke H of a linear output
     out = cycle.output
@@ -916,7 +908,7 @@ def segments_table_view(sols: list[tuple[str, object]], lang: str = "ru", parts:
                     keys.append((kind, v.start, v.end, v.label))
     rows = []
     for kind, a, b, label in keys:
-        row = [f"{_markup(a)}{_markup(b)}: {notation(label)}"]
+        row = [f"{name_markup(a)}{name_markup(b)}: {notation(label)}"]
         for _, sol in sols:
             plan = sol.velocity if kind == "v" else sol.acceleration
             if a in plan.points or a == plan.pole:

@@ -159,3 +159,35 @@ def test_a_russian_list_of_numbers_is_separated_by_semicolons(tmp_path, capsys):
             "μa = 1 (м/с²)/мм\n") in out
     _, out, _ = run(capsys, "check", meas)
     assert "Student's scale factors: μl = 0.01 m/mm, μv = 0.05 (m/s)/mm, μa = 1 (m/s²)/mm\n" in out
+
+
+@pytest.mark.parametrize(("name", "shared"), [("check_press", {"p,o,b", "π,o,b"})])
+def test_coincident_points_are_lettered_as_on_the_sheet(results, name, shared):
+    """The picture had lettered the points at the pole «o≡b≡π»; the sheet writes them
+    «π,o,b», the pole first, and the picture now takes the sheet's rule
+    (drawing.scene.shared_label): the same labels on both."""
+    from drawing.scene import Text, flatten
+    from drawing.views import plan_view
+
+    res = results[name]
+    sol = res.measurement.solution
+    sheet = {it.text for kind in ("velocity", "acceleration")
+             for it in flatten(plan_view(sol, kind, "1").items) if isinstance(it, Text)}
+    assert shared <= sheet
+    for lang in ("en", "ru"):
+        points = [t for t, _, role in overlay(res, lang).texts if role == "point"]
+        assert shared <= set(points) and not any("≡" in t for t in points), points
+        assert {t for t in points if "," in t} == shared
+
+
+def test_the_overlay_needs_no_shapely():
+    """The check's picture is drawn without the sheets' geometry package: importing it
+    loads no shapely (its lettering rule lives in drawing.scene, not in drawing.views)."""
+    import subprocess
+    import sys
+
+    code = ("import sys\nimport drawing.check_overlay\n"
+            "print(sorted({m.split('.')[0] for m in sys.modules} & {'shapely', 'svgwrite'}))\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True,
+                         cwd=HERE.parent, env={"PYTHONPATH": str(HERE.parent), "PATH": ""})
+    assert out.stdout.strip() == "[]"
