@@ -186,7 +186,42 @@ def _same_file(a, b) -> bool:
 
 class _Parser(argparse.ArgumentParser):
     """argparse with the tool's own error format: one line, ``plans COMMAND: command line:
-    …``, exit 2, no usage block (``--help`` still prints it)."""
+    …``, exit 2, no usage block (``--help`` still prints it).
+
+    ``dash_values``: options whose value may begin with "-" (``--tolerance -5%``).
+    argparse reads "-5%" as an option of its own and says "expected one argument"; such
+    a value is handed to its option as ``--tolerance=-5%`` is, so that the command judges
+    it, unless it is one of the parser's options (``--tolerance --json`` still lacks a
+    value)."""
+
+    dash_values: tuple[str, ...] = ()
+
+    def parse_known_args(self, args=None, namespace=None):
+        args = list(sys.argv[1:] if args is None else args)
+        out: list[str] = []
+        i = 0
+        while i < len(args):
+            arg = args[i]
+            if arg == "--":
+                out += args[i:]
+                break
+            nxt = args[i + 1] if i + 1 < len(args) else None
+            if self._takes_dash_value(arg) and nxt is not None and nxt.startswith("-") \
+                    and nxt.split("=", 1)[0] not in self._option_string_actions:
+                out.append(f"{arg}={nxt}")
+                i += 2
+                continue
+            out.append(arg)
+            i += 1
+        return super().parse_known_args(out, namespace)
+
+    def _takes_dash_value(self, arg: str) -> bool:
+        """``arg`` is one of :attr:`dash_values`, or an abbreviation that argparse reads
+        as one (``--tol``)."""
+        if arg in self.dash_values:
+            return True
+        named = [o for o in self._option_string_actions if arg.startswith("--") and o.startswith(arg)]
+        return len(named) == 1 and named[0] in self.dash_values
 
     def error(self, message: str):  # type: ignore[override]
         print(f"{self.prog}: command line: {message} (see {self.prog} --help)", file=sys.stderr)

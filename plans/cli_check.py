@@ -20,6 +20,7 @@ def configure(p) -> None:
     p.add_argument("--tolerance", metavar="TOL",
                    help='allowed deviation, e.g. "5%%", "1mm" or "5%%,1mm" '
                         "(default: the larger of 1 mm and 5 %%)")
+    p.dash_values = ("--tolerance",)  # "--tolerance -5%" is a wrong tolerance, said as one
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.add_argument("--svg", metavar="OUT.svg",
                    help="also draw the student's plan over the computed one")

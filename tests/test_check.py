@@ -1253,3 +1253,23 @@ def test_two_items_are_both(tmp_path, capsys, lang, explains, ok_one, ok_two, ok
         path.write_text(head + segs, "utf-8")
         code, out, _ = run(capsys, "check", path, "--lang", lang)
         assert code == 0 and out.endswith(line + "\n"), out
+
+
+@pytest.mark.parametrize("argv", [("--tolerance", "-5%"), ("--tolerance=-5%"), ("--tol", "-5%"),
+                                  ("--tolerance", "-1mm")])
+def test_a_negative_tolerance_is_said_in_one_line(capsys, argv):
+    """"--tolerance -5%" had been argparse's "expected one argument" ("-5%" read as an
+    option), where "--tolerance=-5%" said what is wrong with it; both say that now."""
+    argv = (argv,) if isinstance(argv, str) else argv
+    code, out, err = run(capsys, "check", SAMPLES / "check_press.toml", *argv)
+    value = argv[-1].split("=")[-1]
+    assert (code, out) == (2, "")
+    assert err == (f'plans check: command line: --tolerance: "{value}" is not a tolerance '
+                   '(e.g. "5%", "1mm" or "5%,1mm")\n')
+
+
+def test_an_option_after_tolerance_is_not_taken_for_its_value(capsys):
+    """A value is still missing where the next word is one of the command's options."""
+    code, _, err = run(capsys, "check", SAMPLES / "check_press.toml", "--tolerance", "--json")
+    assert code == 2 and err == ("plans check: command line: argument --tolerance: expected "
+                                 "one argument (see plans check --help)\n")
