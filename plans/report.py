@@ -308,8 +308,9 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
     # the input link's other points (its centre of mass, a point a guide slides past)
     sims = [p for p in plan.points.values() if p.source.kind == "similarity"
             and _belongs(m, p.name, (d.link,))]
-    if sims:
+    if sims:  # headed as a group's points are
         out += _similar(sol, plan, sims, lang)
+        out += [t["avalues" if acc else "values"], ""]
         out += _values(sol, plan, [p.name for p in sims], lang) + [""]
     vplan = sol.velocity
     for g in m.groups:

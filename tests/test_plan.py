@@ -278,3 +278,34 @@ def test_a_rocker_at_rest_has_no_velocity_left_on_its_plan():
     sol = solve_position(mech, phi, solver=solver)
     assert sol.velocity.segments["pc"] == 0.0 and sol.omega[3] == 0.0
     assert sol.velocity.segments["pb"] > 50  # the crank pin is not at rest
+
+
+@pytest.mark.parametrize("lang", ["ru", "en"])
+def test_every_value_read_off_a_plan_stands_under_its_heading(lang):
+    """A crank's own similarity point (S1 of variant 4) had its V_S1 = ps1·μv line right
+    under the similarity step, without the heading "Скорости точек по плану:" that every
+    group's points get: the note read as if the value were a second similarity step."""
+    import re
+
+    from plans.report import T, note
+    from plans.variants import variant
+
+    for n in (3, 4):
+        text = note(solve_position(variant(n)), lang)
+        lines = [ln for ln in text.splitlines() if ln.strip()]
+        value = re.compile(r"- `(V|a)_\w+ = [pπ]\w+·μ[va] = ")
+        read_off = re.compile(r"- `(V|a)\S* = \w+·μ[va] = ")  # values, then unknowns
+        found = headed = 0
+        for i, ln in enumerate(lines):
+            if not value.match(ln):
+                continue
+            found += 1
+            j = i - 1
+            while read_off.match(lines[j]):
+                j -= 1
+            want = T[lang]["avalues" if ln.startswith("- `a") else "values"]
+            # the plan's heading, or that of a translating link's equal values
+            assert lines[j] == want or (lines[j].endswith(":") and " = " in lines[j]
+                                        and not lines[j].startswith("- ")), (n, ln, lines[j])
+            headed += lines[j] == want
+        assert found >= 6 and headed >= 4
