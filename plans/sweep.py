@@ -43,8 +43,9 @@ class Sweep:
 
     ``sine`` holds, per group (by its label), the |sin| between the two lines its plans
     intersect: the conditioning figure. A slotted link (RPR) has a second figure,
-    :attr:`pivot`. Where ``valid`` is False a group does not close and the values there
-    are meaningless.
+    :attr:`pivot`. Where ``valid`` is False a group does not close: every moving point's
+    position, velocity and acceleration, every turning link's ω and ε and every figure
+    is NaN there.
     """
 
     phi: np.ndarray
@@ -120,10 +121,23 @@ def sweep(sv: Solver, phi, block: int = BLOCK, into: Sweep | None = None) -> Swe
             for label, v in part.sine.items():
                 sine[label][i:j] = v
             valid[i:j] = part.valid
+        if not valid.all():
+            _blank(~valid, out, omega, epsilon, sine)
     mech = sv.mech
     slots = tuple((pivot_key(g.label), g.P, g.Q, mech.frame[mech.driver.pivot])
                   for g in sv.structure.groups if g.kind == DyadKind.RPR)
     return Sweep(phi, out["pos"], out["vel"], out["acc"], omega, epsilon, sine, valid, slots)
+
+
+def _blank(bad: np.ndarray, out: dict, *stores: dict) -> None:
+    """NaN at the angles ``bad``, where a group does not close, in every array a sweep
+    wrote: there the kernels leave finite numbers that mean nothing (a hinge on a clipped
+    circle intersection, ω of 1e17), which a max or a ptp over the sweep would take for
+    values. The fixed points' constants stay as they are."""
+    for arrays in (*out.values(), *stores):
+        for a in arrays.values():
+            if a.flags.writeable:
+                a[bad] = np.nan
 
 
 def _layout(sv: Solver):

@@ -774,3 +774,34 @@ def test_a_file_angle_that_does_not_close_leaves_the_hints_to_the_angle_asked_fo
     ref = from_dict(tomllib.loads((SAMPLES / "fourbar.toml").read_text("utf-8")), "<fourbar>")
     phi = ref.driver.phi
     assert Solver(at40).solve_one(phi).position["C"] == Solver(ref).solve_one(phi).position["C"]
+
+
+def test_a_sweep_is_nan_where_the_mechanism_does_not_close():
+    """Seed 001's four-bar turns through ±125° only. Over a whole turn the kernels leave
+    finite numbers where it does not close (C on a clipped intersection, ω of 1e17), and
+    np.ptp or a max over the sweep took them for values; they are NaN now, and every
+    value where it closes is as before."""
+    from plans.scenes import SCENES
+
+    sv = Solver(SCENES["fourbar"].mechanism())
+    phi = np.radians(np.arange(0.0, 360.0, 0.5))
+    sw = sv.sweep(phi)
+    bad = ~sw.valid
+    assert 0 < bad.sum() < phi.size
+    moving = [n for n in sw.position if np.ndim(sw.position[n]) and sw.position[n].flags.writeable]
+    assert {"C", "E", "S2", "S3"} <= set(moving)
+    for name in ("C", "E", "S2", "S3"):
+        for kind in (sw.position, sw.velocity, sw.acceleration):
+            assert np.isnan(kind[name][bad]).all() and np.isfinite(kind[name][~bad]).all()
+    for store in (sw.omega, sw.epsilon):
+        assert np.isnan(store[2][bad]).all() and np.isfinite(store[2][~bad]).all()
+    assert np.isnan(sw.min_sine[bad]).all() and (sw.min_sine[~bad] > 0).all()
+    assert not sv.trusted(sw)[bad].any()
+    # where it closes, the recorded solve agrees to the last digits
+    m = sv.solve(phi[~bad])
+    np.testing.assert_allclose(sw.velocity["C"][~bad], m.velocity["C"], rtol=0, atol=1e-13)
+    # the frame's points keep their constants; a reused sweep over valid angles is clean
+    assert sw.position["A"][bad].tolist() == [0j] * int(bad.sum())
+    ok = phi[~bad][: bad.sum()]
+    again = sv.sweep(np.resize(ok, phi.size), into=sw)
+    assert again.valid.all() and np.isfinite(again.velocity["C"]).all()
