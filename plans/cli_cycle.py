@@ -255,7 +255,12 @@ def _ok(x) -> float | None:
 
 
 def _cycle_summary(t: CycleTable) -> dict:
-    c = t.cycle
+    return cycle_json(t.cycle)
+
+
+def cycle_json(c) -> dict:
+    """The cycle's figures (:class:`plans.cycle.Cycle`) as ``plans cycle --json`` and
+    ``plans solve --json`` give them, in SI units and degrees from +x."""
     out = {
         "full_turn": c.full_turn,
         "output": None

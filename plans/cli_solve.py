@@ -22,10 +22,11 @@ def run(args) -> int:
     mech = mechanism_from(args)
     solver = Solver(mech)
     sol = solve_position(mech, solver=solver)
+    cycle = analyse_cycle(mech, solver=solver)
     if args.json:
-        text = json.dumps(to_json(sol), ensure_ascii=False, indent=2) + "\n"
+        text = json.dumps(to_json(sol, cycle), ensure_ascii=False, indent=2) + "\n"
     else:
-        text = to_text(sol, analyse_cycle(mech, solver=solver))
+        text = to_text(sol, cycle)
     write_output(args.output, text)
     for w in sol.warnings:
         warn("solve", w)
@@ -36,7 +37,11 @@ def _xy(z: complex) -> list[float]:
     return [float(z.real), float(z.imag)]
 
 
-def to_json(sol) -> dict:
+def to_json(sol, cycle=None) -> dict:
+    """The solution as JSON; with ``cycle`` (:func:`plans.cycle.analyse_cycle`), its
+    figures too (stroke or swing, extreme positions, θ, K, Grashof), as the text gives."""
+    from .cli_cycle import cycle_json
+
     m = sol.scalar
     points = {
         name: {
@@ -69,7 +74,7 @@ def to_json(sol) -> dict:
         "phi_deg": json_angle(from_x(sol.phi)),
         "angle_deg": json_angle(sol.mechanism.driver.file_angle(sol.phi)),
         "warnings": list(sol.warnings),
-    }
+    } | ({} if cycle is None else {"cycle": cycle_json(cycle)})
 
 
 def _sense(w: float) -> str:

@@ -392,3 +392,23 @@ def test_the_crank_angle_is_printed_as_typed(capsys):
     code, out, err = run(capsys, "solve", "samples/press.toml", "--angle", "270.01")
     assert code == 0, err
     assert "φ1 = 179.99° from +x (270.01° from +y, cw, as the file gives it)" in out
+
+
+def test_solve_json_gives_the_cycle_the_text_gives(capsys):
+    """The README promises the cycle (H, θ, K, Grashof) from solve; its JSON left it out.
+    The press: H = 0.5114 m (the text's line), θ and K from the extreme positions; a
+    four-bar variant: its Grashof class, as plans cycle --json gives it."""
+    code, out, _ = run(capsys, "solve", "samples/press.toml", "--json")
+    assert code == 0
+    c = json.loads(out)["cycle"]
+    code, text, _ = run(capsys, "solve", "samples/press.toml")
+    assert f"H = {num(c['stroke'])} m" in text and num(c["stroke"]) == "0.5114"
+    a, b = c["extremes_phi_deg"]
+    assert c["theta_deg"] == pytest.approx(abs(180 - abs(b - a)), abs=1e-9)
+    assert c["K"] == pytest.approx((180 + c["theta_deg"]) / (180 - c["theta_deg"]), rel=1e-12)
+    code, out, _ = run(capsys, "solve", "--variant", "3", "--json")
+    solved = json.loads(out)["cycle"]
+    code, out, _ = run(capsys, "cycle", "--variant", "3", "--json")
+    cycled = json.loads(out)["cycle"]
+    assert solved["grashof"] is not None and solved["grashof"] == cycled["grashof"]
+    assert solved["stroke"] == cycled["stroke"] and solved["K"] == cycled["K"]
