@@ -384,17 +384,28 @@ def _interval_around(grid, valid):
 
 
 def _grashof(mech: Mechanism, solver: Solver) -> str | None:
-    """Grashof class when the mechanism is a hinged four-bar (crank + one RRR group)."""
+    """Grashof class when the mechanism is a hinged four-bar (crank + one RRR group).
+
+    The group's outer joints are read by what they join, not by their letters P and Q
+    nor by the links' numbers: the one on the frame is the rocker's pivot, the one on
+    the crank is the coupler's pin (a file may number the rocker before the coupler)."""
     groups = solver.structure.groups
     if len(groups) != 1 or groups[0].kind != DyadKind.RRR:
         return None
     g = groups[0]
-    if g.Q not in mech.frame:
+    drv = mech.driver
+    crank = mech.links[drv.link].points
+    ends = {g.P: g.a, g.Q: g.b}  # each outer joint and the link of the group hinged there
+    pivots = [p for p in ends if p in mech.frame]
+    pins = [p for p in ends if p not in mech.frame and p in crank]
+    if len(pivots) != 1 or len(pins) != 1:  # not a four-bar (a dyad carried by the crank)
         return None
-    a = mech.driver.length
-    b = abs(mech.links[g.a].points[g.C] - mech.links[g.a].points[g.P])
-    c = abs(mech.links[g.b].points[g.C] - mech.links[g.b].points[g.Q])
-    d = abs(mech.frame[g.Q] - mech.frame[mech.driver.pivot])
+    (pivot,), (pin,) = pivots, pins
+    coupler, rocker = mech.links[ends[pin]].points, mech.links[ends[pivot]].points
+    a = abs(crank[pin] - crank[drv.pivot])
+    b = abs(coupler[g.C] - coupler[pin])
+    c = abs(rocker[g.C] - rocker[pivot])
+    d = abs(mech.frame[pivot] - mech.frame[drv.pivot])
     return grashof_class(a, b, c, d)
 
 
