@@ -577,13 +577,10 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
         names=names,
     )
     if output is not None:  # a point with no stroke was silently replaced by another
-        from .cycle import find_output, output_of
+        from .cycle import no_output
 
-        if output_of(mech, output) is None:
-            other = find_output(mech)  # it passes over the file's point, having no stroke
-            pr.add("output", f"{quote(output)} has no stroke or swing: the output is the point of a "
-                   "slider on a fixed guide, or a point of a link hinged to the frame other than "
-                   "the crank" + (f', e.g. "{other.point}"' if other else ""))
+        if (why := no_output(mech, output)) is not None:
+            pr.add("output", why)
             pr.raise_if_any()
     return mech
 

@@ -543,11 +543,11 @@ def test_near_a_dead_point_every_command_warns_in_its_language(capsys, tmp_path)
                           "near-singular, the lines ⊥ CB and ⊥ CD meet at 0.0")
 
 
-@pytest.mark.parametrize("point", ["O", "A", "C"])
+@pytest.mark.parametrize("point", ["O", "A", "B", "C"])
 def test_an_output_with_no_stroke_is_refused_not_replaced(capsys, tmp_path, point):
     """The press's output set to the fixed pivot O or the crank pin A has no stroke: solve,
     report, cycle and the sheet silently used D instead. The rocker's end C is a fine
-    output (its swing)."""
+    output (its swing); its fixed pivot B is not, and the message had offered one."""
     text = PRESS.read_text("utf-8").replace('output = "D"', f'output = "{point}"')
     path = tmp_path / "p.toml"
     path.write_text(text, "utf-8")
@@ -556,7 +556,8 @@ def test_an_output_with_no_stroke_is_refused_not_replaced(capsys, tmp_path, poin
         assert code == 0 and "swing of link 3" in out
         return
     (line,) = assert_clean_failure(err)
-    assert code == 2 and f'output: "{point}" has no stroke or swing' in line and 'e.g. "D"' in line
+    assert code == 2 and f'output: "{point}" has no stroke or swing' in line
+    assert line.endswith('(a link other than the crank hinged to the frame): here "D", "C" or "S3"')
 
 
 def test_batch_output_that_looks_like_a_file_is_refused(capsys, tmp_path):
@@ -809,3 +810,63 @@ def test_a_number_in_quotes_is_read_in_every_file(capsys, tmp_path):
         outs.append(out)
     assert outs[0] == outs[1]
     assert abs(complex(*json.loads(outs[0])["points"]["B"]["position"])) == pytest.approx(0.05, rel=1e-14)
+
+
+FOURBAR_E = """
+name = "four-bar"
+{output}
+[frame]
+A = [0.0, 0.0]
+D = [0.30, 0.05]
+[driver]
+link = 1
+angle_deg = 50
+omega = 12
+[links.1]
+axis = ["A", "B"]
+points = {{ B = 0.08 }}
+[links.2]
+axis = ["B", "C"]
+points = {{ C = 0.28, E = [0.12, 0.05] }}
+[links.3]
+axis = ["D", "C"]
+points = {{ C = 0.18 }}
+[assembly]
+C = "above AD"
+"""
+
+
+@pytest.mark.parametrize(("point", "why"), [
+    ("E", "it is a point of link 2, which neither slides on a fixed guide nor turns about a "
+          "fixed pivot"),
+    ("D", "it is a fixed point"),
+])
+def test_a_coupler_point_or_a_fixed_pivot_as_output_names_the_rockers_joint(
+        capsys, tmp_path, point, why):
+    """A coupler's point E was refused with 'e.g. "D"', the rocker's fixed pivot; and D
+    itself passed as the output. The message names the outputs there are: C."""
+    path = tmp_path / "fb.toml"
+    path.write_text(FOURBAR_E.format(output=f'output = "{point}"'), "utf-8")
+    code, out, err = run(capsys, "solve", path)
+    (line,) = assert_clean_failure(err)
+    assert code == 2 and out == ""
+    assert line == (f'plans solve: {path}: line 3: output: "{point}" has no stroke or swing: '
+                    f"{why}; the output is the point of a slider on a fixed guide or a moving "
+                    "point of a rocker (a link other than the crank hinged to the frame): "
+                    'here "C"')
+
+
+def test_without_an_output_the_rockers_moving_joint_names_its_columns(capsys, tmp_path):
+    """With no output given, the cycle's columns were ψ_D and 'output D (rad)', after the
+    rocker's fixed pivot: they are the rocker's moving joint C's, as with output = "C"."""
+    path = tmp_path / "fb.toml"
+    path.write_text(FOURBAR_E.format(output=""), "utf-8")
+    code, out, err = run(capsys, "cycle", path, "--positions", "4")
+    assert code == 0, err
+    assert "ψ_C: degrees of link 3 from +x, measured ccw" in out and "ψ_D" not in out
+    code, out, _ = run(capsys, "cycle", path, "--csv", "--positions", "4")
+    head = out.splitlines()[0].split(",")
+    assert "output C (rad)" in head and "output D (rad)" not in head
+    code, out, _ = run(capsys, "cycle", path, "--json", "--positions", "4")
+    assert json.loads(out)["cycle"]["output"] == {"point": "C", "kind": "angular", "link": 3,
+                                                  "unit": "rad"}
