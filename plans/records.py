@@ -148,7 +148,7 @@ class GroupSolution(NamedTuple):
         an array solution; None for a solution on Python numbers)."""
         s = self.velocity.sine
         s = abs(float(s if k is None else s[k]))
-        return s if math.isfinite(s) else 0.0
+        return min(s, 1.0) if math.isfinite(s) else 0.0  # 1 + 2e-16 of rounding is 1
 
     def parallel(self, k: int | None, at: str, source: str = "",
                  below: float | None = None) -> SingularPlanError | None:

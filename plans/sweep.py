@@ -319,7 +319,9 @@ class _Block:
         self.pos[name], self.vel[name], self.acc[name] = X, v, a
 
     def _close(self, label, sine, valid):
-        self.sine[label] = abs(sine)
+        # a figure, |sin| within [0, 1]: the cross product of two unit vectors as rounded
+        # reaches 1.0000000000000002, which the kernel divides by as it is
+        self.sine[label] = np.minimum(abs(sine), 1.0)
         self.valid &= valid
 
     # the five kinds ----------------------------------------------------------------------

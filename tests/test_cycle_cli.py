@@ -419,3 +419,25 @@ def test_two_moving_guides_limit_the_crank_where_they_turn_parallel():
         assert len(prp) == 1 and np.all(np.abs(prp[0].velocity.sine) < 1e-9)
         got.append((lo, hi))
     assert got[1] == pytest.approx(got[0], abs=1e-12) and got[2] == pytest.approx(got[0], abs=1e-12)
+
+
+def test_a_sine_is_never_above_one(capsys, tmp_path):
+    """The cross product of two unit vectors as rounded reaches 1 + 4e-16: the CSV's sine
+    of the oscillating slotted link read 1.0000000000000004, as did the sweep's."""
+    from plans.scenes import SCENES
+
+    path = tmp_path / "s.toml"
+    path.write_text(SCENES["slotted_oscillating"].toml, "utf-8")
+    code, out, err = run(capsys, "cycle", path, "--csv", "--positions", "360")
+    assert code == 0, err
+    rows = list(csv.reader(io.StringIO(out)))
+    cols = [i for i, h in enumerate(rows[0]) if h == "min_sine" or h.startswith("sine ")]
+    sines = [float(r[i]) for r in rows[1:] for i in cols if r[i]]
+    assert max(sines) == 1.0 and min(sines) >= 0.0
+    code, out, _ = run(capsys, "cycle", path, "--json", "--positions", "360")
+    figures = [v for r in json.loads(out)["rows"] for v in r["conditioning"]["figures"].values()]
+    assert max(figures) == 1.0
+    mech = mechanism.from_dict(__import__("tomllib").loads(SCENES["slotted_oscillating"].toml))
+    sw = Solver(mech).sweep(np.radians(np.arange(0.0, 360.0, 1.0)))
+    assert max(float(s.max()) for s in sw.sine.values()) == 1.0
+    assert max(Solver(mech).solve_one(math.radians(a)).groups[0].sine_at() for a in range(360)) == 1.0
