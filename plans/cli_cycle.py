@@ -482,7 +482,7 @@ def to_text(t: CycleTable) -> str:
         )
 
     def lead(k: int) -> list[str]:
-        return [str(k), f"{mech.driver.file_angle(float(m.phi[k])):.2f}"]
+        return [str(k), table_degrees(d.file_angle(float(m.phi[k])))]
 
     def cell(k: int, value, big: float = 0.0, position: bool = False) -> str:
         """A value of position k; rounding (below NOISE of its column's largest) is 0.
@@ -588,6 +588,18 @@ def to_text(t: CycleTable) -> str:
             lines.append("singular: on or beside a change point, where a group's two "
                          "assemblies meet: the positions stand, the plans cannot be built")
     return "\n".join(lines) + "\n"
+
+
+def table_degrees(deg: float) -> str:
+    """A crank angle (degrees) for the table's φ1 column: two decimals, within [0, 360) as
+    :func:`plans.fmt.angle` writes it: an extreme position found 1.4e-12° short of a
+    full turn is 0.00, not 360.00.
+
+    >>> table_degrees(359.99999999999855), table_degrees(-1e-9), table_degrees(30.0)
+    ('0.00', '0.00', '30.00')
+    """
+    s = f"{deg % 360.0:.2f}"
+    return "0.00" if s in ("360.00", "-0.00") else s
 
 
 def _short(label: str) -> str:

@@ -441,3 +441,38 @@ def test_a_sine_is_never_above_one(capsys, tmp_path):
     sw = Solver(mech).sweep(np.radians(np.arange(0.0, 360.0, 1.0)))
     assert max(float(s.max()) for s in sw.sine.values()) == 1.0
     assert max(Solver(mech).solve_one(math.radians(a)).groups[0].sine_at() for a in range(360)) == 1.0
+
+
+def test_an_extreme_position_a_rounding_short_of_a_full_turn_reads_zero(capsys, tmp_path):
+    """The crank-slider whose rod is as long as its crank has its extreme at 0°, found at
+    359.99999999999855°: the table printed 360.00."""
+    path = tmp_path / "eq.toml"
+    path.write_text("""
+name = "Crank-slider with rod equal to crank"
+output = "B"
+[frame]
+O = [0.0, 0.0]
+[driver]
+link = 1
+angle_deg = 30
+omega = 10
+[links.1]
+axis = ["O", "A"]
+points = { A = 0.1 }
+[links.2]
+axis = ["A", "B"]
+points = { B = 0.1 }
+[links.3]
+points = { B = 0 }
+[[sliders]]
+link = 3
+guide = { link = 0, through = "O", angle_deg = 0 }
+[assembly]
+B = "right of A"
+""", "utf-8")
+    code, out, _ = run(capsys, "cycle", path)
+    assert code == 0 and "extreme positions at φ1 = 180°, 0°" in out
+    rows = out.split("x of points (m)")[1].splitlines()[2:14]
+    assert [r.split()[1] for r in rows] == [f"{a:.2f}" for a in (
+        180, 210, 240, 270, 300, 330, 0, 30, 60, 90, 120, 150)]
+    assert "360.00" not in out
