@@ -481,8 +481,12 @@ def to_text(t: CycleTable) -> str:
             )
         )
 
+    from .cycle import shown_from
+
+    lo = shown_from(c, d)  # a range through 0° writes its angles from −…°, as the range
+
     def lead(k: int) -> list[str]:
-        return [str(k), table_degrees(d.file_angle(float(m.phi[k])))]
+        return [str(k), table_degrees(d.file_angle(float(m.phi[k])), lo)]
 
     def cell(k: int, value, big: float = 0.0, position: bool = False) -> str:
         """A value of position k; rounding (below NOISE of its column's largest) is 0.
@@ -590,16 +594,21 @@ def to_text(t: CycleTable) -> str:
     return "\n".join(lines) + "\n"
 
 
-def table_degrees(deg: float) -> str:
-    """A crank angle (degrees) for the table's φ1 column: two decimals, within [0, 360) as
-    :func:`plans.fmt.angle` writes it: an extreme position found 1.4e-12° short of a
-    full turn is 0.00, not 360.00.
+def table_degrees(deg: float, lo: float = 0.0) -> str:
+    """A crank angle (degrees) for the table's φ1 column: two decimals, within the turn
+    [lo, lo + 360) the rest of the output writes angles in (:func:`plans.fmt.angle`): an
+    extreme position found 1.4e-12° short of a full turn is 0.00, not 360.00.
 
-    >>> table_degrees(359.99999999999855), table_degrees(-1e-9), table_degrees(30.0)
-    ('0.00', '0.00', '30.00')
+    >>> table_degrees(359.99999999999855), table_degrees(268.59, -180.0), table_degrees(-1e-9)
+    ('0.00', '-91.41', '0.00')
     """
-    s = f"{deg % 360.0:.2f}"
-    return "0.00" if s in ("360.00", "-0.00") else s
+    from .fmt import in_turn
+
+    x = in_turn(deg, lo) if lo else deg % 360.0
+    s = f"{x:.2f}"
+    if s == f"{lo + 360.0:.2f}":  # rounds up to the end of the turn: its start
+        s = f"{lo:.2f}"
+    return "0.00" if s == "-0.00" else s
 
 
 def _short(label: str) -> str:

@@ -177,6 +177,35 @@ class Cycle:
         return (min(lo, hi), max(lo, hi))
 
 
+def file_range(c: Cycle, driver=None) -> tuple[float, float]:
+    """The crank range of ``c`` (where it cannot make a full turn) in the convention of
+    ``driver`` (degrees; without one, counter-clockwise from +x) as it is written: from
+    the smaller angle to the larger, the first one negative where it runs through 0°
+    ("from −128.8° to 128.8°"; in the crank's own order, a clockwise crank's "from 128.8°
+    to 231.2°" named the very angles where it does not assemble)."""
+    lo, hi = c.ccw_range
+    deg = driver.file_angle if driver else from_x
+    a, b = deg(lo), deg(hi)
+    if driver is not None and driver.measured == "cw":  # that convention counts the other way
+        a, b = b, a
+    b = 0.0 if b > 360.0 - 1e-9 else b  # 359.99999999999 is 0, as angle() writes it
+    a = a - 360.0 if a > b else a
+    a = 0.0 if abs(a) < 1e-9 else a  # a limit found to 1e-13 rad: −5.7e−14° is 0
+    return a, b
+
+
+def shown_from(c: Cycle | None, driver=None) -> float:
+    """Where the turn the output writes crank angles in begins (degrees, in the
+    convention of ``driver``): 0, for [0°, 360°), unless the crank cannot make a full
+    turn and its range is written through 0° (:func:`file_range`, "from −99.72° to
+    99.72°"); then the turn centred on that range, so that an angle compared with it
+    reads −99.7°, not 260.3° (:func:`plans.fmt.angle`)."""
+    if c is None or c.full_turn or c.crank_range is None:
+        return 0.0
+    a, b = file_range(c, driver)
+    return 0.0 if a >= 0.0 else (a + b) / 2 - 180.0
+
+
 def summary(c: Cycle, driver=None) -> list[str]:
     """The cycle in a few lines, as ``plans solve`` and ``plans cycle`` print it: the
     four-bar's Grashof class, the crank range where it cannot make a full turn, the notes,
@@ -213,9 +242,23 @@ def analyse_cycle(mech: Mechanism, n_positions: int = 12, solver: Solver | None 
         key = ("cycle", n_positions, samples)
         got = solver.cache.get(key)
         if got is None:
-            got = solver.cache[key] = _analyse_cycle(mech, n_positions, solver, samples)
+            # the turn the solver's messages write angles in (Solver.at): [0°, 360°) while
+            # the cycle is found, then the cycle's own (shown_from)
+            fresh = SHOWN_FROM not in solver.cache
+            if fresh:
+                solver.cache[SHOWN_FROM] = 0.0
+            try:
+                got = solver.cache[key] = _analyse_cycle(mech, n_positions, solver, samples)
+            finally:
+                if fresh:
+                    del solver.cache[SHOWN_FROM]
+            solver.cache.setdefault(SHOWN_FROM, shown_from(got, mech.driver))
         return got
     return _analyse_cycle(mech, n_positions, solver or Solver(mech), samples)
+
+
+#: the solver's cache key of :func:`shown_from` for its cycle (:meth:`Solver.at`)
+SHOWN_FROM = "shown from"
 
 
 def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: int) -> Cycle:

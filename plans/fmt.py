@@ -77,18 +77,40 @@ def json_angle(deg: float) -> float:
     return 0.0 if x >= 360.0 else x + 0.0  # + 0.0: no −0.0
 
 
-def angle(deg: float, digits: int = 4, lang: str = "en") -> str:
+def angle(deg: float, digits: int = 4, lang: str = "en", lo: float = 0.0) -> str:
     """A crank angle in degrees, in [0, 360) as written: one that rounds to 360 is 0.
+    ``lo``: the turn [lo, lo + 360) to write it in instead, with a true minus sign, as
+    a crank's range through 0° is written (:func:`plans.cycle.shown_from`).
 
     >>> angle(359.99), angle(-30.0), angle(40.0, 4, "ru"), angle(12.345, 3), angle(1.1e-13, 6)
     ('0', '330', '40', '12.3', '0')
+    >>> angle(260.3, 4, "en", -180.0), angle(-0.25, 4, "ru", -180.0), angle(359.9999999999, 4, "en", -180.0)
+    ('−99.7', '−0,25', '0')
     """
+    if lo:
+        x = in_turn(deg, lo)
+        if abs(x) < 1e-9:  # a rounding's worth from 0
+            return "0"
+        s = num(x, digits, lang)
+        return "0" if s == "-0" else s.replace("-", "−")
     x = deg % 360.0
     if x < 1e-9 or 360.0 - x < 1e-9:  # a rounding's worth from a full turn: 0
         return "0"
     s = num(x, digits, lang)
     return "0" if s == "360" else s
 
+
+
+def in_turn(deg: float, lo: float) -> float:
+    """``deg`` moved by whole turns into [lo, lo + 360), for ``lo`` below 0: an angle on
+    the turn's edge (to 1e-6°), as far from one end of a range centred in it as from the
+    other, keeps its usual reading, 270 rather than −90.
+
+    >>> in_turn(260.3, -180.0), in_turn(270.0, -90.0 - 1e-12), in_turn(-99.8, -150.0)
+    (-99.69999999999999, 270.0, -99.8)
+    """
+    x = lo + (deg - lo) % 360.0
+    return x + 360.0 if x < 0.0 and x - lo < 1e-6 else x
 
 
 def signed(x: float, lang: str = "en", decimals: int | None = None) -> str:

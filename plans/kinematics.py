@@ -208,17 +208,42 @@ class Solver:
                     ok &= q >= np.where(beside, CHANGE_PIVOT, records.SINGULAR_SINE)
         return ok
 
-    def at(self, phi: float) -> str:
+    def at(self, phi: float, lang: str = "en") -> str:
         """The crank angle ``phi`` in words, as :meth:`plans.mechanism.Driver.at` gives it,
-        saying so where it is a change point (to 1e-9 rad) or beside one."""
-        words = self.mech.driver.at(phi)
+        saying so where it is a change point (to 1e-9 rad) or beside one (in English).
+        Where the crank cannot make a full turn and its range is written through 0°
+        ("from −99.72° to 99.72°"), the angle is written as the range is: −99.7°, not
+        260.3° (:func:`plans.cycle.shown_from`)."""
+        words = self._at(phi, lang)
         near = self.change_point_near(phi)
-        if near is None:
+        if near is None or lang != "en":
             return words
         if apart(phi, near) < 1e-9:
             return words + " (a change point: the two assemblies of a group meet there)"
-        return (words + f" (beside the change point at {self.mech.driver.at(near)}, where the "
+        return (words + f" (beside the change point at {self._at(near, lang)}, where the "
                 "two assemblies of a group meet)")
+
+    def _at(self, phi: float, lang: str) -> str:
+        from .fmt import angle
+
+        d = self.mech.driver
+        lo = self.shown_from()
+        return f"φ1 = {angle(d.file_angle(phi), 6, lang, lo)}°{d.convention(lang)}"
+
+    def shown_from(self) -> float:
+        """Where the turn that crank angles are written in begins, in the file's
+        convention (:func:`plans.cycle.shown_from`): worked out once, from the cycle."""
+        from .cycle import SHOWN_FROM, analyse_cycle
+        from .errors import PlansError
+
+        got = self.cache.get(SHOWN_FROM)
+        if got is None:
+            try:
+                analyse_cycle(self.mech, solver=self)  # it keeps the value
+                got = self.cache[SHOWN_FROM]
+            except PlansError:  # its own angle does not assemble: the usual turn
+                got = self.cache[SHOWN_FROM] = 0.0
+        return got
 
     def with_flips(self, flips: tuple[tuple[float, ...], ...], seam: float | None = None) -> Solver:
         """This solver with the given flips (and seam) instead of its own."""

@@ -120,10 +120,13 @@ class Driver:
 
         return f"φ1 = {angle(self.file_angle(phi), 6, lang)}°{self.convention(lang)}"
 
-    def both(self, phi: float, lang: str = "en") -> str:
+    def both(self, phi: float, lang: str = "en", lo: float = 0.0) -> str:
         """"60° from +x (30° from +y, cw, as the file gives it)": the crank angle ``phi``
         from +x, and in the file's own convention where that is another one, to six
-        digits (the angle as the user typed it: 270.01° had printed as 270°).
+        digits (the angle as the user typed it: 270.01° had printed as 270°). ``lo``:
+        the turn the file's angles are written in (:meth:`plans.kinematics.Solver.shown_from`,
+        "−99.7°" beside a crank range through 0°); the angle from +x takes it too where it
+        is the file's own.
 
         >>> d = Driver(1, "O", "A", 0.1, math.radians(60), 1.0, 30.0, "+y", "cw")
         >>> d.both(math.radians(60)), d.both(math.radians(60), "ru")
@@ -135,9 +138,10 @@ class Driver:
 
         ru = lang == "ru"
         conv = self.convention(lang)[2:-1]  # "from +y, cw" without its brackets
-        own = (f" ({angle(self.file_angle(phi), 6, lang)}° {conv}, "
+        own = (f" ({angle(self.file_angle(phi), 6, lang, lo)}° {conv}, "
                f"{'как задано в файле' if ru else 'as the file gives it'})") if conv else ""
-        return f"{angle(math.degrees(phi), 6, lang)}° {'от' if ru else 'from'} +x{own}"
+        at = angle(math.degrees(phi), 6, lang, 0.0 if conv else lo)
+        return f"{at}° {'от' if ru else 'from'} +x{own}"
 
     def convention(self, lang: str = "en") -> str:
         """" (from +y, cw)" after an angle in the file's convention; nothing for the usual

@@ -12,7 +12,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from .fmt import SENSE, angle, from_x, num
+from .fmt import SENSE, angle, num
 from .plan import Solution, plan_name
 from .records import flag_words
 
@@ -232,7 +232,7 @@ def warnings(sol: Solution, lang: str = "en") -> list[str]:
     same figures (``sol.flags``) worded again in Russian."""
     if lang == "en":
         return list(sol.warnings)
-    at = sol.mechanism.driver.at(sol.phi, lang)
+    at = sol.solver.at(sol.phi, lang)  # written as the crank's range is (Solver.at)
     return [flag_words(f, at, lang) for f in sol.flags]
 
 
@@ -257,14 +257,10 @@ def no_full_turn(cycle, lang: str = "en", driver=None) -> str:
     own order, a clockwise crank's "from 128.8° to 231.2°" named the very angles where it
     does not assemble).
     """
+    from .cycle import file_range
+
     lo, hi = cycle.ccw_range
-    deg = driver.file_angle if driver else from_x
-    a, b = deg(lo), deg(hi)
-    if driver is not None and driver.measured == "cw":  # that convention counts the other way
-        a, b = b, a
-    b = 0.0 if b > 360.0 - 1e-9 else b  # 359.99999999999 is 0, as angle() writes it
-    a = a - 360.0 if a > b else a
-    a = 0.0 if abs(a) < 1e-9 else a  # a limit found to 1e-13 rad: −5.7e−14° is 0
+    a, b = file_range(cycle, driver)
     return T[lang]["noturn"].format(
         d=driver.link if driver else 1,
         lo=num(a, 4, lang).replace("-", "−"), hi=angle(b, 4, lang),

@@ -476,3 +476,51 @@ B = "right of A"
     assert [r.split()[1] for r in rows] == [f"{a:.2f}" for a in (
         180, 210, 240, 270, 300, 330, 0, 30, 60, 90, 120, 150)]
     assert "360.00" not in out
+
+
+NON_GRASHOF = """
+name = "Non-Grashof four-bar"
+output = "C"
+[frame]
+A = [0.0, 0.0]
+D = [0.2, 0.0]
+[driver]
+link = 1
+angle_deg = {angle}
+omega = 5
+[links.1]
+axis = ["A", "B"]
+points = {{ B = 0.12 }}
+[links.2]
+axis = ["B", "C"]
+points = {{ C = 0.15 }}
+[links.3]
+axis = ["D", "C"]
+points = {{ C = 0.1 }}
+[assembly]
+C = "above BD"
+"""
+
+
+def _non_grashof(tmp_path, angle, name="ng.toml"):
+    path = tmp_path / name
+    path.write_text(NON_GRASHOF.format(angle=angle), "utf-8")
+    return path
+
+
+def test_an_angle_beside_a_range_through_zero_is_written_as_the_range(capsys, tmp_path):
+    """--angle -99.7, inside −99.72°…99.72°, was echoed as φ1 = 260.3° beside that range,
+    and the cycle's positions read 268.59 … 351.69, 8.31 … 91.41."""
+    path = _non_grashof(tmp_path, 90)
+    code, out, err = run(capsys, "solve", path, "--angle", "-99.7")
+    assert code == 0
+    assert ", φ1 = −99.7° from +x, ω1 = 5 rad/s ccw" in out
+    assert "from −99.72° to 99.72°" in out
+    assert err.startswith("plans solve: warning: group 2–3 (RRR) at φ1 = −99.7°: near-singular")
+    code, out, err = run(capsys, "report", path, "--angle", "-99.7", "--lang", "ru")
+    assert "группа 2–3 (RRR) при φ1 = −99,7°" in out
+    code, out, _ = run(capsys, "cycle", path)
+    rows = out.split("x of points (m)")[1].splitlines()[2:14]
+    assert [r.split()[1] for r in rows] == [
+        "-91.41", "-74.79", "-58.17", "-41.55", "-24.93", "-8.31",
+        "8.31", "24.93", "41.55", "58.17", "74.79", "91.41"]
