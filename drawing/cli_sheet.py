@@ -21,13 +21,14 @@ from plans.cli import (
     EXIT_INPUT,
     EXIT_OK,
     add_source,
+    angle_field,
     mechanism_from,
     number,
     picture_names,
     warn,
     write_output,
 )
-from plans.errors import InputError, PlansError, SingularPlanError
+from plans.errors import AssemblyError, InputError, PlansError, SingularPlanError
 
 FIELDS = {
     "name": "name", "designation": "designation", "student": "developer",
@@ -420,6 +421,10 @@ def render(mech, args) -> tuple[str, str | None]:
                                          args.title_block)
     except LayoutError as exc:  # named by its file (or its table's variant), not an option
         raise InputError(mech.source, str(exc)) from None
+    except AssemblyError as exc:  # an angle where it does not assemble: which, and where it does
+        from plans.cycle import outside_range
+
+        raise outside_range(mech, exc, *angle_field(args, mech)) from None
     if (note := sparse_note(mech, sheet, info["placed"])) is not None:
         print(f"plans sheet: note: {mech.source}: {note}", file=sys.stderr)
     for _, _, sol in info["solutions"]:  # a plan drawn near a dead point is said so

@@ -96,6 +96,16 @@ def mechanism_from(args, table=None):
     return mech if angle is None else mech.at_file_angle(angle)
 
 
+def angle_field(args, mech) -> tuple[str, float]:
+    """Where the crank angle of ``mech`` came from, for a message about it, and its value
+    as given: ``--angle``, the file's ``driver.angle_deg``, or a variant row's ``phi_deg``."""
+    if getattr(args, "angle", None) is not None:
+        return "--angle", args.angle
+    if getattr(args, "variant", None) is not None:  # the row's column (its source names the row)
+        return "phi_deg", mech.driver.angle_deg
+    return "driver.angle_deg", mech.driver.angle_deg
+
+
 #: the input files of the running command (see claim_inputs): never written over
 _INPUTS: list[str] = []
 

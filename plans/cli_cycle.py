@@ -32,6 +32,7 @@ from .cli import (
     EXIT_INPUT,
     EXIT_OK,
     add_source,
+    angle_field,
     mechanism_from,
     number,
     warn,
@@ -102,9 +103,25 @@ class CycleTable:
 def run(args) -> int:
     import sys
 
+    from .cycle import outside, reachable_cycle
+    from .errors import AssemblyError
+
     n = args.positions
     mech = mechanism_from(args)
-    table = compute(mech, n)
+    try:
+        table = compute(mech, n)
+    except AssemblyError:  # its angle does not assemble: the cycle where it does, if any
+        got = reachable_cycle(mech, n)
+        if got is None:
+            raise
+        turned, solver, c = got
+        # the hints read where the range is (the file's own angle does not close), or at
+        # the file's angle (--angle beyond the range of a file whose angle closes)
+        read = (", assembled as the hints ask at " + solver.at(solver.branch_at)
+                if solver.branch_at == turned.driver.phi else "")
+        warn("cycle", f"{outside(*angle_field(args, mech), c, mech.driver)}: the cycle runs "
+                      f"over that range{read}", mech.source)
+        table = compute(turned, n, solver)
     if args.json:
         text = json_chunks(table)
     elif args.csv:

@@ -261,6 +261,89 @@ def analyse_cycle(mech: Mechanism, n_positions: int = 12, solver: Solver | None 
 SHOWN_FROM = "shown from"
 
 
+def reachable(mech: Mechanism, samples: int = 3600) -> Mechanism | None:
+    """Where the crank angle of ``mech`` does not assemble on any assembly: ``mech`` with
+    its crank turned to the middle of the nearest range of angles where it does, as
+    ``--angle`` turns it (:meth:`Mechanism.at_file_angle`: the hints are read at the
+    file's own angle where the mechanism closes there, else at the new one). None where
+    its angle assembles (on some assembly), or no angle does."""
+    import itertools
+
+    from .structure import analyse
+
+    structure = analyse(mech)
+    n = len(structure.groups)
+    grid = mech.driver.phi + np.linspace(0.0, TWO_PI, samples, endpoint=False)
+    closes = np.zeros(samples, dtype=bool)
+    # on every assembly: a later group may close on one of an earlier group's only
+    for sigmas in itertools.islice(itertools.product((1, -1), repeat=n), 64):
+        with np.errstate(all="ignore"):
+            closes |= Solver(mech, structure, sigmas, ((),) * n).solve(grid).placed
+    if closes[0] or not closes.any():
+        return None
+    got = np.flatnonzero(closes)
+    k = int(got[np.argmin(np.minimum(got, samples - got))])  # the nearest, either way
+    i = j = k
+    while closes[(i - 1) % samples] and k - i < samples:
+        i -= 1
+    while closes[(j + 1) % samples] and j - k < samples:
+        j += 1
+    mid = float(grid[0] + (i + j) / 2 * (grid[1] - grid[0]))
+    return mech.at_file_angle(mech.driver.file_angle(mid))
+
+
+def reachable_cycle(mech: Mechanism, n_positions: int = 12):
+    """(mechanism, its solver, its cycle) over the range :func:`reachable` finds, where the
+    crank angle of ``mech`` does not assemble; None where that finds none or the range's
+    cycle cannot be made."""
+    turned = reachable(mech)
+    if turned is None:
+        return None
+    try:
+        solver = Solver(turned)
+        c = analyse_cycle(turned, n_positions, solver=solver)
+    except PlansError:
+        return None
+    return None if c.full_turn else (turned, solver, c)
+
+
+def outside_range(mech: Mechanism, exc: PlansError, field: str, given: float) -> PlansError:
+    """The error for a crank angle where ``mech`` does not assemble, one line: the field
+    that gave it (``driver.angle_deg``, ``--angle``) and its value ``given``, the crank's
+    range where it does, in the file's convention, and the group that cannot close;
+    ``exc`` itself where there is no such range."""
+    from .errors import AssemblyError, InputError
+    from .fmt import angle as written
+
+    if not isinstance(exc, AssemblyError) or (got := reachable_cycle(mech)) is None:
+        return exc
+    _, solver, c = got
+    d = mech.driver
+    at = f"φ1 = {written(d.file_angle(d.phi), 6, 'en', shown_from(c, d))}°{d.convention()}"
+    why = ""
+    with np.errstate(all="ignore"):
+        m = solver.solve(np.array([d.phi]))
+    for g in m.groups:  # the group that misses, on the assembly the range is drawn in
+        if not g.valid[0]:
+            why = f": {g.failure(0, at)}"
+            break
+    return InputError(mech.source, f"{outside(field, given, c, d)}, where the mechanism "
+                                   f"assembles{why}")
+
+
+def outside(field: str, given: float, c: Cycle, driver) -> str:
+    """"driver.angle_deg = 150 is outside the crank's range, φ1 from −99.72° to 99.72°":
+    the field that gave a crank angle, its value as given, and the range of ``c``, in the
+    convention of ``driver``."""
+    from .fmt import angle as written
+
+    lo = shown_from(c, driver)
+    a, b = file_range(c, driver)
+    return (f"{field}{' ' if field.startswith('--') else ' = '}{given:g} is outside the "
+            f"crank's range, φ1 from {written(a, 4, 'en', lo)}° to {written(b, 4, 'en', lo)}°"
+            f"{driver.convention()}")
+
+
 def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: int) -> Cycle:
     w1 = mech.driver.omega
     sense = 1.0 if w1 > 0 else -1.0

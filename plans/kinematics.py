@@ -232,8 +232,10 @@ class Solver:
 
     def shown_from(self) -> float:
         """Where the turn that crank angles are written in begins, in the file's
-        convention (:func:`plans.cycle.shown_from`): worked out once, from the cycle."""
-        from .cycle import SHOWN_FROM, analyse_cycle
+        convention (:func:`plans.cycle.shown_from`): worked out once, from the cycle, or
+        where the mechanism's own angle does not assemble, from the nearest range where
+        it does (:func:`plans.cycle.reachable_cycle`)."""
+        from .cycle import SHOWN_FROM, analyse_cycle, reachable_cycle, shown_from
         from .errors import PlansError
 
         got = self.cache.get(SHOWN_FROM)
@@ -241,8 +243,11 @@ class Solver:
             try:
                 analyse_cycle(self.mech, solver=self)  # it keeps the value
                 got = self.cache[SHOWN_FROM]
-            except PlansError:  # its own angle does not assemble: the usual turn
-                got = self.cache[SHOWN_FROM] = 0.0
+            except PlansError:
+                self.cache[SHOWN_FROM] = 0.0  # meanwhile: a message worded as it is found
+                other = reachable_cycle(self.mech)
+                got = self.cache[SHOWN_FROM] = (
+                    0.0 if other is None else shown_from(other[2], self.mech.driver))
         return got
 
     def with_flips(self, flips: tuple[tuple[float, ...], ...], seam: float | None = None) -> Solver:

@@ -102,7 +102,9 @@ def test_unreachable_angle_is_reported_not_nan(capsys):
     assert code == 2
     assert out == ""
     assert err.startswith(
-        "plans solve: samples/fourbar.toml: group 2–3 (RRR) cannot be assembled at φ1 = 180°")
+        "plans solve: samples/fourbar.toml: --angle 180 is outside the crank's range, φ1 from "
+        "−128.8° to 128.8°, where the mechanism assembles: group 2–3 (RRR) cannot be "
+        "assembled at φ1 = 180°")
     assert err.count("\n") == 1 and "nan" not in err.lower()
 
 
@@ -121,7 +123,9 @@ def test_unreachable_variant_position_names_the_variant(capsys, tmp_path):
             failed.append(angle)
             assert out == "" and err.count("\n") == 1
             assert err.startswith(
-                f"plans solve: {table}, variant 1: group 2–3 (RRR) cannot be assembled")
+                f"plans solve: {table}, variant 1: --angle {angle} is outside the crank's "
+                "range, φ1 from ")
+            assert ", where the mechanism assembles: group 2–3 (RRR) cannot be assembled" in err
     assert 0 < len(failed) < 36  # it closes over part of the turn only
 
 

@@ -519,8 +519,60 @@ def test_an_angle_beside_a_range_through_zero_is_written_as_the_range(capsys, tm
     assert err.startswith("plans solve: warning: group 2–3 (RRR) at φ1 = −99.7°: near-singular")
     code, out, err = run(capsys, "report", path, "--angle", "-99.7", "--lang", "ru")
     assert "группа 2–3 (RRR) при φ1 = −99,7°" in out
+    code, out, err = run(capsys, "solve", path, "--angle", "-99.8")
+    assert code == 2 and "cannot be assembled at φ1 = −99.8°:" in err
     code, out, _ = run(capsys, "cycle", path)
     rows = out.split("x of points (m)")[1].splitlines()[2:14]
     assert [r.split()[1] for r in rows] == [
         "-91.41", "-74.79", "-58.17", "-41.55", "-24.93", "-8.31",
         "8.31", "24.93", "41.55", "58.17", "74.79", "91.41"]
+
+
+def test_a_cycle_given_outside_the_cranks_range_runs_over_the_range(capsys, tmp_path):
+    """A four-bar that assembles for φ1 from −99.72° to 99.72° only, given at 150°: the
+    cycle had refused to run although it found that range itself. It runs over it, as the
+    same file given at 90° does, and says once on stderr why."""
+    path = _non_grashof(tmp_path, 150)
+    code, out, err = run(capsys, "cycle", path)
+    assert code == 0
+    assert err == (f"plans cycle: warning: {path}: driver.angle_deg = 150 is outside the "
+                   "crank's range, φ1 from −99.72° to 99.72°: the cycle runs over that range, "
+                   "assembled as the hints ask at φ1 = 0°\n")
+    code, same, err = run(capsys, "cycle", _non_grashof(tmp_path, 90, "ng90.toml"))
+    assert code == 0 and err == "" and out == same
+    code, out, err = run(capsys, "cycle", path, "--json", "--positions", "3")
+    assert code == 0 and err.count("\n") == 1
+    lo, hi = json.loads(out)["cycle"]["crank_range_phi_deg"]
+    assert lo == pytest.approx(260.28, abs=0.01) and hi == pytest.approx(99.72, abs=0.01)
+    # --angle beyond the range of a file whose own angle closes: its hints hold there
+    code, out, err = run(capsys, "cycle", _non_grashof(tmp_path, 90, "ng90.toml"), "--angle", "-99.8")
+    assert code == 0 and out == same
+    assert err.endswith(": --angle -99.8 is outside the crank's range, φ1 from −99.72° to "
+                        "99.72°: the cycle runs over that range\n")
+
+
+@pytest.mark.parametrize("command", ["solve", "report", "sheet"])
+def test_a_position_outside_the_cranks_range_names_the_field_and_the_range(
+        capsys, tmp_path, command):
+    """solve, report and sheet need the file's own angle: each refuses it in one line that
+    names driver.angle_deg and the range where the mechanism assembles."""
+    path = _non_grashof(tmp_path, 150)
+    svg = tmp_path / "s.svg"
+    code, out, err = run(capsys, command, path, *(["-o", svg] if command == "sheet" else []))
+    assert code == 2 and out == "" and not svg.exists()
+    assert err == (f"plans {command}: {path}: driver.angle_deg = 150 is outside the crank's "
+                   "range, φ1 from −99.72° to 99.72°, where the mechanism assembles: group 2–3 "
+                   "(RRR) cannot be assembled at φ1 = 150°: needs BD within [0.05, 0.25] m, "
+                   "misses by 0.059789 m\n")
+
+
+def test_the_range_and_the_angle_are_in_the_files_convention(capsys, tmp_path):
+    path = tmp_path / "y.toml"
+    path.write_text(NON_GRASHOF.format(angle=250).replace(
+        "omega = 5", 'omega = 5\nfrom = "+y"\nmeasured = "cw"'), "utf-8")
+    code, _, err = run(capsys, "solve", path)
+    assert code == 2
+    assert err.startswith(f"plans solve: {path}: driver.angle_deg = 250 is outside the crank's "
+                          "range, φ1 from −9.715° to 189.7° (from +y, cw), where the mechanism "
+                          "assembles: group 2–3 (RRR) cannot be assembled at φ1 = 250° (from +y, "
+                          "cw): needs BD")
