@@ -82,31 +82,26 @@ points = { B = 0.15, F = [0.05, -0.03] }
 B = "above OD"
 """
 
+def _without(text: str, *changes: tuple[str, str]) -> str:
+    """``text`` with each ``(old, new)`` made, each ``old`` found exactly once."""
+    for old, new in changes:
+        if text.count(old) != 1:
+            raise ValueError(f"scenes: {old!r} is not in the text once")
+        text = text.replace(old, new)
+    return text
+
+
 # --- RRR, joints only: the same crank-rocker without E, S2 and F -------------------------
 # the workload of the peers' four-bar kernels (their joints' motion), so the bench compares
 # like with like; ``crank_rocker`` adds three points found by the similarity theorem
-FOURBAR_JOINTS = """
-name = { en = "Crank-rocker four-bar, joints only", ru = "Кривошипно-коромысловый механизм (только шарниры)" }
-output = "B"
-[frame]
-O = [0.0, 0.0]
-D = [0.2, 0.0]
-[driver]
-link = 1
-angle_deg = 60
-omega = 10
-[links.1]
-axis = ["O", "A"]
-points = { A = 0.05 }
-[links.2]
-axis = ["A", "B"]
-points = { B = 0.2 }
-[links.3]
-axis = ["D", "B"]
-points = { B = 0.15 }
-[assembly]
-B = "above OD"
-"""
+FOURBAR_JOINTS = _without(
+    CRANK_ROCKER,
+    ('en = "Crank-rocker four-bar"', 'en = "Crank-rocker four-bar, joints only"'),
+    ('ru = "Кривошипно-коромысловый механизм"',
+     'ru = "Кривошипно-коромысловый механизм (только шарниры)"'),
+    ("points = { B = 0.2, E = [0.1, 0.06], S2 = 0.1 }", "points = { B = 0.2 }"),
+    ("points = { B = 0.15, F = [0.05, -0.03] }", "points = { B = 0.15 }"),
+)
 
 # --- RRP: offset crank-slider r = 0.1, l = 0.4, e = 0.05 ---------------------------------
 # θ = arcsin(e/(l−r)) − arcsin(e/(l+r)) = 3.855°, H = √((l+r)²−e²) − √((l−r)²−e²) = 0.20169 m
