@@ -244,7 +244,7 @@ class _Sheet1:
         """The free scale factors, their candidates (largest views first) and the size
         of the views at each, as a multiple of the engine's default size (a plan of
         positions 150 mm across, a plan's crank vector 80 mm or its longest 150 mm)."""
-        from drawing.fit import SIZES
+        from drawing.fit import SIZES, readable
         from plans.plan import plan_name
         from plans.scales import (
             CRANK_MM,
@@ -262,8 +262,8 @@ class _Sheet1:
 
             (x0, y0, x1, y1), _ = field(self.sheet)  # up to the field's longer side
             hi = choose_mu_l(extent, max_mm=max(x1 - x0, y1 - y0, PLAN_MM * SIZES[0]))
-            lo = choose_mu_l(extent, max_mm=PLAN_MM * SIZES[1])
-            values = [m for m in GOST_MU_L if hi <= m <= lo] or [hi]
+            values = [m for m in GOST_MU_L if hi <= m and readable(extent / m / PLAN_MM)]
+            values = values or [hi]
             out.append(("mu_l", values, [extent / m / PLAN_MM for m in values]))
         sols = self.solutions(self.mu0)
         for key, kind in (("mu_v", "velocity"), ("mu_a", "acceleration")):
@@ -274,9 +274,10 @@ class _Sheet1:
             largest = max(abs(q.value) for p in plans for q in p.points.values())
             hi, lo = (choose_mu(tip, largest, crank_mm=CRANK_MM * k, max_mm=PLAN_MM * k)
                       for k in SIZES)
-            values = sorted(set(series(hi, lo)) | {hi, lo})
-            out.append((key, values,
-                        [max(tip / m / CRANK_MM, largest / m / PLAN_MM) for m in values]))
+            sized = [(m, max(tip / m / CRANK_MM, largest / m / PLAN_MM))
+                     for m in sorted(set(series(hi, lo)) | {hi, lo})]
+            sized = [(m, k) for m, k in sized if readable(k)] or sized[:1]
+            out.append((key, [m for m, _ in sized], [k for _, k in sized]))
         if self.fixed.curves is not None:
             widths = sorted(DIAGRAMS, reverse=True)
             out.append(("diagrams", widths, [w / 180 for w in widths]))
@@ -365,8 +366,10 @@ class _Sheet1:
     def _no_room(self, fit) -> str:
         """Why sheet 1 does not fit this format: what its views need at their smallest,
         and the smallest format that holds them."""
+        from drawing.fit import SIZES
         from drawing.layout import LayoutError, describe, room
         from drawing.sheet import FORMATS, Sheet
+        from plans.scales import CRANK_MM, PLAN_MM
 
         smallest = {k: v[0] if k in fit.plain else v[-1] for k, v, _ in fit.factors}
         views = fit.arranged([v for k, value in smallest.items() for v in fit.views(k, value)]
@@ -387,8 +390,11 @@ class _Sheet1:
                  if self.chosen is not None and len(self.chosen) > 1 else "")
         where = (f"{holds} holds it: use --format {holds}{fewer}" if holds
                  else f"no format holds it{fewer}")
-        return (f"sheet 1 does not fit on {room(self.sheet)}: at their smallest scales its "
-                f"views need {need}; {where}")
+        least = (f"half their default size: the longest vector of a plan {PLAN_MM * SIZES[1]:.0f} "
+                 f"mm or its crank vector {CRANK_MM * SIZES[1]:.0f} mm, the plan of positions "
+                 f"{PLAN_MM * SIZES[1]:.0f} mm across")
+        return (f"sheet 1 does not fit on {room(self.sheet)}: at their smallest readable scales "
+                f"({least}) its views need {need}; {where}")
 
 
 def _compose(mech, sheet, cycle, mu, lang, title, placed, sols):

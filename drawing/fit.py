@@ -4,7 +4,12 @@ The scale factors the mechanism file leaves free are chosen for the sheet: μl f
 plan of positions, μv for the velocity plans, μa for the acceleration plans. Each
 runs through its own standard series (:mod:`plans.scales`), from views 3 times the
 engine's default size (a plan's longest vector 450 mm, the plan of positions 450 mm
-across) down to half of it (75 mm).
+across) down to half of it (75 mm), and no further (:func:`readable`): the series' next
+step down may halve a view again, to a plan of positions whose letters crowd a 24 mm
+crank circle and plans 24 mm long, on a sheet that looks full only because the views'
+captions keep their width. Views that do not fit at half their default size do not fit:
+the sheet is refused with the format that holds them, as one too small for them at any
+scale is.
 
 A factor does not wait for the others: a plan of positions that fits at μl = 0.001
 keeps it where the acceleration plan needs a step down, instead of every view going
@@ -29,13 +34,22 @@ import itertools
 from drawing.layout import LayoutError, pack, place_views
 from drawing.views import captioned_width
 
-__all__ = ["SIZES", "Fit"]
+__all__ = ["SIZES", "Fit", "readable"]
 
 #: the views' sizes tried, as multiples of the engine's default drawing sizes (a plan's
 #: crank vector 80 mm and its longest vector 150 mm, the plan of positions 150 mm
 #: across): the largest and the smallest. The plan of positions may be larger still,
 #: up to the field's longer side
 SIZES = (3.0, 0.5)
+
+
+def readable(size: float) -> bool:
+    """Whether a view ``size`` times the engine's default size is drawn large enough to
+    read: at least the smallest of :data:`SIZES` (a plan's longest vector 75 mm or its
+    crank vector 40 mm, the plan of positions 75 mm across)."""
+    return size >= SIZES[1] - 1e-9
+
+
 #: the factors whose views are lettered: drawn without their letters to be sized (the
 #: tables without their cells' texts, which are fitted into the cells)
 LETTERED = ("mu_l", "mu_v", "mu_a", "segments")

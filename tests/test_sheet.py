@@ -842,6 +842,37 @@ def test_a4_says_in_one_line_what_sheet_1_needs_and_which_format_holds_it(capsys
     assert "'" not in err and "--plans" not in err
 
 
+def test_two_positions_on_a3_are_refused_rather_than_drawn_unreadably_small(capsys, tmp_path):
+    """Variant 6 with --plans 2,8 on A3 was drawn, exit 0 and no word, at μl = 0.01 and
+    μv = 0.1: a crank circle 24 mm across with its letters on the links, plans 24 mm long,
+    a third of the field empty (the plans' captions, not their drawings, set their width).
+    The sheet's scales go down to half the default sizes, no further: the sheet is refused
+    as A4 is, naming A2, where every view is at least that large."""
+    from support import run
+
+    from plans.plan import plan_name
+
+    out, png = tmp_path / "s.svg", tmp_path / "s.png"
+    code, _, err = run(capsys, "sheet", "--variant", "6", "--format", "A3", "--plans", "2,8",
+                       "-o", out, "--png", png)
+    assert code == 2 and not out.exists() and not png.exists() and len(err.splitlines()) == 1
+    assert "sheet 1 does not fit on A3" in err and "the longest vector of a plan 75 mm" in err
+    assert err.endswith("; A2 holds it: use --format A2 or draw fewer positions' plans "
+                        "(--plans)\n")
+    mech = variant(6)
+    _, _, info = build_sheet(mech, "A2", "ru", 12, [2, 8])
+    given = info["given"]
+    assert given.mu_l == 0.002  # 0.01 on the A3 sheet
+    across = max(p.rect.w for p in info["placed"] if p.view.name == "positions")
+    assert across > 150
+    tip = plan_name(mech.driver.tip)
+    for _, _, sol in info["solutions"]:
+        for plan, mu in ((sol.velocity, 0.02), (sol.acceleration, 0.4)):  # 0.1 and 2 on A3
+            assert plan.mu == mu
+            longest = max(abs(q.value) for q in plan.points.values()) / mu
+            assert longest >= 75 or abs(plan.value(tip)) / mu >= 40
+
+
 def test_every_failed_sheet_of_a_batch_names_its_variant(capsys, tmp_path):
     """sheet --variant all --format A4 printed ten errors without saying whose."""
     from support import run
