@@ -814,12 +814,8 @@ def _draw_diagrams(mech, cycle, lang, width, height, linear, s, v, a, flip=1.0) 
             if k % 2 == 0:
                 items.append(Text((x, y_zero + 1.5), str(k % len(cycle.positions) if k else 0),
                                   size=2.5, anchor="middle", baseline="hanging", italic=True))
-        items.append(Text((2, y - 6), f"{name}, {unit}", size=3.5, baseline="hanging"))
-        if not linear:  # an angle's positive sense, after its name: the tables give ω and
-            # ε by their senses, and the working stroke of a rocker may turn either way
-            after = 2 + text_width(f"{name}, {unit}", 3.5) + 2.5
-            items.append(Text((after, y - 6), f"(+ {w['ccw'] if flip > 0 else w['cw']})",
-                              size=3.5, baseline="hanging"))
+        items.append(Text((2, y - 6), _axis_name(name, unit, None if linear else flip, lang),
+                          size=3.5, baseline="hanging"))
         items.append(Text((width + 6, y_zero - 1.5), "φ", size=3.5, anchor="end"))
         items.append(_start_anchored(Text((width - 2, y - 6), f"μ_{{{name}}} = {num(mu, 3, lang)} {_per_mm(unit, lang)}",
                           size=2.5, anchor="end", baseline="hanging", markup=True)))
@@ -827,6 +823,18 @@ def _draw_diagrams(mech, cycle, lang, width, height, linear, s, v, a, flip=1.0) 
     mu_phi = 2 * math.pi / width
     caption = f"{w['diagrams']}, μ_φ = {num(mu_phi, 3, lang)} {w['rad']}/{w['mm']}"
     return _finish("diagrams", items, [], caption, pad=2.0)
+
+
+def _axis_name(name: str, unit: str, flip: float | None, lang: str) -> str:
+    """A diagram's axis: "s, м"; an angle's with its positive sense after it, one space
+    apart, "ε, рад/с² (+ против ч.с.)": the tables give ω and ε by their senses, and the
+    working stroke of a rocker may turn either way. One text, so that the space is the
+    font's own (set apart by an estimate of the name's width, the sense stood two
+    spaces after "рад/с²" and one after "рад")."""
+    if flip is None:
+        return f"{name}, {unit}"
+    w = WORDS[lang]
+    return f"{name}, {unit} (+ {w['ccw'] if flip > 0 else w['cw']})"
 
 
 def _nice(x: float) -> float:
