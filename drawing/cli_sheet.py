@@ -355,7 +355,8 @@ class _Sheet1:
                     **{k: v for k, v in chosen.items() if k in SCALED})
         views = [v for k, value in chosen.items()
                  for v in (self.draw(k, value, full) if k == "segments" else fit.views(k, value))]
-        placed = place_views(self.sheet, fit.arranged(views + list(fit.fixed)))
+        placed = one_title_size(self.sheet,
+                                place_views(self.sheet, fit.arranged(views + list(fit.fixed))))
         if not any(k in self.mech.scales for k in SCALED):
             # at their largest and still leaving room: spread over the field. Views at
             # the scales a file fixes stay together, the share they take said in a note
@@ -395,6 +396,28 @@ class _Sheet1:
                  f"{PLAN_MM * SIZES[1]:.0f} mm across")
         return (f"sheet 1 does not fit on {room(self.sheet)}: at their smallest readable scales "
                 f"({least}) its views need {need}; {where}")
+
+
+def one_title_size(sheet, placed: list) -> list:
+    """The views ``placed`` with their titles in one size. A view's title much wider than
+    its drawing is set smaller (:data:`drawing.views.SMALL_CAPTION`), so that a narrow
+    plan's view is not as wide as its title; the other views' titles were then larger
+    on the same sheet. Where they all pack with every title at full size, the long ones
+    on two lines, they are so; else every title is set at the smaller size, each view in
+    its place (its box only shrinks). The scale factors are those chosen either way: a
+    title never costs a plan a step of its scale."""
+    from drawing.layout import Placed, pack
+    from drawing.scene import Rect
+    from drawing.views import retitled
+
+    if len({p.view.caption_size for p in placed if p.view.caption_size}) <= 1:
+        return placed
+    views = [retitled(p.view, "wrap") for p in placed]
+    spots = pack(sheet, [(v.w, v.h) for v in views])
+    if spots is None:
+        views = [retitled(p.view, "small") for p in placed]
+        spots = [(p.rect.x, p.rect.y) for p in placed]
+    return [Placed(v, Rect(x, y, v.w, v.h)) for v, (x, y) in zip(views, spots, strict=True)]
 
 
 def _compose(mech, sheet, cycle, mu, lang, title, placed, sols):

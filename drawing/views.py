@@ -66,9 +66,14 @@ PAD = 6.0  # room around a drawing inside its view box, for labels
 CAPTION = 5.0  # caption size, mm
 #: mm: a caption wider than its drawing by more than this is set at SMALL_CAPTION, so
 #: that a small plan's view is not as wide as its long title ("План скоростей
-#: (положение 2, φ1 = 210°), μv = 0,02 (м/с)/мм" is 190 mm at 5 mm)
+#: (положение 2, φ1 = 210°), μv = 0,02 (м/с)/мм" is 190 mm at 5 mm), or on two lines
+#: at CAPTION (:func:`retitled`: a sheet gives all its titles one size)
 CAPTION_OVER = 20.0
 SMALL_CAPTION = 3.5
+#: how a view's caption is set (:func:`caption_lines`): "fit", at CAPTION, or at
+#: SMALL_CAPTION where that is much wider than the drawing; "wrap", at CAPTION, on two
+#: lines where one is much wider; "small", at SMALL_CAPTION
+CAPTION_STYLES = ("fit", "wrap", "small")
 LETTER = 3.5  # letters of points, mm
 JOINT_R = 1.0
 BLANK_PAD = 0.5  # the break in thin lines around a dimension's value, mm
@@ -145,6 +150,12 @@ class View:
     #: (what grows with the scale); and the width those texts need whatever the scale
     body: tuple[float, float] = (0.0, 0.0)
     texts: tuple[float, float] = (0.0, 0.0)  # the caption's width, the widest line under
+    caption: str = ""
+    #: mm: the caption's letters (0 where there is none)
+    caption_size: float = 0.0
+    #: what the view is made of, to set its caption anew (:func:`retitled`): (its
+    #: drawing, the lines under it) and the box the caption stands over
+    parts: tuple = field(default=(), repr=False)
 
 
 def notation(s: str) -> str:
@@ -279,28 +290,81 @@ def _leader(point, end) -> Segment:
 def _captioned(name: str, items: list[Item], bounds, caption: str, under: list[str]) -> View:
     """The view of ``items`` (within ``bounds``) under ``caption``, ``under`` below."""
     x0, y0, x1, y1 = bounds
-    top = y0 - 2.0
-    wide = _width(centred((0, 0), caption, CAPTION))
-    cap = centred(((x0 + x1) / 2, top), caption, _caption_at(wide, x1 - x0))
-    cap = translate(cap, 0.0, y0 - 1.5 - text_box(cap).bounds[3])
-    items.append(cap)
-    widths = [0.0]
+    lines = []
     y = y1 + 2.0
     for line in under:
         y += 3.5 + 2.0
-        items.append(Text((x0, y), notation(line), size=2.5, markup=True, baseline="alphabetic"))
-        widths.append(text_box(items[-1]).bounds[2] - x0)
+        lines.append(Text((x0, y), notation(line), size=2.5, markup=True, baseline="alphabetic"))
+    return _assembled(name, (items, lines), bounds, caption, "fit")
+
+
+def _assembled(name: str, parts: tuple[list[Item], list[Text]], bounds, caption: str,
+               style: str) -> View:
+    """The view of ``parts`` (the drawing within ``bounds``, the lines under it) with
+    ``caption`` over ``bounds`` set as ``style`` says (:data:`CAPTION_STYLES`), in its
+    box."""
+    x0, y0, x1, y1 = bounds
+    drawing, under = parts
+    items = [*drawing, *caption_texts(caption, x0, x1, y0, style), *under]
     bx0, by0, bx1, by1 = _bbox(items)
     bx0, by0, bx1, by1 = min(bx0, x0), min(by0, y0), max(bx1, x1), max(by1, y1)
+    size = items[len(drawing)].size
     items = _shift(items, -bx0 + 1, -by0 + 1)
+    widest = max([0.0, *(text_box(t).bounds[2] - x0 for t in under)])
     return View(name, items, bx1 - bx0 + 2, by1 - by0 + 2, (x1 - x0, y1 - y0),
-                (wide, max(widths)))
+                (_width(centred((0, 0), caption, CAPTION)), widest), caption, size,
+                (parts, bounds))
 
 
-def caption_size(caption: str, width: float) -> float:
-    """The size of a view's caption over a drawing ``width`` mm wide: :data:`CAPTION`,
-    or :data:`SMALL_CAPTION` where that is much wider than the drawing."""
-    return _caption_at(_width(centred((0, 0), caption, CAPTION)), width)
+def retitled(view: View, style: str) -> View:
+    """``view`` with its caption set as ``style`` says (:data:`CAPTION_STYLES`): the
+    drawing, its letters and the lines under it as they were."""
+    if not view.parts:
+        return view
+    return _assembled(view.name, *view.parts, view.caption, style)
+
+
+def caption_lines(caption: str, width: float, style: str = "fit") -> tuple[float, list[str]]:
+    """(letter size, lines) of a caption over a drawing ``width`` mm wide, set as
+    ``style`` says (:data:`CAPTION_STYLES`)."""
+    if style == "small":
+        return SMALL_CAPTION, [caption]
+    if _caption_at(_width(centred((0, 0), caption, CAPTION)), width) == CAPTION:
+        return CAPTION, [caption]
+    return (CAPTION, _broken(caption)) if style == "wrap" else (SMALL_CAPTION, [caption])
+
+
+def _broken(caption: str) -> list[str]:
+    """``caption`` on two lines: broken after a comma outside brackets, before the scale
+    factor ("План ускорений (φ1 = 60°)," / "μa = 0,1 (м/с²)/мм"), else at the space
+    outside brackets that makes its longer line shortest; one line where it has
+    neither."""
+    depth, commas, spaces = 0, [], []
+    for i, c in enumerate(caption):
+        depth += (c in "([{") - (c in ")]}")
+        if c == " " and depth == 0:
+            (commas if caption[i - 1] == "," else spaces).append(i)
+
+    def longer(i):
+        return max(_width(centred((0, 0), part, CAPTION)) for part in (caption[:i], caption[i + 1:]))
+
+    cuts = commas[-1:] or spaces
+    if not cuts:
+        return [caption]
+    i = min(cuts, key=longer)
+    return [caption[:i], caption[i + 1:]]
+
+
+def caption_texts(caption: str, x0: float, x1: float, y0: float, style: str = "fit") -> list[Text]:
+    """The caption's lines (:func:`caption_lines`) centred over ``x0``–``x1``, the last
+    1.5 mm above ``y0``, each :data:`~drawing.labels.LINE_PITCH` under the one before."""
+    size, lines = caption_lines(caption, x1 - x0, style)
+    out = []
+    for k, line in enumerate(lines):
+        cap = centred(((x0 + x1) / 2, y0), line, size)
+        below = (len(lines) - 1 - k) * size * LINE_PITCH  # the lines under this one
+        out.append(translate(cap, 0.0, y0 - 1.5 - below - text_box(cap).bounds[3]))
+    return out
 
 
 def _caption_at(wide: float, width: float) -> float:
@@ -859,11 +923,7 @@ def _table(name: str, caption: str, header: list[str], rows: list[list[str]],
     for k, chunk in enumerate(chunks):
         items += _shift(_grid(header, chunk, widths, row_h, sizing), k * (total_w + PART_GAP), 0.0)
     span = len(chunks) * total_w + (len(chunks) - 1) * PART_GAP
-    cap = centred((span / 2, -2.0), caption, caption_size(caption, span))
-    items.append(translate(cap, 0.0, -1.5 - text_box(cap).bounds[3]))
-    bx0, by0, bx1, by1 = _bbox(items)
-    items = _shift(items, -bx0 + 1, -by0 + 1)
-    return View(name, items, bx1 - bx0 + 2, by1 - by0 + 2)
+    return _assembled(name, (items, []), (0.0, 0.0, span, _bbox(items)[3]), caption, "fit")
 
 
 #: mm between the parts of a table set side by side

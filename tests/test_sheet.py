@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from drawing.cli_sheet import build_sheet
-from drawing.labels import overlaps
+from drawing.labels import overlaps, text_box
 from drawing.layout import share_covered
 from drawing.scene import Text
 from drawing.svg import to_svg
@@ -137,7 +137,7 @@ def test_cli_stdout_and_batch(tmp_path):
     assert "Иванов" in texts and "1:10" in texts
     # the press file fixes its scales, small for A1: the command says so, and how to mend it
     assert r.stderr.decode() == (
-        "plans sheet: note: samples/press.toml: the views take 22% of the A1 sheet's field "
+        "plans sheet: note: samples/press.toml: the views take 21% of the A1 sheet's field "
         "at the scale factors the file fixes (μl, μv, μa); leave them out of [scales] for "
         "the sheet to choose them, or take a smaller --format\n")
     r = subprocess.run([sys.executable, "-m", "plans", "sheet", "--variant", "all", "-o", str(tmp_path)],
@@ -190,7 +190,7 @@ def test_only_a_sheet_left_empty_by_the_files_own_scales_gets_a_note():
 
     mech, _, sheet, info, _ = _sheet("press")
     assert 0.15 < share_used(sheet, info["placed"]) < SPARSE
-    assert "22% of the A1 sheet's field" in sparse_note(mech, sheet, info["placed"])
+    assert "21% of the A1 sheet's field" in sparse_note(mech, sheet, info["placed"])
     mech, _, sheet, info, _ = _sheet("press", "A2")
     assert share_used(sheet, info["placed"]) > 0.45
     assert sparse_note(mech, sheet, info["placed"]) is None
@@ -770,6 +770,47 @@ def _boxes_clear(sheet, placed):
     for i, a in enumerate(boxes):
         for b in boxes[i + 1:]:
             assert a.distance(b) >= GAP - 1e-6
+
+
+@pytest.mark.parametrize(("key", "fmt", "lang", "plans", "size", "broken", "mu_a"), [
+    (3, "A2", "ru", None, 5.0, [["План ускорений (φ_1 = 60°),", "μ_a = 0,1 (м/с²)/мм"]], 0.1),
+    (5, "A1", "en", (1, 4), 5.0, [["Acceleration plan (position 1, φ_1 = 314.7°),",
+                                   "μ_a = 0.2 (m/s²)/mm"],
+                                  ["Acceleration plan (position 4, φ_1 = 44.66°),",
+                                   "μ_a = 0.2 (m/s²)/mm"]], 0.2),
+    # two lines would not leave room for the acceleration plan at μa = 0.1, 207 mm long:
+    # every title is 3.5 mm instead, the plan as large as it was
+    (3, "A3", "ru", None, 3.5, [], 0.1),
+])
+def test_every_title_on_a_sheet_is_one_size(key, fmt, lang, plans, size, broken, mu_a):
+    """A caption much wider than its drawing was set at 3.5 mm instead of 5: variant 3's
+    acceleration plan (a narrow one) was titled smaller than its velocity plan on the same
+    sheet. A sheet's titles now have one size: 5 mm, a long one broken before its scale
+    factor, where the views so titled still fit at the scales chosen; else 3.5 mm. The
+    second line stands under the first, over everything else of its view."""
+    from drawing.views import WORDS, _bbox
+
+    _, scene, sheet, info, _ = _sheet(key, fmt, lang, plans)
+    w = WORDS[lang]
+    titles = (w["positions"], w["velocity"], w["acceleration"], w["diagrams"], w["segments"],
+              w["angular"])
+    two = []
+    for p in info["placed"]:
+        texts = [t for t in p.view.items if isinstance(t, Text)]
+        (i,) = [k for k, t in enumerate(texts) if t.text.startswith(titles)]
+        lines = texts[i:i + 2] if texts[i].text.endswith(",") else texts[i:i + 1]
+        assert [t.size for t in lines] == [size] * len(lines), (p.view.name, lines)
+        if len(lines) == 2:
+            two.append([t.text for t in lines])
+            upper, lower = (text_box(t).bounds for t in lines)
+            assert 0.5 < lower[1] - upper[3] < 3  # the next line, its own pitch apart
+        # the title over everything else of its view: the drawing, its letters
+        rest = _bbox([it for it in p.view.items if not any(it is t for t in lines)])
+        assert text_box(lines[-1]).bounds[3] < rest[1]
+    assert two == broken
+    assert {sol.acceleration.mu for _, _, sol in info["solutions"]} == {mu_a}
+    assert overlaps([it for it in scene.items() if isinstance(it, Text)]) == []
+    _boxes_clear(sheet, info["placed"])
 
 
 @pytest.mark.parametrize("key", ["fourbar", *variant_numbers()])
