@@ -446,30 +446,15 @@ def test_a_sine_is_never_above_one(capsys, tmp_path):
 def test_an_extreme_position_a_rounding_short_of_a_full_turn_reads_zero(capsys, tmp_path):
     """The crank-slider whose rod is as long as its crank has its extreme at 0°, found at
     359.99999999999855°: the table printed 360.00."""
+    from plans.scenes import SCENES
+
     path = tmp_path / "eq.toml"
-    path.write_text("""
-name = "Crank-slider with rod equal to crank"
-output = "B"
-[frame]
-O = [0.0, 0.0]
-[driver]
-link = 1
-angle_deg = 30
-omega = 10
-[links.1]
-axis = ["O", "A"]
-points = { A = 0.1 }
-[links.2]
-axis = ["A", "B"]
-points = { B = 0.1 }
-[links.3]
-points = { B = 0 }
-[[sliders]]
-link = 3
-guide = { link = 0, through = "O", angle_deg = 0 }
-[assembly]
-B = "right of A"
-""", "utf-8")
+    text = SCENES["crank_slider_central"].toml
+    equal = (text.replace("angle_deg = 45", "angle_deg = 30").replace("omega = 12", "omega = 10")
+             .replace("points = { B = 0.4 }", "points = { B = 0.1 }")
+             .replace('B = "right of O"', 'B = "right of A"'))
+    assert equal.count("0.1") == 2 and '"right of A"' in equal
+    path.write_text(equal, "utf-8")
     code, out, _ = run(capsys, "cycle", path)
     assert code == 0 and "extreme positions at φ1 = 180°, 0°" in out
     rows = out.split("x of points (m)")[1].splitlines()[2:14]
