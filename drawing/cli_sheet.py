@@ -229,14 +229,15 @@ class _Sheet1:
 
         sols = self.solutions(mu)
         if self.chosen is None:
-            return [("g", f"φ_1 = {num(self.mech.driver.angle_deg, 6, self.lang)}°", sols[0])]
+            return [("g", f"φ_{self.mech.driver.link} = "
+                          f"{num(self.mech.driver.angle_deg, 6, self.lang)}°", sols[0])]
         from plans.cycle import shown_from
 
         out = []
         lo = shown_from(self.cycle, self.mech.driver)  # as the range is written, if through 0°
         for k, sol in zip(self.chosen, sols, strict=True):
             deg = self.mech.driver.file_angle(self.cycle.positions[k])
-            out.append((str(k), f"{V.WORDS[self.lang]['position']} {k}, φ_1 = "
+            out.append((str(k), f"{V.WORDS[self.lang]['position']} {k}, φ_{self.mech.driver.link} = "
                                 f"{angle(deg, 4, self.lang, lo)}°", sol))
         return out
 

@@ -80,10 +80,10 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
         if g("driver"):
             if ru:
                 return (f"ускорение {mk.target} кривошипа направлено от {Y} к {X}",
-                        f"a_{X} = ω1²·l_{Y}{X} направлено от {X} к центру {Y}: "
+                        f"a_{X} = ω{g('driver')}²·l_{Y}{X} направлено от {X} к центру {Y}: "
                         f"π{X.lower()} ∥ {Y}{X}, от {X} к {Y}")
             return (f"the crank's acceleration {mk.target} points from {Y} to {X}",
-                    f"a_{X} = ω1²·l_{Y}{X} is directed from {X} towards the centre {Y}: "
+                    f"a_{X} = ω{g('driver')}²·l_{Y}{X} is directed from {X} towards the centre {Y}: "
                     f"draw π{X.lower()} ∥ {Y}{X}, from {X} to {Y}")
         if ru:
             return (f"нормальное ускорение {mk.target} направлено в обратную сторону",

@@ -475,10 +475,10 @@ def to_text(t: CycleTable) -> str:
     lines = [mech.name, ""]
     lines.append(
         f"{n} crank position{'s' if n != 1 else ''}, numbered {_numbering(t)}; "
-        f"ω1 = {num(abs(d.omega))} rad/s {sense}"
+        f"{d.omega_sym} = {num(abs(d.omega))} rad/s {sense}"
     )
     lines.append(
-        f"φ1: degrees from {d.reference}, measured {d.measured} (the file's convention)"
+        f"{d.phi_sym}: degrees from {d.reference}, measured {d.measured} (the file's convention)"
     )
     if c.output is not None and c.output.kind == "angular":
         lines.append(
@@ -523,7 +523,7 @@ def to_text(t: CycleTable) -> str:
         got = np.abs(np.broadcast_to(np.asarray(values), rows.shape)[rows])
         return float(got.max()) if got.size else 0.0
 
-    base = ["№", "φ1 °"]
+    base = ["№", f"{mech.driver.phi_sym} °"]
     # a coordinate is rounding against the largest distance from the origin: x of a crank
     # pin at 90° is R·cos(π/2) = 3e-18 m
     size = max((largest(m.position[p], placed) for p in moving), default=0.0)

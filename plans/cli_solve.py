@@ -96,8 +96,8 @@ def to_text(sol, cycle=None) -> str:
     # the file's own convention too, the one --angle and the cycle's lines below use
     out.append(
         f"Crank: link {d.link}, l_{d.pivot}{d.tip} = {num(d.length)} m, "
-        f"φ1 = {d.both(sol.phi, lo=sol.solver.shown_from())}, "
-        f"ω1 = {num(abs(d.omega))} rad/s{_sense(d.omega)}"
+        f"{d.phi_sym} = {d.both(sol.phi, lo=sol.solver.shown_from())}, "
+        f"{d.omega_sym} = {num(abs(d.omega))} rad/s{_sense(d.omega)}"
     )
     out.append(
         f"Scales: μl = {num(sol.mu_l)} m/mm, μv = {num(sol.mu_v)} (m/s)/mm, μa = {num(sol.mu_a)} (m/s²)/mm"

@@ -228,7 +228,7 @@ def summary(c: Cycle, driver=None) -> list[str]:
         else:
             lines.append(f"swing of link {c.output.link}: ψ = {num(math.degrees(c.stroke))}°")
         lines.append(
-            "extreme positions at φ1 = "
+            f"extreme positions at {driver.phi_sym if driver else 'φ1'} = "
             + ", ".join(f"{angle(deg(x))}°" for x in c.extremes) + convention
             + f"; θ = {num(math.degrees(c.theta))}°, K = {num(c.K)}")
     return lines
@@ -319,7 +319,7 @@ def outside_range(mech: Mechanism, exc: PlansError, field: str, given: float) ->
         return exc
     _, solver, c = got
     d = mech.driver
-    at = f"φ1 = {written(d.file_angle(d.phi), 6, 'en', shown_from(c, d))}°{d.convention()}"
+    at = f"{d.phi_sym} = {written(d.file_angle(d.phi), 6, 'en', shown_from(c, d))}°{d.convention()}"
     why = ""
     with np.errstate(all="ignore"):
         m = solver.solve(np.array([d.phi]))
@@ -340,7 +340,8 @@ def outside(field: str, given: float, c: Cycle, driver) -> str:
     lo = shown_from(c, driver)
     a, b = file_range(c, driver)
     return (f"{field}{' ' if field.startswith('--') else ' = '}{given:g} is outside the "
-            f"crank's range, φ1 from {written(a, 4, 'en', lo)}° to {written(b, 4, 'en', lo)}°"
+            f"crank's range, {driver.phi_sym} from {written(a, 4, 'en', lo)}° to "
+            f"{written(b, 4, 'en', lo)}°"
             f"{driver.convention()}")
 
 
@@ -365,13 +366,13 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
             how = "it could fold into its other assembly; the cycle follows the smooth motion"
         elif any(odd):
             how = ("its two assemblies meet; the cycle follows the smooth motion, which "
-                   "repeats only after two turns: its two turns meet at φ1 = "
+                   f"repeats only after two turns: its two turns meet at {mech.driver.phi_sym} = "
                    f"{angle(deg(solver.branch_at))}°")
         else:
             how = ("its two assemblies meet; the cycle keeps the assembly, so the linkage "
                    "folds back there (its smooth motion would repeat only after two turns)")
         notes.append(
-                "change points at φ1 = " + ", ".join(f"{x}°" for x in change_angles(changes, mech.driver))
+                f"change points at {mech.driver.phi_sym} = " + ", ".join(f"{x}°" for x in change_angles(changes, mech.driver))
             + mech.driver.convention() + f": the links of a group lie in line there, where {how}"
             " (the plans there are singular)")
     closes = valid | (near & m.placed)  # a sample on a change point closes to rounding

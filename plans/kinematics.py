@@ -228,7 +228,7 @@ class Solver:
 
         d = self.mech.driver
         lo = self.shown_from()
-        return f"φ1 = {angle(d.file_angle(phi), 6, lang, lo)}°{d.convention(lang)}"
+        return f"{d.phi_sym} = {angle(d.file_angle(phi), 6, lang, lo)}°{d.convention(lang)}"
 
     def shown_from(self) -> float:
         """Where the turn that crank angles are written in begins, in the file's

@@ -99,6 +99,18 @@ class Driver:
     measured: str  # "ccw" or "cw"
     rpm: float | None = None
 
+    @property
+    def phi_sym(self) -> str:
+        """"φ1": the crank's angle named by its link's number, as its ω is ("ω1", the
+        course's numbering; "φ3" for a crank numbered 3, whose text then never calls
+        another link's ω "ω1" beside it)."""
+        return f"φ{self.link}"
+
+    @property
+    def omega_sym(self) -> str:
+        """"ω1": the crank's angular velocity, named by its link's number."""
+        return f"ω{self.link}"
+
     def phi_of(self, angle_deg: float) -> float:
         """The crank angle (rad, counter-clockwise from +x) of an angle given in the
         file's convention (degrees from ``reference``, ``measured`` ccw or cw)."""
@@ -118,7 +130,7 @@ class Driver:
         """
         from .fmt import angle
 
-        return f"φ1 = {angle(self.file_angle(phi), 6, lang)}°{self.convention(lang)}"
+        return f"{self.phi_sym} = {angle(self.file_angle(phi), 6, lang)}°{self.convention(lang)}"
 
     def both(self, phi: float, lang: str = "en", lo: float = 0.0) -> str:
         """"60° from +x (30° from +y, cw, as the file gives it)": the crank angle ``phi``

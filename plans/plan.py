@@ -360,11 +360,11 @@ def _work_out(mech: Mechanism, m: Motion, kind: str) -> _Recipe:
         known.add(name)
     drv = mech.driver
     if acc:
-        eq = f"a_{drv.tip} = a^n_{drv.tip}{drv.pivot} = ω1²·l_{drv.pivot}{drv.tip}"
+        eq = f"a_{drv.tip} = a^n_{drv.tip}{drv.pivot} = {drv.omega_sym}²·l_{drv.pivot}{drv.tip}"
         rel = f"∥ {drv.tip}{drv.pivot}, from {drv.tip} to {drv.pivot}"
     else:
-        eq = f"V_{drv.tip} = ω1·l_{drv.pivot}{drv.tip}"
-        rel = f"⊥ {drv.pivot}{drv.tip}, in the sense of ω1"
+        eq = f"V_{drv.tip} = {drv.omega_sym}·l_{drv.pivot}{drv.tip}"
+        rel = f"⊥ {drv.pivot}{drv.tip}, in the sense of {drv.omega_sym}"
     steps.append((_VALUE, plan_name(drv.tip), drv.tip, Source("driver", equation=eq, label=rel),
                   absolute(drv.tip)))
     known.add(drv.tip)

@@ -322,7 +322,7 @@ def hypotheses(sol: Solution, plans: set[str] | None = None) -> list[Mistake]:
         out.append(Mistake("normal-omitted", "acceleration", t.label, 0, info=info))
     drv = sol.mechanism.driver
     out.append(Mistake("normal-reversed", "acceleration", f"a^n_{drv.tip}{drv.pivot}", -1,
-                       info=(("X", drv.tip), ("Y", drv.pivot), ("driver", "1"))))
+                       info=(("X", drv.tip), ("Y", drv.pivot), ("driver", str(drv.link)))))
     for t in cor:
         out.append(Mistake("omega-sense", "acceleration", f"ω{rep.guide_link(t)}",
                            link=rep.guide_link(t), info=(("coriolis", t.label),)))

@@ -28,18 +28,18 @@ T = {
         "positions": "Plan of positions",
         "mul": "Scale factor of the plan of positions:",
         "seg": "Segments of the links on the drawing:",
-        "seg_given": "Segments of the links on the drawing, in the position given (φ1 = {deg}°, drawn in heavy lines):",
+        "seg_given": "Segments of the links on the drawing, in the position given ({phi} = {deg}°, drawn in heavy lines):",
         "seg_at": "Segments whose length changes with the position, in the position of the plans below ({title}):",
         "seg_same": "In the position of the plans below ({title}) the segments are as above.",
         "stroke": "Stroke of the output point {p}:",
         "swing": "Swing of the output link {l}:",
         "kth": "Crank angle between the extreme positions, θ, and the time ratio K:",
-        "change": "At φ1 = {at}°{conv}, {what}, the links of a group lie on one line and its two assemblies meet: the plans there are singular.",
+        "change": "At {phi} = {at}°{conv}, {what}, the links of a group lie on one line and its two assemblies meet: the plans there are singular.",
         "change1": "a change point",
         "changes": "change points",
-        "noturn": "The input link {d} cannot make a full turn (it rocks, it is not a crank): the mechanism assembles only for φ1 from {lo}° to {hi}°{conv}, a swing of {span}°.",
+        "noturn": "The input link {d} cannot make a full turn (it rocks, it is not a crank): the mechanism assembles only for {phi} from {lo}° to {hi}°{conv}, a swing of {span}°.",
         "velocities": "Velocity plan",
-        "va": "Velocity of point {t} of the input link, ⊥ {p}{t} in the sense of ω1:",
+        "va": "Velocity of point {t} of the input link, ⊥ {p}{t} in the sense of {w}:",
         "muv": "Scale factor of the velocity plan, with p{t} = {mm} mm:",
         "eqs": "Vector equations for point {x}:",
         "known": "known", "dir": "direction",
@@ -50,7 +50,7 @@ T = {
         "omega": "Angular velocity of link {i}:",
         "sense": {**SENSE["en"], 0: ""},
         "accelerations": "Acceleration plan",
-        "aa": "Acceleration of point {t}, directed from {t} to {p} (ω1 = const):",
+        "aa": "Acceleration of point {t}, directed from {t} to {p} ({w} = const):",
         "mua": "Scale factor of the acceleration plan, with π{t} = {mm} mm:",
         "normal": "Normal component, directed from {x} to {y}:",
         "coriolis": "Coriolis component: V_{x}{y} turned by 90° in the sense of ω{i}:",
@@ -75,18 +75,18 @@ T = {
         "positions": "План положений механизма",
         "mul": "Масштабный коэффициент плана положений:",
         "seg": "Длины отрезков, изображающих звенья на чертеже:",
-        "seg_given": "Длины отрезков, изображающих звенья на чертеже, в заданном положении (φ1 = {deg}°, выделено основными линиями):",
+        "seg_given": "Длины отрезков, изображающих звенья на чертеже, в заданном положении ({phi} = {deg}°, выделено основными линиями):",
         "seg_at": "Отрезки, длина которых меняется с положением, в положении, для которого ниже построены планы ({title}):",
         "seg_same": "В положении, для которого ниже построены планы ({title}), длины отрезков те же.",
         "stroke": "Ход выходной точки {p}:",
         "swing": "Угол размаха выходного звена {l}:",
         "kth": "Угол между положениями кривошипа в крайних положениях механизма θ и коэффициент изменения средней скорости K:",
-        "change": "При φ1 = {at}°{conv} ({what}) звенья группы лежат на одной прямой и обе её сборки совпадают: планы скоростей и ускорений там не строятся.",
+        "change": "При {phi} = {at}°{conv} ({what}) звенья группы лежат на одной прямой и обе её сборки совпадают: планы скоростей и ускорений там не строятся.",
         "change1": "точка смены сборки",
         "changes": "точки смены сборки",
-        "noturn": "Начальное звено {d} не может сделать полный оборот (это коромысло, а не кривошип): механизм собирается только при φ1 от {lo}° до {hi}°{conv}, угол качания {span}°.",
+        "noturn": "Начальное звено {d} не может сделать полный оборот (это коромысло, а не кривошип): механизм собирается только при {phi} от {lo}° до {hi}°{conv}, угол качания {span}°.",
         "velocities": "План скоростей механизма",
-        "va": "Скорость точки {t} начального звена, ⊥ {p}{t} в сторону вращения ω1:",
+        "va": "Скорость точки {t} начального звена, ⊥ {p}{t} в сторону вращения {w}:",
         "muv": "Масштабный коэффициент плана скоростей при p{t} = {mm} мм:",
         "eqs": "Векторные уравнения для точки {x}:",
         "known": "известна", "dir": "направление",
@@ -97,7 +97,7 @@ T = {
         "omega": "Угловая скорость звена {i}:",
         "sense": {**SENSE["ru"], 0: ""},
         "accelerations": "План ускорений механизма",
-        "aa": "Ускорение точки {t} направлено от {t} к {p} (ω1 = const):",
+        "aa": "Ускорение точки {t} направлено от {t} к {p} ({w} = const):",
         "mua": "Масштабный коэффициент плана ускорений при π{t} = {mm} мм:",
         "normal": "Нормальное ускорение направлено от {x} к {y}:",
         "coriolis": "Ускорение Кориолиса: вектор V_{x}{y}, повёрнутый на 90° в сторону ω{i}:",
@@ -169,7 +169,7 @@ def note(sol: Solution, lang: str = "en", cycle=None,
     # with plans of other positions, the plan of positions draws the given one heavy, and
     # each of theirs among the thin ones: the segments that change (BA3 of a slotted
     # link) are given at each, as their plans' similarity steps use them
-    given = t["seg_given"].format(deg=n(d.angle_deg, 6)) if plans else t["seg"]
+    given = t["seg_given"].format(deg=n(d.angle_deg, 6), phi=d.phi_sym) if plans else t["seg"]
     out += ["", given, ""]
 
     def segment(k, v):
@@ -244,7 +244,7 @@ def change_points(cycle, lang: str, driver) -> str:
     joined = {"en": " and ", "ru": " и "}.get(lang, ", ")
     at = joined.join(change_angles(cycle.change_points, driver, lang))
     what = t["change1"] if len(cycle.change_points) == 1 else t["changes"]
-    return t["change"].format(at=at, conv=driver.convention(lang), what=what)
+    return t["change"].format(at=at, conv=driver.convention(lang), what=what, phi=driver.phi_sym)
 
 
 def no_full_turn(cycle, lang: str = "en", driver=None) -> str:
@@ -262,7 +262,7 @@ def no_full_turn(cycle, lang: str = "en", driver=None) -> str:
     lo, hi = cycle.ccw_range
     a, b = file_range(cycle, driver)
     return T[lang]["noturn"].format(
-        d=driver.link if driver else 1,
+        d=driver.link if driver else 1, phi=driver.phi_sym if driver else "φ1",
         lo=num(a, 4, lang).replace("-", "−"), hi=angle(b, 4, lang),
         conv=driver.convention(lang) if driver else "",
         span=num(math.degrees(abs(hi - lo)), 4, lang),
@@ -289,15 +289,15 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
     w1 = abs(d.omega)
     val = abs(plan.value(tip))
     if acc:
-        out += [t["aa"].format(t=d.tip, p=d.pivot), ""]
-        out.append(Step(f"a_{d.tip} = ω1²·l_{d.pivot}{d.tip}", f"{n(w1, 5)}²·{n(d.length, 5)}", n(val), unit).markdown())
+        out += [t["aa"].format(t=d.tip, p=d.pivot, w=d.omega_sym), ""]
+        out.append(Step(f"a_{d.tip} = {d.omega_sym}²·l_{d.pivot}{d.tip}", f"{n(w1, 5)}²·{n(d.length, 5)}", n(val), unit).markdown())
         out += ["", t["mua"].format(mm=n(val / mu), t=tip), ""]
         out.append(Step(f"μa = a_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu), u["mu_a"]).markdown())
     else:
-        out += [t["va"].format(t=d.tip, p=d.pivot), ""]
+        out += [t["va"].format(t=d.tip, p=d.pivot, w=d.omega_sym), ""]
         if d.rpm:
-            out.append(Step("ω1 = π·n1 / 30", f"{n(math.pi, 5)}·{n(d.rpm)} / 30", n(w1), u["rad/s"]).markdown())
-        out.append(Step(f"V_{d.tip} = ω1·l_{d.pivot}{d.tip}", f"{n(w1, 5)}·{n(d.length, 5)}", n(val), unit).markdown())
+            out.append(Step(f"{d.omega_sym} = π·n{d.link} / 30", f"{n(math.pi, 5)}·{n(d.rpm)} / 30", n(w1), u["rad/s"]).markdown())
+        out.append(Step(f"V_{d.tip} = {d.omega_sym}·l_{d.pivot}{d.tip}", f"{n(w1, 5)}·{n(d.length, 5)}", n(val), unit).markdown())
         out += ["", t["muv"].format(mm=n(val / mu), t=tip), ""]
         out.append(Step(f"μv = V_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu), u["mu_v"]).markdown())
     out.append("")

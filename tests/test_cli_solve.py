@@ -416,3 +416,52 @@ def test_solve_json_gives_the_cycle_the_text_gives(capsys):
     cycled = json.loads(out)["cycle"]
     assert solved["grashof"] is not None and solved["grashof"] == cycled["grashof"]
     assert solved["stroke"] == cycled["stroke"] and solved["K"] == cycled["K"]
+
+
+CRANK_3 = """
+name = "Four-bar, crank numbered 3"
+output = "C"
+[frame]
+A = [0.0, 0.0]
+D = [0.30, 0.05]
+[driver]
+link = 3
+angle_deg = 50
+omega = 12
+[links.3]
+axis = ["A", "B"]
+points = { B = 0.08 }
+[links.1]
+axis = ["B", "C"]
+points = { C = 0.28, E = [0.12, 0.05] }
+[links.2]
+axis = ["D", "C"]
+points = { C = 0.18 }
+[assembly]
+C = "above AD"
+"""
+
+
+def test_a_crank_numbered_3_is_named_by_its_number(capsys, tmp_path):
+    """The crank's symbols were ω1 and φ1 whatever its number: a crank numbered 3 read
+    "ω1 = 12 rad/s" in the crank's line and "link 1: ω1 = 2.897 rad/s" two lines below,
+    and the note derived V_B from ω1 = 12 and then found ω1 = 2.897. Its symbols now
+    carry its number, and ω1 is link 1's only."""
+    path = tmp_path / "crank3.toml"
+    path.write_text(CRANK_3, "utf-8")
+    code, out, err = run(capsys, "solve", path)
+    assert code == 0, err
+    assert "Crank: link 3, l_AB = 0.08 m, φ3 = 50° from +x, ω3 = 12 rad/s ccw" in out
+    assert "V_B = ω3·l_AB" in out and "a_B = a^n_BA = ω3²·l_AB" in out
+    assert "extreme positions at φ3 = " in out
+    assert re.findall(r"ω1 = [\d.]+", out) == ["ω1 = 2.897"] and "φ1" not in out
+    for lang, sense in (("en", "in the sense of ω3:"), ("ru", "в сторону вращения ω3:")):
+        code, note, err = run(capsys, "report", path, "--lang", lang)
+        assert code == 0, err
+        assert sense in note and "V_B = ω3·l_AB = 12·0" in note and "(ω3 = const)" in note
+        assert "φ1" not in note and all(v.startswith(("ω1 = V_", "ω1 = 2")) for v in
+                                        re.findall(r"ω1 = \S+", note))
+    code, table, err = run(capsys, "cycle", path, "--positions", "3")
+    assert code == 0, err
+    assert "; ω3 = 12 rad/s ccw" in table and "φ3: degrees from +x" in table
+    assert "φ1" not in table and "φ3 °" in table
