@@ -18,7 +18,54 @@ _COLORS = {
     "pylinkage": "#9467bd",
 }
 _FD_COLORS = ("#ff7f0e", "#d62728", "#8c564b", "#e377c2", "#bcbd22")
-_SHAPES = ("circle", "square", "diamond", "triangle", "cross", "star", "ring")
+#: one per scene: the bench's default scenes each get their own (a test holds it)
+_SHAPES = ("circle", "square", "diamond", "triangle", "cross", "star", "ring", "down", "plus",
+           "box")
+
+
+def marker(shape: str, x: float, y: float, color: str, size: float = 5.0) -> str:
+    """One marker of ``shape`` (:data:`_SHAPES`) centred at (x, y), as SVG."""
+    s = size
+    if shape == "circle":
+        return f'<circle cx="{x:.1f}" cy="{y:.1f}" r="{s:.1f}" fill="{color}" fill-opacity="0.75"/>'
+    if shape == "ring":
+        return (
+            f'<circle cx="{x:.1f}" cy="{y:.1f}" r="{s:.1f}" fill="none" stroke="{color}" '
+            'stroke-width="2"/>'
+        )
+    if shape == "box":  # a square's outline
+        return (
+            f'<rect x="{x - s:.1f}" y="{y - s:.1f}" width="{2 * s:.1f}" height="{2 * s:.1f}" '
+            f'fill="none" stroke="{color}" stroke-width="2"/>'
+        )
+    if shape == "plus":
+        return (
+            f'<path d="M{x - s * 1.2},{y}L{x + s * 1.2},{y}M{x},{y - s * 1.2}L{x},{y + s * 1.2}" '
+            f'stroke="{color}" stroke-width="2.4"/>'
+        )
+    if shape == "square":
+        return (
+            f'<rect x="{x - s:.1f}" y="{y - s:.1f}" width="{2 * s:.1f}" height="{2 * s:.1f}" '
+            f'fill="{color}" fill-opacity="0.75"/>'
+        )
+    if shape == "diamond":
+        pts = f"{x},{y - s * 1.3} {x + s * 1.3},{y} {x},{y + s * 1.3} {x - s * 1.3},{y}"
+    elif shape == "triangle":
+        pts = f"{x},{y - s * 1.3} {x + s * 1.2},{y + s} {x - s * 1.2},{y + s}"
+    elif shape == "down":
+        pts = f"{x},{y + s * 1.3} {x + s * 1.2},{y - s} {x - s * 1.2},{y - s}"
+    elif shape == "star":
+        pts = " ".join(
+            f"{x + (s * 1.4 if k % 2 == 0 else s * 0.6) * math.sin(k * math.pi / 5):.1f},"
+            f"{y - (s * 1.4 if k % 2 == 0 else s * 0.6) * math.cos(k * math.pi / 5):.1f}"
+            for k in range(10)
+        )
+    else:  # cross
+        return (
+            f'<path d="M{x - s},{y - s}L{x + s},{y + s}M{x - s},{y + s}L{x + s},{y - s}" '
+            f'stroke="{color}" stroke-width="2.2"/>'
+        )
+    return f'<polygon points="{pts}" fill="{color}" fill-opacity="0.75"/>'
 
 
 def svg_chart(rows: list[Row], subtitle: str = "") -> str:
@@ -60,37 +107,6 @@ def svg_chart(rows: list[Row], subtitle: str = "") -> str:
             fd += m.startswith("fd")
     scenes = list(dict.fromkeys(r.scene for r in rows))
     shapes = {s: _SHAPES[i % len(_SHAPES)] for i, s in enumerate(scenes)}
-
-    def marker(shape, x, y, color, size=5.0):
-        s = size
-        if shape == "circle":
-            return f'<circle cx="{x:.1f}" cy="{y:.1f}" r="{s:.1f}" fill="{color}" fill-opacity="0.75"/>'
-        if shape == "ring":
-            return (
-                f'<circle cx="{x:.1f}" cy="{y:.1f}" r="{s:.1f}" fill="none" stroke="{color}" '
-                'stroke-width="2"/>'
-            )
-        if shape == "square":
-            return (
-                f'<rect x="{x - s:.1f}" y="{y - s:.1f}" width="{2 * s:.1f}" height="{2 * s:.1f}" '
-                f'fill="{color}" fill-opacity="0.75"/>'
-            )
-        if shape == "diamond":
-            pts = f"{x},{y - s * 1.3} {x + s * 1.3},{y} {x},{y + s * 1.3} {x - s * 1.3},{y}"
-        elif shape == "triangle":
-            pts = f"{x},{y - s * 1.3} {x + s * 1.2},{y + s} {x - s * 1.2},{y + s}"
-        elif shape == "star":
-            pts = " ".join(
-                f"{x + (s * 1.4 if k % 2 == 0 else s * 0.6) * math.sin(k * math.pi / 5):.1f},"
-                f"{y - (s * 1.4 if k % 2 == 0 else s * 0.6) * math.cos(k * math.pi / 5):.1f}"
-                for k in range(10)
-            )
-        else:  # cross
-            return (
-                f'<path d="M{x - s},{y - s}L{x + s},{y + s}M{x - s},{y + s}L{x + s},{y - s}" '
-                f'stroke="{color}" stroke-width="2.2"/>'
-            )
-        return f'<polygon points="{pts}" fill="{color}" fill-opacity="0.75"/>'
 
     out = [
         f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" '

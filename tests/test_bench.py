@@ -197,3 +197,19 @@ def test_best_time_counts_its_repeats_after_a_slow_first_run():
     best = bench._best_time(fn, budget=0.1)
     assert len(calls) > 50
     assert best < 0.01
+
+
+def test_every_default_scene_has_its_own_marker_on_the_chart():
+    """With the joints-only four-bar the bench has eight scenes; the chart had seven shapes
+    and drew the press and the Scotch yoke both as filled circles."""
+    from drawing import bench_chart
+
+    drawn = {bench_chart.marker(s, 0.0, 0.0, "#444") for s in bench_chart._SHAPES}
+    assert len(drawn) == len(bench_chart._SHAPES) >= len(bench.BENCH_SCENES)
+    rows = [bench.Row(name, "vectorized", 12, 1e-6 * (i + 1), 1e-15)
+            for i, name in enumerate(bench.BENCH_SCENES)]
+    svg = bench_chart.svg_chart(rows, "test")
+    legend = svg[svg.index(">scene</text>"):]
+    for i, _ in enumerate(bench.BENCH_SCENES):  # the legend draws each scene's own shape
+        want = bench_chart.marker(bench_chart._SHAPES[i], 0.0, 0.0, "#444", 4.5)
+        assert want.split(" ")[0] in legend
