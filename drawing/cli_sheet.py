@@ -225,16 +225,15 @@ class _Sheet1:
     def titled(self, mu: dict[str, float]) -> list[tuple[str, str, object]]:
         """(tag, caption label, solution) of each position the sheet draws plans for."""
         from drawing import views as V
-        from plans.fmt import angle, num
+        from plans.cycle import shown_from
+        from plans.fmt import angle
 
         sols = self.solutions(mu)
+        lo = shown_from(self.cycle, self.mech.driver)  # as the range is written, if through 0°
         if self.chosen is None:
             return [("g", f"φ_{self.mech.driver.link} = "
-                          f"{num(self.mech.driver.angle_deg, 6, self.lang)}°", sols[0])]
-        from plans.cycle import shown_from
-
+                          f"{angle(self.mech.driver.angle_deg, 6, self.lang, lo)}°", sols[0])]
         out = []
-        lo = shown_from(self.cycle, self.mech.driver)  # as the range is written, if through 0°
         for k, sol in zip(self.chosen, sols, strict=True):
             deg = self.mech.driver.file_angle(self.cycle.positions[k])
             out.append((str(k), f"{V.WORDS[self.lang]['position']} {k}, φ_{self.mech.driver.link} = "

@@ -228,7 +228,8 @@ def to_text(result, lang: str = "en") -> str:
     if meas.title:
         out.append(f"  {meas.title}")
     out.append(f"{w['mech']}: {mech.name_in(lang)} ({mech.source_in(lang)}), "
-               f"{mech.driver.phi_sym} = {mech.driver.both(sol.phi, lang)}")
+               f"{mech.driver.phi_sym} = "
+               f"{mech.driver.both(sol.phi, lang, lo=sol.solver.shown_from())}")
     mu = meas.mu
     from .measured import MU_KEY, MU_SYMBOL
     from .report import UNITS

@@ -169,7 +169,9 @@ def note(sol: Solution, lang: str = "en", cycle=None,
     # with plans of other positions, the plan of positions draws the given one heavy, and
     # each of theirs among the thin ones: the segments that change (BA3 of a slotted
     # link) are given at each, as their plans' similarity steps use them
-    given = t["seg_given"].format(deg=n(d.angle_deg, 6), phi=d.phi_sym) if plans else t["seg"]
+    # as the crank's range is written where it runs through 0° (−99,7°, not 260,3°)
+    deg = angle(d.angle_deg, 6, lang, sol.solver.shown_from())
+    given = t["seg_given"].format(deg=deg, phi=d.phi_sym) if plans else t["seg"]
     out += ["", given, ""]
 
     def segment(k, v):

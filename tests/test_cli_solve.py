@@ -465,3 +465,51 @@ def test_a_crank_numbered_3_is_named_by_its_number(capsys, tmp_path):
     assert code == 0, err
     assert "; ω3 = 12 rad/s ccw" in table and "φ3: degrees from +x" in table
     assert "φ1" not in table and "φ3 °" in table
+
+
+def test_a_given_angle_is_written_as_the_crank_range_through_0_is_everywhere(capsys, tmp_path):
+    """A four-bar that rocks through ±99.72°: solve echoed --angle 260.3 as −99.7°, while
+    check's header, the sheet's plan titles and the note's "in the position given" still
+    wrote 260.3° (and -99,7 with a hyphen)."""
+    text = """
+name = "Non-Grashof four-bar"
+output = "C"
+[frame]
+A = [0.0, 0.0]
+D = [0.2, 0.0]
+[driver]
+link = 1
+angle_deg = 260.3
+omega = 5
+[links.1]
+axis = ["A", "B"]
+points = { B = 0.12 }
+[links.2]
+axis = ["B", "C"]
+points = { C = 0.15 }
+[links.3]
+axis = ["D", "C"]
+points = { C = 0.1 }
+[assembly]
+C = "above BD"
+"""
+    mech = tmp_path / "ng.toml"
+    mech.write_text(text, "utf-8")
+    code, out, err = run(capsys, "solve", mech)
+    assert code == 0 and "φ1 = −99.7° from +x" in out
+    meas = tmp_path / "m.toml"
+    meas.write_text(f'mechanism = "{mech}"\nangle_deg = 260.3\n[scales]\nmu_l = 0.002\n'
+                    'mu_v = 0.2\n[segments]\npb = 3\n', "utf-8")
+    code, out, err = run(capsys, "check", meas)
+    assert code == 0, err
+    assert "φ1 = −99.7° from +x" in out and "260" not in out
+    svg, note = tmp_path / "s.svg", tmp_path / "n.md"
+    code, _, err = run(capsys, "sheet", mech, "--format", "A2", "--lang", "ru", "--plans", "1,4",
+                       "-o", svg, "--note", note)
+    assert code == 0, err
+    assert "в заданном положении (φ1 = −99,7°," in note.read_text("utf-8")
+    svg.unlink()
+    code, _, err = run(capsys, "sheet", mech, "--format", "A2", "--lang", "ru", "-o", svg)
+    assert code == 0, err
+    drawn = svg.read_text("utf-8")
+    assert drawn.count(" = −99,7°),") == 2 and "260,3" not in drawn
