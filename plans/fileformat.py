@@ -245,6 +245,16 @@ class Problems:
             raise InputError(self.source, self.lines())
 
 
+#: how a field's own unit may be written after its number in quotes ("0,15 м", "40°"):
+#: only then is the number without it suggested, since "12 см" in a field of metres is 0.12
+UNIT_SPELLINGS = {
+    "m": ("m", "м"),
+    "mm": ("mm", "мм"),
+    "°": ("°", "deg", "град"),
+    "rpm": ("rpm", "об/мин"),
+    "rad/s": ("rad/s", "рад/с"),
+}
+
 #: a number as a person writes one in quotes: a decimal point or comma, a sign (− too),
 #: an exponent
 DECIMAL = r"[-+−]?(?:\d+(?:[.,]\d*)?|[.,]\d+)(?:[eE][-+]?\d+)?"
@@ -271,10 +281,13 @@ def read_number(value: Any, where: str, problems: Problems, *, positive=False, d
         value = decimal(value)  # "0,15" from a Russian keyboard, or "0.15": a number all the same
     if isinstance(value, bool) or not isinstance(value, int | float):
         hint = ""
-        if isinstance(value, str) and (m := re.fullmatch(rf"\s*({DECIMAL})\s*\S.*", value[:60])):
+        m = re.fullmatch(rf"\s*({DECIMAL})\s*(\S.*?)\s*", value[:60]) if isinstance(value, str) else None
+        if m and m.group(2) in UNIT_SPELLINGS.get(unit, ()):  # the field's own unit
             number = m.group(1)
             hint = (f': write "{number}" or {number.replace(",", ".")}, without the unit'
                     if "," in number else f": write {number} without the unit")
+        elif m and re.fullmatch(r"[^\d\s,.]+(/[^\d\s,.]+)?", m.group(2)):  # another unit
+            hint = f": write the number in {unit}, without the unit"
         problems.add(where, f"must be a number, got {quote(value)}{hint}")
         return None
     if isinstance(value, int) and abs(value) > high:  # also 10**400, which float() refuses

@@ -346,7 +346,7 @@ def _not_a_link(value: Any, what: str, known: str) -> str:
     if isinstance(value, str) and value.strip().isdigit() and len(value) < 10:
         return f"{quote(value, 20)} is text: write the number without quotes, {value.strip()} ({known})"
     if isinstance(value, float) and value.is_integer() and abs(value) < 1e9:
-        return f"{value!r} is not a whole number: a link is numbered, write {int(value)} ({known})"
+        return f"{value!r} is written as a decimal: a link's number is written {int(value)} ({known})"
     return f"{quote(value, 20)} is not {what} ({known})"
 
 

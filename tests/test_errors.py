@@ -651,3 +651,21 @@ def test_a_hint_on_a_point_both_assemblies_share_names_one_that_parts_them(capsy
     assert code == 0, err
     C = __import__("json").loads(out)["points"]["C"]["position"]
     assert C == pytest.approx([-0.018, 0.1997], abs=1e-4)
+
+
+@pytest.mark.parametrize(("value", "unit", "hint"), [
+    ("0,15 м", "m", ': write "0,15" or 0.15, without the unit'),
+    ("40°", "°", ": write 40 without the unit"),
+    ("12 см", "m", ": write the number in m, without the unit"),  # not 12: 0.12 m
+    ("3 rad/s", "rpm", ": write the number in rpm, without the unit"),
+    ("1 000,5", "m", ""),  # a thousands' space, not a unit
+    ("0,12,3", "m", ""),
+])
+def test_a_number_with_a_unit_is_told_what_to_write_only_when_it_is_sure(value, unit, hint):
+    """"12 см" in a field of metres was told "write 12 without the unit", and "1 000,5"
+    "write 1": the number alone is suggested only after the field's own unit."""
+    from plans.fileformat import Problems, read_number
+
+    pr = Problems("f.toml")
+    assert read_number(value, "k", pr, unit=unit) is None
+    assert pr.items == [("k", f'must be a number, got "{value}"{hint}')]
