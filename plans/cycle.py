@@ -334,14 +334,16 @@ def outside_range(mech: Mechanism, exc: PlansError, field: str, given: float) ->
 def outside(field: str, given: float, c: Cycle, driver) -> str:
     """"driver.angle_deg = 150 is outside the crank's range, φ1 from −99.72° to 99.72°":
     the field that gave a crank angle, its value as given, and the range of ``c``, in the
-    convention of ``driver``."""
+    convention of ``driver``; ``field`` "" for "150° is outside …", the field named
+    before it (a measurement file's located problem)."""
     from .fmt import angle as written
 
     lo = shown_from(c, driver)
     a, b = file_range(c, driver)
-    return (f"{field}{' ' if field.startswith('--') else ' = '}{given:g} is outside the "
-            f"crank's range, {driver.phi_sym} from {written(a, 4, 'en', lo)}° to "
-            f"{written(b, 4, 'en', lo)}°"
+    head = (f"{given:g}°" if not field else
+            f"{field}{' ' if field.startswith('--') else ' = '}{given:g}")
+    return (f"{head} is outside the crank's range, {driver.phi_sym} from "
+            f"{written(a, 4, 'en', lo)}° to {written(b, 4, 'en', lo)}°"
             f"{driver.convention()}")
 
 

@@ -290,7 +290,12 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
     except PlansError as exc:
         problems.raise_if_any()  # these first; the mechanism's own problems once they are fixed
         if angle is not None and not isinstance(exc, InputError):  # the file's own angle
-            problems.add("angle_deg", f"{angle:g}°: {exc}")
+            from .cycle import outside, reachable_cycle
+            from .errors import AssemblyError
+
+            got = reachable_cycle(m) if isinstance(exc, AssemblyError) else None
+            head = f"{angle:g}°" if got is None else outside("", angle, got[2], m.driver)
+            problems.add("angle_deg", f"{head}: {exc}")
             problems.raise_if_any()
         raise
     names = _Names(sol)

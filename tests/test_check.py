@@ -1273,3 +1273,39 @@ def test_an_option_after_tolerance_is_not_taken_for_its_value(capsys):
     code, _, err = run(capsys, "check", SAMPLES / "check_press.toml", "--tolerance", "--json")
     assert code == 2 and err == ("plans check: command line: argument --tolerance: expected "
                                  "one argument (see plans check --help)\n")
+
+
+def test_a_check_at_an_angle_outside_the_crank_range_gives_the_range(capsys, tmp_path):
+    """solve, report and sheet name the crank's range where the file's angle does not
+    assemble; check said only which group cannot close."""
+    mech = tmp_path / "ng.toml"
+    mech.write_text("""
+name = "Non-Grashof four-bar"
+output = "C"
+[frame]
+A = [0.0, 0.0]
+D = [0.2, 0.0]
+[driver]
+link = 1
+angle_deg = 90
+omega = 5
+[links.1]
+axis = ["A", "B"]
+points = { B = 0.12 }
+[links.2]
+axis = ["B", "C"]
+points = { C = 0.15 }
+[links.3]
+axis = ["D", "C"]
+points = { C = 0.1 }
+[assembly]
+C = "above BD"
+""", "utf-8")
+    meas = tmp_path / "m.toml"
+    meas.write_text(f'mechanism = "{mech}"\nangle_deg = 150\n[scales]\nmu_v = 0.2\n'
+                    '[segments]\npb = 3\n', "utf-8")
+    code, out, err = run(capsys, "check", meas)
+    assert code == 2 and out == ""
+    assert err == (f"plans check: {meas}: line 2: angle_deg: 150° is outside the crank's "
+                   "range, φ1 from −99.72° to 99.72°: group 2–3 (RRR) cannot be assembled at "
+                   "φ1 = 150°: needs BD within [0.05, 0.25] m, misses by 0.059789 m\n")
