@@ -828,8 +828,9 @@ def test_an_angle_where_the_mechanism_does_not_close_is_the_measurement_files(tm
                     "mu_v = 0.02\n[segments]\npb = 1\n", encoding="utf-8")
     code, _, err = run(capsys, "check", path)
     (line,) = err.strip().splitlines()
-    assert code == 2 and line.startswith(f"plans check: {path}: line 2: angle_deg: 180°: group 2–3 (RRR) "
-                                         "cannot be assembled at φ1 = 180°")
+    assert code == 2 and line.startswith(
+        f"plans check: {path}: line 2: angle_deg: 180° is outside the crank's range, φ1 from "
+        "−128.8° to 128.8°: group 2–3 (RRR) cannot be assembled at φ1 = 180°")
 
 
 def test_signs_and_names_in_a_measurement_file(tmp_path, capsys):
