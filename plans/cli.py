@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import re
 import sys
 from pathlib import Path
 
@@ -200,9 +201,10 @@ class _Parser(argparse.ArgumentParser):
 
     ``dash_values``: options whose value may begin with "-" (``--tolerance -5%``).
     argparse reads "-5%" as an option of its own and says "expected one argument"; such
-    a value is handed to its option as ``--tolerance=-5%`` is, so that the command judges
-    it, unless it is one of the parser's options (``--tolerance --json`` still lacks a
-    value)."""
+    value that begins as a negative number does ("-5%", "-1mm") is handed to its option
+    as ``--tolerance=-5%`` is, so that the command judges it; anything else after the
+    option, ``--json`` or its abbreviation ``--js``, is an option, and the tolerance
+    still lacks a value."""
 
     dash_values: tuple[str, ...] = ()
 
@@ -216,8 +218,8 @@ class _Parser(argparse.ArgumentParser):
                 out += args[i:]
                 break
             nxt = args[i + 1] if i + 1 < len(args) else None
-            if self._takes_dash_value(arg) and nxt is not None and nxt.startswith("-") \
-                    and nxt.split("=", 1)[0] not in self._option_string_actions:
+            if self._takes_dash_value(arg) and nxt is not None \
+                    and re.match(r"[-−][\d.,]", nxt):  # a negative number, never an option
                 out.append(f"{arg}={nxt}")
                 i += 2
                 continue

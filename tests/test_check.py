@@ -1269,9 +1269,11 @@ def test_a_negative_tolerance_is_said_in_one_line(capsys, argv):
                    '(e.g. "5%", "1mm" or "5%,1mm")\n')
 
 
-def test_an_option_after_tolerance_is_not_taken_for_its_value(capsys):
-    """A value is still missing where the next word is one of the command's options."""
-    code, _, err = run(capsys, "check", SAMPLES / "check_press.toml", "--tolerance", "--json")
+@pytest.mark.parametrize("option", ["--json", "--js"])
+def test_an_option_after_tolerance_is_not_taken_for_its_value(capsys, option):
+    """A value is still missing where the next word is one of the command's options, or an
+    abbreviation of one (--js had been read as the tolerance "--js")."""
+    code, _, err = run(capsys, "check", SAMPLES / "check_press.toml", "--tolerance", option)
     assert code == 2 and err == ("plans check: command line: argument --tolerance: expected "
                                  "one argument (see plans check --help)\n")
 
