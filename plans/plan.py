@@ -192,10 +192,15 @@ def _rounded_off(values: dict[int, float], floor: float) -> dict[int, float]:
     """ω or ε of every link, 0 where it is rounding: within :data:`NOISE` of the largest
     (or of ``floor``, ω1² for ε), as a plan's segments are. A rocker at rest at an extreme
     position has ω 3.9e-14 rad/s, not a sense of turning."""
-    tiny = NOISE * max(max(map(abs, values.values()), default=0.0), floor)
-    if all(abs(v) > tiny or v == 0.0 for v in values.values()):  # nearly always: as it is
-        return values
-    return {i: (v if abs(v) > tiny else 0.0) for i, v in values.items()}
+    big = floor
+    for v in values.values():  # plain loops: this runs twice at every angle of a plan
+        if abs(v) > big:
+            big = abs(v)
+    tiny = NOISE * big
+    for v in values.values():
+        if v != 0.0 and abs(v) <= tiny:
+            return {i: (v if abs(v) > tiny else 0.0) for i, v in values.items()}
+    return values  # nearly always: as it is
 
 
 def cycle_extent(solver: Solver) -> float:
