@@ -47,3 +47,29 @@ points = {{ B = {rocker!r} }}
 [assembly]
 B = "{hint}"
 """
+
+
+#: a four-bar that cannot make a full turn: its crank rocks through ±99.72° (a str.format
+#: template: ``angle`` in degrees from +x)
+NON_GRASHOF = """
+name = "Non-Grashof four-bar"
+output = "C"
+[frame]
+A = [0.0, 0.0]
+D = [0.2, 0.0]
+[driver]
+link = 1
+angle_deg = {angle}
+omega = 5
+[links.1]
+axis = ["A", "B"]
+points = {{ B = 0.12 }}
+[links.2]
+axis = ["B", "C"]
+points = {{ C = 0.15 }}
+[links.3]
+axis = ["D", "C"]
+points = {{ C = 0.1 }}
+[assembly]
+C = "above BD"
+"""

@@ -20,7 +20,7 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from support import run
+from support import NON_GRASHOF, run
 
 from plans import check as ck
 from plans import mechanism
@@ -1282,28 +1282,7 @@ def test_a_check_at_an_angle_outside_the_crank_range_gives_the_range(capsys, tmp
     """solve, report and sheet name the crank's range where the file's angle does not
     assemble; check said only which group cannot close."""
     mech = tmp_path / "ng.toml"
-    mech.write_text("""
-name = "Non-Grashof four-bar"
-output = "C"
-[frame]
-A = [0.0, 0.0]
-D = [0.2, 0.0]
-[driver]
-link = 1
-angle_deg = 90
-omega = 5
-[links.1]
-axis = ["A", "B"]
-points = { B = 0.12 }
-[links.2]
-axis = ["B", "C"]
-points = { C = 0.15 }
-[links.3]
-axis = ["D", "C"]
-points = { C = 0.1 }
-[assembly]
-C = "above BD"
-""", "utf-8")
+    mech.write_text(NON_GRASHOF.format(angle=90), "utf-8")
     meas = tmp_path / "m.toml"
     meas.write_text(f'mechanism = "{mech}"\nangle_deg = 150\n[scales]\nmu_v = 0.2\n'
                     '[segments]\npb = 3\n', "utf-8")

@@ -5,7 +5,7 @@ import re
 from pathlib import Path
 
 import pytest
-from support import run
+from support import NON_GRASHOF, run
 
 from plans.fmt import num
 
@@ -471,28 +471,7 @@ def test_a_given_angle_is_written_as_the_crank_range_through_0_is_everywhere(cap
     """A four-bar that rocks through ±99.72°: solve echoed --angle 260.3 as −99.7°, while
     check's header, the sheet's plan titles and the note's "in the position given" still
     wrote 260.3° (and -99,7 with a hyphen)."""
-    text = """
-name = "Non-Grashof four-bar"
-output = "C"
-[frame]
-A = [0.0, 0.0]
-D = [0.2, 0.0]
-[driver]
-link = 1
-angle_deg = 260.3
-omega = 5
-[links.1]
-axis = ["A", "B"]
-points = { B = 0.12 }
-[links.2]
-axis = ["B", "C"]
-points = { C = 0.15 }
-[links.3]
-axis = ["D", "C"]
-points = { C = 0.1 }
-[assembly]
-C = "above BD"
-"""
+    text = NON_GRASHOF.format(angle=260.3)
     mech = tmp_path / "ng.toml"
     mech.write_text(text, "utf-8")
     code, out, err = run(capsys, "solve", mech)

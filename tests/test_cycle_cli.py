@@ -7,7 +7,7 @@ import math
 
 import numpy as np
 import pytest
-from support import run
+from support import NON_GRASHOF, run
 
 from plans import mechanism
 from plans.cycle import analyse_cycle
@@ -463,28 +463,6 @@ def test_an_extreme_position_a_rounding_short_of_a_full_turn_reads_zero(capsys, 
     assert "360.00" not in out
 
 
-NON_GRASHOF = """
-name = "Non-Grashof four-bar"
-output = "C"
-[frame]
-A = [0.0, 0.0]
-D = [0.2, 0.0]
-[driver]
-link = 1
-angle_deg = {angle}
-omega = 5
-[links.1]
-axis = ["A", "B"]
-points = {{ B = 0.12 }}
-[links.2]
-axis = ["B", "C"]
-points = {{ C = 0.15 }}
-[links.3]
-axis = ["D", "C"]
-points = {{ C = 0.1 }}
-[assembly]
-C = "above BD"
-"""
 
 
 def _non_grashof(tmp_path, angle, name="ng.toml"):
