@@ -313,13 +313,12 @@ def outside_range(mech: Mechanism, exc: PlansError, field: str, given: float) ->
     range where it does, in the file's convention, and the group that cannot close;
     ``exc`` itself where there is no such range."""
     from .errors import AssemblyError, InputError
-    from .fmt import angle as written
 
     if not isinstance(exc, AssemblyError) or (got := reachable_cycle(mech)) is None:
         return exc
     _, solver, c = got
     d = mech.driver
-    at = f"{d.phi_sym} = {written(d.file_angle(d.phi), 6, 'en', shown_from(c, d))}°{d.convention()}"
+    at = d.at(d.phi, lo=shown_from(c, d))
     why = ""
     with np.errstate(all="ignore"):
         m = solver.solve(np.array([d.phi]))

@@ -224,11 +224,7 @@ class Solver:
                 "two assemblies of a group meet)")
 
     def _at(self, phi: float, lang: str) -> str:
-        from .fmt import angle
-
-        d = self.mech.driver
-        lo = self.shown_from()
-        return f"{d.phi_sym} = {angle(d.file_angle(phi), 6, lang, lo)}°{d.convention(lang)}"
+        return self.mech.driver.at(phi, lang, self.shown_from())
 
     def shown_from(self) -> float:
         """Where the turn that crank angles are written in begins, in the file's

@@ -120,9 +120,11 @@ class Driver:
         """The inverse: the crank angle ``phi`` in the file's convention, in [0, 360)."""
         return (SENSES[self.measured] * (math.degrees(phi) - REFERENCES[self.reference])) % 360.0
 
-    def at(self, phi: float, lang: str = "en") -> str:
+    def at(self, phi: float, lang: str = "en", lo: float = 0.0) -> str:
         """"φ1 = 330°" for a message about crank angle ``phi``, in the file's convention as
-        ``--angle`` takes it, which it names unless it is the usual one (from +x, ccw).
+        ``--angle`` takes it, which it names unless it is the usual one (from +x, ccw);
+        ``lo``, the turn it is written in (:func:`plans.fmt.angle`: "−99.7°" beside a crank
+        range through 0°).
 
         >>> d = Driver(1, "O", "A", 0.1, math.radians(-240), 1.0, 330.0, "+y", "cw")
         >>> d.at(math.radians(-240)), d.at(math.radians(-240.5), "ru")
@@ -130,7 +132,7 @@ class Driver:
         """
         from .fmt import angle
 
-        return f"{self.phi_sym} = {angle(self.file_angle(phi), 6, lang)}°{self.convention(lang)}"
+        return f"{self.phi_sym} = {angle(self.file_angle(phi), 6, lang, lo)}°{self.convention(lang)}"
 
     def both(self, phi: float, lang: str = "en", lo: float = 0.0) -> str:
         """"60° from +x (30° from +y, cw, as the file gives it)": the crank angle ``phi``
