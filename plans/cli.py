@@ -107,6 +107,23 @@ def angle_field(args, mech) -> tuple[str, float]:
     return "driver.angle_deg", mech.driver.angle_deg
 
 
+def solved_position(args, mech):
+    """(solver, solution) of ``mech`` at its crank angle, as solve and report need it;
+    where it does not assemble there, the error names the field the angle came from
+    (:func:`angle_field`) and the crank's range where it does
+    (:func:`plans.cycle.outside_range`)."""
+    from .cycle import outside_range
+    from .errors import AssemblyError
+    from .kinematics import Solver
+    from .plan import solve_position
+
+    try:
+        solver = Solver(mech)
+        return solver, solve_position(mech, solver=solver)
+    except AssemblyError as exc:
+        raise outside_range(mech, exc, *angle_field(args, mech)) from None
+
+
 #: the input files of the running command (see claim_inputs): never written over
 _INPUTS: list[str] = []
 

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from .cli import add_source, angle_field, mechanism_from, warn, write_output
+from .cli import add_source, mechanism_from, solved_position, warn, write_output
 
 
 def configure(p) -> None:
@@ -12,18 +12,11 @@ def configure(p) -> None:
 
 
 def run(args) -> int:
-    from .cycle import analyse_cycle, outside_range
-    from .errors import AssemblyError
-    from .kinematics import Solver
-    from .plan import solve_position
+    from .cycle import analyse_cycle
     from .report import note
 
     mech = mechanism_from(args)
-    try:
-        solver = Solver(mech)
-        sol = solve_position(mech, solver=solver)
-    except AssemblyError as exc:  # an angle where it does not assemble: which, and where it does
-        raise outside_range(mech, exc, *angle_field(args, mech)) from None
+    solver, sol = solved_position(args, mech)
     write_output(args.output, note(sol, args.lang, analyse_cycle(mech, solver=solver)))
     for w in sol.warnings:
         warn("report", w)

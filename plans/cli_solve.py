@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import json
 
-from .cli import add_source, angle_field, mechanism_from, warn, write_output
+from .cli import add_source, mechanism_from, solved_position, warn, write_output
 from .fmt import from_x, json_angle, num
 
 
@@ -15,17 +15,10 @@ def configure(p) -> None:
 
 
 def run(args) -> int:
-    from .cycle import analyse_cycle, outside_range
-    from .errors import AssemblyError
-    from .kinematics import Solver
-    from .plan import solve_position
+    from .cycle import analyse_cycle
 
     mech = mechanism_from(args)
-    try:
-        solver = Solver(mech)
-        sol = solve_position(mech, solver=solver)
-    except AssemblyError as exc:  # an angle where it does not assemble: which, and where it does
-        raise outside_range(mech, exc, *angle_field(args, mech)) from None
+    solver, sol = solved_position(args, mech)
     cycle = analyse_cycle(mech, solver=solver)
     if args.json:
         text = json.dumps(to_json(sol, cycle), ensure_ascii=False, indent=2) + "\n"
