@@ -193,6 +193,7 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
         on_pivot,
         pivot_figure,
         pivot_key,
+        sine_figure,
     )
 
     n = len(motion.phi)
@@ -201,8 +202,7 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
     # each group's figures as Python lists, once; words only where a position is flagged
     cols = []
     for g, pivot in per_group:
-        s = np.abs(np.broadcast_to(np.asarray(g.velocity.sine, dtype=float), (n,)))
-        s = np.where(np.isfinite(s), np.minimum(s, 1.0), 0.0)  # as GroupSolution.sine_at reads it
+        s = np.broadcast_to(sine_figure(np.asarray(g.velocity.sine, dtype=float)), (n,))
         valid = np.broadcast_to(np.asarray(g.valid, dtype=bool), (n,))
         q = None if pivot is None else np.where(np.isfinite(pivot), pivot, 0.0).tolist()
         cols.append((g, g.group.label, valid.tolist(), s.tolist(), (s < WARN_SINE).tolist(), q))

@@ -145,10 +145,9 @@ class GroupSolution(NamedTuple):
 
     def sine_at(self, k: int | None = None) -> float:
         """|sin| of the angle between the two lines of the plans (k: the angle's index in
-        an array solution; None for a solution on Python numbers)."""
+        an array solution; None for a solution on Python numbers), as :func:`sine_figure`."""
         s = self.velocity.sine
-        s = abs(float(s if k is None else s[k]))
-        return min(s, 1.0) if math.isfinite(s) else 0.0  # 1 + 2e-16 of rounding is 1
+        return float(sine_figure(s if k is None else s[k]))
 
     def parallel(self, k: int | None, at: str, source: str = "",
                  below: float | None = None) -> SingularPlanError | None:
@@ -303,6 +302,16 @@ def _degrees(sine: float) -> float:
     return math.degrees(math.asin(min(sine, 1.0)))
 
 
+def sine_figure(sine):
+    """The conditioning figure of a group's lines from the kernel's signed ``sine`` (a
+    number or an array): |sin| within [0, 1], the cross product of two unit vectors as
+    rounded reaching 1.0000000000000002, which the kernel divides by as it is; 0 where it
+    is not a number (parallel lines). The sweep clips its own in its blocks
+    (:meth:`plans.sweep._Block._close`), where it is NaN only where nothing closes."""
+    s = np.abs(sine)
+    return np.where(np.isfinite(s), np.minimum(s, 1.0), 0.0)
+
+
 def frozen(cls, **fields):
     """An instance of the frozen dataclass ``cls`` from every one of its fields, put in its
     dict in one step: the class's own ``__init__`` sets them one by one through
@@ -346,7 +355,7 @@ class Motion:
         """Conditioning: the smallest |sin| between intersected lines over the groups."""
         out = np.ones_like(self.phi)
         for g in self.groups:
-            out = np.minimum(out, np.abs(g.velocity.sine))
+            out = np.minimum(out, sine_figure(g.velocity.sine))
         return out
 
 
