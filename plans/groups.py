@@ -36,28 +36,39 @@ class ScalarFallback(Exception):
     the array path then finds and words the failure."""
 
 
-def _closure(xp, closes, margin, scale):
-    """(valid, gap, singular, margin) of a group; the scalar path leaves as soon as it
-    misses. ``margin``: how far inside its limit the group is, in metres, negative where
-    it misses (a function, evaluated only for arrays); ``scale``: the group's size, which
-    the recorded margin is a fraction of."""
-    if xp.scalar:
-        if not closes:
-            raise ScalarFallback
-        return True, 0.0, False, None
-    inside = margin()
-    gap = np.maximum(-inside, 0.0)
-    return closes, gap, ~closes & (gap <= 1e-9 * scale), inside * (1.0 / scale)
+#: (valid, gap, singular, margin) of a group that closes at the one angle solved
+_CLOSED = (True, 0.0, False, None)
 
 
-def _never_misses(xp, closes, shape):
-    """(valid, gap, singular) of a group that cannot miss, only fail at a dead point
-    (parallel guides): its gap is 0 and where it does not close it is singular; its
-    margin is infinite, and minus infinity where its point is nowhere."""
-    if xp.scalar:
-        if not closes:
-            raise ScalarFallback
-        return True, 0.0, False, None
+def _one_closes(xp, closes) -> bool:
+    """True on the one-angle path where the group closes; there it leaves as soon as it
+    misses (:class:`ScalarFallback`), and the array path words why. False for arrays,
+    whose closure :func:`_closure` or :func:`_never_misses` records angle by angle.
+
+    A group so writes ``_CLOSED if _one_closes(xp, r.closes) else _closure(…)``: the
+    arguments of the array's closure are not even evaluated for one angle, and no
+    function is made to defer them (a lambda would make the group's locals cells, slower
+    to read at every use)."""
+    if not xp.scalar:
+        return False
+    if not closes:
+        raise ScalarFallback
+    return True
+
+
+def _closure(closes, margin, scale):
+    """(valid, gap, singular, margin) of a group over arrays of angles. ``margin``: how
+    far inside its limit the group is, in metres, negative where it misses; ``scale``:
+    the group's size, which the recorded margin is a fraction of."""
+    gap = np.maximum(-margin, 0.0)
+    return closes, gap, ~closes & (gap <= 1e-9 * scale), margin * (1.0 / scale)
+
+
+def _never_misses(closes, shape):
+    """(valid, gap, singular, margin) over arrays of angles of a group that cannot miss,
+    only fail at a dead point (parallel guides): its gap is 0 and where it does not close
+    it is singular; its margin is infinite, and minus infinity where its point is
+    nowhere."""
     closes = np.broadcast_to(closes, shape)
     return closes, np.zeros(shape), ~closes, np.where(closes, np.inf, -np.inf)
 
@@ -167,9 +178,8 @@ def _rrr(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     l2, l3 = w["l2"], w["l3"]
     Pw, Qw = pos[P], pos[Q]
     r = kernels.rrr(xp, sigma, l2, l3, Pw, vel[P], acc[P], Qw, vel[Q], acc[Q])
-    closure = _closure(
-        xp, r.closes, lambda: np.minimum((l2 + l3) - r.d, r.d - abs(l2 - l3)),
-        l2 + l3)
+    closure = _CLOSED if _one_closes(xp, r.closes) else _closure(
+        r.closes, np.minimum((l2 + l3) - r.d, r.d - abs(l2 - l3)), l2 + l3)
     vroute = (
         record(Route, (P, vel[P], (), r.d1, w["⊥P"], w["VP"], "relative", r.t1)),
         record(Route, (Q, vel[Q], (), r.d2, w["⊥Q"], w["VQ"], "relative", r.t2)),
@@ -218,7 +228,7 @@ def _rrp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     Pw = pos[P]
     G0, u, vG, aG, wk, ek = _guide(sv, s.guide, states)
     r = kernels.rrp(xp, sigma, l2, Pw, vel[P], acc[P], G0, u, vG, aG, wk, ek)
-    closure = _closure(xp, r.closes, lambda: l2 - r.h, l2)
+    closure = _CLOSED if _one_closes(xp, r.closes) else _closure(r.closes, l2 - r.h, l2)
     vroute = (
         record(Route, (P, vel[P], (), r.d1, w["⊥P"], w["VP"], "relative", r.t1)),
         record(Route, (base, r.vCk, (), u, w["∥"], w["Vs"], "sliding", r.t2)),
@@ -269,7 +279,8 @@ def _rpr(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     e, name = w["e"], w["name"]
     Pw, Qw = pos[P], pos[Q]
     r = kernels.rpr(xp, sigma, e, w["gd"], Pw, vel[P], acc[P], Qw, vel[Q], acc[Q])
-    closure = _closure(xp, r.closes, lambda: r.dist - abs(e), max(abs(e), 1.0))
+    closure = _CLOSED if _one_closes(xp, r.closes) else _closure(
+        r.closes, r.dist - abs(e), max(abs(e), 1.0))
     vroute = (
         record(Route, (P, vel[P], (), r.u, w["∥"], w["VP"], "sliding", r.t1)),
         record(Route, (Q, vel[Q], (), r.d2, w["⊥Q"], w["VQ"], "relative", r.t2)),
@@ -313,7 +324,7 @@ def _prp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     G1, u1, vG1, aG1, w1, e1 = _guide(sv, sa.guide, states)
     G2, u2, vG2, aG2, w2, e2 = _guide(sv, sb.guide, states)
     r = kernels.prp(xp, G1, u1, vG1, aG1, w1, e1, G2, u2, vG2, aG2, w2, e2)
-    closure = _never_misses(xp, r.closes, np.shape(r.C))
+    closure = _CLOSED if _one_closes(xp, r.closes) else _never_misses(r.closes, np.shape(r.C))
     vroute = (
         record(Route, (b1, r.v1, (), u1, w["∥1"], w["V1"], "sliding", r.t1)),
         record(Route, (b2, r.v2, (), u2, w["∥2"], w["V2"], "sliding", r.t2)),
@@ -366,7 +377,7 @@ def _rpp(sv: Solver, xp, g: Group, sigma, states, pos, vel, acc):
     Gk, uk, vG, aG, wk, ek = _guide(sv, s_out.guide, states)
     Pw = pos[P]
     r = kernels.rpp(xp, Pw, vel[P], acc[P], Gk, uk, vG, aG, wk, ek, w["locD"], w["g0"], w["gd"])
-    closure = _never_misses(xp, r.closes, np.shape(Pw))
+    closure = _CLOSED if _one_closes(xp, r.closes) else _never_misses(r.closes, np.shape(Pw))
     vroute = (
         record(Route, (P, vel[P], (), r.us, w["∥in"], w["VP"], "sliding", r.t1)),
         record(Route, (bk, r.vk, (), uk, w["∥out"], w["Vk"], "sliding", r.t2)),

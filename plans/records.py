@@ -66,7 +66,7 @@ def state_from(origin, rotor, X, vX, aX, omega, eps) -> LinkState:
     """The state of a link from one of its points X with known velocity and acceleration."""
     r = origin - X
     return record(LinkState, (
-        origin, rotor, vX + 1j * omega * r, omega, aX + (1j * eps - omega**2) * r, eps
+        origin, rotor, vX + 1j * omega * r, omega, aX + (1j * eps - omega * omega) * r, eps
     ))
 
 
