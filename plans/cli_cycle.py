@@ -556,7 +556,7 @@ def to_text(t: CycleTable) -> str:
         lines += _table(title, base + moving, rows)
     head = base + [f"ω{i}" for i in t.links] + [f"ε{i}" for i in t.links]
     big_w = max((largest(m.links[i].omega) for i in t.links), default=0.0)
-    # ε against ω1² as well, as solve rounds it (plan._rounded_off): a rod that only
+    # ε against ω1² as well, as solve rounds it (plan._rates): a rod that only
     # translates has ε of 1e-13 at every position, the largest of its own column
     big_e = max((largest(m.links[i].epsilon) for i in t.links), default=0.0)
     big_e = max(big_e, d.omega * d.omega)

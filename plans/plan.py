@@ -173,11 +173,8 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     segments = {k: v / mu_l for k, v in lengths.items()}
     segments.update(vplan.segments)
     segments.update(aplan.segments)
-    states = motion.links
     links = solver.cache.get("links") or solver.cache.setdefault("links", sorted(mech.links))
-    omega = _rounded_off({i: states[i].omega for i in links}, 0.0)
-    big_w = abs(mech.driver.omega)  # the crank's ω, the largest there is or near it
-    epsilon = _rounded_off({i: states[i].epsilon for i in links}, big_w * big_w)
+    omega, epsilon = _rates(motion.links, links, mech.driver.omega)
     return frozen(
         Solution,
         mechanism=mech, structure=solver.structure, phi=phi, solver=solver,
@@ -188,15 +185,27 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     )
 
 
-def _rounded_off(values: dict[int, float], floor: float) -> dict[int, float]:
-    """ω or ε of every link, 0 where it is rounding: within :data:`NOISE` of the largest
-    (or of ``floor``, ω1² for ε), as a plan's segments are. A rocker at rest at an extreme
-    position has ω 3.9e-14 rad/s, not a sense of turning."""
-    big = floor
-    for v in values.values():  # plain loops: this runs twice at every angle of a plan
-        if abs(v) > big:
-            big = abs(v)
-    tiny = NOISE * big
+def _rates(states, links, crank_omega: float) -> tuple[dict[int, float], dict[int, float]]:
+    """ω and ε of every link, each 0 where it is rounding: within :data:`NOISE` of the
+    largest of its kind (ε of ω1² at least, the crank's ω being the largest there is or
+    near it), as a plan's segments are. A rocker at rest at an extreme position has ω
+    3.9e-14 rad/s, not a sense of turning. Plain loops, and one pass reading both: this
+    runs at every angle of a plan."""
+    omega, epsilon = {}, {}
+    big_w, big_e = 0.0, crank_omega * crank_omega
+    for i in links:
+        st = states[i]
+        w = omega[i] = st.omega
+        e = epsilon[i] = st.epsilon
+        if abs(w) > big_w:
+            big_w = abs(w)
+        if abs(e) > big_e:
+            big_e = abs(e)
+    return _rounded_off(omega, NOISE * big_w), _rounded_off(epsilon, NOISE * big_e)
+
+
+def _rounded_off(values: dict[int, float], tiny: float) -> dict[int, float]:
+    """``values`` with 0 for each one within ``tiny`` of 0."""
     for v in values.values():
         if v != 0.0 and abs(v) <= tiny:
             return {i: (v if abs(v) > tiny else 0.0) for i, v in values.items()}

@@ -280,6 +280,25 @@ def test_a_rocker_at_rest_has_no_velocity_left_on_its_plan():
     assert sol.velocity.segments["pb"] > 50  # the crank pin is not at rest
 
 
+def test_rounding_of_epsilon_is_judged_against_the_cranks_omega_squared():
+    """A parallelogram turns its rocker at the crank's constant ω and translates its
+    coupler: every ε is 0, and the coupler's ω too. The solved values are rounding
+    (ε up to 2e-13 rad/s², ω2 2e-15 rad/s), which the plan takes as 0 against the
+    largest ω and against ω1² for ε: with no ε larger than rounding, ε had no other
+    scale to be judged against."""
+    from test_change_points import parallelogram
+
+    mech = parallelogram()
+    w1 = mech.driver.omega
+    for deg in (40, 100, 220, 300):
+        sol = solve_position(mech, math.radians(deg))
+        raw = sol.scalar.links
+        assert any(raw[i].epsilon != 0.0 for i in (2, 3)) and raw[2].omega != 0.0
+        assert sol.epsilon == {1: 0.0, 2: 0.0, 3: 0.0}
+        assert sol.omega[2] == 0.0
+        assert sol.omega[1] == w1 and sol.omega[3] == pytest.approx(w1, rel=1e-14)
+
+
 @pytest.mark.parametrize("lang", ["ru", "en"])
 def test_every_value_read_off_a_plan_stands_under_its_heading(lang):
     """A crank's own similarity point (S1 of variant 4) had its V_S1 = ps1·μv line right
