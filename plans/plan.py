@@ -300,13 +300,15 @@ def _plan(solver: Solver, motion: Motion, kind: str, mu) -> Plan:
     one is worked out here and kept too. A mechanism whose points meet at some angles
     only (a Scotch yoke) so keeps two recipes, instead of compiling one anew at each
     change."""
-    recipes = solver.cache.setdefault(("plan recipes", kind), [])
+    key = ("plan recipes", kind)
+    recipes = solver.cache.get(key) or solver.cache.setdefault(key, [])
     pos = motion.position
+    acc = kind == "acceleration"
     for i, recipe in enumerate(recipes):
-        if any(abs(pos[b] - pos[a]) > 0 for a, b in recipe.same):
+        if recipe.same and any(abs(pos[b] - pos[a]) > 0 for a, b in recipe.same):
             continue
         try:
-            plan = _follow(recipe, motion, mu)
+            plan = _follow(recipe, motion, acc, mu)
         except ZeroDivisionError:
             continue
         if i:
@@ -314,7 +316,7 @@ def _plan(solver: Solver, motion: Motion, kind: str, mu) -> Plan:
         return plan
     recipe = _work_out(solver.mech, motion, kind)
     recipes.insert(0, recipe)
-    return _follow(recipe, motion, mu)
+    return _follow(recipe, motion, acc, mu)
 
 
 def _work_out(mech: Mechanism, m: Motion, kind: str) -> _Recipe:
@@ -431,10 +433,10 @@ def _segments_of(steps, pole: str) -> Mapping[str, tuple[str, str]]:
     return MappingProxyType(out)
 
 
-def _follow(recipe: _Recipe, m: Motion, mu) -> Plan:
+def _follow(recipe: _Recipe, m: Motion, acc: bool, mu) -> Plan:
     """The plan at the motion's angle, by the recipe's steps (compiled once: see
-    :func:`_compile`)."""
-    if recipe.kind == "acceleration":
+    :func:`_compile`); ``acc``: the acceleration plan's."""
+    if acc:
         return recipe.follow(m.acceleration, [g.acceleration for g in m.groups], m.position, mu)
     return recipe.follow(m.velocity, [g.velocity for g in m.groups], m.position, mu)
 
