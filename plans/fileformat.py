@@ -133,9 +133,28 @@ def _toml_problem(message: str, text: str) -> str:
     if type_in_latin(key):  # "АВ = 0.06" typed on a Russian keyboard: a bare key is Latin only
         hint = f"the name has {type_in_latin(key)}"
     elif m and m.group("line") and not here.lstrip().startswith("[") and "=" in here:
-        hint = _bare_key_hint(key) or hint
+        hint = _bare_key_hint(key) or _comma_hint(here) or hint
     msg = one_line(msg[:1].lower() + msg[1:], 120)
     return f"{where}: TOML syntax error: {msg}" + (f" ({hint})" if hint else "")
+
+
+#: a bare number with a decimal comma after a key's =: AB = 0,05 (TOML stops at the comma)
+_BARE_COMMA = re.compile(r"=\s*([-+]?\d+),(\d+)\s*(?:#.*)?$")
+
+
+def _comma_hint(line: str) -> str:
+    """What to write for a number with a decimal comma (AB = 0,05), else "".
+
+    >>> _comma_hint("AB = 0,05  # mm")
+    'a decimal comma is written in quotes: "0,05", or 0.05'
+    >>> _comma_hint("A = [0,05]")
+    ''
+    """
+    m = _BARE_COMMA.search(line)
+    if not m:
+        return ""
+    whole, frac = m.groups()
+    return f'a decimal comma is written in quotes: "{whole},{frac}", or {whole}.{frac}'
 
 
 #: Greek letters of the method's names, as a bare key writes them

@@ -178,6 +178,14 @@ def test_toml_errors_carry_their_line(tmp_path):
     assert got.startswith(f"line {line}, column 10: TOML syntax error:")
 
 
+def test_a_bare_decimal_comma_is_told_to_be_quoted(tmp_path):
+    """rpm = 149,2 stops TOML at the comma: the message says what to write (the comma in
+    quotes, or a point), not only "one key = value per line"."""
+    text = FOURBAR.replace("rpm = 149.2", "rpm = 149,2")
+    (got,) = _problems_of_text(tmp_path, text)
+    assert got.endswith('(a decimal comma is written in quotes: "149,2", or 149.2)')
+
+
 def test_duplicate_key_names_both_lines(tmp_path):
     text = FOURBAR.replace("D = [-0.135, 0.0]", "D = [-0.135, 0.0]\nD = [-0.2, 0.0]")
     (got,) = _problems_of_text(tmp_path, text)
