@@ -219,6 +219,18 @@ def test_coriolis_reversed_by_hand_is_named(tmp_path, press, capsys):
     assert "turn the relative velocity V_A3A by 90° in the sense of ω3" in out
 
 
+def test_the_russian_hint_to_give_a_sense_is_written_in_russian(tmp_path, press, capsys):
+    """The Coriolis vector reversed looks like ω3 the wrong way; the Russian check says how
+    to give ω3 with its sense as a Russian student writes it, not "4.8 ccw"."""
+    state = ck.simulate(press, find(press, "coriolis-reversed"), MU_PRESS)
+    segs = measured(press, state, MU_PRESS, np.random.default_rng(9))
+    path = write_meas(tmp_path / "ru.toml", PRESS, segs, MU_PRESS)
+    code, out, _ = run(capsys, "check", path, "--lang", "ru")
+    assert code == 1
+    assert 'например omega3 = "4,8 против ч.с.")' in out
+    assert "ccw" not in out
+
+
 def test_omega_sense_is_named_when_the_sense_is_reported(tmp_path, press):
     mk = find(press, "omega-sense", "ω3")
     state = ck.simulate(press, mk, MU_PRESS)
