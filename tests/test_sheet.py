@@ -1214,3 +1214,27 @@ def test_a_tall_segments_table_is_set_in_two_halves_where_the_sheet_needs_it():
     assert got["A3"].count("Отрезок") == 2 and got["A1"].count("Отрезок") == 1
     rows = {fmt: sorted(t for t in texts if ": " in t) for fmt, texts in got.items()}  # "pa: V_A"
     assert len(rows["A1"]) == len(set(rows["A1"])) == 24 and rows["A3"] == rows["A1"]  # each once
+
+
+
+@pytest.mark.parametrize("kind", ["velocity", "acceleration"])
+def test_points_found_by_similarity_lie_on_the_links_image_drawn(kind):
+    """Variant 1's coupler BCE: e and s2 are found by similarity, be = bc·BE/BC, but on the
+    acceleration plan no vector joins b and c, and on both plans nothing reached e: e and
+    s2 floated beside the vectors. A thin line now runs from b through c on to e."""
+    from shapely.geometry import LineString, Point
+
+    from drawing.scene import Circle, Segment, flatten
+    from drawing.styles import LineType
+    from drawing.views import plan_view
+    from plans.plan import solve_position
+
+    sol = solve_position(variant(1))
+    plan = getattr(sol, kind)
+    items = flatten(plan_view(sol, kind, "1").items)
+    (pole,) = [c.center for c in items if isinstance(c, Circle) and c.fill == "black"]
+    thin = [LineString([s.p1, s.p2]) for s in items
+            if isinstance(s, Segment) and s.line == LineType.THIN]
+    on = [Point(pole[0] + plan.points[n].value.real / plan.mu,
+                pole[1] - plan.points[n].value.imag / plan.mu) for n in ("b", "c", "e", "s2")]
+    assert any(all(line.distance(p) < 1e-6 for p in on) for line in thin)
