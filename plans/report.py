@@ -31,6 +31,7 @@ T = {
         "seg_given": "Segments of the links on the drawing, in the position given ({phi} = {deg}°, drawn in heavy lines):",
         "seg_at": "Segments whose length changes with the position, in the position of the plans below ({title}):",
         "seg_same": "In the position of the plans below ({title}) the segments are as above.",
+        "seg_same_all": "In the positions of the plans below ({title}) the segments are as above.",
         "stroke": "Stroke of the output point {p}:",
         "swing": "Swing of the output link {l}:",
         "kth": "Crank angle between the extreme positions, θ, and the time ratio K:",
@@ -78,6 +79,7 @@ T = {
         "seg_given": "Длины отрезков, изображающих звенья на чертеже, в заданном положении ({phi} = {deg}°, выделено основными линиями):",
         "seg_at": "Отрезки, длина которых меняется с положением, в положении, для которого ниже построены планы ({title}):",
         "seg_same": "В положении, для которого ниже построены планы ({title}), длины отрезков те же.",
+        "seg_same_all": "В положениях, для которых ниже построены планы ({title}), длины отрезков те же.",
         "stroke": "Ход выходной точки {p}:",
         "swing": "Угол размаха выходного звена {l}:",
         "kth": "Угол между положениями кривошипа в крайних положениях механизма θ и коэффициент изменения средней скорости K:",
@@ -181,14 +183,17 @@ def note(sol: Solution, lang: str = "en", cycle=None,
         if k == d.pivot + d.tip or v == 0:  # the crank is above; a point on another: no segment
             continue
         out.append(segment(k, v))
+    same = []  # the positions whose segments are those above: said once, all together
     for title, s in plans:
         changed = [(k, v) for k, v in s.lengths.items() if k != d.pivot + d.tip and v != 0
                    and not math.isclose(v, sol.lengths.get(k, math.nan), rel_tol=1e-9)]
         if not changed:
-            out += ["", t["seg_same"].format(title=title)]
+            same.append(title)
             continue
         out += ["", t["seg_at"].format(title=title), ""]
         out += [segment(k, v) for k, v in changed]
+    if same:
+        out += ["", t["seg_same" if len(same) == 1 else "seg_same_all"].format(title="; ".join(same))]
     if cycle is not None:
         out.append("")
         if cycle.change_points:

@@ -1238,3 +1238,19 @@ def test_points_found_by_similarity_lie_on_the_links_image_drawn(kind):
     on = [Point(pole[0] + plan.points[n].value.real / plan.mu,
                 pole[1] - plan.points[n].value.imag / plan.mu) for n in ("b", "c", "e", "s2")]
     assert any(all(line.distance(p) < 1e-6 for p in on) for line in thin)
+
+
+def test_positions_whose_segments_are_the_given_ones_are_named_in_one_sentence(tmp_path):
+    """A crank-slider's segments do not change with the position: with --plans 1,4 the
+    note said twice over «В положении, для которого ниже построены планы (…), длины
+    отрезков те же», once per position; it now says it once, of both."""
+    from plans.cli import main
+
+    md = tmp_path / "v2.md"
+    assert main(["sheet", "--variant", "2", "-o", str(tmp_path / "v2.svg"), "--note", str(md),
+                 "--plans", "1,4"]) == 0
+    section2 = md.read_text("utf-8").split("## 2.")[1].split("## 3.")[0]
+    assert "длины отрезков те же" in section2
+    assert [ln for ln in section2.splitlines() if "те же" in ln] == [
+        "В положениях, для которых ниже построены планы (положение 1, φ1 = 210°; "
+        "положение 4, φ1 = 300°), длины отрезков те же."]
