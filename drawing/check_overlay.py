@@ -44,6 +44,7 @@ from drawing.scene import (
 )
 from plans.check import MU_KEY, CheckResult, rebuild, recorded_segments
 from plans.fmt import listing
+from plans.plan import image_sides
 
 PANEL = 340.0  # user units (px) of one plan's square
 MARGIN = 24.0
@@ -505,10 +506,14 @@ def _panel(doc: Overlay, origin, plan, mu, student, items, failed, lang, w):
 
     labels = _Labels((ox + 2, oy + 2, ox + PANEL - 2, oy + PANEL - 2), [])
     g = doc.body.add(_El("g"))
-    # the computed plan
+    # the computed plan, with the links' images its similarity points are found on, thin
     for a, b in segs.values():
         p, q = sc(comp[a]), sc(comp[b])
         g.add(_line(p, q, stroke=BLACK, stroke_width=1.1))
+        labels.block_line(p, q)
+    for a, b in image_sides(plan):
+        p, q = sc(a / mu), sc(b / mu)
+        g.add(_line(p, q, stroke=BLACK, stroke_width=0.5))
         labels.block_line(p, q)
     names = {}
     for n, z in comp.items():

@@ -50,6 +50,7 @@ from drawing.scene import (
 from drawing.styles import LineType
 from plans.cycle import at_rest
 from plans.fmt import num
+from plans.plan import image_sides
 from plans.positions import drawn
 
 __all__ = [
@@ -422,20 +423,9 @@ def plan_view(sol, kind: str, tag: str, lang: str = "ru", label: str | None = No
                 Segment((tx + a * dx, ty + a * dy), (tx + b * dx, ty + b * dy), LineType.THIN)
             )
     # the link's image each similarity point is found on, thin: bc on to e of a coupler
-    # BCE (be = bc·BE/BC), the sides be, ce of a triangle; on the acceleration plan no
-    # vector joins b and c, so without it e and s2 would float
-    for p in plan.points.values():
-        src = p.source
-        if src.kind != "similarity" or src.base not in pts or src.other not in pts:
-            continue
-        (x0, y0), (x1, y1), xy = pts[src.base], pts[src.other], pts[p.name]
-        if abs(src.ratio.imag) < 1e-12:
-            lo, hi = min(0.0, src.ratio.real), max(1.0, src.ratio.real)
-            sides = [((x0 + lo * (x1 - x0), y0 + lo * (y1 - y0)),
-                      (x0 + hi * (x1 - x0), y0 + hi * (y1 - y0)))]
-        else:
-            sides = [((x0, y0), xy), ((x1, y1), xy)]
-        items.extend(Segment(s, e, LineType.THIN) for s, e in sides if math.dist(s, e) > 1e-6)
+    # BCE, the sides be, ce of a triangle
+    items += [Segment(_plan_xy(a, mu), _plan_xy(b, mu), LineType.THIN)
+              for a, b in image_sides(plan)]
     # the vectors
     for v in plan.vectors:
         p1, p2 = pts[v.start], pts[v.end]

@@ -212,6 +212,28 @@ def _rounded_off(values: dict[int, float], tiny: float) -> dict[int, float]:
     return values  # nearly always: as it is
 
 
+def image_sides(plan: Plan) -> list[tuple[complex, complex]]:
+    """The links' images that the similarity points of ``plan`` are found on, as
+    segments between two vectors of the plan (from its pole): the image bc run on to e
+    for a point in line with its two bases (be = bc·BE/BC), else the two sides be, ce of
+    the link's triangle. On the acceleration plan no vector joins b and c, so without
+    them e and s2 would float: the sheet and the check's picture draw them thin. A side
+    no longer than the plan's rounding (``tiny``) is left out."""
+    out = []
+    for p in plan.points.values():
+        src = p.source
+        if src.kind != "similarity":
+            continue
+        b0, b1, z = plan.value(src.base), plan.value(src.other), p.value
+        if abs(src.ratio.imag) < 1e-12:  # in line, as the step's equation is worded
+            lo, hi = min(0.0, src.ratio.real), max(1.0, src.ratio.real)
+            sides = [(b0 + lo * (b1 - b0), b0 + hi * (b1 - b0))]
+        else:
+            sides = [(b0, z), (b1, z)]
+        out += [(a, b) for a, b in sides if abs(b - a) > plan.tiny]
+    return out
+
+
 def cycle_extent(solver: Solver) -> float:
     """The larger side (m) of what the plan of positions draws with its twelve positions
     (:attr:`plans.positions.Drawn.extent`): the sheet sizes it the same way."""

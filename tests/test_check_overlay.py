@@ -191,3 +191,23 @@ def test_the_overlay_needs_no_shapely():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True,
                          cwd=HERE.parent, env={"PYTHONPATH": str(HERE.parent), "PATH": ""})
     assert out.stdout.strip() == "[]"
+
+
+def test_the_links_images_are_drawn_thin_on_both_panels(tmp_path):
+    """The sheet draws the line each similarity point is found on (b–c–e of the
+    four-bar's coupler BCE); the check's picture drew only the plan's vectors, and on
+    its acceleration panel e and s2 floated beside them. One thin line is drawn per
+    side of ``plans.plan.image_sides``, on each panel."""
+    from plans.plan import image_sides
+
+    path = tmp_path / "m.toml"
+    path.write_text(f'mechanism = "{(HERE.parent / "samples" / "fourbar.toml").as_posix()}"\n'
+                    "[scales]\nmu_v = 0.02\nmu_a = 0.2\n[segments]\npb = 48.8\npc = 45.9\n"
+                    '"πb" = 76.3\n"πc" = 59.9\n', encoding="utf-8")
+    res = ck.check(ck.load(path))
+    sol = res.measurement.solution
+    root = ET.fromstring(overlay(res, "en").tostring().split("\n", 1)[1])
+    thin = [e for e in root.iter(SVG + "line")
+            if e.get("stroke-width") == "0.5" and e.get("stroke") == "#222"]
+    want = sum(len(image_sides(p)) for p in (sol.velocity, sol.acceleration))
+    assert want >= 2 and len(thin) == want

@@ -299,6 +299,40 @@ def test_rounding_of_epsilon_is_judged_against_the_cranks_omega_squared():
         assert sol.omega[1] == w1 and sol.omega[3] == pytest.approx(w1, rel=1e-14)
 
 
+@pytest.mark.parametrize("scene", ["crank_rocker", "slotted_general", "scotch_yoke", "fourbar"])
+def test_every_similarity_point_lies_on_a_side_of_its_links_image(scene):
+    """``image_sides``: each point found by similarity lies on a side drawn, the bases'
+    line run on to it where it is in line with them (variant 1's b–c–e), else the two
+    sides of the link's triangle (the crank-rocker's e and f): both ends of the
+    triangle's sides are a base and the point itself. A link that translates (the Scotch
+    yoke's) is one point on the plan, and has no image to draw."""
+    from plans.plan import image_sides
+    from plans.scenes import SCENES
+
+    sol = solve_position(SCENES[scene].mechanism())
+    for plan in (sol.velocity, sol.acceleration):
+        sides = image_sides(plan)
+        similar = [p for p in plan.points.values() if p.source.kind == "similarity"]
+        assert similar
+        for p in similar:
+            src = p.source
+            b0, b1, z = plan.value(src.base), plan.value(src.other), p.value
+            if abs(b1 - b0) <= plan.tiny:  # a link that translates: one point, no image
+                assert abs(z - b0) <= plan.tiny
+                assert all(abs(z - x) > plan.tiny for side in sides for x in side)
+                continue
+            if abs(src.ratio.imag) >= 1e-12:  # a triangle: its two sides, as they are
+                assert (b0, z) in sides and (b1, z) in sides
+                continue
+
+            def on(x, a, b):
+                t = (x - a) / (b - a)
+                return abs(t.imag) <= 1e-12 and -1e-12 <= t.real <= 1 + 1e-12
+
+            # a side through the point and both its bases
+            assert any(all(on(x, a, b) for x in (z, b0, b1)) for a, b in sides), p.name
+
+
 @pytest.mark.parametrize("lang", ["ru", "en"])
 def test_every_value_read_off_a_plan_stands_under_its_heading(lang):
     """A crank's own similarity point (S1 of variant 4) had its V_S1 = ps1·μv line right
