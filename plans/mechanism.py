@@ -304,7 +304,10 @@ def _pair(value: Any, where: str, problems: Problems) -> complex | None:
     return None if x is None or y is None else complex(x, y)
 
 
-def _name(value: Any, where: str, problems: Problems) -> str | None:
+def _name(value: Any, where: str, problems: Problems, named: set[str]) -> str | None:
+    """The point name ``value``, or None with the problem. A reserved name is still
+    recorded in ``named``: it is said once, not again where the file uses it (trace,
+    output, a hint) as an unknown point."""
     if not isinstance(value, str) or not POINT_NAME.match(value):
         problems.add(
             where,
@@ -313,6 +316,7 @@ def _name(value: Any, where: str, problems: Problems) -> str | None:
         )
         return None
     if RESERVED.match(value):
+        named.add(value)
         problems.add(
             where, f'"{value}" is reserved for plan construction points (p, n1, k…): rename it'
         )
@@ -383,7 +387,7 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
         raw_frame = {}
     for key, value in raw_frame.items():
         where = f"frame.{key_text(key)}"
-        nm = _name(key, where, pr)
+        nm = _name(key, where, pr, named)
         if nm and _one_spelling(nm, where, spellings, pr):
             named.add(nm)
             frame_names.add(nm)
@@ -614,8 +618,8 @@ def _link(lid: int, lname: str, body: dict, where: str, pr: Problems, named: set
             pr.add(where + ".axis", f'must be two point names, e.g. ["B", "C"], got {quote(axis)}')
             axis = None
         else:
-            a0 = _name(axis[0], where + ".axis[0]", pr)
-            a1 = _name(axis[1], where + ".axis[1]", pr)
+            a0 = _name(axis[0], where + ".axis[0]", pr, named)
+            a1 = _name(axis[1], where + ".axis[1]", pr, named)
             a0 = a0 if a0 and _one_spelling(a0, where + ".axis[0]", spellings, pr) else None
             a1 = a1 if a1 and _one_spelling(a1, where + ".axis[1]", spellings, pr) else None
             named |= {a for a in (a0, a1) if a}
@@ -635,7 +639,7 @@ def _link(lid: int, lname: str, body: dict, where: str, pr: Problems, named: set
     failed: set[str] = set()
     for pname, spec in raw_points.items():
         pw = f"{where}.points.{key_text(pname)}"
-        nm = _name(pname, pw, pr)
+        nm = _name(pname, pw, pr, named)
         if nm is None or not _one_spelling(nm, pw, spellings, pr):
             continue
         named.add(nm)
