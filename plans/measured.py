@@ -28,7 +28,7 @@ from .fileformat import (
     read_toml,
     type_in_latin,
 )
-from .mechanism import Mechanism
+from .mechanism import MU_UNIT, Mechanism
 from .plan import Plan, Solution, plan_name, solve_position
 
 PLANS = ("positions", "velocity", "acceleration")
@@ -237,7 +237,7 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
     for key, value in scales.items():
         if key not in MU_KEY.values():
             continue
-        x = _num(value, f"scales.{key}", problems, positive=True, unit="per mm")
+        x = _num(value, f"scales.{key}", problems, positive=True, unit=MU_UNIT[key])
         if x is not None:
             mu[key] = x
     raw_segments = data.get("segments", {})

@@ -43,6 +43,8 @@ from .geometry import cross
 
 #: names the plans reserve for their own construction points (n1, k, p, π)
 RESERVED = re.compile(r"^(P|N\d*|K\d*)$")
+#: the unit of each scale factor, as an error message asks for it
+MU_UNIT = {"mu_l": "m/mm", "mu_v": "(m/s)/mm", "mu_a": "(m/s²)/mm"}
 POINT_NAME = re.compile(r"^[A-Z][A-Za-z0-9_']{0,11}$")
 MIN_LEN = 1e-9
 
@@ -548,10 +550,9 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
         pr.add("scales", f"must be a table: [scales] mu_l = 0.01, mu_v = …, mu_a = …, got {quote(raw_scales)}")
         raw_scales = {}
     check_keys(raw_scales, {"mu_l", "mu_v", "mu_a"}, "scales", pr)
-    units = {"mu_l": "m/mm", "mu_v": "(m/s)/mm", "mu_a": "(m/s²)/mm"}
     for key in ("mu_l", "mu_v", "mu_a"):
         if key in raw_scales:
-            val = read_number(raw_scales[key], f"scales.{key}", pr, positive=True, unit=units[key],
+            val = read_number(raw_scales[key], f"scales.{key}", pr, positive=True, unit=MU_UNIT[key],
                           low=SCALE[0], high=SCALE[1])
             if val is not None:
                 scales[key] = val

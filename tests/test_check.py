@@ -806,6 +806,9 @@ def test_measurement_problems_are_located_and_hinted_like_a_mechanism_files(tmp_
 @pytest.mark.parametrize(("text", "expect"), [
     # a bad scale is one problem, not also "missing"
     ('mechanism = "M"\n[scales]\nmu_v = 0\n[segments]\npa = 60\n', ["scales.mu_v: must be positive"]),
+    # a scale factor written with its unit is told the unit it is given in
+    ('mechanism = "M"\n[scales]\nmu_v = "0.05 m/s/mm"\n[segments]\npa = 60\n',
+     ['scales.mu_v: must be a number, got "0.05 m/s/mm": write the number in (m/s)/mm, without the unit']),
     # one segment twice, under two tables
     ('mechanism = "M"\n[scales]\nmu_v = 0.05\n[segments]\npa3 = 55\n[segments.velocity]\npa3 = 1\n',
      ["segments.velocity.pa3: measures what segments.pa3 does, as 1 against 55: give each once"]),
