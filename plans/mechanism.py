@@ -509,8 +509,19 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
     # joints: every link attached by two pairs, no joint with two names ---------------
     raw_driver = data.get("driver")
     drv = _link_id(raw_driver.get("link", 1)) if isinstance(raw_driver, dict) else None
+    before = len(pr.items)
     if whole:
         _connections(frame, links, pairs, drv, bad_links, pr)
+    # a fixed point that nothing uses: a pivot whose link names it otherwise (said above,
+    # when that link is left with one pair), or a stray one that would only widen the
+    # plan of positions; a guide's through or a hint may name it
+    unused = set(frame) if whole and len(pr.items) == before else set()
+    for link in links.values():
+        unused -= set(link.points)
+    for body in raw_sliders:
+        guide = body.get("guide") if isinstance(body, dict) else None
+        if isinstance(guide, dict) and isinstance(guide.get("through"), str):
+            unused.discard(guide["through"])
 
     # assembly hints, scales, output, trace, title ---------------------------------
     all_points = set(frame)
@@ -544,6 +555,10 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
             pr.add(where, f"{quote(hint)}: {problem}")
             continue
         hints[k] = hint
+        unused -= set(_hint_refs(hint, all_points))
+    for nm in sorted(unused):
+        pr.add(f"frame.{nm}", f'"{nm}" is on no link: a fixed pivot is a joint, named on the '
+               "link hinged there as well; name it on its link, or remove it")
     scales = {}
     raw_scales = data.get("scales", {})
     if not isinstance(raw_scales, dict):
@@ -761,6 +776,13 @@ def _connections(frame, links, pairs, drv, bad_links, pr: Problems) -> None:
             pr.add(f"links.{lid}", f"{what}: {need}{hint}")
         else:
             pr.add(f"links.{lid}", f"{what}: {need}")
+
+
+def _hint_refs(hint: str, names) -> list[str]:
+    """The points a hint read without a problem names."""
+    from .branches import parse_hint
+
+    return parse_hint(hint, sorted(names, key=len, reverse=True))[1]
 
 
 def _hint_problem(key: str, hint: str, names: list[str]) -> str | None:
