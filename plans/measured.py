@@ -191,6 +191,10 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
     from . import mechanism as mechmod
 
     problems = Problems(source, text)
+    if {"frame", "links"} & data.keys() and not {"mechanism", "variant", "segments"} & data.keys():
+        raise InputError(source, "a mechanism file, not a measurement file: plans check reads "
+                         'the segments measured on a drawing (mechanism = "…", [scales], '
+                         f"[segments]); to solve the mechanism: plans solve {source}")
     check_keys(data, TOP_KEYS, "", problems)
     title = data.get("title", "")
     if not isinstance(title, str) or len(title) > 300:

@@ -366,6 +366,13 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
     pr = Problems(source, text)
     if not isinstance(data, dict):
         raise InputError(source, "the file must be a TOML table")
+    if not {"frame", "links", "driver"} & data.keys():  # another kind of file: say which
+        if {"segments", "mechanism"} & data.keys():
+            raise InputError(source, "a measurement file (mechanism = …, [segments]), not a "
+                             f"mechanism file: check it with plans check {source}")
+        if isinstance(data.get("variant"), list):
+            raise InputError(source, "a variant table ([[variant]] rows), not a mechanism file: "
+                             f"give it as --table {source} --variant N")
     check_keys(
         data,
         {"name", "frame", "links", "sliders", "driver", "assembly", "scales", "trace",

@@ -730,6 +730,21 @@ def test_a_mechanism_file_given_as_a_table_is_named_so(capsys):
                    "FILE, without --variant and --table\n")
 
 
+@pytest.mark.parametrize(("command", "path", "says"), [
+    ("check", PRESS, "a mechanism file, not a measurement file: plans check reads the segments"),
+    ("solve", ROOT / "samples" / "check_press.toml",
+     "a measurement file (mechanism = …, [segments]), not a mechanism file: check it with plans check"),
+    ("sheet", ROOT / "plans" / "data" / "table2.toml",
+     "a variant table ([[variant]] rows), not a mechanism file: give it as --table"),
+])
+def test_a_file_of_another_kind_is_named_so(capsys, tmp_path, command, path, says):
+    """A mechanism file given to check, a measurement file or a table given to solve had
+    got six to ten lines, one per key each did not know."""
+    code, out, err = run(capsys, command, path, *(["-o", tmp_path / "s.svg"] if command == "sheet" else []))
+    assert code == 2 and out == "" and list(tmp_path.iterdir()) == []
+    assert err.startswith(f"plans {command}: {path}: {says}") and err.count("\n") == 1, err
+
+
 def test_a_row_without_a_number_stops_no_variant(capsys, tmp_path):
     """n = "four" in one row had stopped every variant of the table."""
     table = tmp_path / "t.toml"
