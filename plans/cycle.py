@@ -152,8 +152,9 @@ def output_of(mech: Mechanism, name: str) -> Output | None:
 class Cycle:
     output: Output | None
     full_turn: bool
-    #: crank angles (rad) of the extreme positions: the output's, or where the crank
-    #: cannot make a full turn its limit positions (dead points), ``crank_range``
+    #: crank angles (rad) of the extreme positions: the output's, the one that starts the
+    #: working stroke (position 0) first, or where the crank cannot make a full turn its
+    #: limit positions (dead points), ``crank_range``
     extremes: tuple[float, ...]
     stroke: float | None  # H (m) or swing ψ (rad)
     theta: float | None  # rad
@@ -433,6 +434,8 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
                 start = extremes[int(np.argmin(val))]
             else:
                 start = extremes[0] if span >= TWO_PI - span else extremes[1]
+            if start is extremes[1]:  # the working stroke's start first, from any angle
+                extremes.reverse()
         elif extremes:
             notes.append(f"the output {out.point} has {len(extremes)} turning points per turn")
     pos = tuple(start + sense * TWO_PI * i / n_positions for i in range(n_positions))

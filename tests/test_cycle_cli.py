@@ -267,7 +267,7 @@ def test_cycle_pays_for_no_heavy_import(tmp_path):
 
 def test_cycle_text_gives_every_crank_angle_in_the_files_convention(capsys):
     """The press measures φ1 clockwise from +y: the extreme positions in the summary are
-    in that convention, and position 0, which starts the working stroke, is one of them."""
+    in that convention, and position 0, which starts the working stroke, is the first."""
     import re
 
     code, out, _ = run(capsys, "cycle", PRESS)
@@ -278,9 +278,9 @@ def test_cycle_text_gives_every_crank_angle_in_the_files_convention(capsys):
     shown = [float(x) for x in re.findall(r"([\d.]+)°", line.split(";")[0])]
     want = [mech.driver.file_angle(x) for x in c.extremes]
     assert shown == pytest.approx(want, abs=0.05)
-    assert shown == pytest.approx([250.1, 109.9], abs=0.05)  # 199.9° and 340.1° from +x
+    assert shown == pytest.approx([109.9, 250.1], abs=0.05)  # 340.1° and 199.9° from +x
     row0 = next(ln for ln in out.splitlines() if re.match(r"\s+0\s", ln))
-    assert float(row0.split()[1]) == pytest.approx(shown[1], abs=0.05)
+    assert float(row0.split()[1]) == pytest.approx(shown[0], abs=0.05)
 
 
 @pytest.mark.parametrize("angle", [0, 180])
@@ -539,3 +539,16 @@ def test_the_range_and_the_angle_are_in_the_files_convention(capsys, tmp_path):
                           "range, φ1 from −9.715° to 189.7° (from +y, cw), where the mechanism "
                           "assembles: group 2–3 (RRR) cannot be assembled at φ1 = 250° (from +y, "
                           "cw): needs BD")
+
+
+@pytest.mark.parametrize("angle", ["20", "100", "200", "300"])
+def test_the_extreme_that_starts_the_working_stroke_comes_first(capsys, angle):
+    """The two extremes were listed in the order the crank met them from the angle asked
+    for: the press gave [199.93, 340.07] at 20° and [340.07, 199.93] at 200°, so a program
+    reading item 0 as the working stroke's start was right at one angle and wrong at the
+    other. Item 0 is now position 0's angle, the working stroke's start, at any angle."""
+    code, out, _ = run(capsys, "cycle", PRESS, "--positions", "4", "--angle", angle, "--json")
+    data = json.loads(out)
+    first, second = data["cycle"]["extremes_phi_deg"]
+    assert code == 0 and data["rows"][0]["phi_deg"] == pytest.approx(first, abs=1e-9)
+    assert (first, second) == pytest.approx((340.0677295277987, 199.93227047220137), abs=1e-9)
