@@ -438,7 +438,11 @@ def _deviation_list(result: CheckResult, kind: str, lang: str) -> list[str]:
 
 
 def _footer(result: CheckResult, lang: str, width: float) -> list[tuple[list[str], str]]:
-    """The verdict, the diagnosis and the correction, each wrapped to ``width``."""
+    """The verdict, the diagnosis and the correction, then what each item beyond
+    tolerance that no mistake explains looks like ("are πc and πa3 swapped?", as the
+    text says it), each wrapped to ``width``."""
+    from plans.cli_check import lookalike_lines
+
     w = WORDS[lang]
     tol = result.tolerance.describe(lang)
     if result.ok:
@@ -452,6 +456,7 @@ def _footer(result: CheckResult, lang: str, width: float) -> list[tuple[list[str
         else:
             texts.append((w["diag"].format(what=diag.best.mistake.describe(lang)), BLACK))
             texts.append((w["fix"].format(fix=diag.best.mistake.correction(lang)), BLACK))
+        texts += [(line.strip(), BLACK) for line in lookalike_lines(result, lang)]
     return [(_wrap(t, FONT, width, rich=True), color) for t, color in texts]
 
 

@@ -933,6 +933,23 @@ def test_the_crank_taken_the_wrong_way_round_is_named(tmp_path, capsys, which, l
     assert code == 1 and f"Diagnosis: ω1 (V_{tip}) drawn with the wrong sense." in out
 
 
+def test_the_pictures_footer_says_what_a_look_alike_is(tmp_path, press):
+    """The text said "are πc and πa3 swapped?" under "no single mistake explains this";
+    the picture (check --svg, --png) gave only the verdict, so a teacher reading it saw
+    no hint. Its footer now carries the same lines, in either language."""
+    from drawing.check_overlay import overlay
+
+    seg = {k: v for k, v in press.segments.items() if k in ("pa3", "aa3", "pc", "cd", "pd",
+                                                                "ak", "bn1", "πa3", "πc", "πd")}
+    seg["πc"], seg["πa3"] = seg["πa3"], seg["πc"]
+    res = ck.check(ck.load(write_meas(tmp_path / "m.toml", PRESS, seg, MU_PRESS)))
+    assert {(lk.item, lk.kind) for lk in res.diagnosis.lookalikes} == {("πc", "swapped"),
+                                                                        ("πa3", "swapped")}
+    for lang, words in (("en", "are πc and πa3 swapped?"), ("ru", "πc и πa3 перепутаны?")):
+        footer = " ".join(t for t, _, role in overlay(res, lang).texts if role == "footer")
+        assert words in footer, footer
+
+
 def test_a_look_alike_is_a_segment_the_student_drew(tmp_path, press):
     """n1a3 = 17.11 mm (all else exact) had been offered as "the length of n1s4 (17.24 mm):
     measured from the wrong point?": n1 is a construction point, and its distance to the
