@@ -300,8 +300,9 @@ class _Sheet1:
         if key == "mu_l":
             from plans.plan import solve_position
 
+            # the positions of the plans heavy (--plans), else the given one
             return [V.positions_view(solve_position(self.mech, solver=self.solver, mu=mu),
-                                     self.cycle, self.lang, sizing=sizing)]
+                                     self.cycle, self.lang, sizing=sizing, heavy=self.chosen)]
         kind = "velocity" if key == "mu_v" else "acceleration"
         return [V.plan_view(sol, kind, tag, self.lang, label, sizing=sizing)
                 for tag, label, sol in self.titled(mu)]

@@ -372,7 +372,9 @@ def place_labels(
     line: the shortest way from its point to its box crosses no obstacle but those at
     the point itself (a letter beyond a vector reads as that vector's point); where it
     has no such spot, it takes the nearest clear one beyond a line with a ``leader``
-    line to its point (GOST 2.316).  A label keeps :data:`GAP` mm from the labels of other points.  If
+    line to its point (GOST 2.316).  A label keeps :data:`GAP` mm from the labels of other points
+    (an ``optional`` one from every label: a position's number beside the letter of its
+    own point read as one word, "¹B").  If
     none is free, the candidate with the least overlap area is taken and reported with
     ``clear=False`` (an ``optional`` one is then meant to be left out, and later labels
     may take its place).
@@ -409,11 +411,13 @@ def place_labels(
                     box = text_box(text)
                     hits = [] if hard_tree is None else [
                         hard[i] for i in hard_tree.query(box, predicate="intersects")]
-                    if placed:  # a label keeps GAP from the labels of other points
+                    if placed:  # a label keeps GAP from the labels of other points, a
+                        # position's number from its own point's letter too ("¹B")
                         near_box = shapely.box(
                             *(a + d for a, d in zip(box.bounds, (-GAP, -GAP, GAP, GAP), strict=True)))
                         mask = shapely.intersects(near_box, boxes)
-                        mask &= shapely.intersects(box, boxes) | others
+                        if not req.optional:
+                            mask &= shapely.intersects(box, boxes) | others
                         hits += [p for p, m in zip(placed, mask, strict=True) if m]
                     outside = 0.0 if region is None else _outside(box, region, region_box)
                     if not (hits or req.cross or hard_tree is None or outside > 1e-9):

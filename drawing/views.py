@@ -624,12 +624,18 @@ def _support(xy: tuple[float, float]) -> list[Item]:
     ]
 
 
-def positions_view(sol, cycle, lang: str = "ru", sizing: bool = False) -> View:
-    """Plan of positions at μl: the given position heavy, the cycle's positions
-    and the two extreme ones thin, trajectories, pivots, sliders, stroke H; the positions
-    drawn are the engine's (:func:`plans.positions.drawn`, worked out once per solver)."""
+def positions_view(sol, cycle, lang: str = "ru", sizing: bool = False,
+                   heavy: list[int] | None = None) -> View:
+    """Plan of positions at μl: the positions the plans are built for heavy, the cycle's
+    other positions and the two extreme ones thin, trajectories, pivots, sliders, stroke
+    H; the positions drawn are the engine's (:func:`plans.positions.drawn`, worked out
+    once per solver). ``heavy``: the numbers of the cycle's positions the sheet draws
+    plans for (``--plans``), drawn heavy and numbered, the points lettered on the first;
+    the given position (``sol``'s), which has no plans then, is not drawn. None: the
+    given position heavy, the plans being its own."""
     mech, mu_l = sol.mechanism, sol.mu_l
     shown = drawn(sol.solver, cycle)
+    main = _heavy_positions(sol, shown, heavy)
     motion_all = shown.motion_all
     items: list[Item] = []
     over: list[Item] = []  # drawn over the breaks under labels
@@ -654,7 +660,7 @@ def positions_view(sol, cycle, lang: str = "ru", sizing: bool = False) -> View:
                                   closed=closed))
     # the positions drawn: the cycle's, numbered, the extreme ones, and the given one
     cycle_pos, extremes = shown.cycle, shown.extremes
-    drawn_at = [p for p in (*cycle_pos, *extremes, sol.positions) if p is not None]
+    drawn_at = [p for p in (*cycle_pos, *extremes, *main) if p is not None]
     # fixed guides: the axis dash-dot over the slider's reach in the positions drawn
     for s in mech.sliders:
         if s.guide.link != 0:
@@ -668,8 +674,9 @@ def positions_view(sol, cycle, lang: str = "ru", sizing: bool = False) -> View:
     for k, pos in enumerate(cycle_pos):
         if pos is None:
             continue
-        items += _link_segments(mech, pos, mu_l, LineType.THIN)
-        items += _slot_segments(mech, slots, pos, mu_l, LineType.THIN)
+        if not any(pos is p for p in main):  # a heavy one is drawn below, numbered here
+            items += _link_segments(mech, pos, mu_l, LineType.THIN)
+            items += _slot_segments(mech, slots, pos, mu_l, LineType.THIN)
         labels.append(LabelRequest(_sheet(pos[tip], mu_l), str(k), 2.5, "ne", markup=False,
                                    optional=True))
     for pos in extremes:
@@ -677,25 +684,30 @@ def positions_view(sol, cycle, lang: str = "ru", sizing: bool = False) -> View:
             continue
         items += _link_segments(mech, pos, mu_l, LineType.DASH_DOUBLE_DOT_THIN)
         items += _slot_segments(mech, slots, pos, mu_l, LineType.DASH_DOUBLE_DOT_THIN)
-    # the given position, heavy; centres of mass as small dots on their links
-    pos = sol.positions
-    items += _link_segments(mech, pos, mu_l, LineType.MAIN)
-    items += _slot_segments(mech, slots, pos, mu_l, LineType.MAIN)
-    for n in pos:
-        if n in mech.point_names() and _centre_of_mass(mech, n):
-            items.append(Circle(_sheet(pos[n], mu_l), 0.6, LineType.MAIN, fill="black"))
-    for s in mech.sliders:
-        if s.point in pos:
-            items.append(_block(_sheet(pos[s.point], mu_l), _guide_dir(mech, s, pos), LineType.MAIN))
+    # the heavy positions; centres of mass as small dots on their links; every heavy
+    # line before the joints, whose white rings would cut another position's links
+    for pos in main:
+        items += _link_segments(mech, pos, mu_l, LineType.MAIN)
+        items += _slot_segments(mech, slots, pos, mu_l, LineType.MAIN)
+    for pos in main:
+        for n in pos:
+            if n in mech.point_names() and _centre_of_mass(mech, n):
+                items.append(Circle(_sheet(pos[n], mu_l), 0.6, LineType.MAIN, fill="black"))
+        for s in mech.sliders:
+            if s.point in pos:
+                items.append(_block(_sheet(pos[s.point], mu_l), _guide_dir(mech, s, pos),
+                                    LineType.MAIN))
+    pos = main[0]  # the one lettered
     for name in mech.frame:
         items += _support(_sheet(pos[name], mu_l))
-    joints = set()
-    for link in mech.links.values():
-        for n in link.points:
-            if n in pos and len(mech.links_of(n)) > 1:
-                joints.add(n)
-    for n in sorted(joints):
-        items.append(Circle(_sheet(pos[n], mu_l), JOINT_R, LineType.MAIN, fill="white"))
+    for at in main:
+        joints = set()
+        for link in mech.links.values():
+            for n in link.points:
+                if n in at and len(mech.links_of(n)) > 1:
+                    joints.add(n)
+        for n in sorted(joints):
+            items.append(Circle(_sheet(at[n], mu_l), JOINT_R, LineType.MAIN, fill="white"))
     shared = _shared((_sheet(pos[n], mu_l), n) for n in mech.point_names() if n in pos)
     for xy, names in reversed(shared):
         # close to its point even among the other positions' lines, which break for it
@@ -726,6 +738,22 @@ def positions_view(sol, cycle, lang: str = "ru", sizing: bool = False) -> View:
                                   d=num(shown.limit, 2, lang))] if shown.left_off else []
     return _finish("positions", items, labels, caption, under, pad=8.0, over=over,
                    sizing=sizing)
+
+
+def _heavy_positions(sol, shown, heavy: list[int] | None) -> list[dict[str, complex]]:
+    """The positions drawn heavy: the cycle's positions numbered ``heavy`` (one drawn
+    once, in the order given), the given position where there are none (None: no
+    ``--plans``), or where every one of them is left off the drawing (a point runs far
+    out: :func:`plans.positions.drawn`), so that the points have a position to be
+    lettered on."""
+    if heavy is None:
+        return [sol.positions]
+    main: list[dict[str, complex]] = []
+    for k in heavy:
+        pos = shown.cycle[k]
+        if pos is not None and not any(pos is p for p in main):
+            main.append(pos)
+    return main or [sol.positions]
 
 
 def _stroke_dimension(items, p1, p2, direction: complex, value: str) -> list[Item]:
