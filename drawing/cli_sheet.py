@@ -469,7 +469,8 @@ def render(mech, args) -> tuple[str, str | None]:
         # the plans' titles as plain text ("φ_1" is φ1); none for the given position
         # alone ("g"), whose plans are the note's own sections
         titles = [("".join(r.text for r in parse_markup(label)), sol) for _, label, sol in sols]
-        # the structure and the plan of positions of the given position, drawn heavy
+        # the structure and μl from the given position; with --plans the plan of
+        # positions draws theirs heavy, and the note says so and gives their segments
         text = note(info["given"], args.lang, info["cycle"], titles if sols[0][0] != "g" else ())
     return to_svg(scene, sheet, title=mech.name_in(args.lang)), text
 

@@ -28,7 +28,9 @@ T = {
         "positions": "Plan of positions",
         "mul": "Scale factor of the plan of positions:",
         "seg": "Segments of the links on the drawing:",
-        "seg_given": "Segments of the links on the drawing, in the position given ({phi} = {deg}°, drawn in heavy lines):",
+        "heavy": "The position of the plans below ({title}) is drawn in heavy lines, the other positions in thin lines.",
+        "heavy_all": "The positions of the plans below ({title}) are drawn in heavy lines, the other positions in thin lines.",
+        "seg_first": "Segments of the links on the drawing, in the position of the plans below ({title}):",
         "seg_at": "Segments whose length changes with the position, in the position of the plans below ({title}):",
         "seg_same": "In the position of the plans below ({title}) the segments are as above.",
         "seg_same_all": "In the positions of the plans below ({title}) the segments are as above.",
@@ -76,7 +78,9 @@ T = {
         "positions": "План положений механизма",
         "mul": "Масштабный коэффициент плана положений:",
         "seg": "Длины отрезков, изображающих звенья на чертеже:",
-        "seg_given": "Длины отрезков, изображающих звенья на чертеже, в заданном положении ({phi} = {deg}°, выделено основными линиями):",
+        "heavy": "Положение, для которого ниже построены планы ({title}), выделено основными линиями, остальные положения — тонкими.",
+        "heavy_all": "Положения, для которых ниже построены планы ({title}), выделены основными линиями, остальные положения — тонкими.",
+        "seg_first": "Длины отрезков, изображающих звенья на чертеже, в положении, для которого ниже построены планы ({title}):",
         "seg_at": "Отрезки, длина которых меняется с положением, в положении, для которого ниже построены планы ({title}):",
         "seg_same": "В положении, для которого ниже построены планы ({title}), длины отрезков те же.",
         "seg_same_all": "В положениях, для которых ниже построены планы ({title}), длины отрезков те же.",
@@ -143,7 +147,9 @@ def note(sol: Solution, lang: str = "en", cycle=None,
     """The whole explanatory note, in Markdown: the structure and the plan of positions,
     then the velocity and acceleration plans of ``sol``'s crank position, or of each of
     ``plans`` instead ((title, solution): the positions a sheet draws plans for, at the
-    sheet's scale factors), each titled."""
+    sheet's scale factors), each titled. With ``plans``, the plan of positions is said to
+    draw theirs heavy (as the sheet does) and its segments are theirs; ``sol`` gives the
+    structure and μl."""
     t, u = T[lang], UNITS[lang]
 
     def n(x, d=4):
@@ -168,25 +174,26 @@ def note(sol: Solution, lang: str = "en", cycle=None,
     out += [f"## 2. {t['positions']}", "", t["mul"], ""]
     out.append(Step(f"μl = l_{d.pivot}{d.tip} / {d.pivot}{d.tip}", f"{n(d.length)} / {n(crank_mm)}",
                     n(mu_l), u["mu_l"]).markdown())
-    # with plans of other positions, the plan of positions draws the given one heavy, and
-    # each of theirs among the thin ones: the segments that change (BA3 of a slotted
-    # link) are given at each, as their plans' similarity steps use them
-    # as the crank's range is written where it runs through 0° (−99,7°, not 260,3°)
-    deg = angle(d.angle_deg, 6, lang, sol.solver.shown_from())
-    given = t["seg_given"].format(deg=deg, phi=d.phi_sym) if plans else t["seg"]
-    out += ["", given, ""]
+    # with plans of other positions, the plan of positions draws theirs heavy (not the
+    # given one): the segments are given at the first, and those that change (BA3 of a
+    # slotted link) at each of the others, as their plans' similarity steps use them
+    base, rest = (plans[0][1], plans[1:]) if plans else (sol, ())
+    if plans:
+        titles = "; ".join(title for title, _ in plans)
+        out += ["", t["heavy" if len(plans) == 1 else "heavy_all"].format(title=titles)]
+    out += ["", t["seg_first"].format(title=plans[0][0]) if plans else t["seg"], ""]
 
     def segment(k, v):
         return Step(f"{k} = l_{k} / μl", f"{n(v, 5)} / {n(mu_l)}", n(v / mu_l), u["mm"]).markdown()
 
-    for k, v in sol.lengths.items():
+    for k, v in base.lengths.items():
         if k == d.pivot + d.tip or v == 0:  # the crank is above; a point on another: no segment
             continue
         out.append(segment(k, v))
     same = []  # the positions whose segments are those above: said once, all together
-    for title, s in plans:
+    for title, s in rest:
         changed = [(k, v) for k, v in s.lengths.items() if k != d.pivot + d.tip and v != 0
-                   and not math.isclose(v, sol.lengths.get(k, math.nan), rel_tol=1e-9)]
+                   and not math.isclose(v, base.lengths.get(k, math.nan), rel_tol=1e-9)]
         if not changed:
             same.append(title)
             continue

@@ -650,23 +650,44 @@ def test_the_stroke_stands_beside_its_extension_lines_when_it_has_no_room_betwee
     assert thin and not any(h.intersects(ln) for ln in thin)
 
 
-def test_the_notes_plan_of_positions_is_the_given_position_whatever_the_plans(tmp_path):
-    """With --plans 1,4 the note's section 2 described position 1 (BA3 = 48,91 mm) while
-    the sheet draws the file's own position heavy (BA3 = 57,48 mm)."""
+def test_the_notes_plan_of_positions_is_the_heavy_one(tmp_path):
+    """The note's section 2 describes the position the sheet draws heavy. With --plans 1,4
+    that is positions 1 and 4 (BA3 = 48,91 mm at 1), no longer the file's own position
+    (BA3 = 57,48 mm), which the sheet then leaves out; and the note says which are heavy."""
     from plans.cli import main
 
     md = tmp_path / "p.md"
     assert main(["sheet", str(ROOT / "samples" / "press.toml"), "--plans", "1,4", "-o",
                  str(tmp_path / "p.svg"), "--note", str(md)]) == 0
     section2 = md.read_text("utf-8").split("## 2.")[1].split("## 3.")[0]
+    assert "57,48" not in section2 and "заданном" not in section2
+    assert ("Положения, для которых ниже построены планы (положение 1, φ1 = 79,93°; положение 4, "
+            "φ1 = 349,9°), выделены основными линиями, остальные положения — тонкими.") in section2
+    first = section2.split("в положении, для которого ниже построены планы (положение 1, "
+                           "φ1 = 79,93°):")[1]
+    assert "- `BA3 = l_BA3 / μl = 0,48906 / 0,01 = 48,91 мм`" in first.split("(положение 4,")[0]
+    # in English, one position: the same, in the singular
+    assert main(["sheet", str(ROOT / "samples" / "press.toml"), "--plans", "4", "--lang", "en",
+                 "-o", str(tmp_path / "p.svg"), "--note", str(md)]) == 0
+    section2 = md.read_text("utf-8").split("## 2.")[1].split("## 3.")[0]
+    assert ("The position of the plans below (position 4, φ1 = 349.9°) is drawn in heavy lines, "
+            "the other positions in thin lines.") in section2
+    assert "- `BA3 = l_BA3 / μl = 0.58827 / 0.01 = 58.83 mm`" in section2
+    assert "given" not in section2 and "57.48" not in section2
+    # without --plans the given position is the heavy one, its plans the note's own
+    assert main(["sheet", str(ROOT / "samples" / "press.toml"), "-o", str(tmp_path / "p.svg"),
+                 "--note", str(md)]) == 0
+    section2 = md.read_text("utf-8").split("## 2.")[1].split("## 3.")[0]
     assert "- `BA3 = l_BA3 / μl = 0,57482 / 0,01 = 57,48 мм`" in section2
+    assert "основными" not in section2
 
 
 def test_the_notes_plan_of_positions_gives_the_segments_of_each_position_drawn(tmp_path):
     """With --plans 1,4 section 2 gave BA3 only at the file's own angle (57,48 mm), and
     the plans of positions 1 and 4 then divided by their own BA3 (48,906 and 58,827 mm)
     that the note never gave. Section 2 now says which position its segments are of (the
-    given one, drawn heavy) and gives those that change at each position drawn with plans."""
+    first position of the plans, drawn heavy with the others) and gives those that change
+    at each of the others."""
     from plans.cli import main
 
     md = tmp_path / "p.md"
@@ -674,11 +695,12 @@ def test_the_notes_plan_of_positions_gives_the_segments_of_each_position_drawn(t
                  str(tmp_path / "p.svg"), "--note", str(md)]) == 0
     text = md.read_text("utf-8")
     section2 = text.split("## 2.")[1].split("## 3.")[0]
-    assert "в заданном положении (φ1 = 30°, выделено основными линиями):" in section2
-    at = section2.split("построены планы (положение ")[1:]
+    at = section2.split("Длины отрезков, изображающих звенья на чертеже, ")[1].split(
+        "построены планы (положение ")[1:]
     assert [a.split(",")[0] for a in at] == ["1", "4"]
     assert "- `BA3 = l_BA3 / μl = 0,48906 / 0,01 = 48,91 мм`" in at[0]
     assert "- `BA3 = l_BA3 / μl = 0,58827 / 0,01 = 58,83 мм`" in at[1]
+    assert at[1].startswith("4, φ1 = 349,9°):")  # changes from position 1's
     assert "BC / BA3 = 27,839·75 / 48,906 = " in text.split("## 3.")[1].split("## 4.")[0]
     assert "BC / BA3 = 59,485·75 / 58,827 = " in text.split("## 5.")[1].split("## 6.")[0]
 
@@ -1243,14 +1265,16 @@ def test_points_found_by_similarity_lie_on_the_links_image_drawn(kind):
 def test_positions_whose_segments_are_the_given_ones_are_named_in_one_sentence(tmp_path):
     """A crank-slider's segments do not change with the position: with --plans 1,4 the
     note said twice over «В положении, для которого ниже построены планы (…), длины
-    отрезков те же», once per position; it now says it once, of both."""
+    отрезков те же», once per position; it now says it once, of both. (The segments are
+    given at the first position of the plans, drawn heavy with the others: with --plans
+    1,4,7 the sentence names 4 and 7.)"""
     from plans.cli import main
 
     md = tmp_path / "v2.md"
     assert main(["sheet", "--variant", "2", "-o", str(tmp_path / "v2.svg"), "--note", str(md),
-                 "--plans", "1,4"]) == 0
+                 "--plans", "1,4,7"]) == 0
     section2 = md.read_text("utf-8").split("## 2.")[1].split("## 3.")[0]
     assert "длины отрезков те же" in section2
     assert [ln for ln in section2.splitlines() if "те же" in ln] == [
-        "В положениях, для которых ниже построены планы (положение 1, φ1 = 210°; "
-        "положение 4, φ1 = 300°), длины отрезков те же."]
+        "В положениях, для которых ниже построены планы (положение 4, φ1 = 300°; "
+        "положение 7, φ1 = 30°), длины отрезков те же."]
