@@ -1278,3 +1278,106 @@ def test_positions_whose_segments_are_the_given_ones_are_named_in_one_sentence(t
     assert [ln for ln in section2.splitlines() if "те же" in ln] == [
         "В положениях, для которых ниже построены планы (положение 4, φ1 = 300°; "
         "положение 7, φ1 = 30°), длины отрезков те же."]
+
+
+def _positions_drawn(key, plans=None, fmt="A1", lang="ru"):
+    """(mech, info, heavy line ends, joints, blocks' centres, (text, its box's centre)) of
+    a sheet's plan of positions, every point in the world's sheet mm (views._sheet at the
+    sheet's μl): the view's own offset is read off the first fixed pivot's support."""
+    from drawing import views as V
+    from drawing.scene import Circle, Polyline, Segment, flatten
+    from drawing.styles import LineType
+
+    mech, _, _, info, _ = _sheet(key, fmt, lang, plans)
+    view = next(p.view for p in info["placed"] if p.view.name == "positions")
+    items = flatten(view.items)
+    mu_l = info["given"].mu_l
+    apex = next(it.points[0] for it in items if isinstance(it, Polyline) and it.closed
+                and len(it.points) == 3 and it.line is LineType.MAIN)
+    pivot = V._sheet(next(iter(mech.frame.values())), mu_l)
+    dx, dy = apex[0] - pivot[0], apex[1] - pivot[1]
+
+    def back(p):
+        return (p[0] - dx, p[1] - dy)
+
+    ends = [back(p) for it in items if isinstance(it, Segment) and it.line is LineType.MAIN
+            for p in (it.p1, it.p2)]
+    joints = [back(it.center) for it in items if isinstance(it, Circle) and it.r == V.JOINT_R]
+    blocks = [back((sum(x for x, _ in it.points) / 4, sum(y for _, y in it.points) / 4))
+              for it in items if isinstance(it, Polyline) and it.closed and len(it.points) == 4
+              and it.line is LineType.MAIN]
+    texts = [(it.text, back(((b[0] + b[2]) / 2, (b[1] + b[3]) / 2)))
+             for it in items if isinstance(it, Text) for b in [text_box(it).bounds]]
+    return mech, info, ends, joints, blocks, texts
+
+
+def _at(xy, pos, mu_l, names=None, tol=1e-6) -> bool:
+    """``xy`` (sheet mm) is a point of the position ``pos``."""
+    from drawing import views as V
+
+    return any(math.dist(xy, V._sheet(pos[n], mu_l)) < tol for n in (names or pos))
+
+
+@pytest.mark.parametrize("key", [3, 2])
+def test_the_positions_of_the_plans_are_drawn_heavy_not_the_given_one(key):
+    """With --plans 1,4 the plan of positions drew the file's own position in main lines
+    and positions 1 and 4 thin like the others; the ТММ convention draws heavy the
+    positions the plans are built for. Now every heavy line, joint and slider block is at
+    position 1 or 4 (each of them has its own), none at the given position, whose points
+    the letters no longer stand by; the numbers 1 and 4 stay."""
+    mech, info, ends, joints, blocks, texts = _positions_drawn(key, (1, 4))
+    mu_l = info["given"].mu_l
+    at = {sol_tag: sol.positions for sol_tag, _, sol in info["solutions"]}
+    assert set(at) == {"1", "4"}
+    given = info["given"].positions
+    tip = mech.driver.tip
+    moving = [n for n in given if n not in mech.frame and abs(given[n] - at["1"][n]) > 1e-3
+              and abs(given[n] - at["4"][n]) > 1e-3]
+    assert tip in moving  # the given position is apart from both
+    assert ends and all(_at(e, at["1"], mu_l) or _at(e, at["4"], mu_l) for e in ends)
+    for k in ("1", "4"):
+        assert any(_at(e, at[k], mu_l, [tip]) for e in ends)
+        assert any(_at(j, at[k], mu_l, [tip]) for j in joints)
+    assert not any(_at(p, given, mu_l, moving, tol=0.5) for p in ends + joints + blocks)
+    assert all(_at(j, at["1"], mu_l) or _at(j, at["4"], mu_l) for j in joints)
+    if mech.sliders:  # a crank-slider: a block at each heavy position, at its slider
+        (s,) = mech.sliders
+        assert len(blocks) == 2
+        assert all(any(_at(b, at[k], mu_l, [s.point]) for b in blocks) for k in ("1", "4"))
+    # the points are lettered once, on position 1: the tip's letter by its tip there
+    from drawing import views as V
+
+    (centre,) = (c for t, c in texts if t == tip)
+    assert math.dist(centre, V._sheet(at["1"][tip], mu_l)) < 10.0
+    assert math.dist(centre, V._sheet(given[tip], mu_l)) > 10.0
+    assert {"1", "4"} <= {t for t, _ in texts if re.fullmatch(r"\d+", t)}
+
+
+@pytest.mark.parametrize("key", [3, 2, "press"])
+def test_without_plans_the_given_position_is_the_heavy_one(key):
+    """The plans are the given position's own: its links, joints and blocks are the heavy
+    ones, and no cycle position's apart from it."""
+    mech, info, ends, joints, blocks, _ = _positions_drawn(key)
+    mu_l = info["given"].mu_l
+    given = info["given"].positions
+    assert ends and all(_at(e, given, mu_l) for e in ends)
+    assert joints and all(_at(j, given, mu_l) for j in joints)
+    assert len(blocks) == len(mech.sliders)
+    assert all(_at(b, given, mu_l, [s.point for s in mech.sliders]) for b in blocks)
+
+
+@pytest.mark.parametrize("key,fmt,lang", [(3, "A2", "en"), (2, "A2", "ru"), (2, "A1", "en")])
+def test_the_heavy_positions_letters_and_numbers_do_not_overlap(key, fmt, lang):
+    """Two heavy positions, numbered and lettered: no text meets another, and the numbers
+    keep labels.GAP from the letters (the tip's own too, which read '¹B')."""
+    from drawing.labels import GAP
+    from drawing.scene import flatten
+
+    mech, scene, *_ = _sheet(key, fmt, lang, (1, 4))
+    assert overlaps([it for it in scene.items() if isinstance(it, Text)]) == []
+    view = next(g for g in scene.layer("views").items if g.name == "view positions")
+    texts = [t for t in flatten([view]) if isinstance(t, Text)]
+    numbers = [text_box(t) for t in texts if re.fullmatch(r"\d+", t.text)]
+    letters = [text_box(t) for t in texts if re.fullmatch(r"[A-Z][A-Za-z0-9_{}]*", t.text)]
+    assert len(numbers) >= 6 and len(letters) >= 3
+    assert min(n.distance(b) for n in numbers for b in letters) >= GAP - 1e-9
