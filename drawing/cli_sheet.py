@@ -56,8 +56,9 @@ def configure(p) -> None:
     p.add_argument("--positions", type=number(*POSITIONS, integer=True), default=12, metavar="N",
                    help="crank positions on the plan of positions (default 12)")
     p.add_argument("--plans", metavar="1,4",
-                   help="position numbers (from an extreme position) to draw the plans for; "
-                        "default: the position given in the file")
+                   help="position numbers (from an extreme position) to draw the plans for, "
+                        "drawn heavy on the plan of positions; default: the position given "
+                        "in the file")
     p.add_argument("--title-block", nargs="*", default=[], metavar="KEY=VALUE",
                    help="title-block fields: " + ", ".join(sorted(FIELDS)))
     p.add_argument("--note", metavar="NOTE.md",
