@@ -159,9 +159,11 @@ def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
     mu0 = {"mu_l": mech.scales.get("mu_l") or choose_mu_l(fixed.shown.extent)}
     try:
         given = solve_position(mech, solver=solver, mu=mu0)
-    except SingularPlanError as exc:  # the given position is drawn whatever --plans asks
-        raise SingularPlanError(f"{exc} (the sheet draws the given position: choose another "
-                                "with --angle)", sine=exc.sine, source=exc.source) from None
+    except SingularPlanError as exc:  # its structure, μl and title block's scale are read off it
+        why = ("the sheet draws the given position" if chosen is None else
+               "the sheet solves the given position for its scale even with --plans")
+        raise SingularPlanError(f"{exc} ({why}: choose another with --angle)",
+                                sine=exc.sine, source=exc.source) from None
     sheet_ = _Sheet1(mech, sheet, solver, cycle, chosen, lang, fixed, given, mu0)
     mu, placed = sheet_.fill()  # every μ: the file's and those chosen
     return _compose(mech, sheet, cycle, mu, lang, title, placed, sheet_.titled(mu))

@@ -524,6 +524,10 @@ def test_a_cycle_from_a_change_point_starts_with_a_singular_row(capsys, tmp_path
         "folded): a singular position, the plan has no unique solution"]
     code, out, err = run(capsys, "sheet", path, "--plans", "1", "-o", tmp_path / "s.svg")
     assert code == 2 and not (tmp_path / "s.svg").exists()
+    assert err.strip().endswith("(the sheet solves the given position for its scale even with "
+                                "--plans: choose another with --angle)")
+    code, out, err = run(capsys, "sheet", path, "-o", tmp_path / "s.svg")
+    assert code == 2 and not (tmp_path / "s.svg").exists()
     assert err.strip().endswith("(the sheet draws the given position: choose another with --angle)")
     code, out, err = run(capsys, "sheet", path, "--angle", "30", "-o", tmp_path / "s.svg")
     assert code == 0, err
