@@ -619,10 +619,15 @@ def test_the_sheets_note_states_the_sheets_scales_for_each_plan(capsys, tmp_path
 def test_position_numbers_keep_clear_of_the_letters(key):
     """'11' beside 'O' read as '110', and 'B10', 'A7': a position's number now keeps
     labels.GAP from every letter on the plan of positions."""
+    _, scene, *_ = _sheet(key)
+    _numbers_keep_clear_of_letters(scene)
+
+
+def _numbers_keep_clear_of_letters(scene):
+    """The positions' numbers on the plan of positions keep labels.GAP from its letters."""
     from drawing.labels import GAP, text_box
     from drawing.scene import flatten
 
-    _, scene, *_ = _sheet(key)
     view = next(g for g in scene.layer("views").items if g.name == "view positions")
     texts = [t for t in flatten([view]) if isinstance(t, Text)]
     numbers = [text_box(t) for t in texts if re.fullmatch(r"\d+", t.text)]
@@ -1370,14 +1375,6 @@ def test_without_plans_the_given_position_is_the_heavy_one(key):
 def test_the_heavy_positions_letters_and_numbers_do_not_overlap(key, fmt, lang):
     """Two heavy positions, numbered and lettered: no text meets another, and the numbers
     keep labels.GAP from the letters (the tip's own too, which read '¹B')."""
-    from drawing.labels import GAP
-    from drawing.scene import flatten
-
     mech, scene, *_ = _sheet(key, fmt, lang, (1, 4))
     assert overlaps([it for it in scene.items() if isinstance(it, Text)]) == []
-    view = next(g for g in scene.layer("views").items if g.name == "view positions")
-    texts = [t for t in flatten([view]) if isinstance(t, Text)]
-    numbers = [text_box(t) for t in texts if re.fullmatch(r"\d+", t.text)]
-    letters = [text_box(t) for t in texts if re.fullmatch(r"[A-Z][A-Za-z0-9_{}]*", t.text)]
-    assert len(numbers) >= 6 and len(letters) >= 3
-    assert min(n.distance(b) for n in numbers for b in letters) >= GAP - 1e-9
+    _numbers_keep_clear_of_letters(scene)
