@@ -563,6 +563,10 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
             continue
         hints[k] = hint
         unused -= set(_hint_refs(hint, all_points))
+    # a fixed point named as the output is refused as such below (no stroke), with the
+    # outputs the mechanism has, rather than as a stray point to remove
+    if isinstance(data.get("output"), str):
+        unused.discard(data["output"])
     for nm in sorted(unused):
         pr.add(f"frame.{nm}", f'"{nm}" is on no link: a fixed pivot is a joint, named on the '
                "link hinged there as well; name it on its link, or remove it")
