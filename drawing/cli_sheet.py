@@ -133,6 +133,9 @@ def _parse_plans(text: str | None, n: int) -> list[int] | None:
     bad = [k for k in nums if not 0 <= k < n]
     if bad or not nums:
         raise InputError("--plans", f"position numbers run from 0 to {n - 1}, got {text!r}")
+    if twice := sorted({k for k in nums if nums.count(k) > 1}):
+        raise InputError("--plans", f"position {', '.join(map(str, twice))} given twice in "
+                         f"{text!r}: each position's plans are drawn once")
     return nums
 
 
