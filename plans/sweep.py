@@ -45,7 +45,7 @@ class Sweep:
     intersect: the conditioning figure. A slotted link (RPR) has a second figure,
     :attr:`pivot`. Where ``valid`` is False a group does not close: every moving point's
     position, velocity and acceleration, every turning link's ω and ε and every figure
-    is NaN there. On a dead point or a change point itself (a parallelogram at φ = 0),
+    is NaN there. On a change point itself (a parallelogram at φ = 0),
     where a group's links lie in line, rounding may put the group just out of reach
     (within about 1e-9 rad of it): not valid either, though the recorded
     :meth:`plans.kinematics.Solver.solve` and ``plans cycle`` give the positions there.

@@ -1267,7 +1267,7 @@ def test_points_found_by_similarity_lie_on_the_links_image_drawn(kind):
     assert any(all(line.distance(p) < 1e-6 for p in on) for line in thin)
 
 
-def test_positions_whose_segments_are_the_given_ones_are_named_in_one_sentence(tmp_path):
+def test_positions_whose_segments_are_those_above_are_named_in_one_sentence(tmp_path):
     """A crank-slider's segments do not change with the position: with --plans 1,4 the
     note said twice over «В положении, для которого ниже построены планы (…), длины
     отрезков те же», once per position; it now says it once, of both. (The segments are
