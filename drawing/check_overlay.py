@@ -67,6 +67,7 @@ WORDS = {
         "ok": "All measured segments within tolerance ({tol}).",
         "bad": "Beyond tolerance ({tol}): {names}.",
         "none": "Diagnosis: no single mistake explains this.",
+        "slips": "Diagnosis: the plans are right; the items beyond tolerance are slips in measuring or writing down:",
         "diag": "Diagnosis: {what}.",
         "fix": "Correction: {fix}.",
         "title": "Check of a hand-drawn plan: {src}",
@@ -82,6 +83,7 @@ WORDS = {
         "ok": "Все измеренные отрезки в допуске ({tol}).",
         "bad": "Вне допуска ({tol}): {names}.",
         "none": "Диагноз: ни одна отдельная ошибка этого не объясняет.",
+        "slips": "Диагноз: планы построены верно; отклонения — ошибки измерения или записи отдельных величин:",
         "diag": "Диагноз: {what}.",
         "fix": "Исправление: {fix}.",
         "title": "Проверка плана, построенного вручную: {src}",
@@ -451,7 +453,9 @@ def _footer(result: CheckResult, lang: str, width: float) -> list[tuple[list[str
         texts = [(w["bad"].format(tol=tol, names=", ".join(d.item.name for d in result.failed)),
                   RED)]
         diag = result.diagnosis
-        if diag.best is None:
+        if result.slips_only:
+            texts.append((w["slips"], BLACK))
+        elif diag.best is None:
             texts.append((w["none"], BLACK))
         else:
             texts.append((w["diag"].format(what=diag.best.mistake.describe(lang)), BLACK))

@@ -141,6 +141,15 @@ class CheckResult:
     def failed(self) -> tuple[Deviation, ...]:
         return tuple(d for d in self.deviations if not d.ok)
 
+    @property
+    def slips_only(self) -> bool:
+        """No mistake of construction is named, and every item beyond tolerance matches
+        something else (:class:`Lookalike`): the plans are right, the slips are in the
+        items (two swapped, one measured from the wrong point, one written in m/s)."""
+        failed = {d.item.name for d in self.failed}
+        return (self.diagnosis.best is None and bool(failed)
+                and failed <= {lk.item for lk in self.diagnosis.lookalikes})
+
 
 def check(meas: Measurement, tol: Tolerance | None = None, *, diagnose_: bool = True) -> CheckResult:
     """Compare every measured item with the exact plans; diagnose what is beyond tolerance."""

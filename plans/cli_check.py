@@ -97,6 +97,8 @@ WORDS = {
         "some": "Overall: {k} of {n} {items} beyond tolerance: {names}.",
         "diag": "Diagnosis",
         "none": "no single mistake explains this.",
+        "slips": "the plans are right; the items beyond tolerance are slips in measuring or writing down:",
+        "less": "or, less closely: {what}",
         "closest": "closest: {what}; it explains {ex} but not {un}",
         "explains": "explains",
         "all_of": "{all} beyond tolerance",
@@ -131,6 +133,8 @@ WORDS = {
         "some": "Итог: {k} из {n} вне допуска: {names}.",
         "diag": "Диагноз",
         "none": "ни одна отдельная ошибка этого не объясняет.",
+        "slips": "планы построены верно; отклонения — ошибки измерения или записи отдельных величин:",
+        "less": "или, с меньшей точностью: {what}",
         "closest": "ближе всего: {what}; объясняет {ex}, но не {un}",
         "explains": "объясняет",
         "all_of": "{all} вне допуска",
@@ -269,6 +273,13 @@ def diagnosis_lines(result, lang: str = "en") -> list[str]:
     w = WORDS[lang]
     diag = result.diagnosis
     k = len(result.failed)
+    if result.slips_only:
+        # the look-alikes explain every item beyond tolerance: no "no single mistake"
+        # above them, nor a mistake that explains only some of them
+        c = diag.closest
+        more = ([f"  {w['less'].format(what=c.mistake.describe(lang))}"]
+                if c is not None and not c.unexplained else [])
+        return [f"{w['diag']}: {w['slips']}", *lookalike_lines(result, lang), *more]
     if diag.best is None:
         lines = [f"{w['diag']}: {w['none']}"]
         c = diag.closest
@@ -374,6 +385,7 @@ def to_json(result, lang: str = "en") -> dict:
         "failed": [d.item.name for d in result.failed],
         "diagnosis": None if result.ok else {
             "explained": diag.best is not None,
+            "slips_only": result.slips_only,
             "best": _finding(diag.best, lang),
             "alternatives": [_finding(f, lang) for f in diag.alternatives],
             "closest": _finding(diag.closest, lang),

@@ -1323,3 +1323,42 @@ def test_a_check_at_an_angle_outside_the_crank_range_gives_the_range(capsys, tmp
     assert err == (f"plans check: {meas}: line 2: angle_deg: 150° is outside the crank's "
                    "range, φ1 from −99.72° to 99.72°: group 2–3 (RRR) cannot be assembled at "
                    "φ1 = 150°: needs BD within [0.05, 0.25] m, misses by 0.059789 m\n")
+
+
+def test_slips_that_explain_everything_are_not_under_no_single_mistake(tmp_path, capsys):
+    """A four-bar (variant 1) with pc and pe swapped, all else exact: the text said
+    "Diagnosis: no single mistake explains this.", then "closest: e laid off from the
+    wrong end of bc; it explains pe but not pc", and only then "are pc and pe swapped?",
+    which explains both. A teacher read a verdict that the next lines contradict. When
+    the items' own look-alikes explain every item beyond tolerance, the diagnosis says the
+    plans are right and lists the slips, with no mistake of construction that explains
+    only some of them; the JSON says so too, and the picture's footer."""
+    from drawing.check_overlay import overlay
+
+    mu = {"mu_l": 0.0025, "mu_v": 0.01, "mu_a": 0.2}
+    head = "variant = 1\n[scales]\n" + "".join(f"{k} = {v}\n" for k, v in mu.items())
+    path = tmp_path / "v1.toml"
+    path.write_text(head + "[segments]\npb = 70\n", encoding="utf-8")
+    sol = ck.load(path).solution
+    exact = ck.simulate(sol, None)
+    segs = {it.name: ck.expected(it, exact, mu) for it in plan_segments(sol)}
+    segs["pc"], segs["pe"] = segs["pe"], segs["pc"]
+    path.write_text(head + "[segments]\n" + "".join(f"{ascii_name(k)} = {v:.2f}\n"
+                                                    for k, v in segs.items()), encoding="utf-8")
+    res = ck.check(ck.load(path))
+    assert res.diagnosis.best is None and res.slips_only
+    code, out, _ = run(capsys, "check", path)
+    assert code == 1
+    assert out.endswith("Diagnosis: the plans are right; the items beyond tolerance are slips in "
+                        "measuring or writing down:\n"
+                        f"  pc = {segs['pc']:.4g} mm is the length of pe ({segs['pc']:.4g} mm): "
+                        "are pc and pe swapped?\n"
+                        f"  pe = {segs['pe']:.4g} mm is the length of pc ({segs['pe']:.4g} mm): "
+                        "are pe and pc swapped?\n")
+    code, out, _ = run(capsys, "check", path, "--lang", "ru")
+    assert "Диагноз: планы построены верно; отклонения — ошибки измерения или записи" in out
+    assert "ни одна" not in out and "ближе всего" not in out
+    code, out, _ = run(capsys, "check", path, "--json")
+    assert json.loads(out)["diagnosis"]["slips_only"] is True
+    footer = " ".join(t for t, _, role in overlay(res, "ru").texts if role == "footer")
+    assert "Диагноз: планы построены верно" in footer and "ни одна" not in footer
