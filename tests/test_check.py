@@ -1362,3 +1362,29 @@ def test_slips_that_explain_everything_are_not_under_no_single_mistake(tmp_path,
     assert json.loads(out)["diagnosis"]["slips_only"] is True
     footer = " ".join(t for t, _, role in overlay(res, "ru").texts if role == "footer")
     assert "Диагноз: планы построены верно" in footer and "ни одна" not in footer
+
+
+def test_a_segment_measured_from_the_wrong_point_beats_a_loose_mistake(tmp_path, capsys):
+    """Variant 9 with ps2 measured from b (bs2 = 62.34 mm), all else exact: the check
+    said "s2 found with the ratio meant for e", whose ps2 is |pe| = 65.05 mm, 4 % off
+    but within tolerance, while bs2 matches to 0.04 mm. The closer slip is named, the
+    mistake kept as the less close reading."""
+    mu = {"mu_l": 0.004, "mu_v": 0.02, "mu_a": 0.5}
+    head = "variant = 9\n[scales]\n" + "".join(f"{k} = {v}\n" for k, v in mu.items())
+    path = tmp_path / "v9.toml"
+    path.write_text(head + "[segments]\npb = 68\n", encoding="utf-8")
+    sol = ck.load(path).solution
+    exact = ck.simulate(sol, None)
+    segs = {it.name: ck.expected(it, exact, mu) for it in plan_segments(sol)}
+    v = exact.values("velocity")
+    segs["ps2"] = abs(v["s2"] - v["b"]) / mu["mu_v"]
+    path.write_text(head + "[segments]\n" + "".join(f"{ascii_name(k)} = {x:.2f}\n"
+                                                    for k, x in segs.items()), encoding="utf-8")
+    res = ck.check(ck.load(path))
+    assert res.diagnosis.best is None
+    assert [(lk.item, lk.kind, lk.other) for lk in res.diagnosis.lookalikes] == [("ps2", "segment", "bs2")]
+    assert res.diagnosis.closest.mistake.kind == "similarity-ratio"
+    code, out, _ = run(capsys, "check", path)
+    assert code == 1
+    assert "  ps2 = 62.34 mm is the length of bs2 (62.34 mm): measured from the wrong point?\n" \
+           "  or, less closely: s2 on the velocity plan found with the ratio meant for e\n" in out
