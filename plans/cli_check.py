@@ -143,7 +143,7 @@ WORDS = {
         "also": "столь же хорошо объясняет",
         "hint": ' (их различает направление ω{link}: укажите его в [values], например omega{link} = "4,8 против ч.с.")',
         "warning": "предупреждение",
-        "like_segment": "{item} = {m} мм — это длина {other} ({exact} мм): отрезок отложен не от той точки?",
+        "like_segment": "{item} = {m} мм — это длина {other} ({exact} мм): отрезок измерен не от той точки?",
         "like_swapped": "{item} = {m} мм — это длина {other} ({exact} мм): {item} и {other} перепутаны?",
         "like_value": "{item} = {m} — это {other} в {unit} ({exact}): отрезок равен {other}/{mu}, в мм",
         "like_length": "{item} = {m} — это длина {other} в мм ({exact} мм): величина равна {other}·{mu}, в {unit}",

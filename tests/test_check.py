@@ -1388,3 +1388,15 @@ def test_a_segment_measured_from_the_wrong_point_beats_a_loose_mistake(tmp_path,
     assert code == 1
     assert "  ps2 = 62.34 mm is the length of bs2 (62.34 mm): measured from the wrong point?\n" \
            "  or, less closely: s2 on the velocity plan found with the ratio meant for e\n" in out
+
+
+def test_the_russian_wrong_point_says_measured_not_laid_off(tmp_path, capsys, press):
+    """"pc = … мм — это длина ac": the English asks "measured from the wrong point?", the
+    Russian asked "отрезок отложен не от той точки?" (laid off, a step of construction),
+    which sends the student to redraw a plan that is right. It is the measurement."""
+    seg = {k: v for k, v in press.segments.items() if k in ("pa3", "aa3", "pc", "cd", "pd")}
+    seg["pc"] = abs(press.velocity.value("c") - press.velocity.value("a")) / press.mu_v
+    path = write_meas(tmp_path / "m.toml", PRESS, seg, MU_PRESS)
+    code, out, _ = run(capsys, "check", path, "--lang", "ru")
+    assert code == 1 and "— это длина ac (" in out
+    assert "): отрезок измерен не от той точки?" in out and "отложен не от той" not in out
