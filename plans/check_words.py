@@ -99,6 +99,21 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
         return (f"the normal acceleration {mk.target} is missing",
                 f"lay off {mk.target} = V_{X}{Y}²/l_{X}{Y} (∥ {X}{Y}, from {X} to {Y}) and draw the "
                 f"line of the tangential acceleration ⊥ {X}{Y} through its end")
+    if k == "normal-length":
+        from .fmt import num
+
+        X, Y = g("X"), g("Y")
+        own = num(float(g("own")), 4, lang)
+        unit = "м" if ru else "m"
+        if ru:
+            return (f"нормальное ускорение {mk.target} вычислено по длине l_{g('wrong')} "
+                    f"вместо l_{X}{Y}",
+                    f"{mk.target} = V²_{X}{Y}/l_{X}{Y}, где l_{X}{Y} = {own} {unit}: длина звена "
+                    f"{X}{Y}, а не l_{g('wrong')}")
+        return (f"the normal acceleration {mk.target} computed with l_{g('wrong')} instead of "
+                f"l_{X}{Y}",
+                f"{mk.target} = V_{X}{Y}²/l_{X}{Y} with l_{X}{Y} = {own} {unit}, the length of "
+                f"{X}{Y}, not l_{g('wrong')}")
     if k == "omega-sense":
         if ru:
             extra = (f"; вектор Кориолиса {g('coriolis')} тогда поворачивается не в ту сторону"

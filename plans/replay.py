@@ -64,7 +64,7 @@ class Mistake:
     """One common mistake, located: which term, line, point, group or plan.
 
     kind: coriolis-reversed, coriolis-omitted, coriolis-half, term-scale,
-    normal-reversed, normal-omitted, omega-sense, crank-sense, value-sense, line-swapped,
+    normal-reversed, normal-omitted, normal-length, omega-sense, crank-sense, value-sense, line-swapped,
     branch, scale, scale-swapped, similarity-ratio, similarity-mirrored.
     """
 
@@ -88,7 +88,7 @@ class Mistake:
     def family(self) -> str:
         return {"coriolis-reversed": "coriolis", "coriolis-omitted": "coriolis",
                 "coriolis-half": "coriolis", "normal-reversed": "normal",
-                "normal-omitted": "normal", "omega-sense": "omega",
+                "normal-omitted": "normal", "normal-length": "normal", "omega-sense": "omega",
                 "crank-sense": "omega", "value-sense": "sense",
                 "line-swapped": "line", "branch": "branch", "scale": "scale",
                 "scale-swapped": "scale", "term-scale": "scale",
@@ -273,7 +273,8 @@ class _Replayer:
             val = 2j * omega[self.guide_link(t)] * dv
         if mk.target == t.label and mk.kind in ("coriolis-reversed", "coriolis-omitted",
                                                   "coriolis-half", "normal-reversed",
-                                                  "normal-omitted", "term-scale"):
+                                                  "normal-omitted", "normal-length",
+                                                  "term-scale"):
             val = val * mk.factor
         return complex(val)
 
@@ -380,6 +381,49 @@ def hypotheses(sol: Solution, plans: set[str] | None = None) -> list[Mistake]:
         for f in (10.0, 0.1):
             out.append(Mistake("term-scale", "acceleration", t.label, f))
     out += _similarity_mistakes(sol)
+    out += _normal_length_mistakes(sol, nor)
+    return out
+
+
+def _normal_length_mistakes(sol: Solution, nor) -> list[Mistake]:
+    """a^n of a link computed with another length of the mechanism: a^n_XY = ω²·l or V²/l
+    with l the distance of two points of one link or of the frame, so the term is l'/l or
+    l/l' times its own. The points are the joints and a link's end points (a coupler's
+    E), not a point between two others of its link (a centre of mass mid-link: l_BS2 is
+    no length a student takes for l_CD). Only ratios 10 % or more off 1 (less stays in
+    the tolerance) and not near 10 or 0.1 (the term drawn 10 times off is its own
+    mistake); a ratio two lengths share is tried once, the first pair named."""
+    mech = sol.mechanism
+    pos = sol.positions
+
+    def inner(p: str, names: list[str]) -> bool:  # between two other points of the link
+        return any(abs(abs(pos[a] - pos[p]) + abs(pos[p] - pos[b]) - abs(pos[a] - pos[b]))
+                   <= 1e-9 * abs(pos[a] - pos[b])
+                   for i, a in enumerate(names) for b in names[i + 1:] if p not in (a, b))
+
+    lengths: dict[tuple[str, str], float] = {}
+    for names in [list(mech.frame), *(list(link.points) for link in mech.links.values())]:
+        names = [n for n in names if n in pos]
+        keep = [n for n in names if len(mech.links_of(n)) > 1 or not inner(n, names)]
+        for i, a in enumerate(keep):
+            for b in keep[i + 1:]:
+                if abs(pos[a] - pos[b]) > 1e-12:
+                    lengths.setdefault((a, b), abs(pos[a] - pos[b]))
+    out = []
+    for t in nor:
+        X, Y = t.about
+        own = abs(pos[X] - pos[Y])
+        seen: list[float] = []
+        for (a, b), length in lengths.items():
+            if {a, b} == {X, Y}:
+                continue
+            for f, how in ((length / own, "omega"), (own / length, "speed")):
+                if abs(f - 1) < 0.1 or any(abs(f / g - 1) < 0.05 for g in (10.0, 0.1, *seen)):
+                    continue
+                seen.append(f)
+                out.append(Mistake("normal-length", "acceleration", t.label, f,
+                                   info=(("X", X), ("Y", Y), ("wrong", a + b), ("how", how),
+                                         ("own", repr(own)), ("length", repr(length)))))
     return out
 
 

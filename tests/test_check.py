@@ -1400,3 +1400,32 @@ def test_the_russian_wrong_point_says_measured_not_laid_off(tmp_path, capsys, pr
     code, out, _ = run(capsys, "check", path, "--lang", "ru")
     assert code == 1 and "— это длина ac (" in out
     assert "): отрезок измерен не от той точки?" in out and "отложен не от той" not in out
+
+
+@pytest.mark.parametrize("variant, term, factor, wrong", [
+    (3, "a^n_CB", 0.27 / 0.18, "BE"),   # ω2²·l_BE for ω2²·l_CB
+    (5, "a^n_CD", 0.25 / 0.22, "BC"),   # ω3²·l_BC for ω3²·l_CD
+])
+def test_a_normal_acceleration_with_another_links_length_is_named(tmp_path, capsys, variant, term,
+                                                                   factor, wrong):
+    """a^n computed with the wrong link's length, the rest of the plan built on it: it had
+    been "no single mistake explains this" (variant 3), or "closest: a^n_CB points the
+    wrong way; it explains n2c but not dn2" (variant 5, where l_BC for l_CD is 14 % off,
+    and l_BS2 of a centre of mass had come closer than the length the student took)."""
+    mu = {"mu_l": 0.004, "mu_v": 0.02, "mu_a": 0.4}
+    head = f"variant = {variant}\n[scales]\n" + "".join(f"{k} = {v}\n" for k, v in mu.items())
+    path = tmp_path / "v.toml"
+    path.write_text(head + "[segments]\npb = 60\n", encoding="utf-8")
+    sol = ck.load(path).solution
+    drawn = ck.simulate(sol, ck.Mistake("term-scale", "acceleration", term, factor))
+    rng = np.random.default_rng(5)
+    segs = {it.name: ck.expected(it, drawn, mu) + rng.uniform(-0.2, 0.2) for it in plan_segments(sol)}
+    path.write_text(head + "[segments]\n" + "".join(f"{ascii_name(k)} = {x:.2f}\n"
+                                                    for k, x in segs.items()), encoding="utf-8")
+    res = ck.check(ck.load(path))
+    mk = named(res)
+    assert (mk.kind, mk.target, mk.get("wrong")) == ("normal-length", term, wrong)
+    assert not any("S" in m.get("wrong") for m in ck.hypotheses(sol) if m.kind == "normal-length")
+    code, out, _ = run(capsys, "check", path, "--lang", "ru")
+    own = term[-2:]
+    assert code == 1 and f"Диагноз: нормальное ускорение {term} вычислено по длине l_{wrong} вместо l_{own}." in out
