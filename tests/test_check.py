@@ -1325,6 +1325,23 @@ def test_a_check_at_an_angle_outside_the_crank_range_gives_the_range(capsys, tmp
                    "φ1 = 150°: needs BD within [0.05, 0.25] m, misses by 0.059789 m\n")
 
 
+def _variant_exact(tmp_path, n: int, mu: dict):
+    """Variant ``n``'s exact plans at the scales ``mu``, its plans' segments at them (mm),
+    and ``write(segs)``: the measurement file of those segments, to 0.01 mm."""
+    head = f"variant = {n}\n[scales]\n" + "".join(f"{k} = {v}\n" for k, v in mu.items())
+    path = tmp_path / f"v{n}.toml"
+    path.write_text(head + "[segments]\npb = 70\n", encoding="utf-8")
+    sol = ck.load(path).solution
+    exact = ck.simulate(sol, None)
+
+    def write(segs):
+        path.write_text(head + "[segments]\n" + "".join(f"{ascii_name(k)} = {x:.2f}\n"
+                                                        for k, x in segs.items()), encoding="utf-8")
+        return path
+
+    return exact, {it.name: ck.expected(it, exact, mu) for it in plan_segments(sol)}, write
+
+
 def test_slips_that_explain_everything_are_not_under_no_single_mistake(tmp_path, capsys):
     """A four-bar (variant 1) with pc and pe swapped, all else exact: the text said
     "Diagnosis: no single mistake explains this.", then "closest: e laid off from the
@@ -1335,16 +1352,9 @@ def test_slips_that_explain_everything_are_not_under_no_single_mistake(tmp_path,
     only some of them; the JSON says so too, and the picture's footer."""
     from drawing.check_overlay import overlay
 
-    mu = {"mu_l": 0.0025, "mu_v": 0.01, "mu_a": 0.2}
-    head = "variant = 1\n[scales]\n" + "".join(f"{k} = {v}\n" for k, v in mu.items())
-    path = tmp_path / "v1.toml"
-    path.write_text(head + "[segments]\npb = 70\n", encoding="utf-8")
-    sol = ck.load(path).solution
-    exact = ck.simulate(sol, None)
-    segs = {it.name: ck.expected(it, exact, mu) for it in plan_segments(sol)}
+    _, segs, write = _variant_exact(tmp_path, 1, {"mu_l": 0.0025, "mu_v": 0.01, "mu_a": 0.2})
     segs["pc"], segs["pe"] = segs["pe"], segs["pc"]
-    path.write_text(head + "[segments]\n" + "".join(f"{ascii_name(k)} = {v:.2f}\n"
-                                                    for k, v in segs.items()), encoding="utf-8")
+    path = write(segs)
     res = ck.check(ck.load(path))
     assert res.diagnosis.best is None and res.slips_only
     code, out, _ = run(capsys, "check", path)
@@ -1369,17 +1379,10 @@ def test_a_segment_measured_from_the_wrong_point_beats_a_loose_mistake(tmp_path,
     said "s2 found with the ratio meant for e", whose ps2 is |pe| = 65.05 mm, 4 % off
     but within tolerance, while bs2 matches to 0.04 mm. The closer slip is named, the
     mistake kept as the less close reading."""
-    mu = {"mu_l": 0.004, "mu_v": 0.02, "mu_a": 0.5}
-    head = "variant = 9\n[scales]\n" + "".join(f"{k} = {v}\n" for k, v in mu.items())
-    path = tmp_path / "v9.toml"
-    path.write_text(head + "[segments]\npb = 68\n", encoding="utf-8")
-    sol = ck.load(path).solution
-    exact = ck.simulate(sol, None)
-    segs = {it.name: ck.expected(it, exact, mu) for it in plan_segments(sol)}
+    exact, segs, write = _variant_exact(tmp_path, 9, {"mu_l": 0.004, "mu_v": 0.02, "mu_a": 0.5})
     v = exact.values("velocity")
-    segs["ps2"] = abs(v["s2"] - v["b"]) / mu["mu_v"]
-    path.write_text(head + "[segments]\n" + "".join(f"{ascii_name(k)} = {x:.2f}\n"
-                                                    for k, x in segs.items()), encoding="utf-8")
+    segs["ps2"] = abs(v["s2"] - v["b"]) / 0.02
+    path = write(segs)
     res = ck.check(ck.load(path))
     assert res.diagnosis.best is None
     assert [(lk.item, lk.kind, lk.other) for lk in res.diagnosis.lookalikes] == [("ps2", "segment", "bs2")]
