@@ -182,6 +182,51 @@ def _bare_key_hint(key: str) -> str:
     return f"a key with letters other than A–Z, a–z is quoted: {quoted}"
 
 
+#: the keys only one kind of input file has: a mechanism's [frame], [links], [driver]; a
+#: measurement file's mechanism = … and [segments]; a variant table's [[variant]] rows
+_MECHANISM_KEYS = {"frame", "links", "driver"}
+_MEASUREMENT_KEYS = {"mechanism", "segments"}
+#: each kind as the line that refuses it names it, and how it is used
+_KINDS = {
+    "mechanism": ("a mechanism file", "solve it with plans solve {src} (or report, cycle, sheet)"),
+    "measurement": ("a measurement file (mechanism = …, [segments])",
+                    "check it with plans check {src}"),
+    "table": ("a variant table ([[variant]] rows)",
+              'give it as --table {src} --variant N, or name it in a measurement file '
+              '(table = "…", variant = N)'),
+}
+
+
+def file_kind(data: dict) -> str | None:
+    """What a parsed input file is by the keys only its kind has: "mechanism",
+    "measurement" or "table"; None where it has none of them or keys of two kinds (its
+    reader then says which keys it does not know).
+
+    >>> file_kind({"frame": {}, "links": {}}), file_kind({"variant": 3, "segments": {}})
+    ('mechanism', 'measurement')
+    >>> file_kind({"variant": [{"n": 1}]}), file_kind({"title": "x"})
+    ('table', None)
+    """
+    mechanism, measurement = _MECHANISM_KEYS & data.keys(), _MEASUREMENT_KEYS & data.keys()
+    if mechanism and not measurement:
+        return "mechanism"
+    if measurement and not mechanism:
+        return "measurement"
+    if not mechanism and isinstance(data.get("variant"), list):
+        return "table"
+    return None
+
+
+def other_kind(data: dict, source: str, reads: str) -> str | None:
+    """The one line for a file of another kind than the reader's own (``reads``), naming
+    what it is and how it is used; None where it is not one."""
+    kind = file_kind(data)
+    if kind is None or kind == reads:
+        return None
+    what, how = _KINDS[kind]
+    return f"{what}, not {_KINDS[reads][0].split(' (')[0]}: {how.format(src=source)}"
+
+
 def one_line(text: str, limit: int = 200) -> str:
     """``text`` on one line, at most ``limit`` characters."""
     cut = len(text) > limit

@@ -23,6 +23,7 @@ from .fileformat import (
     close_match,
     decimal,
     key_text,
+    other_kind,
     quote,
     read_number,
     read_toml,
@@ -191,10 +192,8 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
     from . import mechanism as mechmod
 
     problems = Problems(source, text)
-    if {"frame", "links"} & data.keys() and not {"mechanism", "variant", "segments"} & data.keys():
-        raise InputError(source, "a mechanism file, not a measurement file: plans check reads "
-                         'the segments measured on a drawing (mechanism = "…", [scales], '
-                         f"[segments]); to solve the mechanism: plans solve {source}")
+    if why := other_kind(data, source, "measurement"):
+        raise InputError(source, why)
     check_keys(data, TOP_KEYS, "", problems)
     title = data.get("title", "")
     if not isinstance(title, str) or len(title) > 300:

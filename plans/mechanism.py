@@ -34,6 +34,7 @@ from .fileformat import (
     key_text,
     name_list,
     one_line,
+    other_kind,
     quote,
     read_number,
     read_text,
@@ -366,13 +367,8 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
     pr = Problems(source, text)
     if not isinstance(data, dict):
         raise InputError(source, "the file must be a TOML table")
-    if not {"frame", "links", "driver"} & data.keys():  # another kind of file: say which
-        if {"segments", "mechanism"} & data.keys():
-            raise InputError(source, "a measurement file (mechanism = …, [segments]), not a "
-                             f"mechanism file: check it with plans check {source}")
-        if isinstance(data.get("variant"), list):
-            raise InputError(source, "a variant table ([[variant]] rows), not a mechanism file: "
-                             f"give it as --table {source} --variant N")
+    if why := other_kind(data, source, "mechanism"):
+        raise InputError(source, why)
     check_keys(
         data,
         {"name", "frame", "links", "sliders", "driver", "assembly", "scales", "trace",

@@ -29,6 +29,7 @@ from .fileformat import (
     Problems,
     close_match,
     key_text,
+    other_kind,
     parse_toml,
     quote,
     read_number,
@@ -137,9 +138,8 @@ def read_table(path: str | Path | None = None) -> Table:
                      {n: p.items for n, p in bad.items() if p}, loose.items,
                      pattern if isinstance(pattern, str) else DESIGNATION)
     pattern = data.get("designation", DESIGNATION)
-    if "variant" not in data and {"frame", "driver", "links"} & data.keys():
-        pr.add("", "is a mechanism file, not a variant table: give it as FILE, without "
-                   "--variant and --table")
+    if why := other_kind(data, source, "table"):
+        pr.add("", why)
         return done()
     for key in data:
         if key not in TABLE_KEYS:

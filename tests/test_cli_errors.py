@@ -727,12 +727,15 @@ def test_a_mechanism_file_given_as_a_table_is_named_so(capsys):
     """It had got nine lines: unknown keys frame, driver, links…, and no rows."""
     code, out, err = run(capsys, "solve", "--variant", "1", "--table", PRESS)
     assert code == 2 and out == ""
-    assert err == (f"plans solve: {PRESS}: is a mechanism file, not a variant table: give it as "
-                   "FILE, without --variant and --table\n")
+    assert err == (f"plans solve: {PRESS}: a mechanism file, not a variant table: solve it with "
+                   f"plans solve {PRESS} (or report, cycle, sheet)\n")
 
 
 @pytest.mark.parametrize(("command", "path", "says"), [
-    ("check", PRESS, "a mechanism file, not a measurement file: plans check reads the segments"),
+    ("check", PRESS, "a mechanism file, not a measurement file: solve it with plans solve"),
+    ("check", ROOT / "plans" / "data" / "table2.toml",
+     "a variant table ([[variant]] rows), not a measurement file: give it as --table"),
+    ("solve", ROOT / "samples" / "fourbar.toml", None),
     ("solve", ROOT / "samples" / "check_press.toml",
      "a measurement file (mechanism = …, [segments]), not a mechanism file: check it with plans check"),
     ("sheet", ROOT / "plans" / "data" / "table2.toml",
@@ -740,8 +743,12 @@ def test_a_mechanism_file_given_as_a_table_is_named_so(capsys):
 ])
 def test_a_file_of_another_kind_is_named_so(capsys, tmp_path, command, path, says):
     """A mechanism file given to check, a measurement file or a table given to solve had
-    got six to ten lines, one per key each did not know."""
+    got six to ten lines, one per key each did not know. (A file of the reader's own kind
+    is read: ``says`` None.)"""
     code, out, err = run(capsys, command, path, *(["-o", tmp_path / "s.svg"] if command == "sheet" else []))
+    if says is None:
+        assert code == 0 and err == "", err
+        return
     assert code == 2 and out == "" and list(tmp_path.iterdir()) == []
     assert err.startswith(f"plans {command}: {path}: {says}") and err.count("\n") == 1, err
 
@@ -886,3 +893,17 @@ def test_without_an_output_the_rockers_moving_joint_names_its_columns(capsys, tm
     code, out, _ = run(capsys, "cycle", path, "--json", "--positions", "4")
     assert json.loads(out)["cycle"]["output"] == {"point": "C", "kind": "angular", "link": 3,
                                                   "unit": "rad"}
+
+
+def test_a_measurement_file_that_names_a_table_as_its_mechanism_is_told_how(capsys, tmp_path):
+    """A measurement file's mechanism = "table2.toml" was told to give the table as
+    --table on the command line, which a measurement file cannot do: the line now names
+    both ways, the file's own (table = …, variant = N) too."""
+    meas = tmp_path / "m.toml"
+    table = ROOT / "plans" / "data" / "table2.toml"
+    meas.write_text(f'mechanism = "{table.as_posix()}"\n[scales]\nmu_v = 0.01\n[segments]\npb = 70\n',
+                    "utf-8")
+    code, out, err = run(capsys, "check", meas)
+    assert code == 2 and out == "" and err.count("\n") == 1, err
+    assert 'a variant table ([[variant]] rows), not a mechanism file: give it as --table ' in err
+    assert err.rstrip().endswith('or name it in a measurement file (table = "…", variant = N)')
