@@ -302,12 +302,8 @@ def main(argv: list[str] | None = None) -> int:
     try:
         return args.run(args)
     except PlansError as exc:
-        # an input error names its file itself; a position that cannot be solved (a group
-        # that does not close, a dead point) carries the mechanism it belongs to
-        source = getattr(exc, "source", "")
-        where = f"{source}: " if source and not isinstance(exc, InputError) else ""
-        for line in str(exc).splitlines() or [type(exc).__name__]:
-            print(f"plans {args.command}: {where}{line}", file=sys.stderr)
+        for line in error_lines(exc):
+            print(f"plans {args.command}: {line}", file=sys.stderr)
         return EXIT_INPUT
     except KeyboardInterrupt:
         print(f"plans {args.command}: interrupted", file=sys.stderr)
@@ -331,6 +327,15 @@ def main(argv: list[str] | None = None) -> int:
             file=sys.stderr,
         )
         return EXIT_INTERNAL
+
+
+def error_lines(exc: PlansError) -> list[str]:
+    """The lines that say ``exc``, as ``plans CMD: LINE`` prints each: an input error
+    names its file itself; a position that cannot be solved (a group that does not close,
+    a dead point) carries the mechanism it belongs to, which is put before each line."""
+    source = getattr(exc, "source", "")
+    where = f"{source}: " if source and not isinstance(exc, InputError) else ""
+    return [f"{where}{line}" for line in str(exc).splitlines() or [type(exc).__name__]]
 
 
 def _drop_stdout() -> None:
