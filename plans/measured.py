@@ -168,11 +168,35 @@ TOP_KEYS = {"title", "mechanism", "variant", "table", "angle_deg", "tolerance", 
             "segments", "values"}
 
 
-def load(path: str | Path) -> Measurement:
-    """Read and validate a measurement file; every problem is reported, located."""
+def load(path: str | Path, solvers: Solvers | None = None) -> Measurement:
+    """Read and validate a measurement file; every problem is reported, located.
+    ``solvers``: those of the mechanisms already met (:class:`Solvers`), shared by the
+    files of one mechanism at one crank angle."""
     data, text = read_toml(path, "a measurement file is a few KB")
     path = Path(path)
-    return from_dict(data, str(path), path.parent, text=text)
+    return from_dict(data, str(path), path.parent, text=text, solvers=solvers)
+
+
+class Solvers:
+    """One :class:`~plans.kinematics.Solver` per mechanism, for a batch of measurement
+    files: the files of a class, most of one variant at one angle, solve it once. A
+    solver compiles its plans' recipes and, for the angles a report writes, analyses the
+    cycle; of 30 files of one mechanism that is most of the time that is not diagnosis.
+    Mechanisms are told apart by equality (one file read twice is one mechanism; another
+    angle, another path to it or another table is another)."""
+
+    def __init__(self) -> None:
+        self.known: list[tuple[Mechanism, Any]] = []  # a Mechanism holds dicts: no hash
+
+    def __call__(self, mech: Mechanism):
+        from .kinematics import Solver
+
+        for m, solver in self.known:
+            if m == mech:
+                return solver
+        solver = Solver(mech)
+        self.known.append((mech, solver))
+        return solver
 
 
 def _num(value: Any, where: str, problems: Problems, *, positive=False, nonneg=False,
@@ -187,8 +211,9 @@ def _num(value: Any, where: str, problems: Problems, *, positive=False, nonneg=F
 
 
 def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = None, *,
-              text: str | None = None) -> Measurement:
-    """Build a :class:`Measurement` from parsed TOML (the mechanism is loaded and solved)."""
+              text: str | None = None, solvers: Solvers | None = None) -> Measurement:
+    """Build a :class:`Measurement` from parsed TOML (the mechanism is loaded and solved,
+    with the solver ``solvers`` has for it, if given)."""
     from . import mechanism as mechmod
 
     problems = Problems(source, text)
@@ -289,7 +314,7 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
             m = mechmod.load(mech)
         if angle is not None:
             m = m.at_file_angle(angle)
-        sol = solve_position(m, mu=dict(mu))
+        sol = solve_position(m, mu=dict(mu), solver=None if solvers is None else solvers(m))
     except PlansError as exc:
         problems.raise_if_any()  # these first; the mechanism's own problems once they are fixed
         if angle is not None and not isinstance(exc, InputError):  # the file's own angle
