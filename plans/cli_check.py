@@ -1,6 +1,8 @@
 """``plans check MEAS.toml``: a hand-drawn plan against the computed one, and the mistake.
 
-Exit status: 0 every item within tolerance, 1 something is not, 2 bad input.
+Exit status: 0 every item within tolerance, 1 something is not, 2 bad input. Several
+files (``plans check students/*.toml``) are checked by :mod:`plans.cli_check_batch`,
+one summary table.
 """
 
 from __future__ import annotations
@@ -14,25 +16,35 @@ from .fmt import from_x, json_angle, listing, num, ru_plural, signed
 
 
 def configure(p) -> None:
-    p.add_argument("file", metavar="MEAS.toml",
+    p.add_argument("file", metavar="MEAS.toml", nargs="+",
                    help="the measurement file: mechanism, crank position, the student's scale "
-                        "factors and the segments measured on the drawing (mm)")
+                        "factors and the segments measured on the drawing (mm). Several "
+                        "files: one summary table, a row per file (file, title, mechanism, "
+                        "verdict, diagnosis); exit status the worst of theirs (2 if one is "
+                        "bad input, else 1 if one is beyond tolerance, else 0)")
     p.add_argument("--tolerance", metavar="TOL",
                    help='allowed deviation, e.g. "5%%", "1mm" or "5%%,1mm" '
                         "(default: the larger of 1 mm and 5 %%)")
     p.dash_values = ("--tolerance",)  # "--tolerance -5%" is a wrong tolerance, said as one
-    p.add_argument("--json", action="store_true", help="machine-readable output")
+    p.add_argument("--json", action="store_true",
+                   help="machine-readable output (several files: a list, one object per file)")
     p.add_argument("--svg", metavar="OUT.svg",
-                   help="also draw the student's plan over the computed one")
+                   help="also draw the student's plan over the computed one (several files: "
+                        "a folder, DIR/STEM.svg for each file checked)")
     p.add_argument("--png", metavar="OUT.png",
                    help="the same drawing as a PNG (needs cairosvg: pip install "
-                        "'vector-plans[export]')")
+                        "'vector-plans[export]'; several files: a folder, as --svg)")
     p.add_argument("--lang", choices=("en", "ru"), default="en",
                    help="language of the report (ru: decimal commas)")
     p.add_argument("-o", "--output", metavar="FILE", help="write the report to FILE instead of stdout")
 
 
 def run(args) -> int:
+    if len(args.file) > 1:
+        from .cli_check_batch import run as run_batch
+
+        return run_batch(args, args.file)
+    args.file = args.file[0]
     from . import check as ck
     from .cli import claim_inputs, picture_names
 
