@@ -1,0 +1,261 @@
+"""``plans check A.toml B.toml …``: a class's files, one summary table, a row per file.
+
+The files are built from the exact plans of variant 1, as tests/test_check.py builds
+them: exact (all within tolerance), the velocity plan drawn 1.25 times too large (the
+mistake named), pc and pe swapped (slips), every third segment 40 % long (no single
+mistake), and a file with a negative μv (bad input).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+
+import pytest
+from support import run
+from test_check import _variant_exact
+
+from plans import check as ck
+
+MU = {"mu_l": 0.0025, "mu_v": 0.01, "mu_a": 0.2}
+VELOCITY = ["pb", "ps1", "pc", "pe", "ps2", "ps3", "bc", "dc"]
+
+
+@pytest.fixture
+def klass(tmp_path):
+    """Five students' files of variant 1, by what is in them."""
+    _, segs, write = _variant_exact(tmp_path, 1, MU)
+    out = {}
+
+    def save(name, s, title=None, text=None):
+        body = text if text is not None else write(s).read_text(encoding="utf-8")
+        if title:
+            body = f'title = "{title}"\n' + body
+        path = out[name] = tmp_path / f"{name}.toml"
+        path.write_text(body, encoding="utf-8")
+
+    save("exact", segs, "Ivanov I. I.")
+    save("scale", {k: x * (1.25 if k in VELOCITY else 1) for k, x in segs.items()}, "Petrov P. P.")
+    swapped = dict(segs)
+    swapped["pc"], swapped["pe"] = segs["pe"], segs["pc"]
+    save("swapped", swapped)
+    save("messy", {k: x * (1.4 if i % 3 == 0 else 1) for i, (k, x) in enumerate(segs.items())})
+    save("bad", None, text=write(segs).read_text(encoding="utf-8").replace("mu_v = 0.01", "mu_v = -1"))
+    (tmp_path / "v1.toml").unlink()
+    return out
+
+
+def rows(out: str) -> dict[str, str]:
+    """The table's rows by the file's stem."""
+    out_rows = {}
+    for line in out.splitlines():
+        first = line.split()[0] if line.strip() else ""
+        if first.endswith(".toml"):
+            out_rows[first.rsplit("/", 1)[-1].removesuffix(".toml")] = line
+    return out_rows
+
+
+def test_several_files_one_table_with_known_verdicts(klass, capsys):
+    code, out, err = run(capsys, "check", *klass.values())
+    assert code == 2 and err == (f"plans check: {klass['bad']}: line 4: scales.mu_v: must be "
+                                 "positive, got -1\n")
+    lines = out.splitlines()
+    assert lines[0] == "Check of hand-drawn plans: 5 files"
+    assert lines[1] == "Tolerance: the larger of 1 mm and 5 %"
+    assert lines[3].split() == ["file", "title", "mechanism", "verdict", "diagnosis"]
+    got = rows(out)
+    assert list(got) == ["exact", "scale", "swapped", "messy", "bad"]
+    assert got["exact"].endswith("Ivanov I. I.  variant 1, φ1 = 50°  all 18 items within tolerance")
+    assert "Petrov P. P." in got["scale"] and "8 of 18 beyond tolerance" in got["scale"]
+    assert got["scale"].endswith("the velocity plan is drawn 1.25 times too large for the stated "
+                                 "μv: its segments fit μv = 0.008 (m/s)/mm")
+    assert got["swapped"].endswith("2 of 18 beyond tolerance       slips: pc and pe swapped")
+    assert got["messy"].endswith("beyond tolerance       no single mistake")
+    assert got["bad"].endswith("not checked                    line 4: scales.mu_v: must be "
+                               "positive, got -1")
+    assert lines[-1] == ("Overall: 5 files: 1 within tolerance, 3 beyond tolerance, 1 not "
+                         "checked.")
+
+
+def test_each_row_agrees_with_the_files_own_check(klass):
+    """The table is read off the same check as ``plans check FILE``: the verdicts and the
+    mistake named are the library's."""
+    res = {k: ck.check(ck.load(p)) for k, p in klass.items() if k != "bad"}
+    assert res["exact"].ok
+    assert res["scale"].diagnosis.best.mistake.kind == "scale"
+    assert res["swapped"].slips_only
+    assert res["messy"].diagnosis.best is None and not res["messy"].slips_only
+
+
+def test_in_russian_with_decimal_commas(klass, capsys):
+    code, out, _ = run(capsys, "check", *klass.values(), "--lang", "ru")
+    assert code == 2
+    lines = out.splitlines()
+    assert lines[0] == "Проверка планов, построенных вручную: 5 файлов"
+    assert lines[1] == "Допуск: большее из 1 мм и 5 %"
+    assert lines[3].split() == ["файл", "заголовок", "механизм", "вывод", "диагноз"]
+    got = rows(out)
+    assert got["exact"].endswith("вариант 1, φ1 = 50°  все 18 величин в допуске")
+    assert got["scale"].endswith("план скоростей в 1,25 раза крупнее (при указанном μv): его "
+                                 "отрезки соответствуют μv = 0,008 (м/с)/мм")
+    assert "8 из 18 вне допуска" in got["scale"]
+    assert got["swapped"].endswith("ошибки измерения или записи: pc и pe перепутаны")
+    assert got["messy"].endswith("ни одна отдельная ошибка не объясняет")
+    assert "не проверен " in got["bad"]
+    assert lines[-1] == "Итог: 5 файлов: в допуске 1, вне допуска 3, не проверено 1."
+
+
+@pytest.mark.parametrize("names, code", [
+    (["exact", "exact"], 0),
+    (["exact", "scale"], 1),
+    (["swapped", "exact"], 1),
+    (["exact", "bad"], 2),
+    (["bad", "scale", "exact"], 2),
+])
+def test_the_exit_status_is_the_worst_of_the_files(klass, capsys, names, code):
+    """0 all within tolerance, 1 one beyond, 2 one not checked (bad input), whichever
+    order; a bad file stops none of the others."""
+    got, out, _ = run(capsys, "check", *(klass[n] for n in names))
+    assert got == code
+    assert sum(line.split()[0].endswith(".toml") for line in out.splitlines() if line.strip()) == len(names)
+
+
+def test_a_file_with_several_problems_says_the_first_in_its_row_and_all_on_stderr(tmp_path, klass, capsys):
+    bad = tmp_path / "two.toml"
+    bad.write_text("variant = 1\n[scales]\nmu_v = -1\nmu_a = 0\n[segments]\npb = 5\n", encoding="utf-8")
+    code, _, single = run(capsys, "check", bad)
+    assert code == 2 and len(single.splitlines()) >= 2
+    code, out, err = run(capsys, "check", klass["exact"], bad)
+    assert code == 2 and err == single
+    first = single.splitlines()[0].removeprefix(f"plans check: {bad}: ")
+    more = len(single.splitlines()) - 1
+    assert rows(out)["two"].endswith(f"  {first} (and {more} more: see stderr)")
+    assert "not checked" in rows(out)["two"]
+
+
+def test_a_missing_file_and_a_mechanism_file_are_rows_too(tmp_path, klass, capsys):
+    from pathlib import Path
+
+    press = Path(__file__).resolve().parents[1] / "samples" / "press.toml"
+    code, out, err = run(capsys, "check", klass["exact"], tmp_path / "nobody.toml", press)
+    assert code == 2
+    got = rows(out)
+    assert "not checked" in got["nobody"] and "not checked" in got["press"]
+    assert "a mechanism file, not a measurement file" in got["press"]
+    assert len(err.splitlines()) == 2
+
+
+def test_json_is_a_list_of_the_single_files_objects(klass, capsys):
+    """One object per file, in order, each the one ``plans check FILE --json`` prints
+    (the shared solver changes nothing); a file not checked: its name, ok null and its
+    error's lines."""
+    names = ["exact", "scale", "bad", "swapped"]
+    code, out, _ = run(capsys, "check", *(klass[n] for n in names), "--json", "--lang", "ru")
+    assert code == 2
+    got = json.loads(out)
+    assert isinstance(got, list) and [o["file"] for o in got] == [str(klass[n]) for n in names]
+    for n, obj in zip(names, got, strict=True):
+        if n == "bad":
+            continue
+        c, one, _ = run(capsys, "check", klass[n], "--json", "--lang", "ru")
+        assert obj == json.loads(one) and c == (0 if n == "exact" else 1)
+    assert got[2] == {"file": str(klass["bad"]), "ok": None, "internal": False,
+                      "error": [f"{klass['bad']}: line 4: scales.mu_v: must be positive, got -1"]}
+
+
+def test_one_file_is_checked_as_ever(klass, capsys):
+    """A single file prints its full report, not a table of one row."""
+    code, out, _ = run(capsys, "check", klass["scale"])
+    assert code == 1 and out.startswith(f"Check of a hand-drawn plan: {klass['scale']}\n")
+
+
+def test_tolerance_for_all_and_a_files_own(klass, capsys, tmp_path):
+    code, out, _ = run(capsys, "check", klass["exact"], klass["messy"], "--tolerance", "80%")
+    assert code == 0 and out.splitlines()[1] == "Tolerance: the larger of 1 mm and 80 %"
+    own = tmp_path / "own.toml"
+    own.write_text('tolerance = "50%"\n' + klass["messy"].read_text(encoding="utf-8"), encoding="utf-8")
+    code, out, _ = run(capsys, "check", klass["exact"], own, klass["scale"])
+    assert code == 1
+    assert rows(out)["own"].endswith("all 18 items within tolerance (tolerance the larger of 1 mm and 50 %)")
+    code, out, err = run(capsys, "check", klass["exact"], klass["scale"], "--tolerance", "-5%")
+    assert code == 2 and out == "" and err.startswith("plans check: command line: --tolerance:")
+
+
+def test_the_table_goes_to_a_file_with_o(klass, capsys, tmp_path):
+    report = tmp_path / "week.txt"
+    code, out, _ = run(capsys, "check", klass["exact"], klass["scale"], "-o", report)
+    assert code == 1 and out == ""
+    assert report.read_text(encoding="utf-8").startswith("Check of hand-drawn plans: 2 files\n")
+    code, _, err = run(capsys, "check", klass["exact"], klass["scale"], "-o", klass["exact"])
+    assert code == 2 and "is the input file" in err
+
+
+def test_pictures_of_several_files_go_into_a_folder(klass, capsys, tmp_path):
+    """--svg DIR/: DIR/STEM.svg for each file checked; a file not checked draws none and
+    leaves an old picture of its name alone."""
+    pics = tmp_path / "pics"
+    pics.mkdir()
+    old = pics / "bad.svg"
+    old.write_text("last week's", encoding="utf-8")
+    code, _, _ = run(capsys, "check", klass["exact"], klass["scale"], klass["bad"], "--svg", f"{pics}/")
+    assert code == 2
+    assert sorted(p.name for p in pics.iterdir()) == ["bad.svg", "exact.svg", "scale.svg"]
+    assert old.read_text(encoding="utf-8") == "last week's"
+    assert (pics / "scale.svg").read_text(encoding="utf-8").lstrip().startswith("<?xml")
+    made = tmp_path / "new" / "svg"  # a folder not there yet is made, as sheet -o DIR/ does
+    code, _, _ = run(capsys, "check", klass["exact"], klass["scale"], "--svg", made)
+    assert code == 1 and sorted(os.listdir(made)) == ["exact.svg", "scale.svg"]
+    assert not [p for p in made.iterdir() if p.name.startswith(".")]  # no temporary left
+
+
+@pytest.mark.parametrize("opt, value, expect", [
+    ("--svg", "{d}/week.svg", "--svg {d}/week.svg: looks like a file name: with several "
+                              "measurement files give a folder, e.g. --svg pictures/"),
+    ("--svg", "{f}", "--svg {f}: is not a folder: with several measurement files give a "
+                     "folder, e.g. --svg pictures/"),
+    ("--svg", "-", "--svg '-': with several measurement files give a folder, e.g. --svg pictures/"),
+])
+def test_a_picture_option_that_is_not_a_folder_is_refused_in_one_line(klass, capsys, tmp_path,
+                                                                      opt, value, expect):
+    value = value.format(d=tmp_path, f=klass["exact"])
+    before = {p: p.read_bytes() for p in tmp_path.iterdir() if p.is_file()}
+    code, out, err = run(capsys, "check", klass["exact"], klass["scale"], opt, value)
+    assert code == 2 and out == ""
+    assert err == f"plans check: command line: {expect.format(d=tmp_path, f=klass['exact'])}\n"
+    assert {p: p.read_bytes() for p in tmp_path.iterdir() if p.is_file()} == before
+
+
+def test_two_files_of_one_name_would_draw_one_picture(klass, capsys, tmp_path):
+    other = tmp_path / "b"
+    other.mkdir()
+    twin = other / "exact.toml"
+    twin.write_text(klass["exact"].read_text(encoding="utf-8"), encoding="utf-8")
+    code, out, err = run(capsys, "check", klass["exact"], twin, "--svg", tmp_path / "pics")
+    assert code == 2 and out == ""
+    assert err == (f"plans check: command line: {klass['exact']} and {twin} would both be drawn "
+                   "as exact.svg: check them in two runs\n")
+    assert not (tmp_path / "pics").exists()
+    code, out, _ = run(capsys, "check", klass["exact"], twin)  # without pictures: two rows
+    assert code == 0 and list(rows(out)) == ["exact"] and f"  {twin}  " in out
+
+
+def test_solvers_are_shared_by_the_files_of_one_mechanism(klass):
+    """Thirty files of one variant at one angle solve it once: one solver, whose cycle
+    (for the angles the table writes) is analysed once."""
+    from plans.measured import Solvers
+
+    solvers = Solvers()
+    meas = [ck.load(klass[n], solvers) for n in ("exact", "scale", "swapped", "messy")]
+    assert len(solvers.known) == 1
+    assert len({id(m.solution.solver) for m in meas}) == 1
+    alone = ck.load(klass["scale"])
+    assert ck.check(alone).diagnosis == ck.check(meas[1]).diagnosis
+
+
+def test_svg_and_png_of_several_files_may_share_a_folder(klass, capsys, tmp_path):
+    pytest.importorskip("cairosvg")
+    pics = tmp_path / "pics"
+    code, _, err = run(capsys, "check", klass["exact"], klass["swapped"], "--svg", pics, "--png", pics)
+    assert code == 1 and err == ""
+    assert sorted(os.listdir(pics)) == ["exact.png", "exact.svg", "swapped.png", "swapped.svg"]
+    assert (pics / "swapped.png").read_bytes().startswith(b"\x89PNG")
