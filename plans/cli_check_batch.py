@@ -94,6 +94,23 @@ class Row:
     result: object = None  # plans.check.CheckResult
     error: list[str] = field(default_factory=list)
     status: int = EXIT_OK
+    title: str = ""  # of a file not checked, if it can be read: whose file it is
+
+    def title_text(self) -> str:
+        return self.result.measurement.title if self.result is not None else self.title
+
+
+def _title_of(path: str) -> str:
+    """The title of a file that cannot be checked, where it reads as TOML at all: the
+    teacher sees whose file it is."""
+    from .fileformat import read_toml
+
+    try:
+        data, _ = read_toml(path)
+    except (PlansError, OSError, ValueError):
+        return ""
+    title = data.get("title") if isinstance(data, dict) else None
+    return title if isinstance(title, str) else ""
 
 
 def status(rows: list[Row]) -> int:
@@ -158,7 +175,7 @@ def _one(args, report, path: str, tol, folders: dict[str, Path], solvers=None) -
     except PlansError as exc:
         if isinstance(exc, InputError) and exc.source == "command line":
             raise
-        return Row(path, error=error_lines(exc), status=EXIT_INPUT)
+        return Row(path, error=error_lines(exc), status=EXIT_INPUT, title=_title_of(path))
     except (KeyboardInterrupt, MemoryError):
         raise
     except Exception as exc:  # one file's internal error: said, and the others checked
@@ -324,13 +341,13 @@ def to_text(rows: list[Row], lang: str = "en", tol=None) -> str:
         common = max(kinds, key=kinds.count)
     if common is not None:
         out.append(f"{w['tol']}: {common.describe(lang)}")
-    titled = any(r.result is not None and r.result.measurement.title for r in rows)
+    titled = any(r.title_text() for r in rows)
     table = []
     for r in rows:
         res = r.result
         cells = [r.path]
         if titled:
-            cells.append(_cut(res.measurement.title, TITLE_WIDTH) if res is not None else "")
+            cells.append(_cut(r.title_text(), TITLE_WIDTH))
         cells.append(mechanism_cell(res.measurement, lang) if res is not None else "")
         cells += [verdict_cell(r, lang, common), diagnosis_cell(r, lang)]
         table.append(cells)

@@ -40,7 +40,8 @@ def klass(tmp_path):
     swapped["pc"], swapped["pe"] = segs["pe"], segs["pc"]
     save("swapped", swapped)
     save("messy", {k: x * (1.4 if i % 3 == 0 else 1) for i, (k, x) in enumerate(segs.items())})
-    save("bad", None, text=write(segs).read_text(encoding="utf-8").replace("mu_v = 0.01", "mu_v = -1"))
+    save("bad", None, "Sidorov S. S.",
+         text=write(segs).read_text(encoding="utf-8").replace("mu_v = 0.01", "mu_v = -1"))
     (tmp_path / "v1.toml").unlink()
     return out
 
@@ -57,7 +58,7 @@ def rows(out: str) -> dict[str, str]:
 
 def test_several_files_one_table_with_known_verdicts(klass, capsys):
     code, out, err = run(capsys, "check", *klass.values())
-    assert code == 2 and err == (f"plans check: {klass['bad']}: line 4: scales.mu_v: must be "
+    assert code == 2 and err == (f"plans check: {klass['bad']}: line 5: scales.mu_v: must be "
                                  "positive, got -1\n")
     lines = out.splitlines()
     assert lines[0] == "Check of hand-drawn plans: 5 files"
@@ -65,14 +66,15 @@ def test_several_files_one_table_with_known_verdicts(klass, capsys):
     assert lines[3].split() == ["file", "title", "mechanism", "verdict", "diagnosis"]
     got = rows(out)
     assert list(got) == ["exact", "scale", "swapped", "messy", "bad"]
-    assert got["exact"].endswith("Ivanov I. I.  variant 1, φ1 = 50°  all 18 items within tolerance")
+    assert got["exact"].endswith("Ivanov I. I.   variant 1, φ1 = 50°  all 18 items within tolerance")
     assert "Petrov P. P." in got["scale"] and "8 of 18 beyond tolerance" in got["scale"]
     assert got["scale"].endswith("the velocity plan is drawn 1.25 times too large for the stated "
                                  "μv: its segments fit μv = 0.008 (m/s)/mm")
     assert got["swapped"].endswith("2 of 18 beyond tolerance       slips: pc and pe swapped")
     assert got["messy"].endswith("beyond tolerance       no single mistake")
-    assert got["bad"].endswith("not checked                    line 4: scales.mu_v: must be "
+    assert got["bad"].endswith("not checked                    line 5: scales.mu_v: must be "
                                "positive, got -1")
+    assert "Sidorov S. S." in got["bad"]  # whose file it is, though it cannot be checked
     assert lines[-1] == ("Overall: 5 files: 1 within tolerance, 3 beyond tolerance, 1 not "
                          "checked.")
 
@@ -160,7 +162,7 @@ def test_json_is_a_list_of_the_single_files_objects(klass, capsys):
         c, one, _ = run(capsys, "check", klass[n], "--json", "--lang", "ru")
         assert obj == json.loads(one) and c == (0 if n == "exact" else 1)
     assert got[2] == {"file": str(klass["bad"]), "ok": None, "internal": False,
-                      "error": [f"{klass['bad']}: line 4: scales.mu_v: must be positive, got -1"]}
+                      "error": [f"{klass['bad']}: line 5: scales.mu_v: must be positive, got -1"]}
 
 
 def test_one_file_is_checked_as_ever(klass, capsys):
