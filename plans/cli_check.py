@@ -20,23 +20,25 @@ def configure(p) -> None:
                    help="the measurement file: mechanism, crank position, the student's scale "
                         "factors and the segments measured on the drawing (mm). Several "
                         "files: one summary table, a row per file (file, title, mechanism, "
-                        "verdict, diagnosis); exit status the worst of theirs (2 if one is "
-                        "bad input, else 1 if one is beyond tolerance, else 0)")
+                        "verdict, diagnosis); a file that cannot be checked is a row of "
+                        "its own. Exit status the worst of theirs: 3 an internal error, "
+                        "else 2 bad input, else 1 beyond tolerance, else 0")
     p.add_argument("--tolerance", metavar="TOL",
                    help='allowed deviation, e.g. "5%%", "1mm" or "5%%,1mm" '
                         "(default: the larger of 1 mm and 5 %%)")
     p.dash_values = ("--tolerance",)  # "--tolerance -5%" is a wrong tolerance, said as one
     p.add_argument("--json", action="store_true",
                    help="machine-readable output (several files: a list, one object per file)")
-    p.add_argument("--svg", metavar="OUT.svg",
+    p.add_argument("--svg", metavar="OUT.svg|DIR",
                    help="also draw the student's plan over the computed one (several files: "
                         "a folder, DIR/STEM.svg for each file checked)")
-    p.add_argument("--png", metavar="OUT.png",
+    p.add_argument("--png", metavar="OUT.png|DIR",
                    help="the same drawing as a PNG (needs cairosvg: pip install "
                         "'vector-plans[export]'; several files: a folder, as --svg)")
     p.add_argument("--lang", choices=("en", "ru"), default="en",
                    help="language of the report (ru: decimal commas)")
-    p.add_argument("-o", "--output", metavar="FILE", help="write the report to FILE instead of stdout")
+    p.add_argument("-o", "--output", metavar="FILE",
+                   help="write the report (several files: the table) to FILE instead of stdout")
 
 
 def run(args) -> int:

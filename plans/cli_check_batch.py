@@ -183,7 +183,7 @@ def _one(args, report, path: str, tol, folders: dict[str, Path], solvers=None) -
             raise
         return Row(path, error=[f"{path}: internal error: {type(exc).__name__}: {exc} "
                                 "(rerun with --debug for the traceback)"],
-                   status=EXIT_INTERNAL)
+                   status=EXIT_INTERNAL, title=_title_of(path))
 
 
 def _picture_folders(args, files: list[str]) -> dict[str, Path]:
@@ -287,6 +287,8 @@ def diagnosis_cell(row: Row, lang: str) -> str:
         first = row.error[0] if row.error else ""
         if first.startswith(f"{row.path}: "):  # the file is in the first column
             first = first[len(row.path) + 2:]
+        if row.status == EXIT_INTERNAL:  # and the verdict says "internal error"
+            first = first.removeprefix("internal error: ")
         more = len(row.error) - 1
         return first + (f" {w['more'].format(k=more)}" if more else "")
     res = row.result

@@ -261,3 +261,25 @@ def test_svg_and_png_of_several_files_may_share_a_folder(klass, capsys, tmp_path
     assert code == 1 and err == ""
     assert sorted(os.listdir(pics)) == ["exact.png", "exact.svg", "swapped.png", "swapped.svg"]
     assert (pics / "swapped.png").read_bytes().startswith(b"\x89PNG")
+
+
+def test_an_internal_error_in_one_file_is_its_row_and_exit_3(klass, capsys, monkeypatch):
+    real = ck.check
+
+    def check(meas, tol=None, **kw):
+        if meas.source.endswith("scale.toml"):
+            raise RuntimeError("boom")
+        return real(meas, tol, **kw)
+
+    monkeypatch.setattr(ck, "check", check)
+    code, out, err = run(capsys, "check", klass["exact"], klass["scale"], klass["bad"])
+    assert code == 3
+    assert rows(out)["scale"].endswith("internal error                 RuntimeError: boom (rerun "
+                                       "with --debug for the traceback)")
+    assert "Petrov P. P." in rows(out)["scale"]
+    assert rows(out)["exact"].endswith("all 18 items within tolerance")
+    assert (f"plans check: {klass['scale']}: internal error: RuntimeError: boom (rerun with "
+            "--debug for the traceback)") in err.splitlines()
+    assert out.splitlines()[-1].endswith("1 not checked, 1 with an internal error.")
+    with pytest.raises(RuntimeError):
+        run(capsys, "check", klass["exact"], klass["scale"], "--debug")
