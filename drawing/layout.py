@@ -8,10 +8,16 @@ it: the spots tried are the corners the field and the boxes already placed make.
 Several orders are tried (the order given, largest first, tallest first, widest
 first), so that a set of views that fits one way is not refused for the order it
 came in.  Nothing is scaled: what sizes the views is :mod:`drawing.cli_sheet`.
+
+Views may be packed in pairs kept together (a position's velocity and acceleration
+plans, where the sheet draws several positions): the second right beside or right
+under the first, and each pair before the next in reading order. Where no order packs
+them so, they are packed as if they were not paired.
 """
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -21,8 +27,8 @@ from shapely.geometry import box
 from drawing.scene import Group, Rect
 from drawing.sheet import Sheet
 
-__all__ = ["LayoutError", "Placed", "describe", "pack", "place_views", "share_covered",
-           "share_used", "spread"]
+__all__ = ["LayoutError", "Placed", "describe", "pack", "pairs_of", "place_views",
+           "reads_before", "share_covered", "share_used", "spread"]
 
 GAP = 6.0
 MARGIN = 4.0
@@ -61,72 +67,201 @@ def field(sheet: Sheet) -> tuple[Box, list[Box]]:
 
 
 def _first_fit(inner: Box, blocked: list[Box], sizes: Sequence[tuple[float, float]],
-               order: Sequence[int], rows: bool) -> list[tuple[float, float]] | None:
+               order: Sequence[int], rows: bool,
+               partner: dict[int, int] | None = None) -> list[tuple[float, float]] | None:
     """Spots for the boxes ``sizes`` put in ``order``, each at the topmost then leftmost
-    free spot (``rows``) or the leftmost then topmost one; None if one has none."""
+    free spot (``rows``) or the leftmost then topmost one; None if one has none. A box
+    with a ``partner`` is put at the first spot where its partner fits right beside it
+    or right under it (:func:`_beside`), and its partner there."""
     x0, y0, x1, y1 = inner
     hard = list(blocked)  # obstacles, exact
     wide: list[Box] = []  # boxes placed, widened by GAP
     spots: list[tuple[float, float] | None] = [None] * len(sizes)
+    partner = partner or {}
+
+    def free(x, y, w, h, edges):
+        return (x0 - 1e-9 <= x and x + w <= x1 + 1e-9 and y0 - 1e-9 <= y
+                and y + h <= y1 + 1e-9
+                and not any(x < e[2] - 1e-9 and e[0] < x + w - 1e-9 and y < e[3] - 1e-9
+                            and e[1] < y + h - 1e-9 for e in edges))
+
     for i in order:
+        if spots[i] is not None:  # put beside its partner already
+            continue
         w, h = sizes[i]
         if w > x1 - x0 + 1e-9 or h > y1 - y0 + 1e-9:
             return None
         edges = [*hard, *wide]
-        xs = sorted(x for x in {x0, x1 - w, *(b[2] for b in edges), *(b[0] - w for b in edges)}
+        j = partner.get(i)
+        # the corners a box of each size makes: the box itself, or it and its partner
+        # side by side or one under the other
+        shapes = [(w, h)] if j is None else [
+            (w, h), (w + GAP + sizes[j][0], max(h, sizes[j][1])),
+            (max(w, sizes[j][0]), h + GAP + sizes[j][1])]
+        xs = sorted(x for x in {c for sw, _ in shapes for c in (
+                        x0, x1 - sw, *(b[2] for b in edges), *(b[0] - sw for b in edges))}
                     if x0 - 1e-9 <= x and x + w <= x1 + 1e-9)
-        ys = sorted(y for y in {y0, y1 - h, *(b[3] for b in edges), *(b[1] - h for b in edges)}
+        ys = sorted(y for y in {c for _, sh in shapes for c in (
+                        y0, y1 - sh, *(b[3] for b in edges), *(b[1] - sh for b in edges))}
                     if y0 - 1e-9 <= y and y + h <= y1 + 1e-9)
-        best = None
+        best = other = None
         for a in (ys if rows else xs):
             for b in (xs if rows else ys):
                 x, y = (b, a) if rows else (a, b)
-                if not any(x < e[2] - 1e-9 and e[0] < x + w - 1e-9 and y < e[3] - 1e-9
-                           and e[1] < y + h - 1e-9 for e in edges):
-                    best = (x, y)
-                    break
+                if not free(x, y, w, h, edges):
+                    continue
+                if j is not None:
+                    wj, hj = sizes[j]
+                    here = [*edges, (x - GAP, y - GAP, x + w + GAP, y + h + GAP)]
+                    other = next((s for s in _beside((x, y, w, h), (wj, hj))
+                                  if free(*s, wj, hj, here)), None)
+                    if other is None:
+                        continue
+                best = (x, y)
+                break
             if best is not None:
                 break
         if best is None:
             return None
-        x, y = best
-        spots[i] = (x, y)
-        wide.append((x - GAP, y - GAP, x + w + GAP, y + h + GAP))
+        for k, (x, y) in [(i, best)] + ([] if j is None else [(j, other)]):
+            spots[k] = (x, y)
+            wk, hk = sizes[k]
+            wide.append((x - GAP, y - GAP, x + wk + GAP, y + hk + GAP))
     return spots  # type: ignore[return-value]
 
 
-def pack(sheet: Sheet, sizes: Sequence[tuple[float, float]]) -> list[tuple[float, float]] | None:
+def _beside(lead: Box, size: tuple[float, float]) -> list[tuple[float, float]]:
+    """The spots, best first, for a box of ``size`` right beside the box ``lead`` (x, y,
+    w, h), ``GAP`` from it: to its right, their tops or their bottoms level; under it,
+    their left or their right sides level."""
+    x, y, w, h = lead
+    wj, hj = size
+    return [(x + w + GAP, y), (x + w + GAP, y + h - hj), (x, y + h + GAP),
+            (x + w - wj, y + h + GAP)]
+
+
+def pack(sheet: Sheet, sizes: Sequence[tuple[float, float]],
+         pairs: Sequence[tuple[int, int]] = ()) -> list[tuple[float, float]] | None:
     """Top-left corners for boxes of ``sizes`` (w, h mm) on ``sheet``, none meeting
     another (``GAP`` apart) nor the title block and field 26; None if no order tried
     fits them all. The order given is tried first, so that the plan of positions, put
-    first, is at the top left where it fits there."""
+    first, is at the top left where it fits there.
+
+    ``pairs`` (i, j): boxes to keep together, j right beside or right under i, each
+    pair before the next in reading order (:func:`reads_before`): a position's velocity
+    and acceleration plans. Where no order tried packs them so, the boxes are packed
+    as if no pairs were given: a pair kept together never costs a view its size."""
     inner, blocked = field(sheet)
-    n = len(sizes)
-    given = list(range(n))
-    area = sorted(given, key=lambda i: -sizes[i][0] * sizes[i][1])
-    tall = sorted(given, key=lambda i: (-sizes[i][1], -sizes[i][0]))
-    wide = sorted(given, key=lambda i: (-sizes[i][0], -sizes[i][1]))
-    first = [0, *(i for i in area if i)]  # the first view top left, then the largest
-    tried = set()
-    for order, rows in ((given, True), (given, False), (first, True), (first, False),
-                        (area, True), (area, False), (tall, False), (wide, True),
-                        (tall, True), (wide, False)):
-        if (tuple(order), rows) in tried:
-            continue
-        tried.add((tuple(order), rows))
+    if pairs:
+        spots = _pack_pairs(inner, blocked, sizes, pairs)
+        if spots is not None:
+            return spots
+    for order, rows in _orders([[i] for i in range(len(sizes))], sizes):
         spots = _first_fit(inner, blocked, sizes, order, rows)
         if spots is not None:
             return spots
     return None
 
 
-def place_views(sheet: Sheet, views) -> list[Placed]:
-    """Positions for ``views`` (see :func:`pack`); :class:`LayoutError` if they do not
+def _orders(units: list[list[int]], sizes: Sequence[tuple[float, float]]):
+    """The orders :func:`pack` tries, each once, with ``rows`` (see :func:`_first_fit`):
+    the ``units`` (boxes put one right after the other) as given, the first then the
+    largest, the largest, the tallest and the widest first, flattened to the boxes."""
+    def area(u):
+        return sum(sizes[i][0] * sizes[i][1] for i in u)
+
+    def height(u):
+        return max(sizes[i][1] for i in u)
+
+    def width(u):
+        return max(sizes[i][0] for i in u)
+
+    given = list(range(len(units)))
+    by_area = sorted(given, key=lambda k: -area(units[k]))
+    tall = sorted(given, key=lambda k: (-height(units[k]), -width(units[k])))
+    wide = sorted(given, key=lambda k: (-width(units[k]), -height(units[k])))
+    first = [0, *(k for k in by_area if k)]  # the first view top left, then the largest
+    tried = set()
+    for order, rows in ((given, True), (given, False), (first, True), (first, False),
+                        (by_area, True), (by_area, False), (tall, False), (wide, True),
+                        (tall, True), (wide, False)):
+        flat = tuple(i for k in order for i in units[k])
+        if (flat, rows) in tried:
+            continue
+        tried.add((flat, rows))
+        yield flat, rows
+
+
+#: how many orders of the units (a view, or a pair kept together) :func:`pack` tries at
+#: most for the pairs, beyond those it tries without them: every order of seven units
+#: that keeps two pairs in theirs, by rows and by columns (a sheet has six: the plan of
+#: positions, two pairs, the diagrams and two tables)
+TRIES = 5040
+
+
+def _pack_pairs(inner: Box, blocked: list[Box], sizes: Sequence[tuple[float, float]],
+                pairs: Sequence[tuple[int, int]]) -> list[tuple[float, float]] | None:
+    """:func:`pack` with each of ``pairs`` together and in order; None where no order
+    tried packs them so. The orders tried without pairs first, then every order of the
+    units with the pairs in theirs, up to :data:`TRIES` (a sheet's views are few)."""
+    first = {i: (i, j) for i, j in pairs}
+    seconds = {j for _, j in pairs}
+    units = [list(first[i]) if i in first else [i] for i in range(len(sizes))
+             if i not in seconds]
+    rank = [units.index(list(pair)) for pair in pairs]
+    partner = dict(pairs)
+
+    def every():
+        for perm in itertools.permutations(range(len(units))):
+            at = [perm.index(k) for k in rank]
+            if at == sorted(at):
+                for rows in (True, False):
+                    yield tuple(i for k in perm for i in units[k]), rows
+
+    tried = set()
+    for order, rows in itertools.chain(_orders(units, sizes), itertools.islice(every(), TRIES)):
+        if (order, rows) in tried:
+            continue
+        tried.add((order, rows))
+        spots = _first_fit(inner, blocked, sizes, order, rows, partner)
+        if spots is None:
+            continue
+        boxes = [_union(*((*spots[k], *sizes[k]) for k in pair)) for pair in pairs]
+        if all(reads_before(a, b) for a, b in itertools.pairwise(boxes)):
+            return spots
+    return None
+
+
+def _union(*rects: tuple[float, float, float, float]) -> Box:
+    """The bounding box (x0, y0, x1, y1) of rectangles (x, y, w, h)."""
+    return (min(r[0] for r in rects), min(r[1] for r in rects),
+            max(r[0] + r[2] for r in rects), max(r[1] + r[3] for r in rects))
+
+
+def reads_before(a: Box, b: Box) -> bool:
+    """Whether the box ``a`` (x0, y0, x1, y1) is read before ``b``: wholly above it or
+    wholly left of it, and ``b`` neither wholly above nor wholly left of ``a`` (a box
+    above and to the right of the other is read first by rows, last by columns)."""
+    def ahead(p, q):
+        return p[3] <= q[1] + 1e-9 or p[2] <= q[0] + 1e-9
+
+    return ahead(a, b) and not ahead(b, a)
+
+
+def place_views(sheet: Sheet, views, together: Sequence[tuple[str, str]] = ()) -> list[Placed]:
+    """Positions for ``views`` (see :func:`pack`), the views named in each of
+    ``together`` kept together where they fit so; :class:`LayoutError` if they do not
     all fit."""
-    spots = pack(sheet, [(v.w, v.h) for v in views])
+    spots = pack(sheet, [(v.w, v.h) for v in views], pairs_of([v.name for v in views], together))
     if spots is None:
         raise LayoutError(*_why_not(sheet, views))
     return [Placed(v, Rect(x, y, v.w, v.h)) for v, (x, y) in zip(views, spots, strict=True)]
+
+
+def pairs_of(names: Sequence[str], together: Sequence[tuple[str, str]]) -> list[tuple[int, int]]:
+    """The pairs of ``together`` (view names) as indices into ``names``, those of a view
+    not among them left out."""
+    return [(names.index(a), names.index(b)) for a, b in together if a in names and b in names]
 
 
 def spread(sheet: Sheet, placed: list[Placed]) -> list[Placed]:
