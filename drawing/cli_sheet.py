@@ -340,6 +340,15 @@ class _Sheet1:
         return (["positions"] + [f"{kind}-{t}" for t in tags for kind in ("velocity", "acceleration")]
                 + ["diagrams", "segments", "angular", "note"])
 
+    def together(self) -> list[tuple[str, str]]:
+        """The views kept together, in reading order, where they fit so: each position's
+        velocity plan with its acceleration plan, when the sheet draws several (the
+        student compares a position's two plans, the teacher reads them position by
+        position). One position's plans are placed as they always were."""
+        if self.chosen is None or len(self.chosen) < 2:
+            return []
+        return [(f"velocity-{k}", f"acceleration-{k}") for k in self.chosen]
+
     def fill(self, suggest: bool = True):
         """(μ of every factor, the views placed). Where even the smallest views do not
         fit, :class:`LayoutError` says what they need, and (``suggest``) which larger
@@ -362,8 +371,11 @@ class _Sheet1:
                     **{k: v for k, v in chosen.items() if k in SCALED})
         views = [v for k, value in chosen.items()
                  for v in (self.draw(k, value, full) if k == "segments" else fit.views(k, value))]
-        placed = one_title_size(self.sheet,
-                                place_views(self.sheet, fit.arranged(views + list(fit.fixed))))
+        # the scale factors chosen, each position's two plans are kept together where
+        # the views fit so (they are not packed so while choosing: never a scale lost)
+        together = self.together()
+        placed = one_title_size(self.sheet, place_views(
+            self.sheet, fit.arranged(views + list(fit.fixed)), together), together)
         if not any(k in self.mech.scales for k in SCALED):
             # at their largest and still leaving room: spread over the field. Views at
             # the scales a file fixes stay together, the share they take said in a note
@@ -405,22 +417,23 @@ class _Sheet1:
                 f"({least}) its views need {need}; {where}")
 
 
-def one_title_size(sheet, placed: list) -> list:
+def one_title_size(sheet, placed: list, together=()) -> list:
     """The views ``placed`` with their titles in one size. A view's title much wider than
     its drawing is set smaller (:data:`drawing.views.SMALL_CAPTION`), so that a narrow
     plan's view is not as wide as its title; the other views' titles were then larger
     on the same sheet. Where they all pack with every title at full size, the long ones
     on two lines, they are so; else every title is set at the smaller size, each view in
     its place (its box only shrinks). The scale factors are those chosen either way: a
-    title never costs a plan a step of its scale."""
-    from drawing.layout import Placed, pack
+    title never costs a plan a step of its scale. ``together``: as for
+    :func:`drawing.layout.place_views`."""
+    from drawing.layout import Placed, pack, pairs_of
     from drawing.scene import Rect
     from drawing.views import retitled
 
     if len({p.view.caption_size for p in placed if p.view.caption_size}) <= 1:
         return placed
     views = [retitled(p.view, "wrap") for p in placed]
-    spots = pack(sheet, [(v.w, v.h) for v in views])
+    spots = pack(sheet, [(v.w, v.h) for v in views], pairs_of([v.name for v in views], together))
     if spots is None:
         views = [retitled(p.view, "small") for p in placed]
         spots = [(p.rect.x, p.rect.y) for p in placed]
