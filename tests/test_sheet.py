@@ -799,6 +799,118 @@ def _boxes_clear(sheet, placed):
             assert a.distance(b) >= GAP - 1e-6
 
 
+def _side_by_side(a, b, others) -> bool:
+    """Whether the box ``b`` (x0, y0, x1, y1) follows ``a`` side by side: their spans down
+    the sheet overlap and ``b`` is right of ``a``, or their spans across it overlap and
+    ``b`` is under ``a``; and none of ``others`` meets the strip between them."""
+    from shapely.geometry import box
+
+    for d in (1, 0):  # beside: the y spans overlap; under: the x spans overlap
+        lo, hi = max(a[d], b[d]), min(a[d + 2], b[d + 2])
+        if lo >= hi:
+            continue
+        gap = (a[3 - d], b[1 - d])  # a's right (lower) edge, b's left (upper) one
+        strip = box(gap[0], lo, gap[1], hi) if d == 1 else box(lo, gap[0], hi, gap[1])
+        return gap[0] <= gap[1] and not any(
+            strip.intersection(box(*o)).area > 1e-6 for o in others)
+    return False
+
+
+def _read_before(a, b) -> bool:
+    """Whether the box ``a`` comes before ``b`` read left to right or top to bottom: wholly
+    above it or wholly left of it, and ``b`` neither wholly above nor left of ``a``."""
+    def ahead(p, q):
+        return p[3] <= q[1] + 1e-6 or p[2] <= q[0] + 1e-6
+
+    return ahead(a, b) and not ahead(b, a)
+
+
+#: the scale factors (μl, μv, μa) and the kinematic diagrams' width (mm) chosen for these
+#: sheets before each position's plans were kept together, measured with
+#: ``plans sheet --variant N --format F --plans P`` at commit 3a47dc5: the pairing may
+#: not make a view smaller
+PAIRED = [
+    (7, "A2", (2, 8), (0.004, 0.04, 1.0), 190),
+    (3, "A2", (1, 4), (0.002, 0.01, 0.2), 190),
+    (3, "A1", (1, 4), (0.001, 0.01, 0.1), 370),
+    (2, "A1", (1, 4), (0.001, 0.005, 0.1), 370),
+    (1, "A2", (1, 4), (0.002, 0.005, 0.1), 190),
+    (6, "A1", (2, 8), (0.001, 0.01, 0.25), 190),
+    (9, "A2", (1, 4), (0.002, 0.01, 0.2), 190),
+]
+
+
+@pytest.mark.parametrize(("key", "fmt", "plans", "mu", "diagrams"), PAIRED,
+                         ids=[f"{k}-{f}-{p[0]},{p[1]}" for k, f, p, *_ in PAIRED])
+def test_each_positions_plans_are_side_by_side_in_position_order(key, fmt, plans, mu,
+                                                                  diagrams):
+    """With --plans 2,8 variant 7's A2 sheet put position 8's acceleration plan top left,
+    its velocity plan in the middle and position 2's plans at the bottom, the diagrams
+    between them: the views were packed by area. Each position's velocity and
+    acceleration plans now sit side by side (the acceleration plan right of or under the
+    velocity plan, nothing between), the first position's pair read first, at the scales
+    chosen before."""
+    _, _, sheet, info, _ = _sheet(key, fmt, "ru", plans)
+    placed = info["placed"]
+    rects = {p.view.name: p.rect.bounds for p in placed}
+    pairs = []
+    for k in plans:
+        mine = (f"velocity-{k}", f"acceleration-{k}")
+        others = [r for name, r in rects.items() if name not in mine]
+        a, b = (rects[n] for n in mine)
+        assert _side_by_side(a, b, others), f"position {k}'s plans are apart: {rects}"
+        pairs.append((min(a[0], b[0]), min(a[1], b[1]), max(a[2], b[2]), max(a[3], b[3])))
+    assert _read_before(*pairs), f"position {plans[1]}'s plans come first: {rects}"
+    sol = info["solutions"][0][2]
+    assert info["given"].mu_l <= mu[0] and sol.velocity.mu <= mu[1]
+    assert sol.acceleration.mu <= mu[2]
+    (width,) = [p.rect.w for p in placed if p.view.name == "diagrams"]
+    assert width >= diagrams - 1
+    _boxes_clear(sheet, placed)
+
+
+def test_a_pair_that_does_not_fit_together_is_packed_as_without_pairs():
+    """A pair kept together never costs a view its place: a tall narrow partner cannot
+    go right beside (it would meet the title block) or under a wide box, but both fit
+    apart; pack then packs them as it did without pairs."""
+    from drawing.layout import pack
+    from drawing.sheet import Sheet
+
+    sheet = Sheet("A2")
+    sizes = [(400.0, 190.0), (150.0, 380.0)]
+    assert pack(sheet, sizes) is not None
+    assert pack(sheet, sizes, [(0, 1)]) == pack(sheet, sizes)
+
+
+def test_pairs_are_packed_together_in_their_order():
+    """The boxes of variant 7's A2 sheet with --plans 2,8 (the plan of positions, the
+    two positions' plans, the diagrams, two tables): without pairs position 8's
+    acceleration plan is packed above its velocity plan and both before position 2's
+    plans; with them each velocity plan has its acceleration plan right of it or under
+    it, position 2's first."""
+    from drawing.layout import pack
+    from drawing.sheet import Sheet
+
+    sheet = Sheet("A2")
+    sizes = [(155.0, 137.0), (143.0, 98.0), (144.0, 59.0), (146.0, 171.0), (269.0, 116.0),
+             (190.0, 145.0), (142.0, 124.0), (154.0, 34.0)]
+
+    def boxes(spots):
+        return [(x, y, x + w, y + h) for (x, y), (w, h) in zip(spots, sizes, strict=True)]
+
+    apart = boxes(pack(sheet, sizes))
+    assert not _side_by_side(apart[3], apart[4], apart[:3] + apart[5:])
+    assert apart[4][3] <= apart[3][1] and apart[4][3] <= min(apart[1][1], apart[2][1])
+    got = boxes(pack(sheet, sizes, [(1, 2), (3, 4)]))
+    assert _side_by_side(got[1], got[2], [got[0], *got[3:]])
+    assert _side_by_side(got[3], got[4], got[:3] + got[5:])
+    first = (min(got[1][0], got[2][0]), min(got[1][1], got[2][1]),
+             max(got[1][2], got[2][2]), max(got[1][3], got[2][3]))
+    second = (min(got[3][0], got[4][0]), min(got[3][1], got[4][1]),
+              max(got[3][2], got[4][2]), max(got[3][3], got[4][3]))
+    assert _read_before(first, second)
+
+
 @pytest.mark.parametrize(("key", "fmt", "lang", "plans", "size", "broken", "mu_a"), [
     (3, "A2", "ru", None, 5.0, [["План ускорений (φ_1 = 60°),", "μ_a = 0,1 (м/с²)/мм"]], 0.1),
     (5, "A1", "en", (1, 4), 5.0, [["Acceleration plan (position 1, φ_1 = 314.7°),",
