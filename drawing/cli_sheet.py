@@ -424,16 +424,18 @@ def one_title_size(sheet, placed: list, together=()) -> list:
     on the same sheet. Where they all pack with every title at full size, the long ones
     on two lines, they are so; else every title is set at the smaller size, each view in
     its place (its box only shrinks). The scale factors are those chosen either way: a
-    title never costs a plan a step of its scale. ``together``: as for
-    :func:`drawing.layout.place_views`."""
-    from drawing.layout import Placed, pack, pairs_of
+    title never costs a plan a step of its scale. Nor does it part the views kept
+    ``together`` (:func:`drawing.layout.place_views`): where those are placed together
+    and the full-size titles do not pack so, the titles are set smaller."""
+    from drawing.layout import Placed, kept_together, pack, pairs_of
     from drawing.scene import Rect
     from drawing.views import retitled
 
     if len({p.view.caption_size for p in placed if p.view.caption_size}) <= 1:
         return placed
     views = [retitled(p.view, "wrap") for p in placed]
-    spots = pack(sheet, [(v.w, v.h) for v in views], pairs_of([v.name for v in views], together))
+    spots = pack(sheet, [(v.w, v.h) for v in views], pairs_of([v.name for v in views], together),
+                 apart=not kept_together(placed, together))
     if spots is None:
         views = [retitled(p.view, "small") for p in placed]
         spots = [(p.rect.x, p.rect.y) for p in placed]

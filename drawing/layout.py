@@ -27,8 +27,8 @@ from shapely.geometry import box
 from drawing.scene import Group, Rect
 from drawing.sheet import Sheet
 
-__all__ = ["LayoutError", "Placed", "describe", "pack", "pairs_of", "place_views",
-           "reads_before", "share_covered", "share_used", "spread"]
+__all__ = ["LayoutError", "Placed", "describe", "kept_together", "pack", "pairs_of",
+           "place_views", "reads_before", "share_covered", "share_used", "spread"]
 
 GAP = 6.0
 MARGIN = 4.0
@@ -141,7 +141,8 @@ def _beside(lead: Box, size: tuple[float, float]) -> list[tuple[float, float]]:
 
 
 def pack(sheet: Sheet, sizes: Sequence[tuple[float, float]],
-         pairs: Sequence[tuple[int, int]] = ()) -> list[tuple[float, float]] | None:
+         pairs: Sequence[tuple[int, int]] = (),
+         apart: bool = True) -> list[tuple[float, float]] | None:
     """Top-left corners for boxes of ``sizes`` (w, h mm) on ``sheet``, none meeting
     another (``GAP`` apart) nor the title block and field 26; None if no order tried
     fits them all. The order given is tried first, so that the plan of positions, put
@@ -150,11 +151,12 @@ def pack(sheet: Sheet, sizes: Sequence[tuple[float, float]],
     ``pairs`` (i, j): boxes to keep together, j right beside or right under i, each
     pair before the next in reading order (:func:`reads_before`): a position's velocity
     and acceleration plans. Where no order tried packs them so, the boxes are packed
-    as if no pairs were given: a pair kept together never costs a view its size."""
+    as if no pairs were given (``apart``), else None: a pair kept together never costs
+    a view its size."""
     inner, blocked = field(sheet)
     if pairs:
         spots = _pack_pairs(inner, blocked, sizes, pairs)
-        if spots is not None:
+        if spots is not None or not apart:
             return spots
     for order, rows in _orders([[i] for i in range(len(sizes))], sizes):
         spots = _first_fit(inner, blocked, sizes, order, rows)
@@ -230,6 +232,19 @@ def _pack_pairs(inner: Box, blocked: list[Box], sizes: Sequence[tuple[float, flo
         if all(reads_before(a, b) for a, b in itertools.pairwise(boxes)):
             return spots
     return None
+
+
+def kept_together(placed: list[Placed], together: Sequence[tuple[str, str]]) -> bool:
+    """Whether the views named in ``together`` are placed as :func:`pack` keeps pairs:
+    each second right beside or right under its first, each pair before the next."""
+    pairs = pairs_of([p.view.name for p in placed], together)
+    rects = [(p.rect.x, p.rect.y, p.rect.w, p.rect.h) for p in placed]
+    for i, j in pairs:
+        if not any(math.dist(spot, rects[j][:2]) < 1e-6
+                   for spot in _beside(rects[i], rects[j][2:])):
+            return False
+    boxes = [_union(rects[i], rects[j]) for i, j in pairs]
+    return bool(pairs) and all(reads_before(a, b) for a, b in itertools.pairwise(boxes))
 
 
 def _union(*rects: tuple[float, float, float, float]) -> Box:
