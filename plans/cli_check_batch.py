@@ -137,6 +137,7 @@ def run(args, files: list[str]) -> int:
             tol = ck.parse_tolerance(args.tolerance)
         except ValueError as exc:
             raise InputError("command line", f"--tolerance: {exc}") from None
+    _make_folders(args, folders)
     from .measured import Solvers
 
     solvers = Solvers()  # a mechanism at one angle is solved once for all its files
@@ -214,6 +215,20 @@ def _picture_folders(args, files: list[str]) -> dict[str, Path]:
     return out
 
 
+def _make_folders(args, folders: dict[str, Path]) -> None:
+    """Make the picture folders missing, once the run is not refused otherwise; one that
+    cannot be made (under a file, on a read-only disk) is a problem of the command line,
+    said in one line before anything is checked, not each file's internal error."""
+    for suffix, folder in folders.items():
+        opt = "--svg" if suffix == ".svg" else "--png"
+        try:
+            folder.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            value = args.svg if suffix == ".svg" else args.png
+            raise InputError("command line", f"{opt} {value}: cannot make the folder: "
+                             f"{exc.strerror or exc}") from None
+
+
 def _draw(result, args, path: str, folders: dict[str, Path]) -> None:
     """The file's pictures in their folders, all rendered before the first is written."""
     if not folders:
@@ -228,8 +243,6 @@ def _draw(result, args, path: str, folders: dict[str, Path]) -> None:
     one.output = None  # stdout: checked already, as the report's
     one.svg = str(folders[".svg"] / f"{stem}.svg") if ".svg" in folders else None
     one.png = str(folders[".png"] / f"{stem}.png") if ".png" in folders else None
-    for folder in folders.values():
-        folder.mkdir(parents=True, exist_ok=True)
     check_outputs(one)  # not an input, not a folder
     svg = overlay_svg(result, lang=args.lang)
     files = []

@@ -283,3 +283,18 @@ def test_an_internal_error_in_one_file_is_its_row_and_exit_3(klass, capsys, monk
     assert out.splitlines()[-1].endswith("1 not checked, 1 with an internal error.")
     with pytest.raises(RuntimeError):
         run(capsys, "check", klass["exact"], klass["scale"], "--debug")
+
+
+def test_a_picture_folder_that_cannot_be_made_is_refused_in_one_line(klass, capsys, tmp_path):
+    """--svg under a file (or where no folder can be made) is a problem of the command
+    line, exit 2 in one line before anything is checked, as a picture folder that is a
+    file is: it was each file's "internal error" (exit 3), its check lost."""
+    where = f"{klass['exact']}/pics/"
+    code, out, err = run(capsys, "check", klass["exact"], klass["scale"], "--svg", where)
+    assert code == 2 and out == ""
+    assert err.startswith(f"plans check: command line: --svg {where}: cannot make the folder")
+    assert len(err.splitlines()) == 1
+    code, out, err = run(capsys, "check", klass["exact"], klass["scale"], "--svg", tmp_path / "p",
+                         "--tolerance", "-5%")
+    assert code == 2 and not (tmp_path / "p").exists()  # nothing made for a run refused
+
