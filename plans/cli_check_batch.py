@@ -100,17 +100,32 @@ class Row:
         return self.result.measurement.title if self.result is not None else self.title
 
 
-def _title_of(path: str) -> str:
-    """The title of a file that cannot be checked, where it reads as TOML at all: the
-    teacher sees whose file it is."""
+def _read(path: str) -> dict:
+    """The file's TOML, where it reads as TOML at all; else {}."""
     from .fileformat import read_toml
 
     try:
         data, _ = read_toml(path)
     except (PlansError, OSError, ValueError):
-        return ""
-    title = data.get("title") if isinstance(data, dict) else None
+        return {}
+    return data if isinstance(data, dict) else {}
+
+
+def _title_of(path: str) -> str:
+    """The title of a file that cannot be checked, where it reads as TOML at all: the
+    teacher sees whose file it is."""
+    title = _read(path).get("title")
     return title if isinstance(title, str) else ""
+
+
+def _named(path: str) -> list[Path]:
+    """The files a measurement file names (its mechanism file, its table of variants),
+    relative to its folder as :func:`plans.measured.load` reads them: inputs of the run
+    even where the file cannot be checked, so that ``-o`` never goes over one."""
+    data = _read(path)
+    names = [Path(v) for v in (data.get("mechanism"), data.get("table"))
+             if isinstance(v, str) and v]
+    return [p if p.is_absolute() else Path(path).parent / p for p in names]
 
 
 def status(rows: list[Row]) -> int:
@@ -125,7 +140,9 @@ def run(args, files: list[str]) -> int:
 
     report = copy.copy(args)  # the report's own output, checked as one run checks it
     report.svg = report.png = None
-    claim_inputs(report, files)
+    # every file the run reads, refused as -o before anything is checked or drawn (a
+    # file that cannot be checked has its mechanism file read, or named, all the same)
+    claim_inputs(report, [*files, *(p for f in files for p in _named(f))])
     folders = _picture_folders(args, files)
     if args.png:
         from drawing import export

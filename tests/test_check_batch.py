@@ -298,3 +298,24 @@ def test_a_picture_folder_that_cannot_be_made_is_refused_in_one_line(klass, caps
                          "--tolerance", "-5%")
     assert code == 2 and not (tmp_path / "p").exists()  # nothing made for a run refused
 
+
+
+def test_the_table_never_goes_over_a_mechanism_file_a_row_names(klass, capsys, tmp_path):
+    """-o naming the mechanism file of a measurement file is refused before anything is
+    checked, as for a single file, even where that file cannot be checked (its mechanism
+    does not close at its angle): the table was written over the mechanism file."""
+    from pathlib import Path
+
+    press = tmp_path / "press.toml"
+    press.write_bytes((Path(__file__).resolve().parents[1] / "samples" / "press.toml").read_bytes())
+    before = press.read_bytes()
+    nobody = tmp_path / "nobody.toml"
+    nobody.write_text('mechanism = "press.toml"\nangle_deg = "x"\n[scales]\nmu_v = 0.05\n'
+                      "[segments]\npa3 = 55\n", encoding="utf-8")
+    pics = tmp_path / "pics"
+    for files in ([nobody, klass["exact"]], [klass["exact"], nobody]):
+        code, out, err = run(capsys, "check", *files, "-o", press, "--svg", pics)
+        assert code == 2 and out == "" and press.read_bytes() == before
+        assert err == (f"plans check: command line: -o '{press}' is the input file '{press}': "
+                       "the tool never writes into its inputs; choose another output name\n")
+        assert not pics.exists()  # no picture of a file checked before the refusal
