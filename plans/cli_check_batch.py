@@ -229,6 +229,16 @@ def _picture_folders(args, files: list[str]) -> dict[str, Path]:
                 raise InputError("command line", f"{seen[stem]} and {path} would both be "
                                  f"drawn as {name}{'/'.join(out)}: check them in two runs")
             seen[stem] = path
+        from .cli import _arg, _same_file
+
+        report = args.output
+        for path in files if report not in (None, "-") else ():
+            for suffix, d in out.items():
+                picture = d / f"{Path(path).stem}{suffix}"
+                if _same_file(report, picture):  # the table would replace the picture
+                    opt = "--svg" if suffix == ".svg" else "--png"
+                    raise InputError("command line", f"-o and {opt} are both {_arg(picture)}: "
+                                     "give each output its own file")
     return out
 
 

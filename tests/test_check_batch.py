@@ -319,3 +319,15 @@ def test_the_table_never_goes_over_a_mechanism_file_a_row_names(klass, capsys, t
         assert err == (f"plans check: command line: -o '{press}' is the input file '{press}': "
                        "the tool never writes into its inputs; choose another output name\n")
         assert not pics.exists()  # no picture of a file checked before the refusal
+
+
+def test_the_table_is_not_written_over_a_picture_of_the_batch(klass, capsys, tmp_path):
+    """-o pics/exact.svg with --svg pics/: the table replaced exact's picture (exit 1);
+    one file refuses -o and --svg of one name, and so does the batch, in one line."""
+    pics = tmp_path / "pics"
+    pics.mkdir()
+    code, out, err = run(capsys, "check", klass["exact"], klass["scale"], "--svg", pics,
+                         "-o", pics / "exact.svg")
+    assert code == 2 and out == "" and os.listdir(pics) == []
+    assert err == (f"plans check: command line: -o and --svg are both '{pics / 'exact.svg'}': "
+                   "give each output its own file\n")
