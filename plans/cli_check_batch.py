@@ -121,8 +121,9 @@ def _title_of(path: str) -> str:
 def _named(path: str) -> list[Path]:
     """The files a measurement file names (its mechanism file, its table of variants),
     relative to its folder as :func:`plans.measured.load` reads them: inputs of the run
-    even where the file cannot be checked, so that ``-o`` never goes over one."""
-    data = _read(path)
+    even where the file cannot be checked, so that ``-o`` never goes over one. A pipe
+    (/dev/stdin) is not read ahead: it would be read once only."""
+    data = _read(path) if Path(path).is_file() else {}
     names = [Path(v) for v in (data.get("mechanism"), data.get("table"))
              if isinstance(v, str) and v]
     return [p if p.is_absolute() else Path(path).parent / p for p in names]
