@@ -41,6 +41,18 @@ def configure(p) -> None:
                    help="write the report (several files: the table) to FILE instead of stdout")
 
 
+def command_tolerance(args):
+    """The tolerance ``--tolerance`` gives, over every file's own; None without it."""
+    from . import check as ck
+
+    if args.tolerance is None:
+        return None
+    try:
+        return ck.parse_tolerance(args.tolerance)
+    except ValueError as exc:
+        raise InputError("command line", f"--tolerance: {exc}") from None
+
+
 def run(args) -> int:
     if len(args.file) > 1:
         from .cli_check_batch import run as run_batch
@@ -58,12 +70,8 @@ def run(args) -> int:
         export.require()  # before anything is computed
     meas = ck.load(args.file)
     claim_inputs(args, meas.inputs[1:])
-    tol = meas.tolerance
-    if args.tolerance is not None:
-        try:
-            tol = ck.parse_tolerance(args.tolerance)
-        except ValueError as exc:
-            raise InputError("command line", f"--tolerance: {exc}") from None
+    tol = command_tolerance(args)
+    tol = meas.tolerance if tol is None else tol
     result = ck.check(meas, tol)
     files = []  # all built before any is written
     if args.svg or args.png:

@@ -136,7 +136,6 @@ def status(rows: list[Row]) -> int:
 
 
 def run(args, files: list[str]) -> int:
-    from . import check as ck
     from .cli import claim_inputs
 
     report = copy.copy(args)  # the report's own output, checked as one run checks it
@@ -149,12 +148,9 @@ def run(args, files: list[str]) -> int:
         from drawing import export
 
         export.require()  # before anything is computed
-    tol = None
-    if args.tolerance is not None:
-        try:
-            tol = ck.parse_tolerance(args.tolerance)
-        except ValueError as exc:
-            raise InputError("command line", f"--tolerance: {exc}") from None
+    from .cli_check import command_tolerance
+
+    tol = command_tolerance(args)
     _make_folders(args, folders)
     from .measured import Solvers
 
