@@ -22,6 +22,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+import numpy as np
 from shapely.geometry import box
 
 from drawing.scene import Group, Rect
@@ -73,11 +74,30 @@ def _first_fit(inner: Box, blocked: list[Box], sizes: Sequence[tuple[float, floa
     free spot (``rows``) or the leftmost then topmost one; None if one has none. A box
     with a ``partner`` is put at the first spot where its partner fits right beside it
     or right under it (:func:`_beside`), and its partner there."""
+    state: _State | None = ((None,) * len(sizes), ())
+    for i in order:
+        state = _put(inner, blocked, sizes, rows, partner or {}, state, i)
+        if state is None:
+            return None
+    return list(state[0])  # type: ignore[arg-type]
+
+
+#: what :func:`_put` has placed: each box's spot (None until placed), and the boxes
+#: placed, widened by GAP
+_State = tuple[tuple[tuple[float, float] | None, ...], tuple[Box, ...]]
+
+
+def _put(inner: Box, blocked: list[Box], sizes: Sequence[tuple[float, float]], rows: bool,
+         partner: dict[int, int], state: _State, i: int) -> _State | None:
+    """``state`` with box ``i`` (and its partner) put in, as :func:`_first_fit` puts each
+    box; None where it has no spot."""
+    spots, wide = state
+    if spots[i] is not None:  # put beside its partner already
+        return state
     x0, y0, x1, y1 = inner
-    hard = list(blocked)  # obstacles, exact
-    wide: list[Box] = []  # boxes placed, widened by GAP
-    spots: list[tuple[float, float] | None] = [None] * len(sizes)
-    partner = partner or {}
+    w, h = sizes[i]
+    if w > x1 - x0 + 1e-9 or h > y1 - y0 + 1e-9:
+        return None
 
     def free(x, y, w, h, edges):
         return (x0 - 1e-9 <= x and x + w <= x1 + 1e-9 and y0 - 1e-9 <= y
@@ -85,49 +105,50 @@ def _first_fit(inner: Box, blocked: list[Box], sizes: Sequence[tuple[float, floa
                 and not any(x < e[2] - 1e-9 and e[0] < x + w - 1e-9 and y < e[3] - 1e-9
                             and e[1] < y + h - 1e-9 for e in edges))
 
-    for i in order:
-        if spots[i] is not None:  # put beside its partner already
-            continue
-        w, h = sizes[i]
-        if w > x1 - x0 + 1e-9 or h > y1 - y0 + 1e-9:
-            return None
-        edges = [*hard, *wide]
-        j = partner.get(i)
-        # the corners a box of each size makes: the box itself, or it and its partner
-        # side by side or one under the other
-        shapes = [(w, h)] if j is None else [
-            (w, h), (w + GAP + sizes[j][0], max(h, sizes[j][1])),
-            (max(w, sizes[j][0]), h + GAP + sizes[j][1])]
-        xs = sorted(x for x in {c for sw, _ in shapes for c in (
-                        x0, x1 - sw, *(b[2] for b in edges), *(b[0] - sw for b in edges))}
-                    if x0 - 1e-9 <= x and x + w <= x1 + 1e-9)
-        ys = sorted(y for y in {c for _, sh in shapes for c in (
-                        y0, y1 - sh, *(b[3] for b in edges), *(b[1] - sh for b in edges))}
-                    if y0 - 1e-9 <= y and y + h <= y1 + 1e-9)
-        best = other = None
-        for a in (ys if rows else xs):
-            for b in (xs if rows else ys):
-                x, y = (b, a) if rows else (a, b)
-                if not free(x, y, w, h, edges):
-                    continue
-                if j is not None:
-                    wj, hj = sizes[j]
-                    here = [*edges, (x - GAP, y - GAP, x + w + GAP, y + h + GAP)]
-                    other = next((s for s in _beside((x, y, w, h), (wj, hj))
-                                  if free(*s, wj, hj, here)), None)
-                    if other is None:
-                        continue
-                best = (x, y)
-                break
-            if best is not None:
-                break
-        if best is None:
-            return None
-        for k, (x, y) in [(i, best)] + ([] if j is None else [(j, other)]):
-            spots[k] = (x, y)
-            wk, hk = sizes[k]
-            wide.append((x - GAP, y - GAP, x + wk + GAP, y + hk + GAP))
-    return spots  # type: ignore[return-value]
+    edges = [*blocked, *wide]
+    j = partner.get(i)
+    # the corners a box of each size makes: the box itself, or it and its partner
+    # side by side or one under the other
+    shapes = [(w, h)] if j is None else [
+        (w, h), (w + GAP + sizes[j][0], max(h, sizes[j][1])),
+        (max(w, sizes[j][0]), h + GAP + sizes[j][1])]
+    xs = sorted(x for x in {c for sw, _ in shapes for c in (
+                    x0, x1 - sw, *(b[2] for b in edges), *(b[0] - sw for b in edges))}
+                if x0 - 1e-9 <= x and x + w <= x1 + 1e-9)
+    ys = sorted(y for y in {c for _, sh in shapes for c in (
+                    y0, y1 - sh, *(b[3] for b in edges), *(b[1] - sh for b in edges))}
+                if y0 - 1e-9 <= y and y + h <= y1 + 1e-9)
+    best = other = None
+    # every candidate at once, in the order of the scan (rows: y, then x), as free() has
+    # it: the search for a position's plans together places a box thousands of times
+    xa, ya = np.asarray(xs), np.asarray(ys)
+    X, Y = (xa[None, :], ya[:, None]) if rows else (xa[:, None], ya[None, :])
+    ok = (x0 - 1e-9 <= X) & (X + w <= x1 + 1e-9) & (y0 - 1e-9 <= Y) & (Y + h <= y1 + 1e-9)
+    if edges:
+        E = np.asarray(edges)
+        Xe, Ye = X[..., None], Y[..., None]
+        ok &= ~((Xe < E[:, 2] - 1e-9) & (E[:, 0] < Xe + w - 1e-9) & (Ye < E[:, 3] - 1e-9)
+                & (E[:, 1] < Ye + h - 1e-9)).any(axis=-1)
+    for k in np.flatnonzero(ok):
+        a, b = divmod(int(k), ok.shape[1])
+        x, y = (xs[b], ys[a]) if rows else (xs[a], ys[b])
+        if j is not None:
+            wj, hj = sizes[j]
+            here = [*edges, (x - GAP, y - GAP, x + w + GAP, y + h + GAP)]
+            other = next((s for s in _beside((x, y, w, h), (wj, hj))
+                          if free(*s, wj, hj, here)), None)
+            if other is None:
+                continue
+        best = (x, y)
+        break
+    if best is None:
+        return None
+    new_spots, new_wide = list(spots), list(wide)
+    for k, (x, y) in [(i, best)] + ([] if j is None else [(j, other)]):
+        new_spots[k] = (x, y)
+        wk, hk = sizes[k]
+        new_wide.append((x - GAP, y - GAP, x + wk + GAP, y + hk + GAP))
+    return tuple(new_spots), tuple(new_wide)
 
 
 def _beside(lead: Box, size: tuple[float, float]) -> list[tuple[float, float]]:
@@ -220,14 +241,27 @@ def _pack_pairs(inner: Box, blocked: list[Box], sizes: Sequence[tuple[float, flo
                 for rows in (True, False):
                     yield tuple(i for k in perm for i in units[k]), rows
 
+    # the placements of every prefix of the orders tried: the orders share long prefixes
+    # (all but their last few units, in the order permutations come), so each order
+    # places only what its prefix did not (a sheet of five positions' plans: 24–29 s
+    # where no order keeps its pairs, placing every order from its first box)
+    placed: dict[tuple[bool, tuple[int, ...]], _State | None] = {}
     tried = set()
     for order, rows in itertools.chain(_orders(units, sizes), itertools.islice(every(), TRIES)):
         if (order, rows) in tried:
             continue
         tried.add((order, rows))
-        spots = _first_fit(inner, blocked, sizes, order, rows, partner)
-        if spots is None:
+        state: _State | None = ((None,) * len(sizes), ())
+        for k, i in enumerate(order):
+            key = (rows, order[:k + 1])
+            if key not in placed:
+                placed[key] = _put(inner, blocked, sizes, rows, partner, state, i)
+            state = placed[key]
+            if state is None:
+                break
+        if state is None:
             continue
+        spots = list(state[0])
         boxes = [_union(*((*spots[k], *sizes[k]) for k in pair)) for pair in pairs]
         if all(reads_before(a, b) for a, b in itertools.pairwise(boxes)):
             return spots
