@@ -11,6 +11,8 @@ from functools import cache
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from drawing.cli_sheet import build_sheet
 from drawing.labels import overlaps, text_box
@@ -883,6 +885,24 @@ def test_a_pair_that_does_not_fit_together_is_packed_as_without_pairs():
     sizes = [(400.0, 190.0), (150.0, 380.0)]
     assert pack(sheet, sizes) is not None
     assert pack(sheet, sizes, [(0, 1)]) == pack(sheet, sizes)
+
+
+@given(st.integers(1, 7).flatmap(lambda n: st.tuples(
+    st.just(n), st.lists(st.integers(0, n - 1), unique=True, max_size=n))))
+@settings(max_examples=60, deadline=None)
+def test_the_orders_of_the_pairs_search_are_those_it_filtered_from_all(case):
+    """The pairs' search tries the permutations of a sheet's units in which the pairs come
+    in their order. It had made all n! and kept those (3 024 of 362 880 for five
+    positions' plans, about 3 s of a 7 s build); they are now built so, and must be the
+    very same orders in the very same sequence, or a sheet would change."""
+    from itertools import permutations
+
+    from drawing.layout import _in_order
+
+    n, rank = case
+    want = [p for p in permutations(range(n))
+            if [p.index(k) for k in rank] == sorted(p.index(k) for k in rank)]
+    assert list(_in_order(n, rank)) == want
 
 
 def test_pairs_are_packed_together_in_their_order():
