@@ -70,9 +70,7 @@ def run(args) -> int:
         export.require()  # before anything is computed
     meas = ck.load(args.file)
     claim_inputs(args, meas.inputs[1:])
-    tol = command_tolerance(args)
-    tol = meas.tolerance if tol is None else tol
-    result = ck.check(meas, tol)
+    result = ck.check(meas, command_tolerance(args))  # None: the file's own, or the default
     files = []  # all built before any is written
     if args.svg or args.png:
         from drawing.check_overlay import overlay_svg

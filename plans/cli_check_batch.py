@@ -184,7 +184,7 @@ def _one(args, report, path: str, tol, folders: dict[str, Path], solvers=None) -
     try:
         meas = ck.load(path, solvers)
         claim_inputs(report, meas.inputs[1:])  # -o is never a mechanism file read
-        result = ck.check(meas, tol or meas.tolerance)
+        result = ck.check(meas, tol)  # None: the file's own, or the default
         _draw(result, args, path, folders)
         return Row(path, result, status=EXIT_OK if result.ok else EXIT_DEVIATIONS)
     except PlansError as exc:
