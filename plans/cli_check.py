@@ -12,7 +12,7 @@ import math
 
 from .cli import EXIT_DEVIATIONS, EXIT_OK, write_output
 from .errors import InputError
-from .fmt import from_x, json_angle, listing, num, ru_plural, signed
+from .fmt import columns, from_x, json_angle, listing, num, ru_plural, signed
 
 
 def configure(p) -> None:
@@ -234,15 +234,6 @@ def _row(d, lang, w) -> list[str]:
     return [name, meas, comp, dev, _pct(d.percent, lang), verdict]
 
 
-def _table(rows: list[list[str]], head: tuple[str, ...]) -> list[str]:
-    widths = [max(len(r[i]) for r in [list(head), *rows]) for i in range(len(head))]
-    out = []
-    for r in [list(head), *rows]:
-        cells = [r[0].ljust(widths[0])] + [r[i].rjust(widths[i]) for i in range(1, 5)] + [r[5]]
-        out.append("  " + "  ".join(cells).rstrip())
-    return out
-
-
 def to_text(result, lang: str = "en") -> str:
     w = WORDS[lang]
     meas = result.measurement
@@ -272,7 +263,8 @@ def to_text(result, lang: str = "en") -> str:
             continue
         out.append("")
         out.append(w[key])
-        out += _table([_row(d, lang, w) for d in devs], w["vcols"] if key == "values" else w["cols"])
+        out += columns([_row(d, lang, w) for d in devs],
+                       w["vcols"] if key == "values" else w["cols"], right=range(1, 5))
     out.append("")
     n = len(result.deviations)
     failed = result.failed

@@ -24,7 +24,7 @@ from pathlib import Path
 
 from .cli import EXIT_DEVIATIONS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, write_output
 from .errors import InputError, PlansError
-from .fmt import angle, ru_plural
+from .fmt import angle, columns, ru_plural
 
 #: a title longer than this is cut in the table (the file's title may hold 300 characters)
 TITLE_WIDTH = 40
@@ -391,11 +391,7 @@ def to_text(rows: list[Row], lang: str = "en", tol=None) -> str:
         cells += [verdict_cell(r, lang, common), diagnosis_cell(r, lang)]
         table.append(cells)
     head = list(w["cols"]) if titled else [c for i, c in enumerate(w["cols"]) if i != 1]
-    widths = [max(len(c[i]) for c in [head, *table]) for i in range(len(head))]
-    out.append("")
-    for cells in [head, *table]:
-        out.append("  " + "  ".join(c.ljust(widths[i]) for i, c in enumerate(cells)).rstrip())
-    out.append("")
+    out += ["", *columns(table, head), ""]
     counts = [(w["n_ok"], sum(r.status == EXIT_OK for r in rows)),
               (w["n_some"], sum(r.status == EXIT_DEVIATIONS for r in rows)),
               (w["n_bad"], sum(r.status == EXIT_INPUT for r in rows)),

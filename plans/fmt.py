@@ -45,6 +45,19 @@ def listing(parts, lang: str = "en") -> str:
     return ("; " if lang == "ru" else ", ").join(parts)
 
 
+def columns(rows, head, right=()) -> list[str]:
+    """``head`` and ``rows`` (lists of cells) as lines of aligned columns, each indented
+    by two spaces and two apart, cells left-aligned except the columns ``right``.
+
+    >>> columns([["ab", "1.5"], ["c", "12"]], ("x", "y"), right=(1,))
+    ['  x     y', '  ab  1.5', '  c    12']
+    """
+    lines = [list(head), *rows]
+    widths = [max(len(r[i]) for r in lines) for i in range(len(head))]
+    return ["  " + "  ".join(c.rjust(widths[i]) if i in right else c.ljust(widths[i])
+                             for i, c in enumerate(r)).rstrip() for r in lines]
+
+
 def ru_plural(n: int, one: str, few: str, many: str) -> str:
     """The Russian noun form that agrees with the whole number ``n``: 1, 21 … take
     ``one``, 2–4, 22–24 … ``few``, the rest (5–20, 11–14, 25 …) ``many``.
