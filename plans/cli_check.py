@@ -214,6 +214,12 @@ def _u(unit: str, lang: str) -> str:
     return next((UNITS[lang][k] for k, v in UNITS["en"].items() if v == unit), unit)
 
 
+def plan_unit(plan: str | None, lang: str) -> str:
+    """The unit of a value of the velocity plan (m/s) or of the acceleration plan
+    (m/s²), in ``lang``."""
+    return _u("m/s" if plan == "velocity" else "m/s²", lang)
+
+
 def _sense(x: float, w) -> str:
     return w["ccw"] if x > 0 else w["cw"] if x < 0 else ""
 
@@ -329,7 +335,7 @@ def lookalike_lines(result, lang: str = "en") -> list[str]:
     for lk in result.diagnosis.lookalikes:
         it = measured[lk.item]
         if lk.kind in ("value", "length"):
-            unit = _u("m/s" if it.plan == "velocity" else "m/s²", lang)
+            unit = plan_unit(it.plan, lang)
             exact = num(lk.exact, 4, lang) + (f" {unit}" if lk.kind == "value" else "")
             text = w[f"like_{lk.kind}"].format(
                 item=lk.item, m=num(it.measured, 4, lang), other=lk.other, unit=unit,

@@ -24,7 +24,8 @@ from pathlib import Path
 
 from .cli import EXIT_DEVIATIONS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, write_output
 from .errors import InputError, PlansError
-from .fmt import angle, columns, ru_plural
+from .fileformat import one_line
+from .fmt import angle, columns, listing, ru_plural
 
 #: a title longer than this is cut in the table (the file's title may hold 300 characters)
 TITLE_WIDTH = 40
@@ -347,7 +348,7 @@ def diagnosis_cell(row: Row, lang: str) -> str:
 
 def _slips(res, lang: str) -> str:
     """The look-alikes in a few words each: "pc and pe swapped", "pd measured as ad"."""
-    from .cli_check import _u
+    from .cli_check import plan_unit
 
     w = WORDS[lang]
     out: list[str] = []
@@ -359,14 +360,8 @@ def _slips(res, lang: str) -> str:
             if pair in said:
                 continue
             said.add(pair)
-        unit = _u("m/s" if plan.get(lk.item) == "velocity" else "m/s²", lang)
-        out.append(w[lk.kind].format(a=lk.item, b=lk.other, unit=unit))
-    return ", ".join(out) if lang != "ru" else "; ".join(out)
-
-
-def _cut(text: str, width: int) -> str:
-    text = " ".join(text.split())  # one line
-    return text if len(text) <= width else text[: width - 1] + "…"
+        out.append(w[lk.kind].format(a=lk.item, b=lk.other, unit=plan_unit(plan.get(lk.item), lang)))
+    return listing(out, lang)
 
 
 def to_text(rows: list[Row], lang: str = "en", tol=None) -> str:
@@ -386,7 +381,7 @@ def to_text(rows: list[Row], lang: str = "en", tol=None) -> str:
         res = r.result
         cells = [r.path]
         if titled:
-            cells.append(_cut(r.title_text(), TITLE_WIDTH))
+            cells.append(one_line(" ".join(r.title_text().split()), TITLE_WIDTH))
         cells.append(mechanism_cell(res.measurement, lang) if res is not None else "")
         cells += [verdict_cell(r, lang, common), diagnosis_cell(r, lang)]
         table.append(cells)
