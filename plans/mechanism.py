@@ -553,12 +553,12 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
         if not isinstance(hint, str) or len(hint) > MAX_TEXT:
             pr.add(where, f'must be a hint such as "above BD" or "right of C", got {quote(hint)}')
             continue
-        problem = _hint_problem(k, hint, sorted(all_points, key=len, reverse=True))
+        problem, refs = _hint_problem(k, hint, sorted(all_points, key=len, reverse=True))
         if problem:
             pr.add(where, f"{quote(hint)}: {problem}")
             continue
         hints[k] = hint
-        unused -= set(_hint_refs(hint, all_points))
+        unused -= set(refs)
     # a fixed point named as the output is refused as such below (no stroke), with the
     # outputs the mechanism has, rather than as a stray point to remove
     if isinstance(data.get("output"), str):
@@ -785,27 +785,22 @@ def _connections(frame, links, pairs, drv, bad_links, pr: Problems) -> None:
             pr.add(f"links.{lid}", f"{what}: {need}")
 
 
-def _hint_refs(hint: str, names) -> list[str]:
-    """The points a hint read without a problem names."""
-    from .branches import parse_hint
-
-    return parse_hint(hint, sorted(names, key=len, reverse=True))[1]
-
-
-def _hint_problem(key: str, hint: str, names: list[str]) -> str | None:
-    """Why an [assembly] hint for ``key`` cannot be read or cannot decide anything, or None."""
+def _hint_problem(key: str, hint: str, names: list[str]) -> tuple[str | None, list[str]]:
+    """Why an [assembly] hint for ``key`` cannot be read or cannot decide anything, or
+    None; and the points it names (none where it cannot be read)."""
     from .branches import parse_hint
 
     try:
         _, refs = parse_hint(hint, names)
     except ValueError as exc:
         known = f" — known points: {name_list(names)}" if "not a point name" in str(exc) else ""
-        return one_line(str(exc), 120) + known
+        return one_line(str(exc), 120) + known, []
     if key in refs:
-        return f"the hint places {key} relative to {key} itself: name other points, e.g. \"above BD\""
+        return (f"the hint places {key} relative to {key} itself: name other points, "
+                f'e.g. "above BD"'), refs
     if len(refs) == 2 and refs[0] == refs[1]:
-        return f"a line needs two different points, not {refs[0]} twice"
-    return None
+        return f"a line needs two different points, not {refs[0]} twice", refs
+    return None, refs
 
 
 #: names of fixed guides, in the order an inclined one takes them
