@@ -68,15 +68,13 @@ def field(sheet: Sheet) -> tuple[Box, list[Box]]:
 
 
 def _first_fit(inner: Box, blocked: list[Box], sizes: Sequence[tuple[float, float]],
-               order: Sequence[int], rows: bool,
-               partner: dict[int, int] | None = None) -> list[tuple[float, float]] | None:
+               order: Sequence[int], rows: bool) -> list[tuple[float, float]] | None:
     """Spots for the boxes ``sizes`` put in ``order``, each at the topmost then leftmost
-    free spot (``rows``) or the leftmost then topmost one; None if one has none. A box
-    with a ``partner`` is put at the first spot where its partner fits right beside it
-    or right under it (:func:`_beside`), and its partner there."""
+    free spot (``rows``) or the leftmost then topmost one; None if one has none. (Boxes
+    kept in pairs are put by :func:`_put` itself, each prefix once: :func:`_pack_pairs`.)"""
     state: _State | None = ((None,) * len(sizes), ())
     for i in order:
-        state = _put(inner, blocked, sizes, rows, partner or {}, state, i)
+        state = _put(inner, blocked, sizes, rows, {}, state, i)
         if state is None:
             return None
     return list(state[0])  # type: ignore[arg-type]
@@ -90,7 +88,9 @@ _State = tuple[tuple[tuple[float, float] | None, ...], tuple[Box, ...]]
 def _put(inner: Box, blocked: list[Box], sizes: Sequence[tuple[float, float]], rows: bool,
          partner: dict[int, int], state: _State, i: int) -> _State | None:
     """``state`` with box ``i`` (and its partner) put in, as :func:`_first_fit` puts each
-    box; None where it has no spot."""
+    box; None where it has no spot. A box with a ``partner`` is put at the first spot
+    where its partner fits right beside it or right under it (:func:`_beside`), and its
+    partner there."""
     spots, wide = state
     if spots[i] is not None:  # put beside its partner already
         return state
