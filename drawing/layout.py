@@ -120,10 +120,11 @@ def _put(inner: Box, blocked: list[Box], sizes: Sequence[tuple[float, float]], r
                 if y0 - 1e-9 <= y and y + h <= y1 + 1e-9)
     best = other = None
     # every candidate at once, in the order of the scan (rows: y, then x), as free() has
-    # it: the search for a position's plans together places a box thousands of times
+    # it (xs and ys are inside the field already): the search for a position's plans
+    # together places a box thousands of times
     xa, ya = np.asarray(xs), np.asarray(ys)
     X, Y = (xa[None, :], ya[:, None]) if rows else (xa[:, None], ya[None, :])
-    ok = (x0 - 1e-9 <= X) & (X + w <= x1 + 1e-9) & (y0 - 1e-9 <= Y) & (Y + h <= y1 + 1e-9)
+    ok = np.ones((len(ys), len(xs)) if rows else (len(xs), len(ys)), dtype=bool)
     if edges:
         E = np.asarray(edges)
         Xe, Ye = X[..., None], Y[..., None]
