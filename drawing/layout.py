@@ -289,8 +289,8 @@ def _pack_pairs(inner: Box, blocked: list[Box], sizes: Sequence[tuple[float, flo
         if state is None:
             continue
         spots = list(state[0])
-        boxes = [_union(*((*spots[k], *sizes[k]) for k in pair)) for pair in pairs]
-        if all(reads_before(a, b) for a, b in itertools.pairwise(boxes)):
+        if _in_reading_order([(*spot, *size) for spot, size in zip(spots, sizes, strict=True)],
+                             pairs):
             return spots
     return None
 
@@ -304,8 +304,16 @@ def kept_together(placed: list[Placed], together: Sequence[tuple[str, str]]) -> 
         if not any(math.dist(spot, rects[j][:2]) < 1e-6
                    for spot in _beside(rects[i], rects[j][2:])):
             return False
+    return bool(pairs) and _in_reading_order(rects, pairs)
+
+
+def _in_reading_order(rects: Sequence[tuple[float, float, float, float]],
+                      pairs: Sequence[tuple[int, int]]) -> bool:
+    """Whether each of ``pairs`` (indices into ``rects``, x, y, w, h), taken as the one
+    box around its two, is read before the next (:func:`reads_before`): what
+    :func:`_pack_pairs` asks of an order and :func:`kept_together` of a placement."""
     boxes = [_union(rects[i], rects[j]) for i, j in pairs]
-    return bool(pairs) and all(reads_before(a, b) for a, b in itertools.pairwise(boxes))
+    return all(reads_before(a, b) for a, b in itertools.pairwise(boxes))
 
 
 def _union(*rects: tuple[float, float, float, float]) -> Box:
