@@ -700,14 +700,13 @@ def positions_view(sol, cycle, lang: str = "ru", sizing: bool = False,
     pos = main[0]  # the one lettered
     for name in mech.frame:
         items += _support(_sheet(pos[name], mu_l))
+    # the joints (points of two links or more) are the mechanism's: found once, ringed
+    # in each heavy position
+    joints = sorted({n for link in mech.links.values() for n in link.points
+                     if len(mech.links_of(n)) > 1})
     for at in main:
-        joints = set()
-        for link in mech.links.values():
-            for n in link.points:
-                if n in at and len(mech.links_of(n)) > 1:
-                    joints.add(n)
-        for n in sorted(joints):
-            items.append(Circle(_sheet(at[n], mu_l), JOINT_R, LineType.MAIN, fill="white"))
+        items += [Circle(_sheet(at[n], mu_l), JOINT_R, LineType.MAIN, fill="white")
+                  for n in joints if n in at]
     shared = _shared((_sheet(pos[n], mu_l), n) for n in mech.point_names() if n in pos)
     for xy, names in reversed(shared):
         # close to its point even among the other positions' lines, which break for it
