@@ -325,12 +325,11 @@ def _plan(solver: Solver, motion: Motion, kind: str, mu) -> Plan:
     key = ("plan recipes", kind)
     recipes = solver.cache.get(key) or solver.cache.setdefault(key, [])
     pos = motion.position
-    acc = kind == "acceleration"
     for i, recipe in enumerate(recipes):
         if recipe.same and any(abs(pos[b] - pos[a]) > 0 for a, b in recipe.same):
             continue
         try:
-            plan = _follow(recipe, motion, acc, mu)
+            plan = _follow(recipe, motion, mu)
         except ZeroDivisionError:
             continue
         if i:
@@ -338,7 +337,7 @@ def _plan(solver: Solver, motion: Motion, kind: str, mu) -> Plan:
         return plan
     recipe = _work_out(solver.mech, motion, kind)
     recipes.insert(0, recipe)
-    return _follow(recipe, motion, acc, mu)
+    return _follow(recipe, motion, mu)
 
 
 def _work_out(mech: Mechanism, m: Motion, kind: str) -> _Recipe:
@@ -455,10 +454,10 @@ def _segments_of(steps, pole: str) -> Mapping[str, tuple[str, str]]:
     return MappingProxyType(out)
 
 
-def _follow(recipe: _Recipe, m: Motion, acc: bool, mu) -> Plan:
+def _follow(recipe: _Recipe, m: Motion, mu) -> Plan:
     """The plan at the motion's angle, by the recipe's steps (compiled once: see
-    :func:`_compile`); ``acc``: the acceleration plan's."""
-    if acc:
+    :func:`_compile`)."""
+    if recipe.kind == "acceleration":
         return recipe.follow(m.acceleration, [g.acceleration for g in m.groups], m.position, mu)
     return recipe.follow(m.velocity, [g.velocity for g in m.groups], m.position, mu)
 
