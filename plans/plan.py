@@ -41,6 +41,11 @@ class PlanLine(NamedTuple):
     unknown: str  # the term the line carries, e.g. "a^t_A3B"
 
 
+#: |Im| of a similarity ratio below which the point is in line with its two bases
+#: (:attr:`Source.in_line`): its step is then worded as a ratio of lengths
+IN_LINE = 1e-12
+
+
 class Source(NamedTuple):
     """How a plan point was obtained.
 
@@ -57,6 +62,12 @@ class Source(NamedTuple):
     ratio: complex = 0j
     sine: float = 1.0
     label: str = ""  # the physical term, e.g. "a^k_A3A"
+
+    @property
+    def in_line(self) -> bool:
+        """A similarity point in line with its two bases (``ratio`` real): found on the
+        line of their image by the ratio of lengths, not by a similar triangle."""
+        return abs(self.ratio.imag) < IN_LINE
 
 
 class PlanPoint(NamedTuple):
@@ -225,7 +236,7 @@ def image_sides(plan: Plan) -> list[tuple[complex, complex]]:
         if src.kind != "similarity":
             continue
         b0, b1, z = plan.value(src.base), plan.value(src.other), p.value
-        if abs(src.ratio.imag) < 1e-12:  # in line, as the step's equation is worded
+        if src.in_line:  # as the step's equation is worded
             lo, hi = min(0.0, src.ratio.real), max(1.0, src.ratio.real)
             sides = [(b0 + lo * (b1 - b0), b0 + hi * (b1 - b0))]
         else:
@@ -379,7 +390,7 @@ def _work_out(mech: Mechanism, m: Motion, kind: str) -> _Recipe:
                 if name in own and b0 in own and b1 in own:
                     # three points of the rigid figure: the ratio is the figure's own
                     ratio = (own[name] - own[b0]) / (own[b1] - own[b0])
-                    src = Source("similarity", eqs[abs(ratio.imag) >= 1e-12], (), n0, n1, ratio)
+                    src = Source("similarity", eqs[abs(ratio.imag) >= IN_LINE], (), n0, n1, ratio)
                     steps.append((_FIGURE, nx, n0, n1, ratio, src, absolute(name)))
                 else:  # a coincident point: where it is on the link changes with φ
                     steps.append((_SIMILAR, nx, name, b0, b1, n0, n1, eqs, absolute(name)))
@@ -512,7 +523,7 @@ def _compile(kind: str, pole: str, tip: str, steps, ends):
             body.append(f"q{i} = (pos[{name!r}] - pos[{b0!r}]) / (pos[{b1!r}] - pos[{b0!r}])")
             body.append(f"{v} = {var[n0]} + q{i} * ({var[n1]} - {var[n0]})")
             rec = (f"record(PlanPoint, ({pn!r}, {v}, record(Source, ('similarity', "
-                   f"{k(eqs)}[abs(q{i}.imag) >= 1e-12], (), {n0!r}, {n1!r}, q{i}, 1.0, ''))))")
+                   f"{k(eqs)}[abs(q{i}.imag) >= {IN_LINE!r}], (), {n0!r}, {n1!r}, q{i}, 1.0, ''))))")
         elif op == _TERM:
             _, _, start, gi, ri, ti, src, vec = step
             term = f"cons[{gi}].routes[{ri}].terms[{ti}].value"

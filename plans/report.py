@@ -450,7 +450,7 @@ def _similar(sol: Solution, plan, sims, lang: str) -> list[str]:
         B0, B1 = _mech_name(sol, s.base), _mech_name(sol, s.other)
         b0, b1 = _letter(plan, s.base), _letter(plan, s.other)  # a fixed point is the pole
         mm = num(plan.mm(s.base, p.name), 4, lang)
-        if abs(s.ratio.imag) < 1e-12:
+        if s.in_line:
             l_bx = abs(sol.positions[X] - sol.positions[B0]) / sol.mu_l
             l_bb = abs(sol.positions[B1] - sol.positions[B0]) / sol.mu_l
             sub = "·".join(num(v, 5, lang) for v in (plan.mm(s.base, s.other), l_bx)) + f" / {num(l_bb, 5, lang)}"
