@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import unicodedata
 
 
 def num(x: float, digits: int = 4, lang: str = "en") -> str:
@@ -53,9 +54,25 @@ def columns(rows, head, right=()) -> list[str]:
     ['  x     y', '  ab  1.5', '  c    12']
     """
     lines = [list(head), *rows]
-    widths = [max(len(r[i]) for r in lines) for i in range(len(head))]
-    return ["  " + "  ".join(c.rjust(widths[i]) if i in right else c.ljust(widths[i])
-                             for i, c in enumerate(r)).rstrip() for r in lines]
+    widths = [max(width(r[i]) for r in lines) for i in range(len(head))]
+
+    def pad(i, c):
+        fill = " " * (widths[i] - width(c))
+        return fill + c if i in right else c + fill
+
+    return ["  " + "  ".join(pad(i, c) for i, c in enumerate(r)).rstrip() for r in lines]
+
+
+def width(text: str) -> int:
+    """The columns ``text`` takes in a terminal: two for a wide (CJK) character, none for
+    a combining mark, one for the others, so that a student's title in Chinese does not
+    push the rest of its row out of line.
+
+    >>> width("ab"), width("曲柄"), width("и\u0306")
+    (2, 4, 1)
+    """
+    return sum(0 if unicodedata.combining(ch) else
+               2 if unicodedata.east_asian_width(ch) in "WF" else 1 for ch in text)
 
 
 def ru_plural(n: int, one: str, few: str, many: str) -> str:

@@ -16,6 +16,7 @@ from support import run
 from test_check import _variant_exact
 
 from plans import check as ck
+from plans import fmt
 
 MU = {"mu_l": 0.0025, "mu_v": 0.01, "mu_a": 0.2}
 VELOCITY = ["pb", "ps1", "pc", "pe", "ps2", "ps3", "bc", "dc"]
@@ -331,3 +332,19 @@ def test_the_table_is_not_written_over_a_picture_of_the_batch(klass, capsys, tmp
     assert code == 2 and out == "" and os.listdir(pics) == []
     assert err == (f"plans check: command line: -o and --svg are both '{pics / 'exact.svg'}': "
                    "give each output its own file\n")
+
+
+def test_a_title_in_chinese_keeps_its_row_in_line(tmp_path, capsys):
+    """A Chinese character takes two columns of a terminal: counted as one, a student
+    named 张伟 pushed the rest of the row one column out per character."""
+    _, segs, write = _variant_exact(tmp_path, 1, MU)
+    body = write(segs).read_text(encoding="utf-8")
+    files = []
+    for name, title in (("a", "Ivanov I. I."), ("b", "张伟，机械原理课程设计")):
+        files.append(tmp_path / f"{name}.toml")
+        files[-1].write_text(f'title = "{title}"\n' + body, encoding="utf-8")
+    code, out, _ = run(capsys, "check", *map(str, files))
+    assert code == 0
+    got = rows(out)
+    starts = {k: fmt.width(line[: line.index("variant 1")]) for k, line in got.items()}
+    assert starts["a"] == starts["b"], out
