@@ -75,6 +75,12 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
                     f"{mk.target} = 2·{g('omega')}·{g('rel')}: не забудьте множитель 2")
         return (f"the Coriolis acceleration {mk.target} is half as long as it should be",
                 f"{mk.target} = 2·{g('omega')}·{g('rel')}: the factor 2 is missing")
+    if k == "coriolis-double":
+        if ru:
+            return (f"ускорение Кориолиса {mk.target} вдвое больше",
+                    f"{mk.target} = 2·{g('omega')}·{g('rel')}: множитель 2 учтён дважды")
+        return (f"the Coriolis acceleration {mk.target} is twice as long as it should be",
+                f"{mk.target} = 2·{g('omega')}·{g('rel')}: the factor 2 is taken twice")
     if k == "normal-reversed":
         X, Y = g("X"), g("Y")
         if g("driver"):

@@ -63,7 +63,7 @@ class _Degenerate(Exception):
 class Mistake:
     """One common mistake, located: which term, line, point, group or plan.
 
-    kind: coriolis-reversed, coriolis-omitted, coriolis-half, term-scale,
+    kind: coriolis-reversed, coriolis-omitted, coriolis-half, coriolis-double, term-scale,
     normal-reversed, normal-omitted, normal-length, omega-sense, crank-sense, value-sense, line-swapped,
     branch, scale, scale-swapped, similarity-ratio, similarity-mirrored.
     """
@@ -87,7 +87,8 @@ class Mistake:
     @property
     def family(self) -> str:
         return {"coriolis-reversed": "coriolis", "coriolis-omitted": "coriolis",
-                "coriolis-half": "coriolis", "normal-reversed": "normal",
+                "coriolis-half": "coriolis", "coriolis-double": "coriolis",
+                "normal-reversed": "normal",
                 "normal-omitted": "normal", "normal-length": "normal", "omega-sense": "omega",
                 "crank-sense": "omega", "value-sense": "sense",
                 "line-swapped": "line", "branch": "branch", "scale": "scale",
@@ -272,7 +273,8 @@ class _Replayer:
         else:
             val = 2j * omega[self.guide_link(t)] * dv
         if mk.target == t.label and mk.kind in ("coriolis-reversed", "coriolis-omitted",
-                                                  "coriolis-half", "normal-reversed",
+                                                  "coriolis-half", "coriolis-double",
+                                                  "normal-reversed",
                                                   "normal-omitted", "normal-length",
                                                   "term-scale"):
             val = val * mk.factor
@@ -373,10 +375,11 @@ def hypotheses(sol: Solution, plans: set[str] | None = None) -> list[Mistake]:
                            info=(("velocity", mv / ma),)))
         out.append(Mistake("scale-swapped", "acceleration", "μv",
                            info=(("acceleration", ma / mv),)))
-    for t in cor:
-        out.append(Mistake("coriolis-half", "acceleration", t.label, 0.5, rep.guide_link(t),
-                           info=(("rel", f"V_{t.about[0]}{t.about[1]}"),
-                                 ("omega", f"ω{rep.guide_link(t)}"))))
+    for t in cor:  # the 2 of 2·ω·V_rel left out, or taken twice
+        for kind, f in (("coriolis-half", 0.5), ("coriolis-double", 2.0)):
+            out.append(Mistake(kind, "acceleration", t.label, f, rep.guide_link(t),
+                               info=(("rel", f"V_{t.about[0]}{t.about[1]}"),
+                                     ("omega", f"ω{rep.guide_link(t)}"))))
     for t in cor + nor:
         for f in (10.0, 0.1):
             out.append(Mistake("term-scale", "acceleration", t.label, f))

@@ -339,6 +339,7 @@ CASES = [
     # (mechanism, kind, target, plan, info)
     (PRESS, "coriolis-omitted", "a^k_A3A", None, {}),
     (PRESS, "coriolis-half", "a^k_A3A", None, {}),
+    (PRESS, "coriolis-double", "a^k_A3A", None, {}),
     (PRESS, "normal-reversed", "a^n_A3B", None, {}),
     (PRESS, "normal-omitted", "a^n_A3B", None, {}),
     (PRESS, "normal-reversed", "a^n_AO", None, {}),
