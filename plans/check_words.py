@@ -111,13 +111,15 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
         X, Y = g("X"), g("Y")
         own = num(float(g("own")), 4, lang)
         unit = "м" if ru else "m"
+        # other lengths of the same ratio: the plans cannot tell which one was taken
+        also = "".join(f" ({'или' if ru else 'or'} l_{w})" for w in g("also").split())
         if ru:
-            return (f"нормальное ускорение {mk.target} вычислено по длине l_{g('wrong')} "
+            return (f"нормальное ускорение {mk.target} вычислено по длине l_{g('wrong')}{also} "
                     f"вместо l_{X}{Y}",
                     f"{mk.target} = V²_{X}{Y}/l_{X}{Y}, где l_{X}{Y} = {own} {unit}: длина звена "
                     f"{X}{Y}, а не l_{g('wrong')}")
-        return (f"the normal acceleration {mk.target} computed with l_{g('wrong')} instead of "
-                f"l_{X}{Y}",
+        return (f"the normal acceleration {mk.target} computed with l_{g('wrong')}{also} "
+                f"instead of l_{X}{Y}",
                 f"{mk.target} = V_{X}{Y}²/l_{X}{Y} with l_{X}{Y} = {own} {unit}, the length of "
                 f"{X}{Y}, not l_{g('wrong')}")
     if k == "omega-sense":

@@ -395,7 +395,10 @@ def _normal_length_mistakes(sol: Solution, nor) -> list[Mistake]:
     E), not a point between two others of its link (a centre of mass mid-link: l_BS2 is
     no length a student takes for l_CD). Only ratios 10 % or more off 1 (less stays in
     the tolerance) and not near 10 or 0.1 (the term drawn 10 times off is its own
-    mistake); a ratio two lengths share is tried once, the first pair named."""
+    mistake); a ratio two lengths share is tried once. The lengths of the term's own link
+    come first, the one a student takes most often (l_BC, the rocker, for l_A3B), and the
+    others that share the ratio are named with it: on the press, V²/l_BC and ω3²·l_OB
+    for a^n_A3B are 0.766 and 0.765 of it, and the first had been named "l_OB" alone."""
     mech = sol.mechanism
     pos = sol.positions
 
@@ -412,21 +415,35 @@ def _normal_length_mistakes(sol: Solution, nor) -> list[Mistake]:
             for b in keep[i + 1:]:
                 if abs(pos[a] - pos[b]) > 1e-12:
                     lengths.setdefault((a, b), abs(pos[a] - pos[b]))
+    m = sol.scalar
+
+    def link_of(p: str) -> set[int]:  # a coincident point (A3) is its link's
+        return {m.point_link[p]} if p in m.coincident else set(mech.links_of(p))
+
     out = []
     for t in nor:
         X, Y = t.about
         own = abs(pos[X] - pos[Y])
-        seen: list[float] = []
-        for (a, b), length in lengths.items():
+        mine = link_of(X) & link_of(Y)
+        # (ratio, how, the pair named, the other pairs of that ratio, its length)
+        found: list[tuple[float, str, str, list[str], float]] = []
+        for (a, b), length in sorted(lengths.items(), key=lambda kv: not (
+                link_of(kv[0][0]) & link_of(kv[0][1]) & mine)):
             if {a, b} == {X, Y}:
                 continue
             for f, how in ((length / own, "omega"), (own / length, "speed")):
-                if abs(f - 1) < 0.1 or any(abs(f / g - 1) < 0.05 for g in (10.0, 0.1, *seen)):
+                if abs(f - 1) < 0.1 or any(abs(f / g - 1) < 0.05 for g in (10.0, 0.1)):
                     continue
-                seen.append(f)
-                out.append(Mistake("normal-length", "acceleration", t.label, f,
-                                   info=(("X", X), ("Y", Y), ("wrong", a + b), ("how", how),
-                                         ("own", repr(own)), ("length", repr(length)))))
+                same = next((fd for fd in found if abs(f / fd[0] - 1) < 0.05), None)
+                if same is None:
+                    found.append((f, how, a + b, [], length))
+                elif a + b != same[2] and a + b not in same[3]:
+                    same[3].append(a + b)
+        for f, how, wrong, also, length in found:
+            out.append(Mistake("normal-length", "acceleration", t.label, f,
+                               info=(("X", X), ("Y", Y), ("wrong", wrong), ("how", how),
+                                     ("own", repr(own)), ("length", repr(length)),
+                                     *((("also", " ".join(also)),) if also else ()))))
     return out
 
 

@@ -1433,3 +1433,25 @@ def test_a_normal_acceleration_with_another_links_length_is_named(tmp_path, caps
     code, out, _ = run(capsys, "check", path, "--lang", "ru")
     own = term[-2:]
     assert code == 1 and f"Диагноз: нормальное ускорение {term} вычислено по длине l_{wrong} вместо l_{own}." in out
+
+
+def test_a_normal_acceleration_with_the_rockers_length_names_it(tmp_path, capsys, press):
+    """a^n_A3B = V_A3B²/l_BC on the press (the rocker's whole length for the distance BA3):
+    the term is 0.766 of its own, and ω3²·l_OB (the frame's OB) makes it 0.765. Only the
+    first length found had been named, the frame's: "computed with l_OB instead of
+    l_A3B", sending the student to a length of the frame they never took. The link's own
+    length comes first, and the other of the same ratio is named with it."""
+    l_ba3 = abs(press.positions["A"] - press.positions["B"])
+    drawn = ck.simulate(press, ck.Mistake("term-scale", "acceleration", "a^n_A3B", l_ba3 / 0.75))
+    rng = np.random.default_rng(5)
+    segs = {it.name: ck.expected(it, drawn, MU_PRESS) + rng.uniform(-0.2, 0.2)
+            for it in plan_segments(press)}
+    path = write_meas(tmp_path / "m.toml", PRESS, segs, MU_PRESS)
+    mk = named(ck.check(ck.load(path)))
+    assert (mk.kind, mk.target, mk.get("wrong"), mk.get("also")) == ("normal-length", "a^n_A3B", "BC", "OB")
+    code, out, _ = run(capsys, "check", path)
+    assert code == 1 and "Diagnosis: the normal acceleration a^n_A3B computed with l_BC (or l_OB) " \
+                         "instead of l_A3B." in out
+    assert "the length of A3B, not l_BC" in out
+    code, out, _ = run(capsys, "check", path, "--lang", "ru")
+    assert "вычислено по длине l_BC (или l_OB) вместо l_A3B." in out
