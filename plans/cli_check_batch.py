@@ -338,9 +338,11 @@ def diagnosis_cell(row: Row, lang: str) -> str:
         return f"{w['slips']} {slips}"
     if diag.best is None:
         return w["none"] + (f"; {w['slips']} {slips}" if slips else "")
-    text = diag.best.mistake.describe(lang)
-    for alt in diag.alternatives:
-        text += f" {w['or']} {alt.mistake.describe(lang)}"
+    said = [f.mistake.describe(lang) for f in (diag.best, *diag.alternatives)]
+    # a mistake said in two clauses ("ω3 written with the wrong sense; the plans are
+    # right") takes the next one after a semicolon too, or "or" would join it to its
+    # second clause: "the plans are right or ω1 (V_A) drawn with the wrong sense"
+    text = f"; {w['or']} ".join(said) if any("; " in d for d in said) else f" {w['or']} ".join(said)
     if diag.best.unexplained:
         text += f"; {w['not']} {', '.join(diag.best.unexplained)}"
     return text

@@ -348,3 +348,22 @@ def test_a_title_in_chinese_keeps_its_row_in_line(tmp_path, capsys):
     got = rows(out)
     starts = {k: fmt.width(line[: line.index("variant 1")]) for k, line in got.items()}
     assert starts["a"] == starts["b"], out
+
+
+def test_an_alternative_is_not_joined_to_a_mistakes_second_clause(tmp_path, capsys):
+    """Right plans, ω3 written clockwise: "ω3 written with the wrong sense; the plans are
+    right", or the crank's V_A laid off the wrong way round (every ω reversed). The row
+    had read "…; the plans are right or ω1 (V_A) drawn with the wrong sense", as if the
+    plans being right were one of the two explanations."""
+    body = ('mechanism = "{}"\n[scales]\nmu_l = 0.01\nmu_v = 0.05\nmu_a = 1.0\n[segments]\n'
+            'pa3 = 55.4\naa3 = 23\npc = 72.3\n[values]\nomega3 = "4,82 по ч.с."\n')
+    sample = os.path.join(os.path.dirname(__file__), "..", "samples", "press.toml")
+    for name in ("a", "b"):
+        (tmp_path / f"{name}.toml").write_text(body.format(sample.replace("\\", "/")), encoding="utf-8")
+    for lang, words in (("en", "ω3 written with the wrong sense; the plans are right; or ω1 (V_A) drawn "
+                                "with the wrong sense"),
+                        ("ru", "угловая скорость ω3 записана с обратным направлением; планы построены "
+                                "верно; или ω1 (V_A) взята с обратным направлением")):
+        code, out, _ = run(capsys, "check", tmp_path / "a.toml", tmp_path / "b.toml", "--lang", lang)
+        assert code == 1
+        assert words in rows(out)["a"], rows(out)["a"]
