@@ -105,6 +105,18 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
         return (f"the normal acceleration {mk.target} is missing",
                 f"lay off {mk.target} = V_{X}{Y}²/l_{X}{Y} (∥ {X}{Y}, from {X} to {Y}) and draw the "
                 f"line of the tangential acceleration ⊥ {X}{Y} through its end")
+    if k == "normal-swapped":
+        X, Y = g("X"), g("Y")
+        tan = g("tangential")
+        if ru:
+            return (f"нормальное ускорение {mk.target} и касательное {tan} перепутаны: "
+                    f"{mk.target} отложено ⊥ {X}{Y}, линия {tan} проведена ∥ {X}{Y}",
+                    f"{mk.target} = V²_{X}{Y}/l_{X}{Y} откладывается ∥ {X}{Y}, от {X} к центру {Y}; "
+                    f"линия касательного ускорения {tan} проводится ⊥ {X}{Y} через его конец")
+        return (f"the normal {mk.target} and the tangential {tan} swapped: {mk.target} laid off "
+                f"⊥ {X}{Y}, the line of {tan} drawn ∥ {X}{Y}",
+                f"{mk.target} = V_{X}{Y}²/l_{X}{Y} is laid off ∥ {X}{Y}, from {X} towards the centre "
+                f"{Y}; the line of the tangential {tan} is drawn ⊥ {X}{Y} through its end")
     if k == "normal-length":
         from .fmt import num
 

@@ -64,7 +64,8 @@ class Mistake:
     """One common mistake, located: which term, line, point, group or plan.
 
     kind: coriolis-reversed, coriolis-omitted, coriolis-half, coriolis-double, term-scale,
-    normal-reversed, normal-omitted, normal-length, omega-sense, crank-sense, value-sense, line-swapped,
+    normal-reversed, normal-omitted, normal-length, normal-swapped, omega-sense, crank-sense,
+    value-sense, line-swapped,
     branch, scale, scale-swapped, similarity-ratio, similarity-mirrored.
     """
 
@@ -89,7 +90,8 @@ class Mistake:
         return {"coriolis-reversed": "coriolis", "coriolis-omitted": "coriolis",
                 "coriolis-half": "coriolis", "coriolis-double": "coriolis",
                 "normal-reversed": "normal",
-                "normal-omitted": "normal", "normal-length": "normal", "omega-sense": "omega",
+                "normal-omitted": "normal", "normal-length": "normal",
+                "normal-swapped": "normal", "omega-sense": "omega",
                 "crank-sense": "omega", "value-sense": "sense",
                 "line-swapped": "line", "branch": "branch", "scale": "scale",
                 "scale-swapped": "scale", "term-scale": "scale",
@@ -241,7 +243,7 @@ class _Replayer:
             elif s.kind == "intersection":
                 (l0, l1) = s.lines
                 d0, d1 = l0.direction, l1.direction
-                if mk.kind == "line-swapped" and mk.plan == kind and \
+                if mk.kind in ("line-swapped", "normal-swapped") and mk.plan == kind and \
                         plan_name(groups[mk.group].velocity.point) == name:
                     if mk.route == 0:
                         d0 = d0 * 1j
@@ -276,7 +278,7 @@ class _Replayer:
                                                   "coriolis-half", "coriolis-double",
                                                   "normal-reversed",
                                                   "normal-omitted", "normal-length",
-                                                  "term-scale"):
+                                                  "normal-swapped", "term-scale"):
             val = val * mk.factor
         return complex(val)
 
@@ -358,6 +360,17 @@ def hypotheses(sol: Solution, plans: set[str] | None = None) -> list[Mistake]:
                 out.append(Mistake("line-swapped", kind, r.unknown, group=gi, route=ri,
                                    info=(("relation", r.relation), ("wrong", wrong),
                                          ("through", ln.through), ("point", plan_name(cons.point)))))
+    # the normal and the tangential component swapped: a^n laid off ⊥ the link (to one
+    # side or the other) and the line of a^t drawn ∥ it through its end
+    for gi, g in enumerate(m.groups):
+        for ri, r in enumerate(g.acceleration.routes):
+            for t in r.terms:
+                if t.kind == "normal" and r.unknown_kind == "tangential":
+                    X, Y = t.about
+                    for f in (1j, -1j):
+                        out.append(Mistake("normal-swapped", "acceleration", t.label, f, group=gi,
+                                           route=ri, info=(("X", X), ("Y", Y),
+                                                           ("tangential", r.unknown))))
     for gi, g in enumerate(m.groups):
         if g.group.kind in (DyadKind.RRR, DyadKind.RRP, DyadKind.RPR):
             out.append(Mistake("branch", "both", g.group.label, group=gi,

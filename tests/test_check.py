@@ -345,6 +345,9 @@ CASES = [
     (PRESS, "normal-reversed", "a^n_AO", None, {}),
     (FOURBAR, "normal-reversed", "a^n_CD", None, {}),
     (FOURBAR, "normal-omitted", "a^n_CB", None, {}),
+    (FOURBAR, "normal-swapped", "a^n_CD", None, {}),
+    (FOURBAR, "normal-swapped", "a^n_CB", None, {}),
+    (PRESS, "normal-swapped", "a^n_DC", None, {}),
     (PRESS, "line-swapped", "V_DC", "velocity", {}),
     (PRESS, "line-swapped", "a^t_DC", "acceleration", {}),
     (FOURBAR, "line-swapped", "V_CB", "velocity", {}),
@@ -1455,3 +1458,28 @@ def test_a_normal_acceleration_with_the_rockers_length_names_it(tmp_path, capsys
     assert "the length of A3B, not l_BC" in out
     code, out, _ = run(capsys, "check", path, "--lang", "ru")
     assert "вычислено по длине l_BC (или l_OB) вместо l_A3B." in out
+
+
+def test_normal_and_tangential_swapped_are_named(tmp_path, capsys):
+    """Variant 3 with a^n_CD laid off ⊥ CD and the line of a^t_CD drawn ∥ CD through its
+    end (the two components swapped, a mistake of the first weeks): it had been "no
+    single mistake explains this", the closest a line ∥ instead of ⊥, which explains
+    only some of the items."""
+    mu = {"mu_l": 0.0025, "mu_v": 0.02, "mu_a": 0.4}
+    head = "variant = 3\n[scales]\n" + "".join(f"{k} = {v}\n" for k, v in mu.items())
+    path = tmp_path / "v.toml"
+    path.write_text(head + "[segments]\npb = 60\n", encoding="utf-8")
+    sol = ck.load(path).solution
+    mk = find(sol, "normal-swapped", "a^n_CD")
+    drawn = ck.simulate(sol, mk, mu)
+    rng = np.random.default_rng(3)
+    segs = {it.name: ck.expected(it, drawn, mu) + rng.uniform(-0.2, 0.2) for it in plan_segments(sol)}
+    path.write_text(head + "[segments]\n" + "".join(f"{ascii_name(k)} = {x:.2f}\n"
+                                                    for k, x in segs.items()), encoding="utf-8")
+    assert named(ck.check(ck.load(path))) == mk
+    code, out, _ = run(capsys, "check", path)
+    assert code == 1 and ("Diagnosis: the normal a^n_CD and the tangential a^t_CD swapped: a^n_CD "
+                          "laid off ⊥ CD, the line of a^t_CD drawn ∥ CD.") in out
+    code, out, _ = run(capsys, "check", path, "--lang", "ru")
+    assert ("Диагноз: нормальное ускорение a^n_CD и касательное a^t_CD перепутаны: a^n_CD отложено "
+            "⊥ CD, линия a^t_CD проведена ∥ CD.") in out
