@@ -390,13 +390,14 @@ def _fitted_scales(meas: Measurement, devs: tuple[Deviation, ...]) -> list[Mista
     Whether it explains them, and spoils none that was right, is judged as for any other
     mistake."""
     out = []
+    ratios: dict[str, float] = {}
     for plan in PLANS:
         pairs = [(d.item.measured, abs(d.computed)) for d in devs
                  if d.item.kind == "segment" and d.item.plan == plan and d.computed]
         if len(pairs) < 2:
             continue  # one segment could be anything
         # the ratio of the sums: the long segments, measured to the same ±mm, weigh most
-        r = sum(m for m, _ in pairs) / sum(c for _, c in pairs)
+        r = ratios[plan] = sum(m for m, _ in pairs) / sum(c for _, c in pairs)
         # a μ mistake is a step of the standard series or more (0.04 for 0.05: 20 %), not
         # the few per cent that drawing scatter leaves on two or three segments
         if r > 0 and abs(r - 1) >= 0.15 and not any(abs(r / f - 1) < 0.05 for f in (10.0, 0.1)):
@@ -409,6 +410,14 @@ def _fitted_scales(meas: Measurement, devs: tuple[Deviation, ...]) -> list[Mista
                 fits, r = near, stated / near
             out.append(Mistake("scale", plan, plan, r, info=((plan, r), ("fits", fits),
                                                              *scale_example(meas.solution, plan))))
+    # ω1 computed wrongly (n1/30 without π, 2π·n1 without /60): the velocity plan r times
+    # the exact one and the acceleration plan r² times, both at the μ written down
+    r = ratios.get("velocity", 1.0)
+    if "acceleration" in ratios and r > 0 and abs(r - 1) >= 0.15:
+        drv = meas.solution.mechanism.driver
+        out.append(Mistake("crank-omega", "both", drv.omega_sym, r, drv.link, info=(
+            ("velocity", r), ("acceleration", r * r), ("omega", abs(drv.omega) * r),
+            ("given", abs(drv.omega)), ("rpm", drv.rpm or ""), ("X", drv.tip), ("Y", drv.pivot))))
     return out
 
 

@@ -195,6 +195,22 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
         return (f"{mk.target} is assembled the other way (the other branch)",
                 f"draw the plan of positions with the given assembly of the group ({g('point')} "
                 "on the other side), then redraw the plans")
+    if k == "crank-omega":
+        from .fmt import num
+
+        X, Y, sym = g("X"), g("Y"), mk.target
+        w, given = num(float(g("omega")), 4, lang), num(float(g("given")), 4, lang)
+        fv, fa = _fnum(float(g("velocity")), lang), _fnum(float(g("acceleration")), lang)
+        unit = "рад/с" if ru else "rad/s"
+        how = (f"{sym} = π·n{mk.link}/30 = π·{num(float(g('rpm')), 4, lang)}/30 = {given} {unit}"
+               if g("rpm") else f"{sym} = {given} {unit}")
+        if ru:
+            return (f"угловая скорость {sym} вычислена неверно: оба плана соответствуют {sym} = "
+                    f"{w} {unit}, а не {given} {unit} (скорости ×{fv}, ускорения ×{fa})",
+                    f"{how}; V_{X} = {sym}·l_{Y}{X}, a_{X} = {sym}²·l_{Y}{X}")
+        return (f"{sym} computed wrongly: both plans fit {sym} = {w} {unit}, not {given} {unit} "
+                f"(velocities ×{fv}, accelerations ×{fa})",
+                f"{how}; V_{X} = {sym}·l_{Y}{X}, a_{X} = {sym}²·l_{Y}{X}")
     if k in ("scale", "scale-swapped"):
         from .measured import MU_KEY, MU_SYMBOL
         from .report import UNITS

@@ -65,7 +65,7 @@ class Mistake:
 
     kind: coriolis-reversed, coriolis-omitted, coriolis-half, coriolis-double, term-scale,
     normal-reversed, normal-omitted, normal-length, normal-swapped, omega-sense, crank-sense,
-    value-sense, line-swapped,
+    value-sense, crank-omega, line-swapped,
     branch, scale, scale-swapped, similarity-ratio, similarity-mirrored.
     """
 
@@ -92,7 +92,7 @@ class Mistake:
                 "normal-reversed": "normal",
                 "normal-omitted": "normal", "normal-length": "normal",
                 "normal-swapped": "normal", "omega-sense": "omega",
-                "crank-sense": "omega", "value-sense": "sense",
+                "crank-sense": "omega", "crank-omega": "omega", "value-sense": "sense",
                 "line-swapped": "line", "branch": "branch", "scale": "scale",
                 "scale-swapped": "scale", "term-scale": "scale",
                 "similarity-ratio": "similarity",
@@ -297,7 +297,8 @@ def simulate(sol: Solution, mk: Mistake | None, mu: dict[str, float] | None = No
         other = solve_position(sol.mechanism, sol.phi, solver=Solver(
             sol.mechanism, sol.structure, tuple(sigmas), ((),) * n), mu=mu)
         return _Replayer(other).exact()
-    if mk.kind in ("scale", "scale-swapped"):
+    if mk.kind in ("scale", "scale-swapped", "crank-omega"):
+        # ω1 k times off: every velocity (and ω) k times, every acceleration (and ε) k²
         st = _Replayer(sol).exact()
         factor = dict.fromkeys(PLANS, 1.0)
         for plan, f in mk.info:

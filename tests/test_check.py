@@ -1483,3 +1483,31 @@ def test_normal_and_tangential_swapped_are_named(tmp_path, capsys):
     code, out, _ = run(capsys, "check", path, "--lang", "ru")
     assert ("Диагноз: нормальное ускорение a^n_CD и касательное a^t_CD перепутаны: a^n_CD отложено "
             "⊥ CD, линия a^t_CD проведена ∥ CD.") in out
+
+
+def test_a_wrong_omega1_is_named(tmp_path, capsys):
+    """ω1 = n1/30 without π on variant 3 (n1 = 145 rpm: 4.83 rad/s for 15.18), the plans
+    drawn right for it at μv = 0.005 and μa = 0.04: every velocity 1/π of its own, every
+    acceleration 1/π². It had been "no single mistake explains this", the closest "the
+    acceleration plan drawn 10 times too small" (π² is nearly 10), which says nothing of
+    the velocity plan nor of the cause."""
+    mu = {"mu_l": 0.0025, "mu_v": 0.005, "mu_a": 0.04}
+    head = "variant = 3\n[scales]\n" + "".join(f"{k} = {v}\n" for k, v in mu.items())
+    path = tmp_path / "v.toml"
+    path.write_text(head + "[segments]\npb = 60\n", encoding="utf-8")
+    sol = ck.load(path).solution
+    k = 1 / math.pi
+    exact = ck.simulate(sol, None, mu)
+    rng = np.random.default_rng(4)
+    segs = {it.name: ck.expected(it, exact, mu) * (k if it.plan == "velocity" else k * k)
+            + rng.uniform(-0.2, 0.2) for it in plan_segments(sol)}
+    path.write_text(head + "[segments]\n" + "".join(f"{ascii_name(n)} = {x:.2f}\n"
+                                                    for n, x in segs.items()), encoding="utf-8")
+    mk = named(ck.check(ck.load(path)))
+    assert (mk.kind, mk.target) == ("crank-omega", "ω1")
+    assert abs(float(mk.get("omega")) - 145 / 30) < 0.02
+    code, out, _ = run(capsys, "check", path)
+    assert code == 1 and "Diagnosis: ω1 computed wrongly: both plans fit ω1 = 4.8" in out
+    assert "correction: ω1 = π·n1/30 = π·145/30 = 15.18 rad/s; V_B = ω1·l_AB, a_B = ω1²·l_AB" in out
+    code, out, _ = run(capsys, "check", path, "--lang", "ru")
+    assert "Диагноз: угловая скорость ω1 вычислена неверно: оба плана соответствуют ω1 = 4,8" in out
