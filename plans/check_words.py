@@ -211,6 +211,15 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
         return (f"{sym} computed wrongly: both plans fit {sym} = {w} {unit}, not {given} {unit} "
                 f"(velocities ×{fv}, accelerations ×{fa})",
                 f"{how}; V_{X} = {sym}·l_{Y}{X}, a_{X} = {sym}²·l_{Y}{X}")
+    if k == "crank-angle":
+        at, given = (g("at_ru"), g("given_ru")) if ru else (g("at"), g("given"))
+        if ru:
+            return (f"планы построены для положения кривошипа {at}, а не {given}",
+                    f"постройте кривошип на плане положений под углом {given} и постройте "
+                    "планы для этого положения")
+        return (f"the plans are drawn for the crank at {at}, not at {given}",
+                f"draw the crank at {given} on the plan of positions and build the plans for "
+                "that position")
     if k in ("scale", "scale-swapped"):
         from .measured import MU_KEY, MU_SYMBOL
         from .report import UNITS

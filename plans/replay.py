@@ -65,7 +65,7 @@ class Mistake:
 
     kind: coriolis-reversed, coriolis-omitted, coriolis-half, coriolis-double, term-scale,
     normal-reversed, normal-omitted, normal-length, normal-swapped, omega-sense, crank-sense,
-    value-sense, crank-omega, line-swapped,
+    value-sense, crank-omega, crank-angle, line-swapped,
     branch, scale, scale-swapped, similarity-ratio, similarity-mirrored.
     """
 
@@ -92,7 +92,8 @@ class Mistake:
                 "normal-reversed": "normal",
                 "normal-omitted": "normal", "normal-length": "normal",
                 "normal-swapped": "normal", "omega-sense": "omega",
-                "crank-sense": "omega", "crank-omega": "omega", "value-sense": "sense",
+                "crank-sense": "omega", "crank-omega": "omega", "crank-angle": "angle",
+                "value-sense": "sense",
                 "line-swapped": "line", "branch": "branch", "scale": "scale",
                 "scale-swapped": "scale", "term-scale": "scale",
                 "similarity-ratio": "similarity",
@@ -287,6 +288,8 @@ def simulate(sol: Solution, mk: Mistake | None, mu: dict[str, float] | None = No
     """The plans as a student who makes mistake ``mk`` draws them (None: the exact ones)."""
     if mk is None:
         return _Replayer(sol).exact()
+    if mk.kind == "crank-angle":  # the plans of another position, at the stated scales
+        return at_angle(sol, float(mk.get("phi")), mu)
     if mk.kind == "branch":
         # the signs the solution was solved on at its angle (past a change point they are
         # not those read at the file's angle), one of them flipped, none flipping again
@@ -306,6 +309,13 @@ def simulate(sol: Solution, mk: Mistake | None, mu: dict[str, float] | None = No
                 factor[plan] = float(f)
         return State(st.positions, st.velocity, st.acceleration, st.omega, st.epsilon, factor)
     return _Replayer(sol).run(mk)
+
+
+def at_angle(sol: Solution, phi: float, mu: dict[str, float] | None = None) -> State:
+    """The exact plans at crank angle ``phi`` (rad), at the scales ``mu``: those of a
+    student who drew the crank at that angle, not at the solution's."""
+    return _Replayer(solve_position(sol.mechanism, phi, solver=sol.solver,
+                                    mu=mu or sol.mu)).exact()
 
 
 def hypotheses(sol: Solution, plans: set[str] | None = None) -> list[Mistake]:

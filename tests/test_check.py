@@ -1511,3 +1511,43 @@ def test_a_wrong_omega1_is_named(tmp_path, capsys):
     assert "correction: ω1 = π·n1/30 = π·145/30 = 15.18 rad/s; V_B = ω1·l_AB, a_B = ω1²·l_AB" in out
     code, out, _ = run(capsys, "check", path, "--lang", "ru")
     assert "Диагноз: угловая скорость ω1 вычислена неверно: оба плана соответствуют ω1 = 4,8" in out
+
+
+@pytest.mark.parametrize("turn", [15.0, -90.0, 150.0])
+def test_plans_of_another_crank_angle_are_named(tmp_path, capsys, turn):
+    """The crank drawn 15° off (or from the other axis, or another numbered position's),
+    both plans then built right for it: every segment is off, and the check had said "no
+    single mistake", its closest a wrong length that explains a few. The angle whose exact
+    plans fit is found, to the whole degree the student turned the crank by."""
+    mu = {"mu_l": 0.0025, "mu_v": 0.01, "mu_a": 0.2}
+    _, segs, write = _variant_exact(tmp_path, 1, mu)
+    sol = ck.load(write(segs)).solution
+    other = ck.at_angle(sol, sol.phi + math.radians(turn), mu)
+    rng = np.random.default_rng(7)
+    drawn = {it.name: ck.expected(it, other, mu) + rng.uniform(-0.25, 0.25)
+             for it in plan_segments(sol)}
+    path = write(drawn)
+    res = ck.check(ck.load(path))
+    mk = named(res)
+    assert mk.kind == "crank-angle" and not res.diagnosis.best.unexplained
+    assert float(mk.get("phi")) == pytest.approx(sol.phi + math.radians(turn), abs=1e-12)
+    given = sol.mechanism.driver.file_angle(sol.phi)
+    at = (given + turn) % 360
+    code, out, _ = run(capsys, "check", path)
+    assert code == 1
+    assert (f"Diagnosis: the plans are drawn for the crank at φ1 = {at:g}°, not at φ1 = "
+            f"{given:g}°") in out, out
+    code, out, _ = run(capsys, "check", path, "--lang", "ru")
+    assert (f"Диагноз: планы построены для положения кривошипа φ1 = {at:g}°, а не φ1 = "
+            f"{given:g}°") in out, out
+
+
+def test_the_crank_angle_is_not_searched_where_one_slip_is_all(tmp_path):
+    """One item off is a slip or a mistake of one term, never another position: the
+    angle search (two hundred positions solved) is not even run."""
+    _, segs, write = _variant_exact(tmp_path, 1, {"mu_l": 0.0025, "mu_v": 0.01, "mu_a": 0.2})
+    segs["pc"] *= 1.4
+    meas = ck.load(write(segs))
+    devs = ck.check(meas, diagnose_=False).deviations
+    assert [d.item.name for d in devs if not d.ok] == ["pc"]
+    assert ck._fitted_angle(meas, devs, ck.Tolerance()) == []
