@@ -442,22 +442,27 @@ def _similar(sol: Solution, plan, sims, lang: str) -> list[str]:
     of two known ones by the ratio of lengths, any other by its similar triangle."""
     if not sims:
         return []
-    t, u = T[lang], UNITS[lang]
-    out = [t["sim"], ""]
+    out = [T[lang]["sim"], ""]
     for p in sims:
         s = p.source
-        X = _mech_name(sol, p.name)
-        B0, B1 = _mech_name(sol, s.base), _mech_name(sol, s.other)
-        b0, b1 = _letter(plan, s.base), _letter(plan, s.other)  # a fixed point is the pole
-        mm = num(plan.mm(s.base, p.name), 4, lang)
         if s.in_line:
-            l_bx = abs(sol.positions[X] - sol.positions[B0]) / sol.mu_l
-            l_bb = abs(sol.positions[B1] - sol.positions[B0]) / sol.mu_l
-            sub = "·".join(num(v, 5, lang) for v in (plan.mm(s.base, s.other), l_bx)) + f" / {num(l_bb, 5, lang)}"
-            out.append(Step(f"{b0}{p.name} = {b0}{b1}·{B0}{X} / {B0}{B1}", sub, mm, u["mm"]).markdown())
-        else:
-            out.append(f"- `{s.equation}`: {b0}{p.name} = {mm} {u['mm']}")
+            out.append(_side(sol, plan, p.name, s.base, s.other, s.base, lang).markdown())
+        else:  # the triangle is built on b0b1 from its two other sides, as on paper
+            out.append(f"- `{s.equation}`:")
+            out += ["  " + _side(sol, plan, p.name, s.base, s.other, end, lang).markdown()[2:]
+                    for end in (s.base, s.other)]
     return out + [""]
+
+
+def _side(sol: Solution, plan, x: str, b0: str, b1: str, end: str, lang: str) -> Step:
+    """The similarity theorem's side ``end``–``x`` of a figure on the plan segment b0b1:
+    end·x = b0b1·(END X) / (B0 B1), the link's segments as drawn at μl."""
+    X, B0, B1, END = (_mech_name(sol, n) for n in (x, b0, b1, end))
+    w0, w1, e = (_letter(plan, n) for n in (b0, b1, end))  # a fixed point is the pole
+    l_ex, l_bb = (abs(sol.positions[q] - sol.positions[r]) / sol.mu_l for q, r in ((X, END), (B1, B0)))
+    sub = "·".join(num(v, 5, lang) for v in (plan.mm(b0, b1), l_ex)) + f" / {num(l_bb, 5, lang)}"
+    return Step(f"{e}{x} = {w0}{w1}·{END}{X} / {B0}{B1}", sub, num(plan.mm(end, x), 4, lang),
+                UNITS[lang]["mm"])
 
 
 def _values(sol: Solution, plan, names, lang: str) -> list[str]:

@@ -495,3 +495,20 @@ def test_a_given_angle_is_written_as_the_crank_range_through_0_is_everywhere(cap
     assert code == 0, err
     drawn = svg.read_text("utf-8")
     assert drawn.count(" = −99,7°),") == 2 and "260,3" not in drawn
+
+
+def test_a_point_off_the_line_is_built_from_two_sides_each_by_formula(capsys, tmp_path):
+    """A coupler point E off the line BC is drawn on the plan as a triangle on bc: the
+    note said only '△bce ∼ △BCE: be = 17,94 мм', one side, with no formula and no
+    substitution. Now both sides be and ce, each formula → substitution → result."""
+    from plans.scenes import SCENES
+
+    path = tmp_path / "crank_rocker.toml"
+    path.write_text(SCENES["crank_rocker"].toml, "utf-8")
+    code, out, _ = run(capsys, "report", path, "--lang", "ru")
+    assert code == 0
+    lines = out.splitlines()
+    at = lines.index("- `△abe ∼ △ABE`:")
+    assert re.fullmatch(r"  `ae = ab·AE / AB = [\d,]+·[\d,]+ / [\d,]+ = [\d,]+ мм`", lines[at + 1])
+    assert re.fullmatch(r"  `be = ab·BE / AB = [\d,]+·[\d,]+ / [\d,]+ = [\d,]+ мм`", lines[at + 2])
+    assert "∼ △ABE`: " not in out
