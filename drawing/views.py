@@ -19,6 +19,8 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+import shapely
+from shapely.geometry import Polygon
 from shapely.geometry import box as shp_box
 
 from drawing.labels import (
@@ -759,24 +761,39 @@ def _stroke_dimension(items, p1, p2, direction: complex, value: str) -> list[Ite
     """The stroke H between the output's extreme positions ``p1``, ``p2`` (sheet mm), a
     dimension parallel to its guide (``direction``, in the world) and clear of the drawing
     ``items``: extension lines, a dimension line with two arrows, the value above it,
-    or on a shelf beyond its end where it has no room between the extension lines."""
+    or on a shelf beyond its end where it has no room between the extension lines.
+
+    It stands on the side of the guide where its extension lines are shortest, below a
+    horizontal guide unless above is shorter: what it must clear is only what lies across
+    its own span along the guide, so a guide above the whole mechanism (a press's) has
+    its stroke just above it, not under the mechanism with lines crossing all of it."""
     ux, uy = direction.real, -direction.imag  # the sheet's y points down
     if ux < -1e-12 or (abs(ux) <= 1e-12 and uy > 0):
         ux, uy = -ux, -uy  # read from left to right, or from the bottom up
-    nx, ny = -uy, ux  # the side the dimension stands on: below a horizontal guide
-    reach = max((cx - p1[0]) * nx + (cy - p1[1]) * ny for cx, cy in _coords(items)) + 8.0
+    nx, ny = -uy, ux  # below a horizontal guide; the value stands on the −n side of its line
+    width = text_width(value, 3.5)
+    lo, hi = sorted((p[0] - p1[0]) * ux + (p[1] - p1[1]) * uy for p in (p1, p2))
+    on_shelf = width + 2.0 > hi - lo
+    hi += 2.0 + (width + 3.0 if on_shelf else 0.0)  # the shelf runs on beyond the far end
+    lo -= 2.0
+    strip = Polygon([(p1[0] + ux * a + nx * b, p1[1] + uy * a + ny * b)
+                     for a, b in ((lo, -1e4), (hi, -1e4), (hi, 1e4), (lo, 1e4))])
+    across = shapely.get_coordinates([g.intersection(strip) for g in obstacles_of(items, clearance=0.0)])
+    across = (across - p1) @ np.array([nx, ny])
+    reach = {side: float(np.max(side * across, initial=0.0)) + 8.0 for side in (1.0, -1.0)}
+    side = -1.0 if reach[-1.0] < reach[1.0] - 1.0 else 1.0  # above only where shorter
+    ox, oy = side * nx, side * ny  # from the guide to the dimension line
 
-    def at(p, t, s=0.0):  # the point t along the normal from the dimension line, s along it
-        k = reach - ((p[0] - p1[0]) * nx + (p[1] - p1[1]) * ny)
-        return (p[0] + nx * (k + t) + ux * s, p[1] + ny * (k + t) + uy * s)
+    def at(p, t):  # the point t beyond the dimension line on the extension line from p
+        k = reach[side] - ((p[0] - p1[0]) * ox + (p[1] - p1[1]) * oy)
+        return (p[0] + ox * (k + t), p[1] + oy * (k + t))
 
     d1, d2 = at(p1, 0.0), at(p2, 0.0)
     mid = ((d1[0] + d2[0]) / 2, (d1[1] + d2[1]) / 2)
     out: list[Item] = [Segment(p1, at(p1, 2.0), LineType.THIN), Segment(p2, at(p2, 2.0), LineType.THIN),
                        Arrow(mid, d1, LineType.THIN, 3.0, 1.0), Arrow(mid, d2, LineType.THIN, 3.0, 1.0)]
     turn = math.degrees(math.atan2(uy, ux))  # clockwise on the sheet, as Text takes it
-    width = text_width(value, 3.5)
-    if width + 2.0 <= math.dist(d1, d2):
+    if not on_shelf:
         out.append(Text((mid[0] - nx, mid[1] - ny), value, size=3.5, anchor="middle", rotate_deg=turn))
     else:  # no room between the extension lines: on a shelf beyond the far one (GOST 2.307)
         end = d2 if (d2[0] - d1[0]) * ux + (d2[1] - d1[1]) * uy > 0 else d1

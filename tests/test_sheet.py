@@ -1513,3 +1513,29 @@ def test_the_heavy_positions_letters_and_numbers_do_not_overlap(key, fmt, lang):
     mech, scene, *_ = _sheet(key, fmt, lang, (1, 4))
     assert overlaps([it for it in scene.items() if isinstance(it, Text)]) == []
     _numbers_keep_clear_of_letters(scene)
+
+
+def test_the_stroke_stands_beside_its_guide_not_across_the_mechanism():
+    """The press's guide runs above the whole mechanism; H stood below all of it, its
+    extension lines some 100 mm long across every link and position. It now stands on
+    the side of the guide where its extension lines are shortest, here just above it;
+    a crank-slider's below its own span, not below the whole crank circle."""
+    from drawing.scene import Segment, flatten
+    from drawing.styles import LineType
+
+    def stroke(key, fmt):
+        _, scene, *_ = _sheet(key, fmt)
+        view = next(g for g in scene.layer("views").items if g.name == "view positions")
+        items = flatten([view])
+        (h,) = [t for t in items if isinstance(t, Text) and t.text.startswith("H = ")]
+        # the extension lines: thin, across the guide, the one pair ending past the value's line
+        ext = [s for s in items if isinstance(s, Segment) and s.line == LineType.THIN
+               and abs(s.p1[0] - s.p2[0]) < 1e-9 and abs(s.p2[1] - h.pos[1]) < 6]
+        return h, ext
+
+    h, ext = stroke("press", "A2")
+    assert len(ext) == 2
+    assert all(s.p2[1] < s.p1[1] for s in ext)  # from the guide upwards
+    assert max(math.dist(s.p1, s.p2) for s in ext) < 15
+    h, ext = stroke(6, "A1")  # crank-slider: the crank circle (R 120 mm) is beside its span
+    assert len(ext) == 2 and max(math.dist(s.p1, s.p2) for s in ext) < 100
