@@ -10,7 +10,7 @@ from __future__ import annotations
 import json
 import math
 
-from .cli import EXIT_DEVIATIONS, EXIT_OK, write_output
+from .cli import EXIT_DEVIATIONS, EXIT_OK, warn, write_output
 from .errors import InputError
 from .fmt import columns, from_x, json_angle, listing, num, ru_plural, signed
 
@@ -88,6 +88,8 @@ def run(args) -> int:
         text = to_text(result, args.lang)
     for path, data in [(args.output, text), *files]:
         write_output(path, data)
+    for w in result.measurement.solution.warnings:  # as solve and report: on stderr too
+        warn("check", w)
     return EXIT_OK if result.ok else EXIT_DEVIATIONS
 
 
@@ -282,8 +284,8 @@ def to_text(result, lang: str = "en") -> str:
         out += diagnosis_lines(result, lang)
     from .report import warnings
 
-    for warn in warnings(sol, lang):
-        out.append(f"{w['warning']}: {warn}")
+    for line in warnings(sol, lang):
+        out.append(f"{w['warning']}: {line}")
     return "\n".join(out) + "\n"
 
 
@@ -366,7 +368,10 @@ def _finding(f, lang: str):
 
 
 def to_json(result, lang: str = "en") -> dict:
-    """The check as data; the words of a finding (description, correction) in ``lang``."""
+    """The check as data; the words of a finding (description, correction) and of a
+    near-singular position's warning in ``lang``."""
+    from .report import warnings
+
     meas = result.measurement
     items = []
     for d in result.deviations:
@@ -401,6 +406,7 @@ def to_json(result, lang: str = "en") -> dict:
         "items": items,
         "ok": result.ok,
         "failed": [d.item.name for d in result.failed],
+        "warnings": warnings(meas.solution, lang),  # near-singular, as the text's last lines
         "diagnosis": None if result.ok else {
             "explained": diag.best is not None,
             "slips_only": result.slips_only,

@@ -22,7 +22,7 @@ import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from .cli import EXIT_DEVIATIONS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, write_output
+from .cli import EXIT_DEVIATIONS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, warn, write_output
 from .errors import InputError, PlansError
 from .fileformat import one_line
 from .fmt import angle, columns, listing, ru_plural
@@ -167,6 +167,8 @@ def run(args, files: list[str]) -> int:
     for r in rows:
         for line in r.error:
             print(f"plans check: {line}", file=sys.stderr)
+        for w in r.result.measurement.solution.warnings if r.result is not None else ():
+            warn("check", w, r.path)  # near-singular: said as for one file, naming it
     if args.json:
         text = json.dumps(to_json(rows, args.lang), ensure_ascii=False, indent=2) + "\n"
     else:

@@ -544,6 +544,24 @@ def test_near_a_dead_point_every_command_warns_in_its_language(capsys, tmp_path)
                           "near-singular, the lines ⊥ CB and ⊥ CD meet at 0.0")
 
 
+def test_a_check_near_a_dead_point_warns_on_stderr_and_in_its_json(capsys, tmp_path):
+    """The check of a plan drawn 0.03° short of seed 001's dead point wrote its warning
+    among the text report's lines only: with --json, or among several files, the
+    near-singular position was checked without a word of it anywhere."""
+    meas = tmp_path / "near.toml"
+    meas.write_text(f'mechanism = {str(ROOT / "samples" / "fourbar.toml")!r}\n'
+                    "angle_deg = 128.8046\n[scales]\nmu_v = 0.01\n[segments]\npb = 94\n",
+                    "utf-8")
+    head = "group 2–3 (RRR) at φ1 = 128.805°: near-singular, the lines ⊥ CB and ⊥ CD meet at 0.0"
+    code, out, err = run(capsys, "check", meas, "--json")
+    assert code == 0 and err.startswith(f"plans check: warning: {head}")
+    assert [w[:len(head)] for w in json.loads(out)["warnings"]] == [head]
+    code, out, err = run(capsys, "check", meas, "--json", "--lang", "ru")
+    (w,) = json.loads(out)["warnings"]
+    assert w.startswith("группа 2–3 (RRR) при φ1 = 128,805°: положение, близкое к особому")
+    code, out, err = run(capsys, "check", meas, PRESS.parent / "check_press.toml")
+    assert code == 1 and f"plans check: warning: {meas}: {head}" in err
+
 @pytest.mark.parametrize("point", ["O", "A", "B", "C"])
 def test_an_output_with_no_stroke_is_refused_not_replaced(capsys, tmp_path, point):
     """The press's output set to the fixed pivot O or the crank pin A has no stroke: solve,
