@@ -262,7 +262,7 @@ def _fig(x: float) -> str:
 
 
 def _ok(x) -> float | None:
-    x = float(x)
+    x = float(x) + 0.0  # + 0.0: no −0.0
     return x if math.isfinite(x) else None
 
 
@@ -359,7 +359,7 @@ def _json_rows(t: CycleTable):
             row["output"] = _ok(t.output_values[k]) if st.placed else None
         row["points"] = {
             name: {
-                key: ([float(z.real), float(z.imag)] if shown else None)
+                key: ([z.real + 0.0, z.imag + 0.0] if shown else None)
                 for key, z, shown in (
                     ("position", complex(m.position[name][k]), st.placed),
                     ("velocity", complex(m.velocity[name][k]), good),
@@ -408,7 +408,7 @@ def csv_chunks(t: CycleTable, rows: int = 1000):
     w.writerow(_csv_header(t))
 
     def f(x) -> str:
-        x = float(x)
+        x = float(x) + 0.0  # + 0.0: no −0.0
         return repr(x) if math.isfinite(x) else ""
 
     # the columns as Python numbers, converted once (not cell by cell from numpy), each

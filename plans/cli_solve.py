@@ -31,7 +31,7 @@ def run(args) -> int:
 
 
 def _xy(z: complex) -> list[float]:
-    return [float(z.real), float(z.imag)]
+    return [float(z.real) + 0.0, float(z.imag) + 0.0]  # + 0.0: no −0.0
 
 
 def to_json(sol, cycle=None) -> dict:
@@ -51,7 +51,8 @@ def to_json(sol, cycle=None) -> dict:
     st = sol.structure
     return {
         "points": points,
-        "links": {str(i): {"omega": sol.omega[i], "epsilon": sol.epsilon[i]} for i in sorted(sol.omega)},
+        "links": {str(i): {"omega": sol.omega[i] + 0.0, "epsilon": sol.epsilon[i] + 0.0}
+                  for i in sorted(sol.omega)},
         "scales": sol.mu,
         "segments": {k: float(v) for k, v in sol.segments.items()},
         "plans": {

@@ -4,6 +4,7 @@ import csv
 import io
 import json
 import math
+import re
 
 import numpy as np
 import pytest
@@ -441,6 +442,21 @@ def test_a_sine_is_never_above_one(capsys, tmp_path):
     sw = Solver(mech).sweep(np.radians(np.arange(0.0, 360.0, 1.0)))
     assert max(float(s.max()) for s in sw.sine.values()) == 1.0
     assert max(Solver(mech).solve_one(math.radians(a)).groups[0].sine_at() for a in range(360)) == 1.0
+
+
+def test_json_and_csv_never_write_a_negative_zero(capsys, tmp_path):
+    """A crank-slider whose rod is as long as its crank, at 0°: ε of the rod worked out
+    as −0.0, and solve --json, cycle --json and --csv wrote "epsilon": -0.0 (and -0.0 in
+    its column), where the text writes 0."""
+    from plans.scenes import SCENES
+
+    path = tmp_path / "s.toml"
+    path.write_text(SCENES["crank_slider_central"].toml.replace("B = 0.4", "B = 0.1"), "utf-8")
+    negative_zero = re.compile(r"(?<![\w.])-0\.0(?![\d.eE])")
+    for argv in (("solve", "--json"), ("cycle", "--json"), ("cycle", "--csv")):
+        code, out, err = run(capsys, argv[0], path, "--angle", "0", *argv[1:])
+        assert code == 0, err
+        assert not negative_zero.findall(out), argv
 
 
 def test_an_extreme_position_a_rounding_short_of_a_full_turn_reads_zero(capsys, tmp_path):
