@@ -51,7 +51,7 @@ from drawing.scene import (
 )
 from drawing.styles import LineType
 from plans.cycle import at_rest
-from plans.fmt import num
+from plans.fmt import notation_in, num
 from plans.plan import image_sides
 from plans.positions import drawn
 
@@ -455,7 +455,7 @@ def plan_view(sol, kind: str, tag: str, lang: str = "ru", label: str | None = No
     eqs: list[str] = []
     for p in plan.points.values():
         if p.source.kind == "intersection" and p.source.equation:
-            eqs.append(p.source.equation)
+            eqs.append(notation_in(p.source.equation, lang))
     return _finish(f"{kind}-{tag}", items, reqs, caption, eqs, sizing=sizing)
 
 
@@ -1025,7 +1025,7 @@ def segments_table_view(sols: list[tuple[str, object]], lang: str = "ru", parts:
                     keys.append((kind, v.start, v.end, v.label))
     rows = []
     for kind, a, b, label in keys:
-        row = [f"{name_markup(a)}{name_markup(b)}: {notation(label)}"]
+        row = [f"{name_markup(a)}{name_markup(b)}: {notation(notation_in(label, lang))}"]
         for _, sol in sols:
             plan = sol.velocity if kind == "v" else sol.acceleration
             if a in plan.points or a == plan.pole:

@@ -75,6 +75,16 @@ def width(text: str) -> int:
                2 if unicodedata.east_asian_width(ch) in "WF" else 1 for ch in text)
 
 
+def notation_in(text: str, lang: str) -> str:
+    """The method's notation as ``lang``'s textbooks write it: the engine's ``a^t_CB``
+    (tangential, as English and Chinese texts write it) is ``a^τ_CB`` in Russian.
+
+    >>> notation_in("a_C = a_B + a^n_CB + a^t_CB", "ru")
+    'a_C = a_B + a^n_CB + a^τ_CB'
+    """
+    return text.replace("a^t_", "a^τ_") if lang == "ru" else text
+
+
 def ru_plural(n: int, one: str, few: str, many: str) -> str:
     """The Russian noun form that agrees with the whole number ``n``: 1, 21 … take
     ``one``, 2–4, 22–24 … ``few``, the rest (5–20, 11–14, 25 …) ``many``.

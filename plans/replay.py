@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .check_words import _text
+from .fmt import notation_in
 from .geometry import cross, intersect
 from .kinematics import Solver
 from .measured import MU_KEY, PLANS, Item
@@ -103,10 +104,10 @@ class Mistake:
         return dict(self.info).get(key, "")
 
     def describe(self, lang: str = "en") -> str:
-        return _text(self, lang)[0]
+        return notation_in(_text(self, lang)[0], lang)
 
     def correction(self, lang: str = "en") -> str:
-        return _text(self, lang)[1]
+        return notation_in(_text(self, lang)[1], lang)
 
 
 class _Replayer:

@@ -12,7 +12,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from .fmt import SENSE, angle, num
+from .fmt import SENSE, angle, notation_in, num
 from .plan import Solution, plan_name
 from .records import flag_words
 
@@ -231,7 +231,7 @@ def note(sol: Solution, lang: str = "en", cycle=None,
             number += 1
         for w in warnings(s, lang):
             out += [f"> {t['warn']}: {w}", ""]
-    return "\n".join(out).rstrip() + "\n"
+    return notation_in("\n".join(out).rstrip() + "\n", lang)
 
 
 def _letter(plan, name: str) -> str:

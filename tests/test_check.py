@@ -1481,8 +1481,8 @@ def test_normal_and_tangential_swapped_are_named(tmp_path, capsys):
     assert code == 1 and ("Diagnosis: the normal a^n_CD and the tangential a^t_CD swapped: a^n_CD "
                           "laid off ⊥ CD, the line of a^t_CD drawn ∥ CD.") in out
     code, out, _ = run(capsys, "check", path, "--lang", "ru")
-    assert ("Диагноз: нормальное ускорение a^n_CD и касательное a^t_CD перепутаны: a^n_CD отложено "
-            "⊥ CD, линия a^t_CD проведена ∥ CD.") in out
+    assert ("Диагноз: нормальное ускорение a^n_CD и касательное a^τ_CD перепутаны: a^n_CD отложено "
+            "⊥ CD, линия a^τ_CD проведена ∥ CD.") in out
 
 
 def test_a_wrong_omega1_is_named(tmp_path, capsys):

@@ -512,3 +512,14 @@ def test_a_point_off_the_line_is_built_from_two_sides_each_by_formula(capsys, tm
     assert re.fullmatch(r"  `ae = ab·AE / AB = [\d,]+·[\d,]+ / [\d,]+ = [\d,]+ мм`", lines[at + 1])
     assert re.fullmatch(r"  `be = ab·BE / AB = [\d,]+·[\d,]+ / [\d,]+ = [\d,]+ мм`", lines[at + 2])
     assert "∼ △ABE`: " not in out
+
+
+def test_the_tangential_component_is_a_tau_in_russian(capsys):
+    """Russian textbooks write the tangential acceleration a^τ (a^t in English and Chinese
+    ones): the Russian note had written a^t_A3B among its Russian words."""
+    code, out, _ = run(capsys, "report", "samples/press.toml", "--lang", "ru")
+    assert code == 0
+    assert "`ε3 = a^τ_A3B / l_A3B = 11,891 / 0,57482 = 20,69 рад/с², против часовой стрелки`" in out
+    assert "a^t" not in out
+    code, out, _ = run(capsys, "report", "samples/press.toml")
+    assert "a^τ" not in out and "ε3 = a^t_A3B / l_A3B" in out

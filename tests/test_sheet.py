@@ -1539,3 +1539,19 @@ def test_the_stroke_stands_beside_its_guide_not_across_the_mechanism():
     assert max(math.dist(s.p1, s.p2) for s in ext) < 15
     h, ext = stroke(6, "A1")  # crank-slider: the crank circle (R 120 mm) is beside its span
     assert len(ext) == 2 and max(math.dist(s.p1, s.p2) for s in ext) < 100
+
+
+@pytest.mark.parametrize("lang, tangential", [("ru", "τ"), ("en", "t")])
+def test_the_sheets_equations_write_the_tangential_component_as_its_language_does(lang, tangential):
+    """On a Russian sheet the acceleration plan's equation and the segments' table read
+    a^τ_CB, as Russian textbooks write it; on an English one a^t_CB."""
+    from drawing.scene import flatten
+    from drawing.views import plan_view
+    from plans.plan import solve_position
+
+    sol = solve_position(variant(1))
+    texts = [it.text for it in flatten(plan_view(sol, "acceleration", "1", lang).items)
+             if isinstance(it, Text)]
+    eq = [t for t in texts if t.startswith("a_C = ")]
+    assert eq and all(f"a^{tangential}_" in t for t in eq), texts
+    assert not any(f"a^{'t' if tangential == 'τ' else 'τ'}_" in t for t in texts)
