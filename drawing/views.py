@@ -905,6 +905,10 @@ def _draw_diagrams(mech, cycle, lang, width, height, linear, s, v, a, flip=1.0) 
     w = WORDS[lang]
     units = (w["m"], w["ms"], w["ms2"]) if linear else (w["rad"], w["rads"], w["rads2"])
     names = ("s", "v", "a") if linear else ("ψ", "ω", "ε")
+    # the axes name their quantity as the tables and the note do: ω3 of the rocker 3,
+    # s_D of the slider's point D (a sheet may have ω of several links)
+    out = cycle.output
+    index = (out.point if linear else str(out.link)) if out is not None else ""
     items: list[Item] = []
     y = 0.0
     # rounding of a 0 is drawn as 0, not blown up to the height of the diagram (a
@@ -927,8 +931,9 @@ def _draw_diagrams(mech, cycle, lang, width, height, linear, s, v, a, flip=1.0) 
             if k % 2 == 0:
                 items.append(Text((x, y_zero + 1.5), str(k % len(cycle.positions) if k else 0),
                                   size=2.5, anchor="middle", baseline="hanging", italic=True))
-        items.append(Text((2, y - 6), _axis_name(name, unit, None if linear else flip, lang),
-                          size=3.5, baseline="hanging"))
+        axis = _axis_name(name + (f"_{{{index}}}" if index else ""), unit,
+                          None if linear else flip, lang)
+        items.append(Text((2, y - 6), axis, size=3.5, baseline="hanging", markup=True))
         items.append(Text((width + 6, y_zero - 1.5), "φ", size=3.5, anchor="end"))
         items.append(_start_anchored(Text((width - 2, y - 6), f"μ_{{{name}}} = {num(mu, 3, lang)} {_per_mm(unit, lang)}",
                           size=2.5, anchor="end", baseline="hanging", markup=True)))

@@ -766,7 +766,8 @@ def test_an_output_link_that_turns_all_the_way_gets_its_diagrams():
     view = diagrams_view(mech, cycle, "ru")
     assert view is not None
     texts = [t.text for t in view.items if isinstance(t, Text)]
-    assert {t.split(" (+")[0] for t in texts} >= {"ψ, рад", "ω, рад/с"}  # and their senses
+    k = cycle.output.link  # the axes name the output link's ψ and ω: a sheet may show several
+    assert {t.split(" (+")[0] for t in texts} >= {f"ψ_{{{k}}}, рад", f"ω_{{{k}}}, рад/с"}
     (mu_text,) = [t for t in texts if t.startswith("μ_{ψ} = ")]
     mu = float(mu_text.split("= ")[1].split()[0].replace(",", "."))
     axis = next(it for it in view.items if isinstance(it, Segment))
@@ -1280,10 +1281,11 @@ def test_the_angular_diagrams_say_which_sense_is_positive(name, tmp_path):
     sense = words["ccw"] if flip > 0 else words["cw"]
     texts = [t for t in diagrams_view(mech, cycle, "ru", solver=solver).items
              if isinstance(t, Text)]
-    for axis in ("ψ, рад", "ω, рад/с", "ε, рад/с²"):  # each axis's name, its sense after it
+    link = cycle.output.link
+    for axis in (f"ψ_{{{link}}}, рад", f"ω_{{{link}}}, рад/с", f"ε_{{{link}}}, рад/с²"):
+        # each axis's name, its sense after it
         (name,) = [t for t in texts if t.text.startswith(axis + " ")]
         assert name.text == f"{axis} (+ {sense})"
-    link = cycle.output.link
     for k, phi in enumerate(cycle.positions):
         omega = solve_position(mech, phi, solver=solver).omega[link]
         if abs(omega) > 1e-6:
@@ -1301,8 +1303,8 @@ def test_the_three_angular_axes_set_their_sense_one_space_after_the_unit(lang):
 
     _, texts = _texts(_sheet(3, "A2", lang)[4])
     w = WORDS[lang]
-    axes = [t for t in texts if t.startswith(("ψ, ", "ω, ", "ε, ")) and "(+" in t]
-    assert axes == [f"{n}, {w[u]} (+ {w['ccw']})"
+    axes = [t for t in texts if t.startswith(("ψ", "ω", "ε")) and "(+" in t]
+    assert axes == [f"{n}3, {w[u]} (+ {w['ccw']})"
                     for n, u in (("ψ", "rad"), ("ω", "rads"), ("ε", "rads2"))]  # a rocker: ccw
     assert not [t for t in texts if "  " in t]
 
@@ -1555,3 +1557,17 @@ def test_the_sheets_equations_write_the_tangential_component_as_its_language_doe
     eq = [t for t in texts if t.startswith("a_C = ")]
     assert eq and all(f"a^{tangential}_" in t for t in eq), texts
     assert not any(f"a^{'t' if tangential == 'τ' else 'τ'}_" in t for t in texts)
+
+
+def test_the_diagrams_axes_name_the_output_point_or_link():
+    """The axes read «s, м», «ω, рад/с»: whose? The note and the tables say ω3 and V_D,
+    and a sheet has ω of several links. They now read s_D, v_D, a_D of the slider's
+    point, ψ3, ω3, ε3 of the rocker."""
+    from drawing.views import diagrams_view
+    from plans.cycle import analyse_cycle
+
+    for mech, names in ((load("samples/press.toml"), ("s_{D}, м", "v_{D}, м/с", "a_{D}, м/с²")),
+                        (variant(3), ("ψ_{3}, рад", "ω_{3}, рад/с", "ε_{3}, рад/с²"))):
+        texts = [t.text.split(" (+")[0] for t in diagrams_view(mech, analyse_cycle(mech), "ru").items
+                 if isinstance(t, Text)]
+        assert [t for t in texts if t in names] == list(names), texts
