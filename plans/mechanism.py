@@ -1021,8 +1021,9 @@ def _driver(body, pr: Problems, links, frame, bad_links, frame_names) -> Driver 
         pr.add(where, "give omega (rad/s) or rpm, not both")
         return None
     if "rpm" in body:
+        # the slowest crank in rpm is the slowest in rad/s: 1e-6 rpm had passed as 1e-7 rad/s
         rpm = read_number(body["rpm"], where + ".rpm", pr, positive=True, unit="rpm",
-                      low=SPEED[0], high=SPEED[1])
+                          low=SPEED[0] * 30.0 / math.pi, high=SPEED[1])
         omega = None if rpm is None else math.pi * rpm / 30.0
     elif "omega" in body:
         omega = read_number(body["omega"], where + ".omega", pr, positive=True, unit="rad/s",
