@@ -9,6 +9,7 @@ the file is reported at once, with its location.
 from __future__ import annotations
 
 import math
+import os
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -366,7 +367,8 @@ def _input_file(value: Any, key: str, folder: Path | None, problems: Problems) -
         return None
     p = Path(value)
     if not p.is_absolute() and folder is not None:
-        p = folder / p
+        # students/../press.toml is press.toml, as a batch's table and a message name it
+        p = Path(os.path.normpath(folder / p))
     name = quote(value, 80)[1:-1]
     if p.is_dir():
         problems.add(key, f"{name}: is a folder, not a file")

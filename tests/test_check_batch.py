@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import json
 import os
+from pathlib import Path
 
 import pytest
 from support import run
@@ -367,3 +368,20 @@ def test_an_alternative_is_not_joined_to_a_mistakes_second_clause(tmp_path, caps
         code, out, _ = run(capsys, "check", tmp_path / "a.toml", tmp_path / "b.toml", "--lang", lang)
         assert code == 1
         assert words in rows(out)["a"], rows(out)["a"]
+
+
+def test_a_mechanism_file_up_a_folder_is_named_without_its_dots(tmp_path, capsys):
+    """A student's file in students/ naming ../press.toml had its row read
+    "students/../press.toml, φ1 = 30°"."""
+    press = os.path.join(os.path.dirname(__file__), "..", "samples", "press.toml")
+    (tmp_path / "press.toml").write_bytes(Path(press).read_bytes())
+    (tmp_path / "students").mkdir()
+    files = []
+    for name in ("a", "b"):
+        files.append(tmp_path / "students" / f"{name}.toml")
+        files[-1].write_text('mechanism = "../press.toml"\n[scales]\nmu_l = 0.01\nmu_v = 0.05\n'
+                             'mu_a = 1.0\n[segments]\npa3 = 55.4\n', encoding="utf-8")
+    code, out, _ = run(capsys, "check", *map(str, files))
+    assert code == 0
+    row = rows(out)["a"]
+    assert f"{tmp_path / 'press.toml'}, φ1 = 30°" in row and "/../" not in row, row
