@@ -373,10 +373,12 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
         else:
             how = ("its two assemblies meet; the cycle keeps the assembly, so the linkage "
                    "folds back there (its smooth motion would repeat only after two turns)")
+        # the plans are singular at the change points, not where two turns meet (a seam
+        # elsewhere): said beside them, not after the seam's angle at the end
         notes.append(
                 f"change points at {mech.driver.phi_sym} = " + ", ".join(f"{x}°" for x in change_angles(changes, mech.driver))
-            + mech.driver.convention() + f": the links of a group lie in line there, where {how}"
-            " (the plans there are singular)")
+            + mech.driver.convention() + f": the links of a group lie in line there and the "
+            f"plans are singular; there {how}")
     closes = valid | (near & m.placed)  # a sample on a change point closes to rounding
     # where a PRP group's two guides turn parallel, the point on both runs off to infinity:
     # the crank cannot pass, though both sides close (found by the sine's sign, not by a

@@ -67,6 +67,10 @@ def test_a_parallelogram_stays_a_parallelogram_over_the_whole_turn():
     assert [math.degrees(x) % 360 for x in c.change_points] == pytest.approx([180.0, 0.0], abs=1e-9)
     text = "\n".join(summary(c, mech.driver))
     assert "change points at φ1 = 180°, 0°" in text and "smooth motion" in text
+    # singular at the change points, said beside them: "(the plans there are singular)"
+    # had ended the line, after the angle where a slotted link's two turns meet
+    assert "change points at φ1 = 180°, 0°: the links of a group lie in line there and the " \
+           "plans are singular;" in text
     assert "cannot make a full turn" not in text
 
 
