@@ -9,8 +9,8 @@ import unicodedata
 def num(x: float, digits: int = 4, lang: str = "en") -> str:
     """A number with ``digits`` significant digits, no exponent for everyday magnitudes.
 
-    >>> num(2.771580654, 3), num(0.05), num(11.07238, 4, "ru")
-    ('2.77', '0.05', '11,07')
+    >>> num(2.771580654, 3), num(0.05), num(11.07238, 4, "ru"), num(-1e-7), num(2.5e-9, 4, "ru")
+    ('2.77', '0.05', '11,07', '-1e-07', '2,5e-09')
     """
     if x == 0 or not math.isfinite(x):
         s = "0" if x == 0 else "—"
@@ -21,8 +21,9 @@ def num(x: float, digits: int = 4, lang: str = "en") -> str:
             s = f"{x:.{decimals}f}"
             if "." in s:
                 s = s.rstrip("0").rstrip(".")
-        else:
-            s = f"{x:.{digits - 1}e}"
+        else:  # trailing zeros dropped as above: 1e-07, not 1.000e-07
+            mant, exp = f"{x:.{digits - 1}e}".split("e")
+            s = (mant.rstrip("0").rstrip(".") if "." in mant else mant) + "e" + exp
     if s in ("-0",):
         s = "0"
     return s.replace(".", ",") if lang == "ru" else s
