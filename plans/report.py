@@ -36,7 +36,7 @@ T = {
         "seg_same_all": "In the positions of the plans below ({title}) the segments are as above.",
         "stroke": "Stroke of the output point {p}:",
         "swing": "Swing of the output link {l}:",
-        "kth": "Crank angle between the extreme positions, θ, and the time ratio K:",
+        "kth": "Crank angle between the extreme positions, θ, and the time ratio K, from the crank's turn over the working stroke φ_w (from the extreme position ′ to ″ in the sense of ω{d}) and over the return stroke φ_r:",
         "change": "At {phi} = {at}°{conv}, {what}, the links of a group lie on one line and its two assemblies meet: the plans there are singular.",
         "change1": "a change point",
         "changes": "change points",
@@ -86,7 +86,7 @@ T = {
         "seg_same_all": "В положениях, для которых ниже построены планы ({title}), длины отрезков те же.",
         "stroke": "Ход выходной точки {p}:",
         "swing": "Угол размаха выходного звена {l}:",
-        "kth": "Угол между положениями кривошипа в крайних положениях механизма θ и коэффициент изменения средней скорости K:",
+        "kth": "Угол между положениями кривошипа в крайних положениях механизма θ и коэффициент изменения средней скорости K — по углам поворота кривошипа за рабочий ход φ_рх (от крайнего положения ′ до ″ в сторону ω{d}) и за холостой ход φ_хх:",
         "change": "При {phi} = {at}°{conv} ({what}) звенья группы лежат на одной прямой и обе её сборки совпадают: планы скоростей и ускорений там не строятся.",
         "change1": "точка смены сборки",
         "changes": "точки смены сборки",
@@ -217,10 +217,27 @@ def note(sol: Solution, lang: str = "en", cycle=None,
             else:
                 out.append(t["swing"].format(l=cycle.output.link))
                 out.append("")
-                out.append(Step("ψ", "", n(math.degrees(cycle.stroke)), u["deg"]).markdown())
-            out += ["", t["kth"], ""]
+                arm = _rocker_arm(mech, cycle.output)
+                out.append(Step(arm, "", n(math.degrees(cycle.stroke)), u["deg"]).markdown())
+            out += ["", t["kth"].format(d=d.link), ""]
             th = math.degrees(cycle.theta)
-            out.append(Step("θ", "", n(th), u["deg"]).markdown())
+            # the crank's turn from the working stroke's start (the first extreme) to its end
+            e0, e1 = cycle.extremes
+            work = math.degrees((math.copysign(1.0, d.omega) * (e1 - e0)) % (2 * math.pi))
+            w, r = ("φ_рх", "φ_хх") if lang == "ru" else ("φ_w", "φ_r")
+            # the turns carried to one decimal more than θ is given to, so that their
+            # difference gives θ as printed (3,855° from 183,855° and 176,145°)
+            shown = n(th)
+            carry = len(shown.replace(",", ".").partition(".")[2]) + 1
+
+            def turn(x: float) -> str:
+                return n(x, math.floor(math.log10(max(x, 1.0))) + 1 + carry)
+
+            out.append(Step(w, "", turn(work), u["deg"]).markdown())
+            out.append(Step(f"{r} = 360° − {w}", f"360° − {turn(work)}°", turn(360.0 - work),
+                            u["deg"]).markdown())
+            out.append(Step(f"θ = ({w} − {r}) / 2", f"({turn(work)}° − {turn(360.0 - work)}°) / 2",
+                            shown, u["deg"]).markdown())
             out.append(Step("K = (180° + θ) / (180° − θ)", f"(180° + {n(th)}°) / (180° − {n(th)}°)",
                             n(cycle.K), "").markdown())
     out.append("")
@@ -435,6 +452,13 @@ def _belongs(m, plan_point: str, links) -> bool:
         if plan_name(name) == plan_point:
             return owner in links
     return False
+
+
+def _rocker_arm(mech, output) -> str:
+    """"ψ = ∠C′DC″": the swing as the angle between the rocker's two extreme positions
+    on the plan of positions, at its fixed pivot; "ψ" where the rocker has no fixed point."""
+    pivot = next((p for p in mech.links[output.link].points if p in mech.frame), None)
+    return f"ψ = ∠{output.point}′{pivot}{output.point}″" if pivot else "ψ"
 
 
 def _similar(sol: Solution, plan, sims, lang: str) -> list[str]:

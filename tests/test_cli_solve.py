@@ -1,6 +1,7 @@
 """The solve and report commands, run in-process as a user would run them."""
 
 import json
+import math
 import re
 from pathlib import Path
 
@@ -8,6 +9,7 @@ import pytest
 from support import NON_GRASHOF, run
 
 from plans.fmt import num
+from plans.variants import variant
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -209,7 +211,7 @@ def test_the_russian_note_reads_as_a_teacher_wants(capsys):
     code span; the Chebyshev line's quantities take a dash."""
     code, out, _ = run(capsys, "report", "samples/press.toml", "--lang", "ru")
     assert code == 0
-    assert "- `θ = 39,86°`\n- `K = (180° + θ) / (180° − θ) = (180° + 39,86°) / (180° − 39,86°) = 1,569`" in out
+    assert "- `θ = (φ_рх − φ_хх) / 2 = (219,865° − 140,135°) / 2 = 39,86°`\n- `K = (180° + θ) / (180° − θ) = (180° + 39,86°) / (180° − 39,86°) = 1,569`" in out
     assert "- `H = D′D″·μl = 51,136·0,01 = 0,5114 м`" in out
     assert "(n = 5 — число подвижных звеньев, p5 = 7 — число одноподвижных пар" in out
     assert not re.search(r" `$", out, re.M)  # no "= 1,569 `" at a line's end
@@ -523,3 +525,23 @@ def test_the_tangential_component_is_a_tau_in_russian(capsys):
     assert "a^t" not in out
     code, out, _ = run(capsys, "report", "samples/press.toml")
     assert "a^τ" not in out and "ε3 = a^t_A3B / l_A3B" in out
+
+
+def test_the_note_works_out_theta_from_the_cranks_turns_and_names_the_swing(capsys):
+    """θ and ψ stood as bare values («θ = 54,88°»), with no formula to follow: θ is now
+    worked out from the crank's turn over the working and the return stroke, and ψ named
+    as the angle between the rocker's extreme positions at its pivot. The turns are the
+    cycle's own: φ_рх − 180° = θ."""
+    from plans.cycle import analyse_cycle
+
+    th = math.degrees(analyse_cycle(variant(3)).theta)
+    work, back = 180.0 + th, 180.0 - th
+    code, out, _ = run(capsys, "report", "--variant", "3", "--lang", "ru")
+    assert code == 0
+    assert "- `ψ = ∠C′DC″ = 79,54°`" in out
+    w, r = (f"{x:.6g}".replace(".", ",") for x in (work, back))
+    assert f"- `φ_рх = {w}°`" in out
+    assert f"- `φ_хх = 360° − φ_рх = 360° − {w}° = {r}°`" in out
+    assert f"- `θ = (φ_рх − φ_хх) / 2 = ({w}° − {r}°) / 2 = {th:.4g}°`".replace(".", ",") in out
+    code, out, _ = run(capsys, "report", "samples/press.toml")
+    assert "- `θ = (φ_w − φ_r) / 2 = (219.865° − 140.135°) / 2 = 39.86°`" in out
