@@ -157,7 +157,7 @@ def check(meas: Measurement, tol: Tolerance | None = None, *, diagnose_: bool = 
     tol = tol or meas.tolerance or Tolerance()
     st = _Replayer(meas.solution).exact()
     devs = tuple(compare(it, expected(it, st, meas.mu), tol) for it in meas.items)
-    diag = diagnose(meas, devs, tol) if diagnose_ else Diagnosis(None)
+    diag = diagnose(meas, devs, tol, exact=st) if diagnose_ else Diagnosis(None)
     if diagnose_ and not all(d.ok for d in devs):
         diag = _closer_slips(meas, devs, st, tol, diag)
         left = set(diag.best.unexplained) if diag.best else {d.item.name for d in devs if not d.ok}
@@ -335,9 +335,11 @@ def _far(d: Deviation) -> bool:
     return abs(d.deviation) > 1.5 * d.limit
 
 
-def diagnose(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance) -> Diagnosis:
+def diagnose(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance,
+             exact: State | None = None) -> Diagnosis:
     """Redraw the plans under each common mistake; keep the one that explains the
-    deviations (all of them, or all but one in four) without spoiling what was right."""
+    deviations (all of them, or all but one in four) without spoiling what was right.
+    ``exact``: the exact plans, where the caller has them already."""
     bad = [i for i, d in enumerate(devs) if not d.ok]
     if not bad:
         return Diagnosis(None)
@@ -366,9 +368,14 @@ def diagnose(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance) -> 
 
     judge([*hypotheses(meas.solution, plans), *_fitted_scales(meas, devs)])
     # the plans of another crank angle, only where no mistake above explains everything
-    # without spoiling a thing: its search solves some two hundred positions
+    # without spoiling a thing, nor do slips of the items on the exact plans (two swapped,
+    # one from the wrong point: an ordinary file, checked as fast as before): its search
+    # solves some two hundred positions
     if not any(not f.broken and not f.unexplained for f in findings):
-        judge(_fitted_angle(meas, devs, tol))
+        exact = exact or _Replayer(meas.solution).exact()
+        failed = {items[i].name for i in bad}
+        if not failed <= {lk.item for lk in lookalikes(meas, devs, exact, tol, failed)}:
+            judge(_fitted_angle(meas, devs, tol))
     allowed = (len(bad) - 1) // 4
     # mistakes that draw the same plans score the same but for the last digits: scores are
     # compared to 9 digits, and the sorts being stable, the hypotheses' order of

@@ -1551,3 +1551,19 @@ def test_the_crank_angle_is_not_searched_where_one_slip_is_all(tmp_path):
     devs = ck.check(meas, diagnose_=False).deviations
     assert [d.item.name for d in devs if not d.ok] == ["pc"]
     assert ck._fitted_angle(meas, devs, ck.Tolerance()) == []
+
+
+def test_the_crank_angle_is_not_searched_where_slips_explain_everything(tmp_path, monkeypatch):
+    """pc and pe swapped, all else exact: the slips say what happened (the plans are right),
+    and the angle search (two hundred positions solved, slower than the rest of the check
+    of such a file) must not run for it, as it did on every such file of a class."""
+    _, segs, write = _variant_exact(tmp_path, 1, {"mu_l": 0.0025, "mu_v": 0.01, "mu_a": 0.2})
+    segs["pc"], segs["pe"] = segs["pe"], segs["pc"]
+    meas = ck.load(write(segs))
+
+    def searched(*args):
+        raise AssertionError("the crank angle was searched")
+
+    monkeypatch.setattr(ck, "_fitted_angle", searched)
+    res = ck.check(meas)
+    assert res.slips_only and {lk.item for lk in res.diagnosis.lookalikes} == {"pc", "pe"}
