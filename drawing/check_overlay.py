@@ -43,7 +43,7 @@ from drawing.scene import (
     wrap_words,
 )
 from plans.check import MU_KEY, CheckResult, rebuild, recorded_segments
-from plans.fmt import listing
+from plans.fmt import listing, notation_in
 from plans.plan import image_sides
 
 PANEL = 340.0  # user units (px) of one plan's square
@@ -450,7 +450,8 @@ def _footer(result: CheckResult, lang: str, width: float) -> list[tuple[list[str
     if result.ok:
         texts = [(w["ok"].format(tol=tol), BLACK)]
     else:
-        texts = [(w["bad"].format(tol=tol, names=", ".join(d.item.name for d in result.failed)),
+        texts = [(w["bad"].format(tol=tol, names=", ".join(notation_in(d.item.name, lang)
+                                                             for d in result.failed)),
                   RED)]
         diag = result.diagnosis
         if result.slips_only:
@@ -468,7 +469,7 @@ def _mark(name: str, deviation: float, lang: str) -> str:
     """A segment's deviation as the sheet marks it: "πa3 +18,6" (mm)."""
     from plans.fmt import signed
 
-    return f"{name} {signed(deviation, lang, 1)}"
+    return f"{notation_in(name, lang)} {signed(deviation, lang, 1)}"
 
 
 def _legend(doc: Overlay, x: float, y: float, width: float, w, mark: str) -> float:

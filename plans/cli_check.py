@@ -12,7 +12,16 @@ import math
 
 from .cli import EXIT_DEVIATIONS, EXIT_OK, warn, write_output
 from .errors import InputError
-from .fmt import columns, from_x, json_angle, listing, num, ru_plural, signed
+from .fmt import (
+    columns,
+    from_x,
+    json_angle,
+    listing,
+    notation_in,
+    num,
+    ru_plural,
+    signed,
+)
 
 
 def configure(p) -> None:
@@ -286,7 +295,8 @@ def to_text(result, lang: str = "en") -> str:
 
     for line in warnings(sol, lang):
         out.append(f"{w['warning']}: {line}")
-    return "\n".join(out) + "\n"
+    # the items' names in the notation of the language (a^τ_A3B in Russian), as the words
+    return notation_in("\n".join(out) + "\n", lang)
 
 
 def diagnosis_lines(result, lang: str = "en") -> list[str]:

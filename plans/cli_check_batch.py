@@ -25,7 +25,7 @@ from pathlib import Path
 from .cli import EXIT_DEVIATIONS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, warn, write_output
 from .errors import InputError, PlansError
 from .fileformat import one_line
-from .fmt import angle, columns, listing, ru_plural
+from .fmt import angle, columns, listing, notation_in, ru_plural
 
 #: a title longer than this is cut in the table (the file's title may hold 300 characters)
 TITLE_WIDTH = 40
@@ -397,7 +397,7 @@ def to_text(rows: list[Row], lang: str = "en", tol=None) -> str:
               (w["n_internal"], sum(r.status == EXIT_INTERNAL for r in rows))]
     parts = [text.format(k=k) for text, k in counts if k]
     out.append(w["total"].format(files=w["files"](len(rows)), parts=", ".join(parts)))
-    return "\n".join(out) + "\n"
+    return notation_in("\n".join(out) + "\n", lang)  # a^τ_A3B in Russian, as the words
 
 
 def to_json(rows: list[Row], lang: str = "en") -> list[dict]:

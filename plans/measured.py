@@ -517,10 +517,11 @@ class _Names:
                     per_mm=sol.mu[MU_KEY[plan]])
 
     def _physical(self, name: str):
-        m = re.fullmatch(r"(V|v|a)(?:\^?([nktr]))?_(\w+)", name)
+        m = re.fullmatch(r"(V|v|a)(?:\^?([nktrτ]))?_(\w+)", name)
         if not m:
             return None
         sym, comp, rest = m.groups()
+        comp = "t" if comp == "τ" else comp  # a^τ, as the Russian sheet and note write it
         plan = self.sol.velocity if sym in "Vv" else self.sol.acceleration
         if comp:
             if sym != "a":

@@ -1567,3 +1567,23 @@ def test_the_crank_angle_is_not_searched_where_slips_explain_everything(tmp_path
     monkeypatch.setattr(ck, "_fitted_angle", searched)
     res = ck.check(meas)
     assert res.slips_only and {lk.item for lk in res.diagnosis.lookalikes} == {"pc", "pe"}
+
+
+def test_a_tangential_value_may_be_written_a_tau_and_is_said_so_in_russian(tmp_path, capsys):
+    """The Russian sheet, note and diagnosis write the tangential component a^τ_DC: a
+    student who wrote it so among the values was refused ("unknown value"), and the
+    Russian report named the engine's a^t_DC among its Russian words."""
+    path = write_meas(tmp_path / "v.toml", PRESS, {"pa3": 55.4}, MU_PRESS,
+                      values={"a^τ_DC": 25.6, "a^t_A3B": 11.9})
+    meas = ck.load(path)
+    assert [it.name for it in meas.items if it.kind == "value"] == ["a^t_DC", "a^t_A3B"]
+    code, out, _ = run(capsys, "check", path, "--lang", "ru")
+    assert code == 1 and "a^t" not in out
+    assert "  a^τ_DC, м/с²" in out and ": a^τ_DC." in out
+    svg = tmp_path / "c.svg"
+    code, out, _ = run(capsys, "check", path, "--lang", "ru", "--svg", svg)
+    assert "a^t" not in svg.read_text("utf-8")
+    code, out, _ = run(capsys, "check", path, path, "--lang", "ru")
+    assert "a^t" not in out
+    code, out, _ = run(capsys, "check", path)
+    assert "  a^t_DC, m/s²" in out and "a^τ" not in out
