@@ -25,9 +25,10 @@ from pathlib import Path
 from .cli import EXIT_DEVIATIONS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, warn, write_output
 from .errors import InputError, PlansError
 from .fileformat import one_line
-from .fmt import angle, columns, listing, notation_in, ru_plural
+from .fmt import angle, columns, cut, listing, notation_in, ru_plural
 
-#: a title longer than this is cut in the table (the file's title may hold 300 characters)
+#: a title wider than this (columns of a terminal) is cut in the table (the file's title
+#: may hold 300 characters)
 TITLE_WIDTH = 40
 
 WORDS = {
@@ -385,7 +386,8 @@ def to_text(rows: list[Row], lang: str = "en", tol=None) -> str:
         res = r.result
         cells = [r.path]
         if titled:
-            cells.append(one_line(" ".join(r.title_text().split()), TITLE_WIDTH))
+            # cut to the columns it takes (a Chinese character two), not to its characters
+            cells.append(cut(one_line(" ".join(r.title_text().split()), TITLE_WIDTH), TITLE_WIDTH))
         cells.append(mechanism_cell(res.measurement, lang) if res is not None else "")
         cells += [verdict_cell(r, lang, common), diagnosis_cell(r, lang)]
         table.append(cells)

@@ -76,6 +76,20 @@ def width(text: str) -> int:
                2 if unicodedata.east_asian_width(ch) in "WF" else 1 for ch in text)
 
 
+def cut(text: str, limit: int) -> str:
+    """``text`` in at most ``limit`` columns of a terminal (:func:`width`), cut with an
+    ellipsis where it is wider: forty Chinese characters are eighty columns, not forty.
+
+    >>> cut("abcdef", 4), cut("张伟机械原理", 7), cut("张伟", 4)
+    ('abc…', '张伟机…', '张伟')
+    """
+    if width(text) <= limit:
+        return text
+    while text and width(text) + 1 > limit:
+        text = text[:-1]
+    return text + "…"
+
+
 def notation_in(text: str, lang: str) -> str:
     """The method's notation as ``lang``'s textbooks write it: the engine's ``a^t_CB``
     (tangential, as English and Chinese texts write it) is ``a^τ_CB`` in Russian.

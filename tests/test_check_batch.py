@@ -385,3 +385,25 @@ def test_a_mechanism_file_up_a_folder_is_named_without_its_dots(tmp_path, capsys
     assert code == 0
     row = rows(out)["a"]
     assert f"{tmp_path / 'press.toml'}, φ1 = 30°" in row and "/../" not in row, row
+
+
+def test_a_long_chinese_title_is_cut_to_the_columns_of_the_title_column(tmp_path, capsys):
+    """A title is cut at TITLE_WIDTH (40): counted in characters, thirty Chinese ones
+    passed whole and took sixty columns of the table, half as wide again as the column
+    any other title is cut to."""
+    from plans.cli_check_batch import TITLE_WIDTH
+
+    _, segs, write = _variant_exact(tmp_path, 1, MU)
+    body = write(segs).read_text(encoding="utf-8")
+    files = []
+    for name, title in (("a", "x" * 60), ("b", "机械原理课程设计" * 4)):
+        files.append(tmp_path / f"{name}.toml")
+        files[-1].write_text(f'title = "{title}"\n' + body, encoding="utf-8")
+    code, out, _ = run(capsys, "check", *map(str, files))
+    assert code == 0
+    got = rows(out)
+    starts = {k: fmt.width(line[: line.index("variant 1")]) for k, line in got.items()}
+    assert starts["a"] == starts["b"], out
+    cell = got["b"].split("  ")[2]  # the file, then the title
+    assert cell.startswith("机械原理") and cell.endswith("…")
+    assert TITLE_WIDTH - 1 <= fmt.width(cell) <= TITLE_WIDTH, cell
