@@ -351,20 +351,17 @@ def diagnose(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance,
     def judge(mistakes) -> None:
         nonlocal tried
         for mk in mistakes:
-            try:
-                st = simulate(meas.solution, mk, meas.mu)
-                sim = [compare(it, expected(it, st, meas.mu), tol) for it in items]
-            except (_Degenerate, PlansError, ZeroDivisionError, KeyError):
+            got = _redrawn(meas, lambda mk=mk: simulate(meas.solution, mk, meas.mu), tol)
+            if got is None:
                 continue
+            st, sim = got
             tried += 1
             explained = tuple(items[i].name for i in bad if sim[i].ok)
             if not explained:
                 continue
             unexplained = tuple(items[i].name for i in bad if not sim[i].ok)
             broken = tuple(items[i].name for i, d in enumerate(devs) if d.ok and not sim[i].ok)
-            score = sum((d.deviation / d.limit) ** 2 if d.limit > 0 else 0.0 for d in sim)
-            score += sum(4.0 for d in sim if d.sense_ok is False)
-            findings.append(Finding(mk, explained, unexplained, broken, float(score), st))
+            findings.append(Finding(mk, explained, unexplained, broken, _misfit(sim), st))
 
     judge([*hypotheses(meas.solution, plans), *_fitted_scales(meas, devs)])
     # the plans of another crank angle, only where no mistake above explains everything
@@ -393,6 +390,23 @@ def diagnose(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance,
     near = sorted((f for f in findings if not f.broken),
                   key=lambda f: (-len(f.explained), _score(f)))
     return Diagnosis(None, (), near[0] if near else None, tried)
+
+
+def _redrawn(meas: Measurement, drawn, tol: Tolerance) -> tuple[State, list[Deviation]] | None:
+    """The plans ``drawn()`` gives (a mistake's, another crank angle's) and the items
+    compared on them; None where those plans cannot be drawn."""
+    try:
+        st = drawn()
+        return st, [compare(it, expected(it, st, meas.mu), tol) for it in meas.items]
+    except (_Degenerate, PlansError, ZeroDivisionError, KeyError):
+        return None
+
+
+def _misfit(sim: list[Deviation]) -> float:
+    """How far plans are from the measured items: the squares of each deviation in its
+    tolerance, and 4 for each sense written the other way."""
+    score = sum((d.deviation / d.limit) ** 2 if d.limit > 0 else 0.0 for d in sim)
+    return float(score + sum(4.0 for d in sim if d.sense_ok is False))
 
 
 def _score(f: Finding) -> float:
@@ -451,21 +465,17 @@ def _fitted_angle(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance
     measured items best, on a 2° grid and then to 0.01°, more than 2.5° from the given
     one; within 0.25° of a whole number of degrees from it, that whole number (a student
     turns the crank by 15°, not 14.93°). Where two items or more are beyond tolerance
-    only: some two hundred positions solved, 40 ms. Whether it explains them is judged
+    only: some two hundred positions solved, 40–140 ms. Whether it explains them is judged
     as for any other mistake (:func:`diagnose` searches only where none of the others
     explains every item)."""
     if sum(not d.ok for d in devs) < 2:
         return []
     sol = meas.solution
-    items, mu = meas.items, meas.mu
+    mu = meas.mu
 
     def misfit(phi: float) -> float:
-        try:
-            st = at_angle(sol, phi, mu)
-            sim = [compare(it, expected(it, st, mu), tol) for it in items]
-        except (_Degenerate, PlansError, ZeroDivisionError, KeyError):
-            return math.inf
-        return sum((d.deviation / d.limit) ** 2 for d in sim if d.limit > 0)
+        got = _redrawn(meas, lambda: at_angle(sol, phi, mu), tol)
+        return math.inf if got is None else _misfit(got[1])
 
     given = sol.phi
     grid = [given + k * _ANGLE_STEP for k in range(1, round(2 * math.pi / _ANGLE_STEP))]

@@ -215,7 +215,7 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
         at, given = (g("at_ru"), g("given_ru")) if ru else (g("at"), g("given"))
         if ru:
             return (f"планы построены для положения кривошипа {at}, а не {given}",
-                    f"постройте кривошип на плане положений под углом {given} и постройте "
+                    f"изобразите кривошип на плане положений под углом {given} и постройте "
                     "планы для этого положения")
         return (f"the plans are drawn for the crank at {at}, not at {given}",
                 f"draw the crank at {given} on the plan of positions and build the plans for "

@@ -1542,9 +1542,14 @@ def test_plans_of_another_crank_angle_are_named(tmp_path, capsys, turn):
             f"{given:g}°") in out, out
 
 
-def test_the_crank_angle_is_not_searched_where_one_slip_is_all(tmp_path):
-    """One item off is a slip or a mistake of one term, never another position: the
-    angle search (two hundred positions solved) is not even run."""
+def test_the_crank_angle_is_not_searched_where_one_slip_is_all(tmp_path, monkeypatch):
+    """One item off is a slip or a mistake of one term, never another position: the angle
+    search finds nothing, before it solves any position."""
+
+    def solved(*_):
+        raise AssertionError("a position solved")
+
+    monkeypatch.setattr(ck, "at_angle", solved)
     _, segs, write = _variant_exact(tmp_path, 1, {"mu_l": 0.0025, "mu_v": 0.01, "mu_a": 0.2})
     segs["pc"] *= 1.4
     meas = ck.load(write(segs))
