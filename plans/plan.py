@@ -19,9 +19,10 @@ from typing import NamedTuple
 
 import numpy as np
 
+from .fileformat import Problems, check_keys, read_number
 from .kernels import record
 from .kinematics import Motion, Solver
-from .mechanism import Mechanism
+from .mechanism import MU_UNIT, SCALE, Mechanism
 from .records import flag_words, flagged, frozen
 from .scales import choose_mu, choose_mu_l
 from .structure import Structure
@@ -163,7 +164,13 @@ class Solution:
 
 def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | None = None,
                    mu: dict[str, float] | None = None) -> Solution:
-    """Positions and both plans at crank angle ``phi`` (rad from +x; default: the file's)."""
+    """Positions and both plans at crank angle ``phi`` (rad from +x; default: the file's).
+
+    ``mu``: scale factors by their file names (``mu_l``, ``mu_v``, ``mu_a``), over the
+    file's ``[scales]``; one not given (or None) is chosen. A value that is not a positive
+    number is an :class:`InputError`, as it is in a file's ``[scales]``.
+    """
+    mu = _given_scales(mu)
     solver = solver or Solver(mech)
     phi = mech.driver.phi if phi is None else float(phi)
     motion = solver.solve_one(phi)
@@ -194,6 +201,28 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
         mu_l=mu_l, segments=segments, lengths=lengths,
         warnings=tuple(warnings), flags=flags, scalar=motion,
     )
+
+
+def _given_scales(mu) -> dict[str, float] | None:
+    """The scale factors passed to :func:`solve_position`, read as ``[scales]`` is: a
+    negative μ made every segment 0, a μ of 0 was taken for one not given, and a μ in
+    quotes failed deep in a plan's recipe."""
+    if not mu:
+        return mu
+    pr = Problems("solve_position")
+    if not isinstance(mu, Mapping):
+        pr.add("mu", f"must be a dict such as {{'mu_v': 0.05}}, got {mu!r}")
+        pr.raise_if_any()
+    check_keys(mu, set(MU_UNIT), "mu", pr)
+    out = {}
+    for key, unit in MU_UNIT.items():
+        if mu.get(key) is not None:
+            val = read_number(mu[key], f"mu.{key}", pr, positive=True, unit=unit,
+                              low=SCALE[0], high=SCALE[1])
+            if val is not None:
+                out[key] = val
+    pr.raise_if_any()
+    return out
 
 
 def _rates(states, links, crank_omega: float) -> tuple[dict[int, float], dict[int, float]]:

@@ -677,3 +677,20 @@ def test_a_number_with_a_unit_is_told_what_to_write_only_when_it_is_sure(value, 
     pr = Problems("f.toml")
     assert read_number(value, "k", pr, unit=unit) is None
     assert pr.items == [("k", f'must be a number, got "{value}"{hint}')]
+
+
+@pytest.mark.parametrize(("mu", "message"), [
+    ({"mu_v": -1}, "mu.mu_v: must be positive, got -1"),  # made every segment 0
+    ({"mu_a": 0}, "mu.mu_a: must be positive, got 0"),  # was taken for one not given
+    ({"mu_v": "x"}, 'mu.mu_v: must be a number, got "x"'),  # failed inside a plan's recipe
+    ({"mu_l": float("nan")}, "mu.mu_l: nan is not a number"),
+    ({"muv": 0.05}, 'mu.muv: unknown key — did you mean "mu_v"?'),  # was ignored
+])
+def test_solve_position_refuses_scale_factors_a_file_could_not_hold(mu, message):
+    """``solve_position(mech, mu=…)`` reads its scale factors as a file's [scales] is."""
+    mech = load("samples/press.toml")
+    with pytest.raises(InputError) as exc:
+        solve_position(mech, mu=mu)
+    assert str(exc.value).startswith(f"solve_position: {message}")
+    sol = solve_position(mech, mu={"mu_v": 0.1, "mu_a": None})  # None: chosen, as absent
+    assert sol.mu_v == 0.1 and sol.segments["pa"] == pytest.approx(30)
