@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .errors import PlansError
+from .errors import InputError, PlansError
 from .fmt import angle, from_x
 from .geometry import apart
 from .kinematics import Motion, Solver
@@ -238,7 +238,12 @@ def summary(c: Cycle, driver=None) -> list[str]:
 def analyse_cycle(mech: Mechanism, n_positions: int = 12, solver: Solver | None = None,
                   samples: int = 3600) -> Cycle:
     """The cycle of ``mech`` (see :class:`Cycle`); kept by the solver, which solves one
-    mechanism only, so that solve, its μl and its summary share one analysis."""
+    mechanism only, so that solve, its μl and its summary share one analysis.
+
+    ``n_positions``: how many crank positions (:attr:`Cycle.positions`), at least 1;
+    ``samples``: how many angles a turn is searched at, at least 2."""
+    _whole(n_positions, "n_positions", 1)
+    _whole(samples, "samples", 2)
     if solver is not None and solver.mech is mech:
         key = ("cycle", n_positions, samples)
         got = solver.cache.get(key)
@@ -256,6 +261,14 @@ def analyse_cycle(mech: Mechanism, n_positions: int = 12, solver: Solver | None 
             solver.cache.setdefault(SHOWN_FROM, shown_from(got, mech.driver))
         return got
     return _analyse_cycle(mech, n_positions, solver or Solver(mech), samples)
+
+
+def _whole(value, name: str, least: int) -> None:
+    """``value`` is a whole number ≥ ``least``: 0 or −3 positions gave a cycle of none, 1.5
+    failed deep in numpy, and a turn searched at one angle indexed past its end."""
+    if isinstance(value, bool) or not isinstance(value, int | np.integer) or value < least:
+        raise InputError("analyse_cycle", f"{name}: must be a whole number from {least}, "
+                         f"got {value!r}")
 
 
 #: the solver's cache key of :func:`shown_from` for its cycle (:meth:`Solver.at`)

@@ -694,3 +694,21 @@ def test_solve_position_refuses_scale_factors_a_file_could_not_hold(mu, message)
     assert str(exc.value).startswith(f"solve_position: {message}")
     sol = solve_position(mech, mu={"mu_v": 0.1, "mu_a": None})  # None: chosen, as absent
     assert sol.mu_v == 0.1 and sol.segments["pa"] == pytest.approx(30)
+
+
+@pytest.mark.parametrize(("options", "message"), [
+    ({"n_positions": 0}, "n_positions: must be a whole number from 1, got 0"),  # no positions
+    ({"n_positions": -3}, "n_positions: must be a whole number from 1, got -3"),
+    ({"n_positions": 1.5}, "n_positions: must be a whole number from 1, got 1.5"),
+    ({"samples": 1}, "samples: must be a whole number from 2, got 1"),  # an IndexError
+])
+def test_analyse_cycle_refuses_a_count_that_is_not_one(options, message):
+    """``analyse_cycle(mech, 0)`` gave a cycle without positions, as ``plans cycle
+    --positions 0`` does not; a count of 1.5 or a one-angle search failed inside numpy."""
+    from plans.cycle import analyse_cycle
+
+    mech = load("samples/press.toml")
+    with pytest.raises(InputError) as exc:
+        analyse_cycle(mech, **options)
+    assert str(exc.value) == f"analyse_cycle: {message}"
+    assert len(analyse_cycle(mech, 1).positions) == 1
