@@ -18,6 +18,7 @@ variant 7); the default is :data:`DESIGNATION`.
 
 from __future__ import annotations
 
+import operator
 from dataclasses import replace
 from importlib import resources
 from pathlib import Path
@@ -92,6 +93,11 @@ class Table(NamedTuple):
     def variant(self, n: int) -> Mechanism:
         """Row ``n`` as a mechanism; the problems of that row, or of the table as a whole,
         are an InputError, those of other rows are not (:meth:`others`)."""
+        try:  # variant("3") was "variant 3 is not in the table (it has 0, 1, 2, 3 …)"
+            n = int(n) if isinstance(n, float) and n.is_integer() else operator.index(n)
+        except TypeError:
+            raise InputError(self.source, f"variant {n!r}: a variant is the whole number "
+                                          "of a row, e.g. 3") from None
         self.numbers  # noqa: B018 - raises where the table cannot be used at all
         if n in self.rows_problems:
             own = Problems(self.source, self.text)

@@ -712,3 +712,12 @@ def test_analyse_cycle_refuses_a_count_that_is_not_one(options, message):
         analyse_cycle(mech, **options)
     assert str(exc.value) == f"analyse_cycle: {message}"
     assert len(analyse_cycle(mech, 1).positions) == 1
+
+
+@pytest.mark.parametrize("n", ["3", 2.5, None])
+def test_a_variant_that_is_not_a_row_number_is_told_so(n):
+    """variant("3") said "variant 3 is not in the table (it has 0, 1, 2, 3, …)"."""
+    with pytest.raises(InputError) as info:
+        variant(n)
+    assert info.value.problems == [f"variant {n!r}: a variant is the whole number of a row, e.g. 3"]
+    assert variant(3.0).name == variant(3).name  # a whole number all the same
