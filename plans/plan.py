@@ -106,7 +106,15 @@ class Plan(NamedTuple):
     tiny: float = 0.0
 
     def value(self, name: str) -> complex:
-        return 0j if name == self.pole else self.points[name].value
+        """The vector from the pole to plan point ``name`` (m/s or m/s²): plan names are
+        lower case, ``value("d")`` for the mechanism's point D (:func:`plan_name`)."""
+        try:
+            return 0j if name == self.pole else self.points[name].value
+        except KeyError:  # value("D") was a bare KeyError: 'D'
+            hint = (f"; the mechanism's point {name} is {plan_name(name)!r} on a plan"
+                    if isinstance(name, str) and plan_name(name) in self.points else "")
+            raise KeyError(f"{name!r} is not a point of the {self.kind} plan (its points: "
+                           f"{', '.join([self.pole, *self.points])}){hint}") from None
 
     def mm(self, start: str, end: str) -> float:
         """Length of the segment start→end on the drawing, in mm; 0 up to ``tiny``, as in

@@ -362,3 +362,14 @@ def test_every_value_read_off_a_plan_stands_under_its_heading(lang):
                                         and not lines[j].startswith("- ")), (n, ln, lines[j])
             headed += lines[j] == want
         assert found >= 6 and headed >= 4
+
+
+def test_a_plan_point_asked_by_the_mechanisms_name_is_told_its_plan_name(press):
+    """``velocity.value("D")`` was a bare KeyError: 'D'; a plan names D as d."""
+    assert press.velocity.value("d") == press.scalar.velocity["D"]
+    with pytest.raises(KeyError, match=r"'D' is not a point of the velocity plan .*"
+                                       r"the mechanism's point D is 'd' on a plan"):
+        press.velocity.value("D")
+    with pytest.raises(KeyError, match=r"'Q' is not a point of the acceleration plan \(its "
+                                       r"points: π, o, b, a, "):
+        press.acceleration.mm("π", "Q")
