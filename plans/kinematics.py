@@ -62,6 +62,26 @@ __all__ = [
 LIMIT_STEP = 1e-9
 
 
+def crank_angle(phi) -> float:
+    """One crank angle (rad) as a Python float: an array of angles, a complex number or
+    nan is one clear error here, not numpy's "only 0-dimensional arrays can be converted
+    to Python scalars" or float()'s own words."""
+    try:
+        out = float(phi)
+    except (TypeError, ValueError) as exc:
+        many = " (for many angles at once: Solver.sweep or Solver.solve)" if np.ndim(phi) else ""
+        raise type(exc)(f"the crank angle must be one number of radians{many}, "
+                        f"not {_short(phi)}") from None
+    if not math.isfinite(out):
+        raise ValueError(f"the crank angle must be a finite number of radians, not {out}")
+    return out
+
+
+def _short(value) -> str:
+    text = repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
 class Solver:
     """Solves one mechanism on one continuous motion: each group's assembly is chosen at
     the crank angle the hints are read at (``branch_at``) and carried over the turn.
@@ -309,9 +329,7 @@ class Solver:
         the mechanism does not close or a plan is singular it raises the error that
         :meth:`solve` would report for that angle.
         """
-        phi = float(phi)
-        if not math.isfinite(phi):
-            raise ValueError(f"the crank angle must be a finite number of radians, not {phi}")
+        phi = crank_angle(phi)
         try:
             return self._solve(kernels.SCALAR, phi, 0.0, complex(math.cos(phi), math.sin(phi)))
         except (ScalarFallback, ArithmeticError, ValueError):

@@ -21,7 +21,7 @@ import numpy as np
 
 from .fileformat import Problems, check_keys, read_number
 from .kernels import record
-from .kinematics import Motion, Solver
+from .kinematics import Motion, Solver, crank_angle
 from .mechanism import MU_UNIT, SCALE, Mechanism
 from .records import flag_words, flagged, frozen
 from .scales import choose_mu, choose_mu_l
@@ -180,7 +180,7 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     """
     mu = _given_scales(mu)
     solver = solver or Solver(mech)
-    phi = mech.driver.phi if phi is None else float(phi)
+    phi = mech.driver.phi if phi is None else crank_angle(phi)
     motion = solver.solve_one(phi)
     flags = flagged(motion.groups, motion.position, mech.frame[mech.driver.pivot],
                     lambda: solver.at(phi), mech.source,

@@ -373,3 +373,25 @@ def test_a_plan_point_asked_by_the_mechanisms_name_is_told_its_plan_name(press):
     with pytest.raises(KeyError, match=r"'Q' is not a point of the acceleration plan \(its "
                                        r"points: π, o, b, a, "):
         press.acceleration.mm("π", "Q")
+
+
+@pytest.mark.parametrize(("phi", "error", "message"), [
+    (np.array([0.5]), TypeError, r"one number of radians \(for many angles at once: "
+                                 r"Solver\.sweep or Solver\.solve\), not array\(\[0\.5\]\)"),
+    (np.array([0.5, 0.6]), TypeError, r"one number of radians \(for many angles"),
+    (1 + 1j, TypeError, r"one number of radians, not \(1\+1j\)"),
+    ("half", ValueError, r"one number of radians, not 'half'"),
+    (float("nan"), ValueError, r"a finite number of radians, not nan"),
+])
+def test_one_position_refuses_what_is_not_one_angle_in_its_own_words(phi, error, message):
+    """An array of angles given to solve_position or solve_one was numpy's "only
+    0-dimensional arrays can be converted to Python scalars", a complex angle float()'s
+    words: each now says what is wanted, and where many angles go."""
+    from plans.kinematics import Solver
+
+    mech = load("samples/press.toml")
+    for solve in (lambda: solve_position(mech, phi), lambda: Solver(mech).solve_one(phi)):
+        with pytest.raises(error, match=f"^the crank angle must be {message}"):
+            solve()
+    assert solve_position(mech, np.float64(mech.driver.phi)).segments["pa3"] == \
+        pytest.approx(55.43, abs=0.005)
