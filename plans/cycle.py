@@ -8,6 +8,7 @@ faster (return) stroke; θ is the crank angle between the extreme positions' lin
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass
 
 import numpy as np
@@ -603,7 +604,19 @@ def grashof_class(a: float, b: float, c: float, d: float) -> str:
     'rocker-crank (Grashof, the shortest link is the rocker, which turns fully: 0.55 ≤ 0.65)'
     >>> grashof_class(0.3, 0.15, 0.35, 0.4)
     'double rocker (Grashof, the shortest link is the coupler: 0.55 ≤ 0.65)'
+
+    Each length must be a positive finite number (a length of −0.03 or 0 was classed
+    as if it were a link):
+
+    >>> grashof_class(-0.05, 0.2, 0.15, 0.2)
+    Traceback (most recent call last):
+    ...
+    ValueError: grashof_class: the crank a must be a positive length (m), got -0.05
     """
+    for name, x in (("the crank a", a), ("the coupler b", b), ("the rocker c", c),
+                    ("the frame d", d)):
+        if isinstance(x, bool) or not isinstance(x, numbers.Real) or not 0 < x < math.inf:
+            raise ValueError(f"grashof_class: {name} must be a positive length (m), got {x!r}")
     lengths = sorted((a, b, c, d))
     s, l, p, q = lengths[0], lengths[3], lengths[1], lengths[2]
     lhs, rhs = s + l, p + q

@@ -1,11 +1,13 @@
 """The four-bar's Grashof class, read from what its links join, not from their numbers."""
 
 import json
+import re
 
+import numpy as np
 import pytest
 from support import run
 
-from plans.cycle import analyse_cycle
+from plans.cycle import analyse_cycle, grashof_class
 from plans.mechanism import from_dict
 
 
@@ -71,3 +73,16 @@ def test_solve_and_cycle_give_the_class_of_a_four_bar_numbered_either_way(capsys
         code, out, err = run(capsys, "cycle", path, "--json", "--positions", "2")
         assert code == 0, err
         assert json.loads(out)["cycle"]["grashof"] == "crank-rocker (Grashof: 0.384138 ≤ 0.46)"
+
+
+@pytest.mark.parametrize(("lengths", "message"), [
+    ((-0.03, 0.1, 0.08, 0.09), "the crank a must be a positive length (m), got -0.03"),
+    ((0.03, 0.0, 0.08, 0.09), "the coupler b must be a positive length (m), got 0.0"),
+    ((0.03, 0.1, float("nan"), 0.09), "the rocker c must be a positive length (m), got nan"),
+    ((0.03, 0.1, 0.08, "0.09"), "the frame d must be a positive length (m), got '0.09'"),
+])
+def test_grashof_class_refuses_what_is_not_a_length(lengths, message):
+    """grashof_class(-0.03, 0.1, 0.08, 0.09) said "crank-rocker (Grashof: 0.07 ≤ 0.17)"."""
+    with pytest.raises(ValueError, match=re.escape(f"grashof_class: {message}")):
+        grashof_class(*lengths)
+    assert grashof_class(np.float32(0.03), 1, 0.08, np.float64(0.09)).startswith("double rocker")
