@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
+from pathlib import Path
 
 import numpy as np
 
@@ -101,6 +102,11 @@ class Solver:
     def __init__(self, mech: Mechanism, structure: Structure | None = None,
                  sigmas: tuple[int, ...] | None = None,
                  flips: tuple[tuple[float, ...], ...] | None = None):
+        if not isinstance(mech, Mechanism):  # a file's name was 'str' has no 'revolutes'
+            hint = (f": read the file first, with load({str(mech)!r})"
+                    if isinstance(mech, str | Path) else "")
+            raise TypeError(f"a mechanism (plans.load, plans.from_dict) is needed, "
+                            f"not {_short(mech)}{hint}")
         self.mech = mech
         self.structure = structure or analyse(mech)
         # the turn starts at ``branch_at``; ``sigmas`` hold at ``read_at``, which is

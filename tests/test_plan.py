@@ -395,3 +395,18 @@ def test_one_position_refuses_what_is_not_one_angle_in_its_own_words(phi, error,
             solve()
     assert solve_position(mech, np.float64(mech.driver.phi)).segments["pa3"] == \
         pytest.approx(55.43, abs=0.005)
+
+
+def test_a_file_name_given_for_a_mechanism_is_told_to_be_loaded():
+    """Solver("press.toml") and solve_position("press.toml") were AttributeError: 'str'
+    object has no attribute 'revolutes', from deep in the structure analysis."""
+    from plans.cycle import analyse_cycle
+    from plans.kinematics import Solver
+
+    for call in (Solver, solve_position, analyse_cycle):
+        with pytest.raises(TypeError, match=r"^a mechanism \(plans\.load, plans\.from_dict\) is "
+                                            r"needed, not 'samples/press\.toml': read the file "
+                                            r"first, with load\('samples/press\.toml'\)$"):
+            call("samples/press.toml")
+    with pytest.raises(TypeError, match=r"is needed, not None$"):
+        Solver(None)
