@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import hashlib
 import linecache
+import sys
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -22,7 +23,7 @@ import numpy as np
 from .fileformat import Problems, check_keys, read_number
 from .kernels import record
 from .kinematics import Motion, Solver, crank_angle
-from .mechanism import MU_UNIT, SCALE, Mechanism
+from .mechanism import MU_UNIT, Mechanism
 from .records import flag_words, flagged, frozen
 from .scales import choose_mu, choose_mu_l
 from .structure import Structure
@@ -176,7 +177,7 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
 
     ``mu``: scale factors by their file names (``mu_l``, ``mu_v``, ``mu_a``), over the
     file's ``[scales]``; one not given (or None) is chosen. A value that is not a positive
-    number is an :class:`InputError`, as it is in a file's ``[scales]``.
+    finite number is an :class:`InputError`, in the words of a file's ``[scales]``.
     """
     mu = _given_scales(mu)
     solver = solver or Solver(mech)
@@ -225,8 +226,9 @@ def _given_scales(mu) -> dict[str, float] | None:
     out = {}
     for key, unit in MU_UNIT.items():
         if mu.get(key) is not None:
+            # no bounds of a typed file's: a sheet near a dead point asks for μa = 5e8
             val = read_number(mu[key], f"mu.{key}", pr, positive=True, unit=unit,
-                              low=SCALE[0], high=SCALE[1])
+                              high=sys.float_info.max)
             if val is not None:
                 out[key] = val
     pr.raise_if_any()

@@ -721,3 +721,13 @@ def test_a_variant_that_is_not_a_row_number_is_told_so(n):
         variant(n)
     assert info.value.problems == [f"variant {n!r}: a variant is the whole number of a row, e.g. 3"]
     assert variant(3.0).name == variant(3).name  # a whole number all the same
+
+
+def test_solve_position_takes_any_positive_scale_factor():
+    """The bounds of a typed [scales] are not the API's: a sheet 0.03° short of seed 001's
+    dead point chooses μa = 5e8 (m/s²)/mm for its plans."""
+    mech = load("samples/fourbar.toml")
+    sol = solve_position(mech, mech.driver.phi, mu={"mu_v": 1e-12, "mu_a": 5e8})
+    assert (sol.mu_v, sol.mu_a) == (1e-12, 5e8)
+    with pytest.raises(InputError, match="mu.mu_a: inf is out of range"):
+        solve_position(mech, mu={"mu_a": float("inf")})
