@@ -35,6 +35,7 @@ __all__ = [
     "FORMATS",
     "GROUP",
     "LABELS",
+    "LITERAL",
     "THICK_LINES",
     "THIN_LINES",
     "Sheet",
@@ -187,6 +188,10 @@ class TitleBlock:
 
 #: the word before a group's name in field 9
 GROUP = {"ru": "гр.", "en": "group"}
+#: field 4's literal of a student's drawing by the sheet's language: GOST 2.103's «У»
+#: (учебный) is a Russian letter with no English counterpart, so an English sheet
+#: leaves the cells blank unless a literal is given
+LITERAL = {"ru": "У", "en": ""}
 
 
 def field9(organisation: str, group: str, lang: str = "ru") -> str:

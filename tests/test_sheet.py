@@ -1571,3 +1571,17 @@ def test_the_diagrams_axes_name_the_output_point_or_link():
         texts = [t.text.split(" (+")[0] for t in diagrams_view(mech, analyse_cycle(mech), "ru").items
                  if isinstance(t, Text)]
         assert [t for t in texts if t in names] == list(names), texts
+
+
+@pytest.mark.parametrize(("key", "fmt"), [("fourbar", "A1"), (3, "A2")])
+def test_an_english_sheet_has_no_cyrillic_letter(key, fmt):
+    """The title block's literal cells wrote GOST's «У» (a student's drawing) on English
+    sheets too: a Russian letter a Western reader takes for a y. An English sheet writes
+    no Cyrillic of its own (the designation is the file's or the table's, as given); a
+    Russian one keeps its «У»."""
+    mech, _, _, _, svg = _sheet(key, fmt, "en")
+    _, texts = _texts(svg)
+    given = str((mech.title or {}).get("designation"))
+    assert not [t for t in texts if re.search("[\u0400-\u04ff]", t) and t != given], texts
+    _, ru = _texts(_sheet(key, fmt, "ru")[4])
+    assert "У" in ru
