@@ -20,10 +20,10 @@ T = {
     "en": {
         "title": "Kinematic analysis",
         "structure": "Structural analysis",
-        "cheb": "Degrees of freedom by Chebyshev's formula:",
+        "cheb": "Degrees of freedom (mobility) by the Chebyshev–Grübler–Kutzbach formula:",
         "n": "moving links", "p5": "one-DOF pairs (revolute and prismatic)", "p4": "two-DOF pairs",
-        "groups": "Detaching the input link {d} and the frame, the chain splits into class-II groups:",
-        "group": "links {a} and {b}: kind {k} ({name})",
+        "groups": "Detaching the input link {d} and the frame, the chain splits into class-II (Assur) groups, dyads:",
+        "group": "links {a} and {b}: kind {k} ({name} dyad)",
         "class": "The mechanism is of class {c}; structural formula {f}.",
         "positions": "Plan of positions",
         "mul": "Scale factor of the plan of positions:",
@@ -47,7 +47,7 @@ T = {
         "eqs": "Vector equations for point {x}:",
         "known": "known", "dir": "direction",
         "build": "Through {l0} draw a line {r0}, through {l1} a line {r1}; they meet at {x}.",
-        "sim": "By the similarity theorem:",
+        "sim": "By the {plan} image (the image of a link is similar to the link):",
         "values": "Velocities read from the plan:",
         "avalues": "Accelerations read from the plan:",
         "omega": "Angular velocity of link {i}:",
@@ -466,7 +466,9 @@ def _similar(sol: Solution, plan, sims, lang: str) -> list[str]:
     of two known ones by the ratio of lengths, any other by its similar triangle."""
     if not sims:
         return []
-    out = [T[lang]["sim"], ""]
+    # English texts name the step by its figure (Norton's "velocity image"); Russian by
+    # the theorem, «по теореме подобия», on either plan
+    out = [T[lang]["sim"].format(plan=plan.kind), ""]
     for p in sims:
         s = p.source
         if s.in_line:

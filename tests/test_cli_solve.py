@@ -219,6 +219,22 @@ def test_the_russian_note_reads_as_a_teacher_wants(capsys):
     assert "- `ψ = " in out and "° `" not in out and " °`" not in out
 
 
+def test_the_english_note_uses_western_textbooks_terms(capsys):
+    """A Western course knows the mobility formula as Gruebler's (Kutzbach's), the
+    class-II groups as dyads and the similarity step as the velocity (acceleration)
+    image; "Chebyshev's formula" and "the similarity theorem" were Russian terms in
+    English words. The Russian note keeps its own."""
+    code, out, _ = run(capsys, "report", "samples/press.toml", "--lang", "en")
+    assert code == 0
+    assert "Degrees of freedom (mobility) by the Chebyshev–Grübler–Kutzbach formula:" in out
+    assert "- links 2 and 3: kind 3 (RPR dyad)" in out
+    assert "By the velocity image (the image of a link is similar to the link):" in out
+    assert "By the acceleration image (the image of a link is similar to the link):" in out
+    assert "similarity theorem" not in out and "Chebyshev's" not in out
+    code, out, _ = run(capsys, "report", "samples/press.toml", "--lang", "ru")
+    assert "По теореме подобия:" in out and "формуле П. Л. Чебышева" in out
+
+
 def test_a_point_on_another_point_gets_no_segment_of_zero_length(capsys):
     """The slider's centre of mass S3 is at C: 'CS3 = 0 / 0,002 = 0 мм' said nothing."""
     code, out, _ = run(capsys, "report", "--variant", "0", "--lang", "ru")
