@@ -46,7 +46,7 @@ T = {
         "muv": "Scale factor of the velocity plan, with p{t} = {mm} mm:",
         "eqs": "Vector equations for point {x}:",
         "known": "known", "dir": "direction",
-        "build": "Through {l0} draw a line {r0}, through {l1} a line {r1}; they meet at {x}.",
+        "build": "Through point {l0} draw a line {r0} and through point {l1} a line {r1}; they meet at point {x}.",
         "sim": "By the {plan} image (the image of a link is similar to the link):",
         "values": "Velocities read from the plan:",
         "avalues": "Accelerations read from the plan:",

@@ -158,7 +158,7 @@ def test_report_english(capsys):
     assert code == 0
     assert "`a^n_A3B = V_A3B² / l_A3B = 2.7716² / 0.57482 = 13.36 m/s²`" in out
     assert "`ε3 = a^t_A3B / l_A3B = 11.891 / 0.57482 = 20.69 rad/s², counter-clockwise`" in out
-    assert "Through k draw a line ∥ BC, through n1 a line ⊥ BA3; they meet at a3." in out
+    assert "Through point k draw a line ∥ BC and through point n1 a line ⊥ BA3; they meet at point a3." in out
 
 
 def test_russian_note_says_the_crank_range_in_russian(capsys):
@@ -233,6 +233,14 @@ def test_the_english_note_uses_western_textbooks_terms(capsys):
     assert "similarity theorem" not in out and "Chebyshev's" not in out
     code, out, _ = run(capsys, "report", "samples/press.toml", "--lang", "ru")
     assert "По теореме подобия:" in out and "формуле П. Л. Чебышева" in out
+
+
+def test_the_english_note_names_the_plan_points_it_draws_through(capsys):
+    """"Through a draw a line ∥ BC" read as the article a: the plan point's letter is
+    now called a point, as on the Russian note («через точку a»)."""
+    code, out, _ = run(capsys, "report", "samples/press.toml", "--lang", "en")
+    assert code == 0 and "Through point a draw a line ∥ BC" in out
+    assert not re.search(r"Through [a-zπ]\w* draw", out)
 
 
 def test_a_point_on_another_point_gets_no_segment_of_zero_length(capsys):
@@ -360,7 +368,7 @@ def test_a_fixed_point_is_the_pole_everywhere_in_the_note(capsys):
     """B is fixed, so b lies at the pole: the note drew 'through b' and read 'ba3' next to
     'pc = pa3·BC/BA3'. Every step now writes p (π)."""
     code, out, _ = run(capsys, "report", "samples/press.toml")
-    assert "Through a draw a line ∥ BC, through p a line ⊥ BA3; they meet at a3." in out
+    assert "Through point a draw a line ∥ BC and through point p a line ⊥ BA3; they meet at point a3." in out
     assert "- `V_A3B = pa3·μv = 55.432·0.05 = 2.772 m/s`" in out
     assert "through b " not in out and "ba3·μ" not in out
 
