@@ -485,7 +485,8 @@ class _Names:
 
     def value(self, key, where, name, value, problems) -> Item | None:
         sol = self.sol
-        m = re.fullmatch(r"(omega|ω|w|epsilon|ε|eps)_?(\d+)", name)
+        # α3 (alpha3) is ε3 as Western texts write the angular acceleration
+        m = re.fullmatch(r"(omega|ω|w|epsilon|ε|eps|alpha|α)_?(\d+)", name)
         if m:
             link = int(m.group(2))
             kind = "omega" if m.group(1) in ("omega", "ω", "w") else "epsilon"
@@ -517,14 +518,16 @@ class _Names:
                     per_mm=sol.mu[MU_KEY[plan]])
 
     def _physical(self, name: str):
-        m = re.fullmatch(r"(V|v|a)(?:\^?([nktrτ]))?_(\w+)", name)
+        # a^τ as the Russian sheet and note write it; Norton's capital A (A_B, A^n_BA) is
+        # a, and his Coriolis A^c the plan's a^k
+        m = re.fullmatch(r"(V|v|a|A)(?:\^?([nktrτc]))?_(\w+)", name)
         if not m:
             return None
         sym, comp, rest = m.groups()
-        comp = "t" if comp == "τ" else comp  # a^τ, as the Russian sheet and note write it
+        comp = {"τ": "t", "c": "k"}.get(comp, comp)
         plan = self.sol.velocity if sym in "Vv" else self.sol.acceleration
         if comp:
-            if sym != "a":
+            if sym not in "aA":
                 return None
             label = f"a^{comp}_{rest}"
             for v in plan.vectors:

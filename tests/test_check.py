@@ -555,6 +555,21 @@ def test_values_and_senses(tmp_path, press):
     assert by["a^k_A3A"].computed == pytest.approx(11.07, abs=0.01)
 
 
+def test_values_in_western_notation(tmp_path, press):
+    """Norton and Uicker write the angular acceleration α3, accelerations A_C, A^n_A3B and
+    the Coriolis component A^c_A3A; [values] refused every one as an unknown value. They
+    are read as ε3, a_C, a^n_A3B and a^k_A3A."""
+    path = write_meas(tmp_path / "w.toml", PRESS, {"pa3": 55.4}, MU_PRESS, values={
+        "alpha3": "20.7 ccw", "α4": 51.9, "A_C": "23.3 m/s²", "A^n_A3B": 13.36,
+        "A^c_A3A": 11.07, "A^t_DC": 15.6})
+    res = ck.check(ck.load(path))
+    by = {d.item.name: d for d in res.deviations}
+    assert set(by) == {"pa3", "ε3", "ε4", "a_C", "a^n_A3B", "a^k_A3A", "a^t_DC"}
+    assert all(d.ok for d in by.values()), by
+    assert by["ε3"].sense_ok is True
+    assert by["a^k_A3A"].computed == pytest.approx(11.07, abs=0.01)
+
+
 def test_decimal_commas_units_and_russian_senses(tmp_path, capsys, press):
     """One rule for a decimal comma: in quotes, anywhere a number is (omega3 = "4,82" and
     the tolerance took one, while V_A3 = "2,77", pa3 = "55,4" and mu_v = "0,05" were
