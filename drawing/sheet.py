@@ -345,7 +345,7 @@ def frame_scene(
     """
     if lang not in LABELS:
         raise ValueError(f"lang must be one of {sorted(LABELS)}, got {lang!r}")
-    title_block = title_block or TitleBlock()
+    title_block = title_block or TitleBlock(literal=LITERAL[lang])
     frame_items: list = []
     if trim:
         frame_items.append(

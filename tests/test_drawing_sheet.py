@@ -267,3 +267,12 @@ def test_title_block_numbers_may_be_ints_and_other_types_are_refused():
     assert TitleBlock(sheet=2, sheets=3).sheets == "3"
     with pytest.raises(TypeError, match="name"):
         TitleBlock(name=None)
+
+
+def test_an_empty_english_title_block_has_no_russian_literal():
+    """frame_scene's own title block wrote GOST's «У» in the literal cells in English
+    too; an English one leaves them blank, a Russian one keeps «У»."""
+    def literal(lang):
+        return [t.text for t in frame_scene(Sheet("A3"), lang=lang).items("title-block")
+                if isinstance(t, Text) and t.text == "У"]
+    assert literal("en") == [] and literal("ru") == ["У"]
