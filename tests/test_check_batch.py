@@ -335,13 +335,13 @@ def test_the_table_is_not_written_over_a_picture_of_the_batch(klass, capsys, tmp
                    "give each output its own file\n")
 
 
-def test_a_title_in_chinese_keeps_its_row_in_line(tmp_path, capsys):
-    """A Chinese character takes two columns of a terminal: counted as one, a student
-    named 张伟 pushed the rest of the row one column out per character."""
+def titled(tmp_path, capsys, a: str, b: str) -> dict[str, str]:
+    """The rows of two exact files of variant 1 titled ``a`` and ``b``, each checked to
+    have its mechanism's column start where the other's does (in a terminal's columns)."""
     _, segs, write = _variant_exact(tmp_path, 1, MU)
     body = write(segs).read_text(encoding="utf-8")
     files = []
-    for name, title in (("a", "Ivanov I. I."), ("b", "张伟，机械原理课程设计")):
+    for name, title in (("a", a), ("b", b)):
         files.append(tmp_path / f"{name}.toml")
         files[-1].write_text(f'title = "{title}"\n' + body, encoding="utf-8")
     code, out, _ = run(capsys, "check", *map(str, files))
@@ -349,6 +349,13 @@ def test_a_title_in_chinese_keeps_its_row_in_line(tmp_path, capsys):
     got = rows(out)
     starts = {k: fmt.width(line[: line.index("variant 1")]) for k, line in got.items()}
     assert starts["a"] == starts["b"], out
+    return got
+
+
+def test_a_title_in_chinese_keeps_its_row_in_line(tmp_path, capsys):
+    """A Chinese character takes two columns of a terminal: counted as one, a student
+    named 张伟 pushed the rest of the row one column out per character."""
+    titled(tmp_path, capsys, "Ivanov I. I.", "张伟，机械原理课程设计")
 
 
 def test_an_alternative_is_not_joined_to_a_mistakes_second_clause(tmp_path, capsys):
@@ -393,17 +400,7 @@ def test_a_long_chinese_title_is_cut_to_the_columns_of_the_title_column(tmp_path
     any other title is cut to."""
     from plans.cli_check_batch import TITLE_WIDTH
 
-    _, segs, write = _variant_exact(tmp_path, 1, MU)
-    body = write(segs).read_text(encoding="utf-8")
-    files = []
-    for name, title in (("a", "x" * 60), ("b", "机械原理课程设计" * 4)):
-        files.append(tmp_path / f"{name}.toml")
-        files[-1].write_text(f'title = "{title}"\n' + body, encoding="utf-8")
-    code, out, _ = run(capsys, "check", *map(str, files))
-    assert code == 0
-    got = rows(out)
-    starts = {k: fmt.width(line[: line.index("variant 1")]) for k, line in got.items()}
-    assert starts["a"] == starts["b"], out
+    got = titled(tmp_path, capsys, "x" * 60, "机械原理课程设计" * 4)
     cell = got["b"].split("  ")[2]  # the file, then the title
     assert cell.startswith("机械原理") and cell.endswith("…")
     assert TITLE_WIDTH - 1 <= fmt.width(cell) <= TITLE_WIDTH, cell
