@@ -69,18 +69,15 @@ def _text(mk: Mistake, lang: str) -> tuple[str, str]:
         return (f"the Coriolis acceleration {mk.target} is missing",
                 f"lay off {mk.target} = 2·{g('omega')}·{g('rel')} ({g('rel')} turned by 90° in "
                 f"the sense of {g('omega')}) before drawing the line of the sliding acceleration")
-    if k == "coriolis-half":
+    if k in ("coriolis-half", "coriolis-double"):  # the 2 of 2·ω·V left out, or taken twice
+        half = k == "coriolis-half"
+        formula = f"{mk.target} = 2·{g('omega')}·{g('rel')}"
         if ru:
-            return (f"ускорение Кориолиса {mk.target} вдвое меньше",
-                    f"{mk.target} = 2·{g('omega')}·{g('rel')}: не забудьте множитель 2")
-        return (f"the Coriolis acceleration {mk.target} is half as long as it should be",
-                f"{mk.target} = 2·{g('omega')}·{g('rel')}: the factor 2 is missing")
-    if k == "coriolis-double":
-        if ru:
-            return (f"ускорение Кориолиса {mk.target} вдвое больше",
-                    f"{mk.target} = 2·{g('omega')}·{g('rel')}: множитель 2 учтён дважды")
-        return (f"the Coriolis acceleration {mk.target} is twice as long as it should be",
-                f"{mk.target} = 2·{g('omega')}·{g('rel')}: the factor 2 is taken twice")
+            return (f"ускорение Кориолиса {mk.target} вдвое {'меньше' if half else 'больше'}",
+                    f"{formula}: {'не забудьте множитель 2' if half else 'множитель 2 учтён дважды'}")
+        return (f"the Coriolis acceleration {mk.target} is {'half' if half else 'twice'} as long "
+                "as it should be",
+                f"{formula}: the factor 2 is {'missing' if half else 'taken twice'}")
     if k == "normal-reversed":
         X, Y = g("X"), g("Y")
         if g("driver"):
