@@ -23,6 +23,24 @@ from .structure import DyadKind, Group
 #: below this |sin| (about 2°) a position is reported as near-singular
 WARN_SINE = 0.035
 
+#: the relative error of a plan's velocities and accelerations where its lines meet at
+#: sine s is within about LOSS·ε/s² (κ²·ε, κ = 1/s: the position's error tilts the lines
+#: it intersects): 11 on the stiff scenes (README); at a crank's limit position, against
+#: the 30-digit reference, 0.7 (1.5e-3 at s = 3.3e-7)
+LOSS = 11.0
+
+
+def plan_error(sine: float) -> float | None:
+    """How far off, at most and relative to the largest of them, a plan's velocities and
+    accelerations may be where its lines' sine is ``sine``; None where it is below half a
+    unit of the fourth digit a report prints (5e-5).
+
+    >>> plan_error(0.03), f"{plan_error(3.3e-7):.1e}", plan_error(1e-9) > 1
+    (None, '2.2e-02', True)
+    """
+    err = LOSS * float(np.finfo(float).eps) / (sine * sine)
+    return err if err > 5e-5 else None
+
 #: beside a change point (within :data:`CHANGE_NEAR` rad of one of the group's) a sine
 #: below this makes the position singular: there the acceleration plan's right-hand side
 #: carries the velocities' error (κ²·ε, κ = 1/sin), and the nearly parallel lines
@@ -180,14 +198,23 @@ class GroupSolution(NamedTuple):
         if not below <= s < WARN_SINE:
             return None
         r0, r1 = self.velocity.routes
+        err = plan_error(s)  # said where the four digits printed are not all right
         if lang == "ru":
             from .fmt import num
 
+            lost = ("" if err is None else
+                    "; скорости и ускорения могут быть неверны целиком" if err >= 1 else
+                    f"; скорости и ускорения могут быть неточны до {num(100 * err, 2, 'ru')} % "
+                    "(от наибольшей)")
             return (f"группа {self.group.label.removeprefix('group ')} при {at}: положение, "
                     f"близкое к особому: прямые {r0.relation} и {r1.relation} пересекаются "
-                    f"под углом {num(_degrees(s), 3, 'ru')}° (sin = {num(s, 3, 'ru')})")
+                    f"под углом {num(_degrees(s), 3, 'ru')}° (sin = {num(s, 3, 'ru')}){lost}")
+        lost = ("" if err is None else
+                "; its velocities and accelerations may be wrong altogether" if err >= 1 else
+                f"; its velocities and accelerations may be off by up to {100 * err:.2g} % "
+                "(of the largest)")
         return (f"{self.group.label} at {at}: near-singular, the lines "
-                f"{r0.relation} and {r1.relation} meet at {_degrees(s):.3g}° (sin = {s:.3g})")
+                f"{r0.relation} and {r1.relation} meet at {_degrees(s):.3g}° (sin = {s:.3g}){lost}")
 
 
 def pivot_figure(g: GroupSolution, position: dict, crank_pivot: complex):
