@@ -189,6 +189,13 @@ def read_table(path: str | Path | None = None) -> Table:
             rp.add(where + ".kind", f'must be "crank-slider" or "four-bar", got {quote(kind, 30)} (variant {n})')
             continue
         need = COLUMNS if kind == "four-bar" else ("AB", "BC", "phi_deg", "rpm")
+        if "kind" not in row and kind == "four-bar" and not {"CD", "AD"} & row.keys():
+            # a crank-slider row of another course's table, its kind left to Table 2's rule:
+            # "CD missing, AD missing" would not say why it was read as a four-bar
+            rp.add(where + ".kind", f"missing: variant {n} has no CD, AD and no kind, and an odd "
+                                    'n is a four-bar (as in Table 2): write kind = "crank-slider"'
+                                    " (or give CD and AD)")
+            need = ("AB", "BC", "phi_deg", "rpm")  # its numbers are checked all the same
         values = {}
         for col in need:
             cw = f"{where}.{col}"
