@@ -18,6 +18,7 @@ variant 7); the default is :data:`DESIGNATION`.
 
 from __future__ import annotations
 
+import math
 import operator
 from dataclasses import replace
 from importlib import resources
@@ -204,8 +205,10 @@ def read_table(path: str | Path | None = None) -> Table:
             elif col == "phi_deg":
                 values[col] = read_number(row[col], cw, rp, unit="°")
             elif col == "rpm":
-                values[col] = read_number(row[col], cw, rp, positive=True, unit="rpm", low=SPEED[0],
-                                          high=SPEED[1])  # as a mechanism file's rpm
+                # as a mechanism file's rpm: the slowest in rad/s, else the row passed here
+                # and failed as "driver.rpm", a key the table has not, with no line
+                values[col] = read_number(row[col], cw, rp, positive=True, unit="rpm",
+                                          low=SPEED[0] * 30.0 / math.pi, high=SPEED[1])
             else:
                 values[col] = read_number(row[col], cw, rp, positive=True, low=MIN_LINK, high=MAX_ABS)
         if not rp:
