@@ -282,6 +282,8 @@ MAX_POINTS = 1000  # points in all
 MAX_ITEMS = 200  # sliders, trace, assembly hints, title fields
 MIN_LINK = 1e-6  # m: the shortest link (a micrometre)
 SPEED = (1e-6, MAX_ABS)  # rad/s, rpm
+#: the slowest crank in rpm: the slowest in rad/s (1e-6 rpm had passed as 1e-7 rad/s)
+RPM_MIN = SPEED[0] * 30.0 / math.pi
 SCALE = (1e-9, MAX_ABS)  # μl m/mm, μv (m/s)/mm, μa (m/s²)/mm
 SAME = 1e-12  # m: two points of one link closer than this are the same place
 
@@ -1021,9 +1023,8 @@ def _driver(body, pr: Problems, links, frame, bad_links, frame_names) -> Driver 
         pr.add(where, "give omega (rad/s) or rpm, not both")
         return None
     if "rpm" in body:
-        # the slowest crank in rpm is the slowest in rad/s: 1e-6 rpm had passed as 1e-7 rad/s
         rpm = read_number(body["rpm"], where + ".rpm", pr, positive=True, unit="rpm",
-                          low=SPEED[0] * 30.0 / math.pi, high=SPEED[1])
+                          low=RPM_MIN, high=SPEED[1])
         omega = None if rpm is None else math.pi * rpm / 30.0
     elif "omega" in body:
         omega = read_number(body["omega"], where + ".omega", pr, positive=True, unit="rad/s",

@@ -18,7 +18,6 @@ variant 7); the default is :data:`DESIGNATION`.
 
 from __future__ import annotations
 
-import math
 import operator
 from dataclasses import replace
 from importlib import resources
@@ -37,7 +36,7 @@ from .fileformat import (
     read_number,
     read_toml,
 )
-from .mechanism import MIN_LINK, SPEED, Mechanism, from_dict
+from .mechanism import MIN_LINK, RPM_MIN, SPEED, Mechanism, from_dict
 
 BUILTIN = "Table 2 (built in)"
 #: :data:`BUILTIN` in Russian, for the reports in Russian that name a variant's source
@@ -205,10 +204,10 @@ def read_table(path: str | Path | None = None) -> Table:
             elif col == "phi_deg":
                 values[col] = read_number(row[col], cw, rp, unit="°")
             elif col == "rpm":
-                # as a mechanism file's rpm: the slowest in rad/s, else the row passed here
-                # and failed as "driver.rpm", a key the table has not, with no line
+                # as a mechanism file's rpm, else the row passed here and failed as
+                # "driver.rpm", a key the table has not, with no line
                 values[col] = read_number(row[col], cw, rp, positive=True, unit="rpm",
-                                          low=SPEED[0] * 30.0 / math.pi, high=SPEED[1])
+                                          low=RPM_MIN, high=SPEED[1])
             else:
                 values[col] = read_number(row[col], cw, rp, positive=True, low=MIN_LINK, high=MAX_ABS)
         if not rp:
