@@ -396,7 +396,7 @@ def place_labels(
     out: list[Placement] = []
     for req in requests:
         chosen: tuple[Text, Polygon] | None = None
-        fallback: tuple[float, Text, Polygon] | None = None
+        fallback: tuple[tuple[bool, float], Text, Polygon] | None = None
         across: tuple[tuple, Text, Polygon, Point] | None = None  # clear, but beyond a line
         spots = [(anchor, direction) for anchor in (req.anchor, *req.also)
                  for direction in _directions(req.prefer)]
@@ -411,6 +411,7 @@ def place_labels(
                     box = text_box(text)
                     hits = [] if hard_tree is None else [
                         hard[i] for i in hard_tree.query(box, predicate="intersects")]
+                    on_labels = 0.0  # mm² of the labels placed before that it covers
                     if placed:  # a label keeps GAP from the labels of other points, a
                         # position's number from its own point's letter too ("¹B")
                         near_box = shapely.box(
@@ -418,7 +419,9 @@ def place_labels(
                         mask = shapely.intersects(near_box, boxes)
                         if not req.optional:
                             mask &= shapely.intersects(box, boxes) | others
-                        hits += [p for p, m in zip(placed, mask, strict=True) if m]
+                        near_labels = [p for p, m in zip(placed, mask, strict=True) if m]
+                        on_labels = sum(box.intersection(p).area for p in near_labels)
+                        hits += near_labels
                     outside = 0.0 if region is None else _outside(box, region, region_box)
                     if not (hits or req.cross or hard_tree is None or outside > 1e-9):
                         if _beyond(anchor, box, hard, hard_tree):  # on its point's far side
@@ -430,14 +433,17 @@ def place_labels(
                                 across = (key, text, box, anchor)
                             continue
                     if hits or outside > 1e-9:
-                        cost = sum(box.intersection(g).area for g in hits) + outside + 1e-6 * len(hits)
+                        # a letter over another letter is read as neither: the last resort
+                        # covers lines rather than labels wherever it can
+                        cost = (on_labels > 1e-6, sum(box.intersection(g).area for g in hits)
+                                + outside + 1e-6 * len(hits))
                         if fallback is None or cost < fallback[0]:
                             fallback = (cost, text, box)
                         continue
                     n_soft = 0 if soft_tree is None else len(soft_tree.query(box, predicate="intersects"))
                     # the last resort too, when every spot crosses more thin lines than allowed
-                    if fallback is None or 1e-9 * n_soft < fallback[0]:
-                        fallback = (1e-9 * n_soft, text, box)
+                    if fallback is None or (False, 1e-9 * n_soft) < fallback[0]:
+                        fallback = ((False, 1e-9 * n_soft), text, box)
                     if n_soft == 0:
                         chosen = (text, box)
                         break

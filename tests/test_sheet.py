@@ -1585,3 +1585,12 @@ def test_an_english_sheet_has_no_cyrillic_letter(key, fmt):
     assert not [t for t in texts if re.search("[\u0400-\u04ff]", t) and t != given], texts
     _, ru = _texts(_sheet(key, fmt, "ru")[4])
     assert "У" in ru
+
+
+def test_a_letter_with_no_clear_spot_covers_a_line_rather_than_another_letter():
+    """Variant 1's acceleration plan of position 6 has no clear spot for s₂: its last
+    resort, the spot that covered least, was on n₂'s letter (by 0.3 mm², less than any
+    vector it could touch), and «n₂» and «s₂» ran into one another. A letter over a letter
+    reads as neither: the last resort covers lines rather than letters."""
+    _, scene, *_ = _sheet(1, "A2", "ru", (2, 6, 10))
+    assert overlaps([it for it in scene.items() if isinstance(it, Text)]) == []
