@@ -3,7 +3,9 @@
 A table file (TOML) has ``[[variant]]`` rows with ``n``, the lengths ``AB`` (crank), ``BC``
 (connecting rod or coupler), ``CD`` (rocker) and ``AD`` (frame) in metres, ``phi_deg`` and
 ``rpm``; ``kind`` = "crank-slider" or "four-bar" (default: even n → crank-slider, odd n →
-four-bar, as in the built-in Table 2).
+four-bar, as in the built-in Table 2). Columns another course's table may add: ``omega``
+(rad/s) instead of ``rpm``, ``sense`` of the crank ("ccw", the default, or "cw"), and a
+crank-slider's offset ``e`` (m: its guide runs at y = e, above A where e > 0; default 0).
 
 Conventions (the built-in table's): four-bar A = (0, 0), D = (−AD, 0), φ1 counter-clockwise
 from +x, crank turning counter-clockwise, C above the line BD, E on BC produced beyond C
@@ -42,13 +44,15 @@ BUILTIN = "Table 2 (built in)"
 #: :data:`BUILTIN` in Russian, for the reports in Russian that name a variant's source
 BUILTIN_RU = "таблица 2 (встроенная)"
 COLUMNS = ("AB", "BC", "CD", "AD", "phi_deg", "rpm")
+#: the columns a row may add (module docstring): none of the built-in table's
+OPTIONAL = ("omega", "sense", "e")
 KINDS = ("crank-slider", "four-bar")
 MAX_ROWS = 10_000
 #: top-level keys a table may have besides its rows
 TABLE_KEYS = {"variant", "title", "name", "source", "note", "designation"}
 #: the designation of a variant's sheet where its table gives none
 DESIGNATION = "ПМ.01.{n:02d}"
-ROW_KEYS = {"n", "kind", *COLUMNS}
+ROW_KEYS = {"n", "kind", *COLUMNS, *OPTIONAL}
 
 
 def load_table(path: str | Path | None = None) -> tuple[str, dict[int, dict]]:
@@ -197,6 +201,21 @@ def read_table(path: str | Path | None = None) -> Table:
                                     " (or give CD and AD)")
             need = ("AB", "BC", "phi_deg", "rpm")  # its numbers are checked all the same
         values = {}
+        if "omega" in row:  # the crank's speed in rad/s instead of rpm
+            need = tuple(c for c in need if c != "rpm")
+            if "rpm" in row:
+                rp.add(where + ".omega", f"give omega (rad/s) or rpm, not both (variant {n})")
+            else:
+                values["omega"] = read_number(row["omega"], where + ".omega", rp, positive=True,
+                                              unit="rad/s", low=SPEED[0], high=SPEED[1])
+        if "sense" in row and row["sense"] not in ("ccw", "cw"):
+            rp.add(where + ".sense", f'must be "ccw" (counter-clockwise) or "cw" (clockwise), '
+                                     f"got {quote(row['sense'], 20)} (variant {n})")
+        if "e" in row:
+            if kind != "crank-slider":
+                rp.add(where + ".e", f"an offset is a crank-slider's; variant {n} is a {kind}")
+            else:
+                values["e"] = read_number(row["e"], where + ".e", rp, unit="m", high=MAX_ABS)
         for col in need:
             cw = f"{where}.{col}"
             if col not in row:
@@ -236,10 +255,11 @@ def _bad_pattern(pattern: str) -> str | None:
 def variant_dict(row: dict, designation: str = DESIGNATION) -> dict:
     """The mechanism file (as a parsed dict) of one table row; ``designation``, its
     table's pattern (``{n}`` the variant)."""
-    ab, bc, phi, rpm = row["AB"], row["BC"], row["phi_deg"], row["rpm"]
+    ab, bc, phi = row["AB"], row["BC"], row["phi_deg"]
     n = row["n"]
     title = {"designation": designation.format(n=n)}
-    driver = {"link": 1, "angle_deg": phi, "rpm": rpm, "sense": "ccw"}
+    speed = {"omega": row["omega"]} if "omega" in row else {"rpm": row["rpm"]}
+    driver = {"link": 1, "angle_deg": phi, **speed, "sense": row.get("sense", "ccw")}
     if row["kind"] == "four-bar":
         cd, ad = row["CD"], row["AD"]
         return {
@@ -269,7 +289,7 @@ def variant_dict(row: dict, designation: str = DESIGNATION) -> dict:
             "3": {"name": "slider", "points": {"C": 0.0, "S3": 0.0}},
         },
         "sliders": [{"link": 3, "point": "C",
-                     "guide": {"link": 0, "through": [0.0, 0.0], "angle_deg": 0.0}}],
+                     "guide": {"link": 0, "through": [0.0, row.get("e", 0.0)], "angle_deg": 0.0}}],
         "assembly": {"C": "right of A"},
         "trace": ["S2"],
         "output": "C",

@@ -710,7 +710,7 @@ def test_a_bad_row_of_a_table_stops_only_its_own_variant(capsys, tmp_path):
         f"plans solve: warning: {table}: line 10: variant[1].AD: missing: four-bar variant 3 "
         "needs AB, BC, CD, AD, phi_deg, rpm",
         f"plans solve: warning: {table}: line 15: variant[1].Ad: unknown column (variant 3) — "
-        'did you mean "AD"? known: AB, AD, BC, CD, kind, n, phi_deg, rpm']
+        'did you mean "AD"? known: AB, AD, BC, CD, e, kind, n, omega, phi_deg, rpm, sense']
     code, out, err = run(capsys, "solve", "--variant", "3", "--table", table)
     assert code == 2 and out == "" and len(err.splitlines()) == 2 and "variant 3" in err
     code, _, err = run(capsys, "sheet", "--variant", "all", "--table", table, "-o", f"{tmp_path}/s/")

@@ -569,3 +569,26 @@ def test_the_note_works_out_theta_from_the_cranks_turns_and_names_the_swing(caps
     assert f"- `θ = (φ_рх − φ_хх) / 2 = ({w}° − {r}°) / 2 = {th:.4g}°`".replace(".", ",") in out
     code, out, _ = run(capsys, "report", "samples/press.toml")
     assert "- `θ = (φ_w − φ_r) / 2 = (219.865° − 140.135°) / 2 = 39.86°`" in out
+
+
+def test_a_courses_table_gives_an_offset_omega_and_a_clockwise_crank(tmp_path, capsys):
+    """A course's table could not hold a crank-slider's offset, a speed in rad/s nor a
+    clockwise crank: its rows went through the tool only as Table 2's. With e, omega and
+    sense, the offset crank-slider r = 0.1, l = 0.4, e = 0.05 m has the closed forms'
+    stroke H = √((l+r)² − e²) − √((l−r)² − e²) and θ = asin(e/(l−r)) − asin(e/(l+r)),
+    and its crank turns clockwise at ω1 = 10.5 rad/s."""
+    from plans.cycle import analyse_cycle
+
+    table = tmp_path / "course.toml"
+    table.write_text('designation = "ТММ.КП.{n:02d}"\n[[variant]]\nn = 4\nkind = "crank-slider"\n'
+                     'AB = 0.1\nBC = 0.4\ne = "0,05"\nphi_deg = 30\nomega = 10.5\nsense = "cw"\n',
+                     encoding="utf-8")
+    mech = variant(4, table)
+    r, l, e = 0.1, 0.4, 0.05
+    assert mech.driver.omega == -10.5
+    c = analyse_cycle(mech)
+    assert c.stroke == pytest.approx(math.sqrt((l + r) ** 2 - e * e) - math.sqrt((l - r) ** 2 - e * e),
+                                     rel=1e-12)
+    assert c.theta == pytest.approx(math.asin(e / (l - r)) - math.asin(e / (l + r)), rel=1e-9)
+    code, out, _ = run(capsys, "solve", "--variant", "4", "--table", str(table))
+    assert code == 0 and "ω1 = 10.5 rad/s cw" in out, out
