@@ -724,7 +724,7 @@ def positions_view(sol, cycle, lang: str = "ru", sizing: bool = False,
                                    f"H = {num(cycle.stroke, 4, lang)} {w['m']}")
     # swing ψ of a rocker: an arc between its two extreme positions, about its pivot
     if out is not None and cycle.stroke and out.kind == "angular" and ends:
-        arm = _rocker_arm(mech, out)
+        arm = out.arm(mech)
         if arm is not None:
             pivot, tip = arm
             a, b = extremes[0][tip], extremes[1][tip]
@@ -801,20 +801,6 @@ def _stroke_dimension(items, p1, p2, direction: complex, value: str) -> list[Ite
         out.append(Text((end[0] + ux * 1.5 - nx, end[1] + uy * 1.5 - ny), value, size=3.5,
                         rotate_deg=turn))
     return out
-
-
-def _rocker_arm(mech, out) -> tuple[str, str] | None:
-    """The rocker's fixed pivot and its point farthest from it (the hinge the arc spans)."""
-    link = mech.links[out.link]
-    pivots = [p for p in link.points if p in mech.frame]
-    if not pivots:
-        return None
-    pivot = pivots[0]
-    others = [p for p in link.points if p != pivot]
-    if not others:
-        return None
-    tip = max(others, key=lambda p: abs(link.points[p] - link.points[pivot]))
-    return pivot, tip
 
 
 #: the swing arc's radius, as a share of the rocker's arm

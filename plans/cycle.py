@@ -44,6 +44,19 @@ class Output:
         out[known] = np.unwrap(psi[known])
         return out
 
+    def arm(self, mech: Mechanism) -> tuple[str, str] | None:
+        """A rocker's fixed pivot and its point farthest from it, the two the swing ψ is
+        measured by (∠C′DC″ between its extreme positions: the sheet's arc and the note's
+        angle alike); None for a slider, or a rocker with no fixed point."""
+        if self.kind != "angular":
+            return None
+        link = mech.links[self.link]
+        pivot = next((p for p in link.points if p in mech.frame), None)
+        others = [p for p in link.points if p != pivot]
+        if pivot is None or not others:
+            return None
+        return pivot, max(others, key=lambda p: abs(link.points[p] - link.points[pivot]))
+
     def rate(self, m: Motion, mech: Mechanism, which: str = "velocity"):
         data = m.velocity if which == "velocity" else m.acceleration
         if self.kind == "linear":

@@ -217,8 +217,10 @@ def note(sol: Solution, lang: str = "en", cycle=None,
             else:
                 out.append(t["swing"].format(l=cycle.output.link))
                 out.append("")
-                arm = _rocker_arm(mech, cycle.output)
-                out.append(Step(arm, "", n(math.degrees(cycle.stroke)), u["deg"]).markdown())
+                # the angle between the rocker's extreme positions, as the sheet's arc spans it
+                arm = cycle.output.arm(mech)
+                psi = f"ψ = ∠{arm[1]}′{arm[0]}{arm[1]}″" if arm else "ψ"
+                out.append(Step(psi, "", n(math.degrees(cycle.stroke)), u["deg"]).markdown())
             out += ["", t["kth"].format(d=d.link), ""]
             th = math.degrees(cycle.theta)
             # the crank's turn from the working stroke's start (the first extreme) to its end
@@ -452,13 +454,6 @@ def _belongs(m, plan_point: str, links) -> bool:
         if plan_name(name) == plan_point:
             return owner in links
     return False
-
-
-def _rocker_arm(mech, output) -> str:
-    """"ψ = ∠C′DC″": the swing as the angle between the rocker's two extreme positions
-    on the plan of positions, at its fixed pivot; "ψ" where the rocker has no fixed point."""
-    pivot = next((p for p in mech.links[output.link].points if p in mech.frame), None)
-    return f"ψ = ∠{output.point}′{pivot}{output.point}″" if pivot else "ψ"
 
 
 def _similar(sol: Solution, plan, sims, lang: str) -> list[str]:
