@@ -223,9 +223,9 @@ def note(sol: Solution, lang: str = "en", cycle=None,
                 out.append(Step(psi, "", n(math.degrees(cycle.stroke)), u["deg"]).markdown())
             out += ["", t["kth"].format(d=d.link), ""]
             th = math.degrees(cycle.theta)
-            # the crank's turn from the working stroke's start (the first extreme) to its end
-            e0, e1 = cycle.extremes
-            work = math.degrees((math.copysign(1.0, d.omega) * (e1 - e0)) % (2 * math.pi))
+            # the crank's turn over the working stroke, from the first extreme to the
+            # second: 180° + θ, as the cycle found θ from the two turns
+            work = 180.0 + th
             w, r = ("φ_рх", "φ_хх") if lang == "ru" else ("φ_w", "φ_r")
             # the turns carried to one decimal more than θ is given to, so that their
             # difference gives θ as printed (3,855° from 183,855° and 176,145°)
