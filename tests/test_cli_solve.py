@@ -558,8 +558,13 @@ def test_the_note_works_out_theta_from_the_cranks_turns_and_names_the_swing(caps
     cycle's own: φ_рх − 180° = θ."""
     from plans.cycle import analyse_cycle
 
-    th = math.degrees(analyse_cycle(variant(3)).theta)
+    c = analyse_cycle(variant(3))
+    th = math.degrees(c.theta)
     work, back = 180.0 + th, 180.0 - th
+    # the crank's turn from the one extreme to the other, in its sense, measured apart
+    sense = math.copysign(1.0, variant(3).driver.omega)
+    assert math.degrees((sense * (c.extremes[1] - c.extremes[0])) % (2 * math.pi)) == \
+        pytest.approx(work, abs=1e-9)
     code, out, _ = run(capsys, "report", "--variant", "3", "--lang", "ru")
     assert code == 0
     assert "- `ψ = ∠C′DC″ = 79,54°`" in out
