@@ -29,6 +29,7 @@ import numpy as np
 from . import kernels, records
 from .branches import choose_branches, hint_holds, parse_hint
 from .errors import SingularPlanError
+from .fileformat import one_line
 from .geometry import apart
 from .groups import SOLVERS, ScalarFallback
 from .kernels import record
@@ -72,15 +73,10 @@ def crank_angle(phi) -> float:
     except (TypeError, ValueError) as exc:
         many = " (for many angles at once: Solver.sweep or Solver.solve)" if np.ndim(phi) else ""
         raise type(exc)(f"the crank angle must be one number of radians{many}, "
-                        f"not {_short(phi)}") from None
+                        f"not {one_line(repr(phi), 60)}") from None
     if not math.isfinite(out):
         raise ValueError(f"the crank angle must be a finite number of radians, not {out}")
     return out
-
-
-def _short(value) -> str:
-    text = repr(value)
-    return text if len(text) <= 60 else text[:57] + "..."
 
 
 class Solver:
@@ -106,7 +102,7 @@ class Solver:
             hint = (f": read the file first, with load({str(mech)!r})"
                     if isinstance(mech, str | Path) else "")
             raise TypeError(f"a mechanism (plans.load, plans.from_dict) is needed, "
-                            f"not {_short(mech)}{hint}")
+                            f"not {one_line(repr(mech), 60)}{hint}")
         self.mech = mech
         self.structure = structure or analyse(mech)
         # the turn starts at ``branch_at``; ``sigmas`` hold at ``read_at``, which is
