@@ -38,7 +38,7 @@ from .fileformat import (
     read_number,
     read_toml,
 )
-from .mechanism import MIN_LINK, RPM_MIN, SPEED, Mechanism, from_dict
+from .mechanism import MIN_LINK, RPM_MIN, SENSES, SPEED, Mechanism, from_dict
 
 BUILTIN = "Table 2 (built in)"
 #: :data:`BUILTIN` in Russian, for the reports in Russian that name a variant's source
@@ -208,7 +208,7 @@ def read_table(path: str | Path | None = None) -> Table:
             else:
                 values["omega"] = read_number(row["omega"], where + ".omega", rp, positive=True,
                                               unit="rad/s", low=SPEED[0], high=SPEED[1])
-        if "sense" in row and row["sense"] not in ("ccw", "cw"):
+        if "sense" in row and not (isinstance(row["sense"], str) and row["sense"] in SENSES):
             rp.add(where + ".sense", f'must be "ccw" (counter-clockwise) or "cw" (clockwise), '
                                      f"got {quote(row['sense'], 20)} (variant {n})")
         if "e" in row:
