@@ -74,11 +74,8 @@ def configure(p) -> None:
 def _title_fields(mech, pairs, scale: str, lang: str = "ru") -> dict[str, str]:
     """The title block's fields: the file's [title], then --title-block over them. Two
     names of one field given different values in one place ("university" and
-    "organisation") are refused: neither is dropped without a word. The literal is the
-    language's own unless given (an English sheet has no «У»)."""
-    from drawing.sheet import LITERAL
-
-    out = {"name": mech.name_in(lang), "scale": scale, "literal": LITERAL[lang]}
+    "organisation") are refused: neither is dropped without a word."""
+    out = {"name": mech.name_in(lang), "scale": scale}
     for where, items in ((mech.source, list((mech.title or {}).items())),
                          ("--title-block", _pairs(pairs))):
         given: dict[str, tuple[str, str]] = {}

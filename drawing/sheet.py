@@ -149,8 +149,8 @@ class TitleBlock:
     """What is written in the title block; empty fields stay blank.
 
     Numbered as in GOST 2.104: ``name`` (1), ``designation`` (2, repeated
-    upside down in field 26), ``material`` (3), ``literal`` (4: "У" marks a
-    student's drawing), ``mass`` (5), ``scale`` (6, e.g. "1:10"), ``sheet``
+    upside down in field 26), ``material`` (3), ``literal`` (4; None: the sheet's
+    language's, :data:`LITERAL`), ``mass`` (5), ``scale`` (6, e.g. "1:10"), ``sheet``
     (7: left blank on a one-sheet document), ``sheets`` (8), ``organisation``
     (9: the university), ``group`` (the student's group, written in field 9 after
     the organisation, "МГТУ, гр. ТМ-21", as course projects fill it), the signers'
@@ -161,7 +161,7 @@ class TitleBlock:
     name: str = ""
     designation: str = ""
     material: str = ""
-    literal: str = "У"
+    literal: str | None = None
     mass: str = ""
     scale: str = ""
     sheet: str = ""
@@ -180,7 +180,7 @@ class TitleBlock:
             value = getattr(self, f.name)
             if isinstance(value, int | float):
                 object.__setattr__(self, f.name, str(value))
-            elif not isinstance(value, str):
+            elif not isinstance(value, str) and not (f.name == "literal" and value is None):
                 raise TypeError(
                     f"TitleBlock.{f.name} must be a str, got {type(value).__name__}"
                 )
@@ -297,7 +297,8 @@ def title_block_entries(
     put(words["lit"], 135, 35, 150, 40)
     put(words["mass"], 150, 35, 167, 40)
     put(words["scale"], 167, 35, 185, 40)
-    for k, ch in enumerate(tb.literal[:3]):
+    literal = LITERAL[lang] if tb.literal is None else tb.literal  # «У» on a Russian sheet
+    for k, ch in enumerate(literal[:3]):
         put(ch, 135 + 5 * k, 20, 140 + 5 * k, 35, largest=3.5, entries=("literal",))
     put(tb.mass, 150, 20, 167, 35, largest=5, entries=("mass",))
     put(tb.scale, 167, 20, 185, 35, largest=5, entries=("scale",))
@@ -345,7 +346,7 @@ def frame_scene(
     """
     if lang not in LABELS:
         raise ValueError(f"lang must be one of {sorted(LABELS)}, got {lang!r}")
-    title_block = title_block or TitleBlock(literal=LITERAL[lang])
+    title_block = title_block or TitleBlock()
     frame_items: list = []
     if trim:
         frame_items.append(
