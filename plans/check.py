@@ -369,7 +369,8 @@ def diagnose(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance,
     # one from the wrong point: an ordinary file, checked as fast as before): its search
     # solves some two hundred positions
     if not any(not f.broken and not f.unexplained for f in findings):
-        exact = exact or _Replayer(meas.solution).exact()
+        if exact is None:
+            exact = _Replayer(meas.solution).exact()
         failed = {items[i].name for i in bad}
         if not failed <= {lk.item for lk in lookalikes(meas, devs, exact, tol, failed)}:
             judge(_fitted_angle(meas, devs, tol))
