@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import ast
 import datetime
-import difflib
 import json
 import math
 import re
@@ -432,6 +431,8 @@ def close_match(key: Any, allowed, cutoff: float = 0.6) -> str:
     if latin != key and latin in allowed:
         return f'did you mean "{latin}" (typed with {cyrillic_letters(key)})? '
     same = sorted(a for a in allowed if a.lower() == key.lower())
+    import difflib  # only for a misspelt key
+
     close = same or difflib.get_close_matches(key, sorted(allowed), n=1, cutoff=cutoff)
     return f'did you mean "{close[0]}"? ' if close else ""
 

@@ -16,7 +16,6 @@ Lengths are metres, angles degrees in the file and radians inside, time seconds.
 
 from __future__ import annotations
 
-import difflib
 import itertools
 import math
 import re
@@ -776,6 +775,8 @@ def _connections(frame, links, pairs, drv, bad_links, pr: Problems) -> None:
             why = f"it is on no other link and not in [frame], so {what}"
             pr.add(f"links.{lid}.axis[0]", _unknown_point(link.axis[0], others, why))
         elif free and others:
+            import difflib  # only for a misspelt joint
+
             guesses = []
             for n in free:
                 close = difflib.get_close_matches(n, list(others), n=1, cutoff=0.5)

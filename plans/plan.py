@@ -9,9 +9,9 @@ and the check of a student's plan all read this one object.
 
 from __future__ import annotations
 
-import hashlib
 import linecache
 import sys
+import zlib
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -615,7 +615,7 @@ def _compile(kind: str, pole: str, tip: str, steps, ends):
     scope.update((f"K{j}", c) for j, c in enumerate(consts))
     # named by its text, so that a traceback through it shows the generated line, and one
     # mechanism solved again and again keeps one entry in linecache
-    filename = f"<plan recipe {kind} {hashlib.sha1(source.encode()).hexdigest()[:16]}>"
+    filename = f"<plan recipe {kind} {zlib.crc32(source.encode()):08x}{len(source):08x}>"
     exec(compile(source, filename, "exec"), scope)  # noqa: S102
     linecache.cache[filename] = (len(source), None, source.splitlines(True), filename)
     follow = scope["follow"]

@@ -22,7 +22,6 @@ from __future__ import annotations
 
 import operator
 from dataclasses import replace
-from importlib import resources
 from pathlib import Path
 from typing import NamedTuple
 
@@ -132,6 +131,9 @@ class Table(NamedTuple):
 def read_table(path: str | Path | None = None) -> Table:
     """The table at ``path`` (None: the built-in Table 2), read once."""
     if path is None:
+        # imported only here: it costs a tenth of what `plans solve` imports
+        from importlib import resources
+
         text = resources.files("plans").joinpath("data/table2.toml").read_text("utf-8")
         source = BUILTIN
         data = parse_toml(text, source)
