@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import importlib.util
 import re
 import sys
 from pathlib import Path
@@ -257,7 +258,12 @@ class _Parser(argparse.ArgumentParser):
         sys.exit(EXIT_INPUT)
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser(only: str | None = None) -> argparse.ArgumentParser:
+    """The command line's parser: every command's, or with ``only`` just that command's
+    options (the others listed by name and help, for ``--help`` and a misspelt command).
+
+    A run needs one command's options: building all six imported their modules and made
+    argparse lay out some seventy options, a tenth of what ``plans solve`` takes."""
     parser = _Parser(
         prog="plans",
         description="Exact vector plans (velocity and acceleration polygons) of planar linkages.",
@@ -268,6 +274,10 @@ def build_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
     parser.commands = {}  # name → its parser, for the errors only it can word
     for name, (module, help_text) in COMMANDS.items():
+        if only is not None and name != only:
+            if importlib.util.find_spec(module) is not None:  # else not built yet
+                sub.add_parser(name, help=help_text)
+            continue
         try:
             mod = importlib.import_module(module)
         except ModuleNotFoundError as exc:
@@ -286,8 +296,16 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _command_in(argv: list[str] | None) -> str:
+    """The command named on the command line (after a leading ``--debug``), or ""."""
+    for arg in sys.argv[1:] if argv is None else argv:
+        if arg != "--debug":
+            return arg if arg in COMMANDS else ""
+    return ""
+
+
 def main(argv: list[str] | None = None) -> int:
-    parser = build_parser()
+    parser = build_parser(only=_command_in(argv))
     try:  # argparse ends --help and its own errors with SystemExit: main returns the code
         args, extra = parser.parse_known_args(argv)
         if extra:  # blamed on the command, which lists what it takes in its --help

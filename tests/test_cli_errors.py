@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import stat
 import subprocess
 import sys
@@ -387,6 +388,18 @@ def test_help_documents_the_exit_status(capsys, argv):
     assert main(argv) == 0  # main returns argparse's code, it does not exit
     text = " ".join(capsys.readouterr().out.split())
     assert "exit status: 0 success, 1 a check found deviations, 2 bad input or an unsolvable scene, 3 internal error (rerun with --debug for the traceback)" in text
+
+
+def test_help_and_a_misspelt_command_still_name_every_command(capsys):
+    """A run configures only the command it names; the others are still listed."""
+    assert main(["--help"]) == 0
+    out = capsys.readouterr().out
+    for name, (_, help_text) in cli.COMMANDS.items():
+        assert re.search(rf"^ +{name} +{re.escape(help_text)}$", out, re.M), name
+    assert main(["sovle", "x.toml"]) == 2
+    err = capsys.readouterr().err
+    assert err == ("plans: command line: argument COMMAND: invalid choice: 'sovle' (choose from "
+                   + ", ".join(f"'{n}'" for n in cli.COMMANDS) + ") (see plans --help)\n")
 
 
 def test_the_readme_documents_the_exit_status():

@@ -266,6 +266,29 @@ def test_cycle_pays_for_no_heavy_import(tmp_path):
     assert out.stdout.strip() == "[]"
 
 
+def test_solve_imports_neither_the_other_commands_nor_what_only_errors_need(tmp_path):
+    """``plans solve`` is end-to-end time (README: ≤ 0.3 s), most of it imports: it
+    configures its own command only, and leaves the look-ups of a misspelt key (difflib),
+    the built-in variant table (importlib.resources) and a cryptographic hash (hashlib,
+    for a plan recipe's name) to the runs that need them."""
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parent.parent
+    code = (
+        "import sys\n"
+        "from plans.cli import main\n"
+        f"assert main(['solve', {str(root / PRESS)!r}, '--json', '-o', {str(tmp_path / 's.json')!r}]) == 0\n"
+        "unpaid = {'plans.cli_report', 'plans.cli_check', 'plans.bench', 'drawing.cli_sheet',\n"
+        "          'difflib', 'importlib.resources', 'hashlib'}\n"
+        "print(sorted(set(sys.modules) & unpaid))\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         cwd=tmp_path, env={"PYTHONPATH": str(root), "PATH": ""}, check=True)
+    assert out.stdout.strip() == "[]"
+
+
 def test_cycle_text_gives_every_crank_angle_in_the_files_convention(capsys):
     """The press measures φ1 clockwise from +y: the extreme positions in the summary are
     in that convention, and position 0, which starts the working stroke, is the first."""
