@@ -379,11 +379,9 @@ def _json_rows(t: CycleTable):
 
 
 def _csv_header(t: CycleTable) -> list[str]:
-    from .records import PIVOT, is_pivot
-
-    head = ["index", "phi_deg", "angle_deg", "solved", "placed", "min_sine"]
-    for label in figure_labels(t):
-        head.append(f"pivot {label.removesuffix(PIVOT)}" if is_pivot(label) else f"sine {label}")
+    # the figures by their keys in a JSON row's conditioning.figures and in Sweep.sine
+    # and Sweep.pivot: "group 2–3 (RPR)" (the lines' sine), "group 2–3 (RPR) pivot"
+    head = ["index", "phi_deg", "angle_deg", "solved", "placed", "min_sine", *figure_labels(t)]
     if t.output_values is not None:  # s in m along the guide, or ψ in rad
         o = t.cycle.output
         head.append(f"output {o.point} ({'m' if o.kind == 'linear' else 'rad'})")

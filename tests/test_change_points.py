@@ -746,7 +746,7 @@ def test_a_block_exactly_on_the_pivot_at_the_given_angle_is_a_singular_row(capsy
     table = list(csv.reader(io.StringIO(out)))
     head = table[0]
     assert {len(r) for r in table} == {len(head)}
-    assert "pivot group 2–3 (RPR)" in head
+    assert "group 2–3 (RPR) pivot" in head
     got = [float(r[head.index("output C (rad)")]) for r in table[1:]]
     assert got == pytest.approx([r["output"] for r in rows], abs=1e-12)
     assert float(table[2][head.index("O.x")]) == 0.0

@@ -104,9 +104,9 @@ def test_csv_carries_the_same_numbers_as_json(capsys):
         "phi_deg",
         "angle_deg",
         "min_sine",
-        "sine group 2–3 (RPR)",
-        "pivot group 2–3 (RPR)",
-        "sine group 4–5 (RRP)",
+        "group 2–3 (RPR)",
+        "group 2–3 (RPR) pivot",
+        "group 4–5 (RRP)",
         "D.vx",
         "A3.ay",
         "omega3",
@@ -122,6 +122,28 @@ def test_csv_carries_the_same_numbers_as_json(capsys):
         assert float(r["A3.ax"]) == j["points"]["A3"]["acceleration"][0]
         assert float(r["omega3"]) == j["links"]["3"]["omega"]
         assert float(r["min_sine"]) == j["conditioning"]["min_sine"]
+
+
+def test_csv_names_the_conditioning_figures_as_json_and_the_sweep_do(capsys):
+    """One name for one quantity: each figure of a JSON row's ``conditioning.figures``
+    (a group's lines' sine by the group's label, a slotted link's pivot figure by the
+    label and " pivot", the keys of ``Sweep.sine`` and ``Sweep.pivot``) is the CSV
+    column of that name, with the same value. The CSV had called them "sine group 2–3
+    (RPR)" and "pivot group 2–3 (RPR)", so that a script reading both had to translate."""
+    _, out_json, _ = run(capsys, "cycle", PRESS, "--json", "--positions", "6")
+    code, out_csv, err = run(capsys, "cycle", PRESS, "--csv", "--positions", "6")
+    assert code == 0, err
+    rows = list(csv.DictReader(io.StringIO(out_csv)))
+    data = json.loads(out_json)["rows"]
+    keys = list(data[0]["conditioning"]["figures"])
+    assert keys == ["group 2–3 (RPR)", "group 2–3 (RPR) pivot", "group 4–5 (RRP)"]
+    head = list(rows[0])
+    assert head[head.index("min_sine") + 1:head.index("min_sine") + 1 + len(keys)] == keys
+    for r, j in zip(rows, data, strict=True):
+        for key in keys:
+            assert float(r[key]) == j["conditioning"]["figures"][key]
+    sw = Solver(mechanism.load(PRESS)).sweep(np.radians([r["phi_deg"] for r in data]))
+    assert set(keys) == set(sw.sine) | set(sw.pivot)
 
 
 def test_variant_to_a_file(capsys, tmp_path):
