@@ -39,7 +39,8 @@ BLOCK = 8192
 
 @dataclass(frozen=True)
 class Sweep:
-    """Every point and link over the crank angles ``phi`` (1-D), without the record.
+    """Every point and link over the crank angles ``phi``, without the record: each array
+    of the shape of the angles swept (a single angle: an array of one, as in ``solve``).
 
     ``sine`` holds, per group (by its label), the |sin| between the two lines its plans
     intersect: the conditioning figure. A slotted link (RPR) has a second figure,
@@ -81,28 +82,36 @@ class Sweep:
 
 
 def sweep(sv: Solver, phi, block: int = BLOCK, into: Sweep | None = None) -> Sweep:
-    """Solve ``sv``'s mechanism at every angle of ``phi`` (rad from +x), block by block.
+    """Solve ``sv``'s mechanism at every angle of ``phi`` (rad from +x, any shape: the
+    results take it), block by block.
 
-    ``into``: a sweep of the same solver over as many angles, whose arrays are
+    ``into``: a sweep of the same solver over angles of the same shape, whose arrays are
     overwritten instead of allocating new ones. Fresh memory is what a sweep of 10⁶
     angles mostly waits for (the system zeroes every page on first touch), so a loop
     that sweeps again and again, an animation or an optimisation, should pass the
     previous result.
     """
-    phi = np.ascontiguousarray(np.asarray(phi, dtype=float).ravel())
+    phi = np.asarray(phi, dtype=float)
+    shape = phi.shape if phi.ndim else (1,)  # as solve: one angle is an array of one
+    phi = np.ascontiguousarray(phi.ravel())  # worked on flat, block by block
     n = phi.size
     block = max(int(block), 1)
     _raise_malloc_thresholds()
     with np.errstate(all="ignore"):
         if into is not None:
-            if into.phi.shape != phi.shape:
+            if into.phi.size != n:
                 raise ValueError(f"into: a sweep of {into.phi.size} angles, not {n}")
+            if into.phi.shape != shape:
+                raise ValueError(f"into: a sweep of angles shaped {into.phi.shape}, not {shape}")
             if [name for name, _ in _layout(sv)[0]["pos"]] != list(into.position):
                 raise ValueError("into: a sweep of another mechanism (its points differ)")
-            out = {"pos": into.position, "vel": into.velocity, "acc": into.acceleration}
-            omega, epsilon, sine, valid = into.omega, into.epsilon, into.sine, into.valid
-            into.phi[...] = phi
-            phi = into.phi
+            # flat views of its arrays (cut from one block, or broadcast constants)
+            out = {"pos": _flat(into.position), "vel": _flat(into.velocity),
+                   "acc": _flat(into.acceleration)}
+            omega, epsilon, sine = _flat(into.omega), _flat(into.epsilon), _flat(into.sine)
+            valid = into.valid.reshape(-1)
+            into.phi.reshape(-1)[...] = phi
+            phi = into.phi.reshape(-1)
         else:
             out, omega, epsilon, sine, valid, own = _allocate(sv, n)
             own[...] = phi  # the sweep owns its angles: a later into= overwrites them
@@ -129,7 +138,24 @@ def sweep(sv: Solver, phi, block: int = BLOCK, into: Sweep | None = None) -> Swe
     mech = sv.mech
     slots = tuple((pivot_key(g.label), g.P, g.Q, mech.frame[mech.driver.pivot])
                   for g in sv.structure.groups if g.kind == DyadKind.RPR)
+    if into is not None:  # its own arrays, already of the angles' shape
+        return Sweep(into.phi, into.position, into.velocity, into.acceleration, into.omega,
+                     into.epsilon, into.sine, into.valid, slots)
+    if shape != (n,):  # views of the flat arrays, shaped as the angles were
+        return Sweep(phi.reshape(shape), *(_shaped(out[k], shape) for k in ("pos", "vel", "acc")),
+                     _shaped(omega, shape), _shaped(epsilon, shape), _shaped(sine, shape),
+                     valid.reshape(shape), slots)
     return Sweep(phi, out["pos"], out["vel"], out["acc"], omega, epsilon, sine, valid, slots)
+
+
+def _flat(arrays: dict) -> dict:
+    """Flat views of a sweep's arrays, to be written block by block (a view of a
+    read-only broadcast constant stays read-only)."""
+    return {k: a.reshape(-1) for k, a in arrays.items()}
+
+
+def _shaped(arrays: dict, shape: tuple[int, ...]) -> dict:
+    return {k: a.reshape(shape) for k, a in arrays.items()}
 
 
 def _blank(bad: np.ndarray, out: dict, *stores: dict) -> None:

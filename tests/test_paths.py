@@ -111,6 +111,37 @@ def test_sweep_equals_array_path(name, block):
     np.testing.assert_allclose(sw.min_sine[ok], arr.min_sine[ok], rtol=0, atol=1e-14)
 
 
+def test_sweep_keeps_the_shape_of_its_angles_as_solve_does():
+    """A 2-D grid of angles (rows of φ1, a set of runs) gives arrays of that shape, as
+    ``solve`` and numpy do; the sweep had flattened it to 1-D, so sw.position[k][i, j]
+    failed and a reshape by hand had to know the order. A single angle is an array of
+    one, as in ``solve``; ``into`` takes a sweep of the same shape."""
+    sv = Solver(SCENES["press"].mechanism())
+    phi = np.radians(np.arange(0.0, 360.0, 15.0)).reshape(4, 6)
+    sw, m = sv.sweep(phi, block=5), sv.solve(phi)
+    assert sw.phi.shape == sw.valid.shape == sw.min_sine.shape == phi.shape
+    np.testing.assert_array_equal(sw.phi, phi)
+    for field in ("position", "velocity", "acceleration"):
+        for k, want in getattr(m, field).items():
+            got = getattr(sw, field)[k]
+            assert got.shape == phi.shape, (field, k)
+            np.testing.assert_allclose(got, want, rtol=0, atol=1e-12)
+    for lid, st in m.links.items():
+        assert sw.omega[lid].shape == sw.epsilon[lid].shape == phi.shape
+        np.testing.assert_allclose(sw.omega[lid], st.omega, rtol=0, atol=1e-12)
+    assert all(v.shape == phi.shape for v in (*sw.sine.values(), *sw.pivot.values()))
+    assert sv.trusted(sw).shape == phi.shape
+    flat = sv.sweep(phi.ravel())
+    np.testing.assert_array_equal(sw.velocity["D"].ravel(), flat.velocity["D"])
+    assert sv.sweep(0.5).position["D"].shape == sv.solve(0.5).position["D"].shape == (1,)
+    keep = sw.position["D"]
+    again = sv.sweep(phi + 0.1, into=sw)
+    assert again.position["D"] is keep and again.phi.shape == phi.shape
+    np.testing.assert_array_equal(again.position["D"], sv.sweep(phi + 0.1).position["D"])
+    with pytest.raises(ValueError, match=r"shaped \(4, 6\), not \(24,\)"):
+        sv.sweep(phi.ravel(), into=sw)
+
+
 def test_sweep_fixed_points_cost_no_memory_and_cannot_be_written():
     mech = SCENES["press"].mechanism()
     sw = Solver(mech).sweep(np.linspace(0, 1, 1000))
