@@ -394,13 +394,16 @@ def _csv_header(t: CycleTable) -> list[str]:
 
 
 def csv_chunks(t: CycleTable, rows: int = 1000):
-    """The CSV text, ``rows`` rows at a time."""
+    """The CSV text, ``rows`` rows at a time: each stretch of rows is converted to Python
+    numbers as it is written, so that 10⁵ rows never stand in memory as some six million
+    Python floats (about 200 MB for the press)."""
     import csv
     import io
 
     import numpy as np
 
     m, mech = t.motion, t.mechanism
+    n = len(t.status)
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(_csv_header(t))
@@ -409,43 +412,52 @@ def csv_chunks(t: CycleTable, rows: int = 1000):
         x = float(x) + 0.0  # + 0.0: no −0.0
         return repr(x) if math.isfinite(x) else ""
 
-    # the columns as Python numbers, converted once (not cell by cell from numpy), each
-    # with whether it is a coordinate, given where the position stands but the plans do not
-    cols: list[list[float]] = []
+    def column(arr):
+        return np.broadcast_to(np.asarray(arr), (n,))
+
+    # the columns as arrays (views, not copies), each with whether it is a coordinate,
+    # given where the position stands but the plans do not
+    arrays = []
     coordinate: list[bool] = []
     for name in t.points:
         for arr, shown in ((m.position[name], True), (m.velocity[name], False),
                            (m.acceleration[name], False)):
-            z = np.asarray(arr)
-            cols += [z.real.tolist(), z.imag.tolist()]
+            z = column(arr)
+            arrays += [z.real, z.imag]
             coordinate += [shown, shown]
     for i in t.links:
-        cols += [np.asarray(m.links[i].omega).tolist(), np.asarray(m.links[i].epsilon).tolist()]
-    phis = np.asarray(m.phi).tolist()
-    out = None if t.output_values is None else np.asarray(t.output_values).tolist()
-    coordinate += [False] * (len(cols) - len(coordinate))  # ω and ε
-    blank = [""] * len(cols)
+        arrays += [column(m.links[i].omega), column(m.links[i].epsilon)]
+    coordinate += [False] * (len(arrays) - len(coordinate))  # ω and ε
+    phi_all = column(m.phi)
+    out_all = None if t.output_values is None else column(t.output_values)
+    blank = [""] * len(arrays)
     labels = figure_labels(t)
-    for k, st in enumerate(t.status):
-        good = st.ok
-        row = [k, f(from_x(phis[k])), f(mech.driver.file_angle(phis[k])), int(good),
-               int(st.placed), f(st.min_sine)]
-        row += [f(st.figures.get(x, math.nan)) for x in labels]
-        if out is not None:
-            row.append(f(out[k]) if st.placed else "")
-        if good:
-            row += [f(c[k]) for c in cols]
-        elif st.placed:
-            row += [f(c[k]) if shown else "" for c, shown in zip(cols, coordinate, strict=True)]
-        else:
-            row += blank
-        row += ["; ".join(st.warnings), "; ".join(st.errors), "; ".join(st.singular)]
-        w.writerow(row)
-        if k % rows == rows - 1:
-            yield buf.getvalue()
-            buf.seek(0)
-            buf.truncate()
-    yield buf.getvalue()
+    for lo in range(0, n, rows):
+        hi = min(lo + rows, n)
+        # converted once a stretch (not cell by cell from numpy)
+        cols = [a[lo:hi].tolist() for a in arrays]
+        phis = phi_all[lo:hi].tolist()
+        out = None if out_all is None else out_all[lo:hi].tolist()
+        for j, st in enumerate(t.status[lo:hi]):
+            good = st.ok
+            row = [lo + j, f(from_x(phis[j])), f(mech.driver.file_angle(phis[j])), int(good),
+                   int(st.placed), f(st.min_sine)]
+            row += [f(st.figures.get(x, math.nan)) for x in labels]
+            if out is not None:
+                row.append(f(out[j]) if st.placed else "")
+            if good:
+                row += [f(c[j]) for c in cols]
+            elif st.placed:
+                row += [f(c[j]) if shown else "" for c, shown in zip(cols, coordinate, strict=True)]
+            else:
+                row += blank
+            row += ["; ".join(st.warnings), "; ".join(st.errors), "; ".join(st.singular)]
+            w.writerow(row)
+        yield buf.getvalue()
+        buf.seek(0)
+        buf.truncate()
+    if not n:
+        yield buf.getvalue()
 
 
 def _table(title: str, head: list[str], rows: list[list[str]]) -> list[str]:
