@@ -329,7 +329,9 @@ def _json_head(t: CycleTable) -> dict:
         "mechanism": mech.name,
         "positions": len(t.status),
         "numbering": _numbering(t),
-        "omega1": mech.driver.omega,
+        # the crank's ω by its link's number, as the CSV's columns and rows' links name it
+        "crank_link": mech.driver.link,
+        f"omega{mech.driver.link}": mech.driver.omega,
         "cycle": _cycle_summary(t),
         "point_names": list(t.points),
         "link_ids": list(t.links),

@@ -493,6 +493,23 @@ def test_a_crank_numbered_3_is_named_by_its_number(capsys, tmp_path):
     assert "φ1" not in table and "φ3 °" in table
 
 
+def test_the_cycle_json_names_the_cranks_omega_by_its_number(capsys, tmp_path):
+    """The head of ``plans cycle --json`` gave the crank's ω as "omega1" whatever its
+    number: for a crank numbered 3 "omega1" was 12 in the head while every row's
+    links["1"].omega, and the CSV's omega1 column, were link 1's 2.897. The head names
+    it as the CSV and the text do, omega3, beside the crank's link number."""
+    path = tmp_path / "crank3.toml"
+    path.write_text(CRANK_3, "utf-8")
+    code, out, err = run(capsys, "cycle", path, "--positions", "4", "--json")
+    assert code == 0, err
+    data = json.loads(out)
+    assert "omega1" not in data and data["omega3"] == 12.0 and data["crank_link"] == 3
+    assert all(r["links"]["3"]["omega"] == data["omega3"] for r in data["rows"])
+    code, out, err = run(capsys, "cycle", "samples/press.toml", "--positions", "2", "--json")
+    data = json.loads(out)
+    assert data["omega1"] == 20.0 and data["crank_link"] == 1
+
+
 def test_a_given_angle_is_written_as_the_crank_range_through_0_is_everywhere(capsys, tmp_path):
     """A four-bar that rocks through ±99.72°: solve echoed --angle 260.3 as −99.7°, while
     check's header, the sheet's plan titles and the note's "in the position given" still

@@ -245,7 +245,7 @@ def test_json_is_written_row_by_row_as_one_object():
         assert len(chunks) == n + 2  # the head, a row each, the tail
         text = "".join(chunks)
         data = json.loads(text)
-        assert list(data) == ["mechanism", "positions", "numbering", "omega1", "cycle",
+        assert list(data) == ["mechanism", "positions", "numbering", "crank_link", "omega1", "cycle",
                               "point_names", "link_ids", "rows"]
         assert data["positions"] == n and [r["index"] for r in data["rows"]] == list(range(n))
         rows = [line for line in text.splitlines() if line.startswith('  {"index": ')]
