@@ -49,7 +49,7 @@ from drawing.scene import (
     translate,
     wrap_words,
 )
-from drawing.styles import LineType
+from drawing.styles import LineType, Style
 from plans.cycle import at_rest
 from plans.fmt import notation_in, num
 from plans.plan import image_sides
@@ -896,6 +896,7 @@ def _draw_diagrams(mech, cycle, lang, width, height, linear, s, v, a, flip=1.0) 
     out = cycle.output
     index = (out.point if linear else str(out.link)) if out is not None else ""
     items: list[Item] = []
+    numbers: list[tuple[float, float, str]] = []  # each even position's tick and number
     y = 0.0
     # rounding of a 0 is drawn as 0, not blown up to the height of the diagram (a
     # parallelogram's ε3 of 1e-13 rad/s² at μ = 5e-10)
@@ -915,8 +916,7 @@ def _draw_diagrams(mech, cycle, lang, width, height, linear, s, v, a, flip=1.0) 
             x = width * k / len(cycle.positions)
             items.append(Segment((x, y_zero - 1), (x, y_zero + 1), LineType.THIN))
             if k % 2 == 0:
-                items.append(Text((x, y_zero + 1.5), str(k % len(cycle.positions) if k else 0),
-                                  size=2.5, anchor="middle", baseline="hanging", italic=True))
+                numbers.append((x, y_zero, str(k % len(cycle.positions))))
         axis = _axis_name(name + (f"_{{{index}}}" if index else ""), unit,
                           None if linear else flip, lang)
         items.append(Text((2, y - 6), axis, size=3.5, baseline="hanging", markup=True))
@@ -924,9 +924,79 @@ def _draw_diagrams(mech, cycle, lang, width, height, linear, s, v, a, flip=1.0) 
         items.append(_start_anchored(Text((width - 2, y - 6), f"μ_{{{name}}} = {num(mu, 3, lang)} {_per_mm(unit, lang)}",
                           size=2.5, anchor="end", baseline="hanging", markup=True)))
         y += h + 16.0
+    placed, bounds = _numbers(items, numbers)
     mu_phi = 2 * math.pi / width
     caption = f"{w['diagrams']}, μ_φ = {num(mu_phi, 3, lang)} {w['rad']}/{w['mm']}"
-    return _finish("diagrams", items, [], caption, pad=2.0)
+    return _captioned("diagrams", items + placed, bounds, caption, [])
+
+
+#: mm: how far a position's number stands from the φ axis (its box), nearest first
+NUMBER_GAPS = (1.5, 3.0, 4.5)
+#: mm: between a tick and the box of a number set beside it, not under or over it
+NUMBER_BESIDE = 0.6
+#: mm: what a number keeps clear of a diagram's curve beyond the line's half width,
+#: of the axes and ticks, and of the other texts
+NUMBER_CLEAR = (0.4, 0.1, 0.5)
+
+
+def _numbers(items: list[Item], numbers: list[tuple[float, float, str]]
+             ) -> tuple[list[Text], tuple[float, float, float, float]]:
+    """The positions' numbers ((x, y_zero, text) of each tick) on the diagrams ``items``,
+    and the box of the view's drawing.
+
+    A number stood under its tick whatever was there, so a curve running below the φ
+    axis went through it, and the origin's 0 was written across the vertical axis. Each
+    now stands where it meets no curve, no line and no text: under its tick where that
+    is clear, else over it (on the other side of the axis from the curve), else beside
+    the tick, under the axis, then over it, then a little farther off; the origin's 0
+    right of the vertical axis. The view keeps its box, that of the drawing with every
+    number under its tick, and each number stays in it: the sheets are packed first-fit,
+    and a view 0.75 mm narrower moved them too (variant 5's English sheet on A2 lost a
+    step of its diagrams)."""
+    under = [Text((x, y_zero + NUMBER_GAPS[0]), text, size=2.5, anchor="middle",
+                  baseline="hanging", italic=True) for x, y_zero, text in numbers]
+    bounds = _bbox(items + under)
+    frame = shp_box(*np.add(bounds, (-1e-6, -1e-6, 1e-6, 1e-6)))
+    lines = [it for it in items if not isinstance(it, Text | Polyline)]
+    curves = [it for it in items if isinstance(it, Polyline)]
+    reach = max(Style().width(c.line) for c in curves) / 2 + NUMBER_CLEAR[0]
+    steps = shapely.linestrings(np.concatenate([  # the curves' middle lines, step by step
+        np.stack([np.asarray(c.points)[:-1], np.asarray(c.points)[1:]], axis=1) for c in curves]))
+    others = [*obstacles_of(lines, clearance=NUMBER_CLEAR[1]),
+              *(text_box(t).buffer(NUMBER_CLEAR[2], join_style="mitre")
+                for t in items if isinstance(t, Text))]
+    tree, on_curves = shapely.STRtree(others), shapely.STRtree(steps)
+    out: list[Text] = []
+    taken: list[Polygon] = []  # the numbers placed, widened
+    for (x, y_zero, _), first in zip(numbers, under, strict=True):
+        x0, y0, x1, y1 = text_box(first).bounds
+        w, h = x1 - x0, y1 - y0
+        # (side, beside): under or over the tick, then beside it under the axis, then
+        # over it; the origin's 0 right of the vertical axis, never across it
+        spots = (((1, 0), (-1, 0), (1, 1), (1, -1), (-1, 1), (-1, -1)) if x > 0
+                 else ((1, 1), (-1, 1)))
+        moves = np.array([(
+            {0: x0, 1: x + NUMBER_BESIDE, -1: x - NUMBER_BESIDE - w}[beside] - x0,
+            (y_zero + gap if side > 0 else y_zero - gap - h) - y0)
+            for gap in NUMBER_GAPS for side, beside in spots])
+        boxes = shapely.box(x0 + moves[:, 0], y0 + moves[:, 1], x1 + moves[:, 0], y1 + moves[:, 1])
+        outside = ~shapely.covers(frame, boxes)  # none leaves the view's box
+        hit = np.zeros(len(boxes), dtype=bool)
+        hit[tree.query(boxes, predicate="intersects")[0]] = True
+        if taken:
+            hit |= shapely.intersects(boxes[:, None], np.array(taken)[None, :]).any(axis=1)
+        crossed = np.zeros(len(boxes))
+        crossed[on_curves.query(boxes, predicate="dwithin", distance=reach)[0]] = 1.0
+        if (crossed[~hit & ~outside] > 0).all():  # nowhere clear: the least of the curves
+            crossed[crossed > 0] = shapely.area(shapely.intersection(
+                boxes[crossed > 0], shapely.union_all(steps).buffer(reach)))
+        # the first that meets nothing; where none, the one that meets no line and no text
+        # and crosses the least of the curves; in the view's box always (the nearest
+        # under the tick is)
+        k = int(np.lexsort((np.arange(len(boxes)), crossed, hit, outside))[0])
+        out.append(translate(first, *moves[k]))
+        taken.append(boxes[k].buffer(NUMBER_CLEAR[2], join_style="mitre"))
+    return out, bounds
 
 
 def _axis_name(name: str, unit: str, flip: float | None, lang: str) -> str:
