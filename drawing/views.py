@@ -955,21 +955,35 @@ def _numbers(items: list[Item], numbers: list[tuple[float, float, str]]
     step of its diagrams)."""
     under = [Text((x, y_zero + NUMBER_GAPS[0]), text, size=2.5, anchor="middle",
                   baseline="hanging", italic=True) for x, y_zero, text in numbers]
-    bounds = _bbox(items + under)
+    texts = np.array([text_box(t).bounds for t in items if isinstance(t, Text)]).reshape(-1, 4)
+    spans = np.array([text_box(t).bounds for t in under]).reshape(-1, 4)
+    every = np.vstack([texts, spans, _bbox([it for it in items if not isinstance(it, Text)])])
+    bounds = (*every[:, :2].min(axis=0), *every[:, 2:].max(axis=0))  # as _bbox(items + under)
     frame = shp_box(*np.add(bounds, (-1e-6, -1e-6, 1e-6, 1e-6)))
-    lines = [it for it in items if not isinstance(it, Text | Polyline)]
+    style = Style()
+
+    def steps(lines):  # the middle lines of ``lines`` (segments, polylines), step by step
+        return shapely.linestrings(np.concatenate([
+            np.stack([np.asarray(p)[:-1], np.asarray(p)[1:]], axis=1)
+            for p in (it.points if isinstance(it, Polyline) else (it.p1, it.p2) for it in lines)]))
+
+    def reach(lines, clear):  # how near the middle of one of ``lines`` a number may not come
+        return max(style.width(it.line) for it in lines) / 2 + clear
+
+    def grown(boxes, d):  # axis-parallel boxes (x0, y0, x1, y1) widened by d
+        b = np.asarray(boxes).reshape(-1, 4)
+        return shapely.box(b[:, 0] - d, b[:, 1] - d, b[:, 2] + d, b[:, 3] + d)
+
     curves = [it for it in items if isinstance(it, Polyline)]
-    reach = max(Style().width(c.line) for c in curves) / 2 + NUMBER_CLEAR[0]
-    steps = shapely.linestrings(np.concatenate([  # the curves' middle lines, step by step
-        np.stack([np.asarray(c.points)[:-1], np.asarray(c.points)[1:]], axis=1) for c in curves]))
-    others = [*obstacles_of(lines, clearance=NUMBER_CLEAR[1]),
-              *(text_box(t).buffer(NUMBER_CLEAR[2], join_style="mitre")
-                for t in items if isinstance(t, Text))]
-    tree, on_curves = shapely.STRtree(others), shapely.STRtree(steps)
+    segments = [it for it in items if isinstance(it, Segment)]  # the φ axes, the ticks
+    on_curves, curve_reach = shapely.STRtree(steps(curves)), reach(curves, NUMBER_CLEAR[0])
+    on_lines, line_reach = shapely.STRtree(steps(segments)), reach(segments, NUMBER_CLEAR[1])
+    tree = shapely.STRtree([  # the vertical axes with their heads, the other texts
+        *obstacles_of([it for it in items if isinstance(it, Arrow)], clearance=NUMBER_CLEAR[1]),
+        *grown(texts, NUMBER_CLEAR[2])])
     out: list[Text] = []
-    taken: list[Polygon] = []  # the numbers placed, widened
-    for (x, y_zero, _), first in zip(numbers, under, strict=True):
-        x0, y0, x1, y1 = text_box(first).bounds
+    taken = []  # the boxes of the numbers placed
+    for (x, y_zero, _), first, (x0, y0, x1, y1) in zip(numbers, under, spans, strict=True):
         w, h = x1 - x0, y1 - y0
         # (side, beside): under or over the tick, then beside it under the axis, then
         # over it; the origin's 0 right of the vertical axis, never across it
@@ -979,23 +993,26 @@ def _numbers(items: list[Item], numbers: list[tuple[float, float, str]]
             {0: x0, 1: x + NUMBER_BESIDE, -1: x - NUMBER_BESIDE - w}[beside] - x0,
             (y_zero + gap if side > 0 else y_zero - gap - h) - y0)
             for gap in NUMBER_GAPS for side, beside in spots])
-        boxes = shapely.box(x0 + moves[:, 0], y0 + moves[:, 1], x1 + moves[:, 0], y1 + moves[:, 1])
+        tried = np.array([x0, y0, x1, y1]) + np.tile(moves, 2)
+        boxes = grown(tried, 0.0)
         outside = ~shapely.covers(frame, boxes)  # none leaves the view's box
         hit = np.zeros(len(boxes), dtype=bool)
         hit[tree.query(boxes, predicate="intersects")[0]] = True
+        hit[on_lines.query(boxes, predicate="dwithin", distance=line_reach)[0]] = True
         if taken:
-            hit |= shapely.intersects(boxes[:, None], np.array(taken)[None, :]).any(axis=1)
+            others = grown(taken, NUMBER_CLEAR[2])
+            hit |= shapely.intersects(boxes[:, None], others[None, :]).any(axis=1)
         crossed = np.zeros(len(boxes))
-        crossed[on_curves.query(boxes, predicate="dwithin", distance=reach)[0]] = 1.0
+        crossed[on_curves.query(boxes, predicate="dwithin", distance=curve_reach)[0]] = 1.0
         if (crossed[~hit & ~outside] > 0).all():  # nowhere clear: the least of the curves
             crossed[crossed > 0] = shapely.area(shapely.intersection(
-                boxes[crossed > 0], shapely.union_all(steps).buffer(reach)))
+                boxes[crossed > 0], shapely.union_all(steps(curves)).buffer(curve_reach)))
         # the first that meets nothing; where none, the one that meets no line and no text
         # and crosses the least of the curves; in the view's box always (the nearest
         # under the tick is)
         k = int(np.lexsort((np.arange(len(boxes)), crossed, hit, outside))[0])
         out.append(translate(first, *moves[k]))
-        taken.append(boxes[k].buffer(NUMBER_CLEAR[2], join_style="mitre"))
+        taken.append(tried[k])
     return out, bounds
 
 
