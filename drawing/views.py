@@ -958,7 +958,7 @@ def _numbers(items: list[Item], numbers: list[tuple[float, float, str]]
     texts = np.array([text_box(t).bounds for t in items if isinstance(t, Text)]).reshape(-1, 4)
     spans = np.array([text_box(t).bounds for t in under]).reshape(-1, 4)
     every = np.vstack([texts, spans, _bbox([it for it in items if not isinstance(it, Text)])])
-    bounds = (*every[:, :2].min(axis=0), *every[:, 2:].max(axis=0))  # as _bbox(items + under)
+    bounds = tuple(float(b) for b in (*every[:, :2].min(axis=0), *every[:, 2:].max(axis=0)))
     frame = shp_box(*np.add(bounds, (-1e-6, -1e-6, 1e-6, 1e-6)))
     style = Style()
 
