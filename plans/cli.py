@@ -297,9 +297,10 @@ def build_parser(only: str | None = None) -> argparse.ArgumentParser:
 
 
 def _command_in(argv: list[str] | None) -> str:
-    """The command named on the command line (after a leading ``--debug``), or ""."""
+    """The command named on the command line (after a leading ``--debug``, or "--deb",
+    which argparse reads as it), or ""."""
     for arg in sys.argv[1:] if argv is None else argv:
-        if arg != "--debug":
+        if not (len(arg) > 2 and "--debug".startswith(arg)):
             return arg if arg in COMMANDS else ""
     return ""
 

@@ -674,6 +674,17 @@ def test_debug_is_taken_before_or_after_the_command(argv, debug):
     assert args.debug is debug
 
 
+@pytest.mark.parametrize("debug", ["--debug", "--deb", "--d"])
+def test_a_run_configures_its_command_after_debug_however_abbreviated(capsys, tmp_path, debug):
+    """argparse takes "--deb" for "--debug" before the command as after it: the command
+    that follows is the one configured, its options and its file read as ever."""
+    target = tmp_path / "s.json"
+    assert main([debug, "solve", str(PRESS), "--json", "-o", str(target)]) == 0
+    assert json.loads(target.read_text("utf-8"))["points"]
+    assert main([debug, "cycle", "-h"]) == 0
+    assert "--positions N" in capsys.readouterr().out
+
+
 def test_output_written_in_pieces_is_all_or_nothing(tmp_path):
     """A table written as it is made (cycle --json): a failure half way leaves the old
     file as it was, and no temporary file behind."""
