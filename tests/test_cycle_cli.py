@@ -477,7 +477,9 @@ def test_a_sine_is_never_above_one(capsys, tmp_path):
     code, out, err = run(capsys, "cycle", path, "--csv", "--positions", "360")
     assert code == 0, err
     rows = list(csv.reader(io.StringIO(out)))
-    cols = [i for i, h in enumerate(rows[0]) if h == "min_sine" or h.startswith("sine ")]
+    cols = [i for i, h in enumerate(rows[0]) if h == "min_sine"
+            or h.startswith("group ") and not h.endswith(" pivot")]
+    assert [rows[0][i] for i in cols] == ["min_sine", "group 2–3 (RPR)"]
     sines = [float(r[i]) for r in rows[1:] for i in cols if r[i]]
     assert max(sines) == 1.0 and min(sines) >= 0.0
     code, out, _ = run(capsys, "cycle", path, "--json", "--positions", "360")
