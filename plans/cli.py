@@ -275,13 +275,13 @@ def build_parser(only: str | None = None) -> argparse.ArgumentParser:
     parser.commands = {}  # name → its parser, for the errors only it can word
     for name, (module, help_text) in COMMANDS.items():
         if only is not None and name != only:
-            if importlib.util.find_spec(module) is not None:  # else not built yet
+            if _built(module):
                 sub.add_parser(name, help=help_text)
             continue
         try:
             mod = importlib.import_module(module)
         except ModuleNotFoundError as exc:
-            if exc.name == module:
+            if _missing(exc, module):
                 continue  # a command family not built yet
             raise
         p = sub.add_parser(name, help=help_text, description=help_text, epilog=EPILOG,
@@ -294,6 +294,22 @@ def build_parser(only: str | None = None) -> argparse.ArgumentParser:
         p.set_defaults(run=mod.run)
         parser.commands[name] = p
     return parser
+
+
+def _missing(exc: ModuleNotFoundError, module: str) -> bool:
+    """``exc`` says that ``module`` itself, or the package it belongs to, is not there
+    (not a module that it imports)."""
+    return exc.name is not None and (module + ".").startswith(exc.name + ".")
+
+
+def _built(module: str) -> bool:
+    """``module`` is there to import (found, not imported: a package of it may be)."""
+    try:
+        return importlib.util.find_spec(module) is not None
+    except ModuleNotFoundError as exc:  # its package is not there either
+        if _missing(exc, module):
+            return False
+        raise
 
 
 def _command_in(argv: list[str] | None) -> str:

@@ -402,6 +402,20 @@ def test_help_and_a_misspelt_command_still_name_every_command(capsys):
                    + ", ".join(f"'{n}'" for n in cli.COMMANDS) + ") (see plans --help)\n")
 
 
+@pytest.mark.parametrize("module", ["plans.cli_not_built", "family_not_built.cli"])
+def test_a_command_whose_module_is_not_there_is_left_out(capsys, tmp_path, monkeypatch, module):
+    """A command family not built yet, a module or its whole package, is left out of the
+    list; the other commands run as ever, whichever of them the run names."""
+    monkeypatch.setitem(cli.COMMANDS, "later", (module, "a command still to come"))
+    target = tmp_path / "s.json"
+    assert main(["solve", str(PRESS), "--json", "-o", str(target)]) == 0
+    assert main(["--help"]) == 0
+    assert "later" not in capsys.readouterr().out
+    assert main(["later"]) == 2
+    assert "invalid choice: 'later'" in capsys.readouterr().err
+    assert "later" not in cli.build_parser().commands
+
+
 def test_the_readme_documents_the_exit_status():
     readme = (ROOT / "README.md").read_text("utf-8")
     for code in ("| 0 |", "| 1 |", "| 2 |", "| 3 |"):
