@@ -21,6 +21,7 @@ Against osifont's real advances the rule is within about ±10 % on words.
 
 from __future__ import annotations
 
+import functools
 import itertools
 import math
 import unicodedata
@@ -394,6 +395,52 @@ def place_labels(
     placed_at: list[Point] = []  # the anchor of each box placed
     region_box = region is not None and _is_box(region)
     out: list[Placement] = []
+    leaders: list[BaseGeometry] = []  # the leader lines drawn so far, widened: no letter on one
+
+    def meets(req: LabelRequest, box: Polygon, boxes, others) -> tuple[list, float, float]:
+        """What ``box`` meets: the obstacles, leaders and labels placed before it that
+        it hits (or comes within GAP of), the mm² of those labels it covers, and its
+        area outside ``region``."""
+        hits = [] if hard_tree is None else [
+            hard[i] for i in hard_tree.query(box, predicate="intersects")]
+        hits += [g for g in leaders if g.intersects(box)]
+        on_labels = 0.0  # mm² of the labels placed before that it covers
+        if placed:  # a label keeps GAP from the labels of other points, a
+            # position's number from its own point's letter too ("¹B")
+            near_box = shapely.box(
+                *(a + d for a, d in zip(box.bounds, (-GAP, -GAP, GAP, GAP), strict=True)))
+            mask = shapely.intersects(near_box, boxes)
+            if not req.optional:
+                mask &= shapely.intersects(box, boxes) | others
+            near_labels = [p for p, m in zip(placed, mask, strict=True) if m]
+            on_labels = sum(box.intersection(p).area for p in near_labels)
+            hits += near_labels
+        outside = 0.0 if region is None else _outside(box, region, region_box)
+        return hits, on_labels, outside
+
+    def blocked(req: LabelRequest, cands: np.ndarray, boxes, others) -> np.ndarray:
+        """Which of the boxes ``cands`` (axis-parallel) :func:`meets` something or stand
+        out of ``region``: the same rule, for many boxes at once."""
+        out = np.zeros(len(cands), dtype=bool)
+        if hard_tree is not None:
+            out[hard_tree.query(cands, predicate="intersects")[0]] = True
+        if leaders:
+            out |= shapely.intersects(cands[:, None], np.asarray(leaders)[None, :]).any(axis=1)
+        x0, y0, x1, y1 = shapely.bounds(cands).T
+        if placed:
+            mask = shapely.intersects(shapely.box(x0 - GAP, y0 - GAP, x1 + GAP, y1 + GAP)[:, None],
+                                      boxes[None, :])
+            if not req.optional:
+                mask &= shapely.intersects(cands[:, None], boxes[None, :]) | others[None, :]
+            out |= mask.any(axis=1)
+        if region is not None:
+            if region_box:
+                r0, s0, r1, s1 = region.bounds
+                out |= (x0 < r0 - 1e-9) | (y0 < s0 - 1e-9) | (x1 > r1 + 1e-9) | (y1 > s1 + 1e-9)
+            else:
+                out |= np.array([_outside(b, region, False) > 1e-9 for b in cands], dtype=bool)
+        return out
+
     for req in requests:
         chosen: tuple[Text, Polygon] | None = None
         fallback: tuple[tuple[bool, float], Text, Polygon] | None = None
@@ -409,22 +456,11 @@ def place_labels(
                 for anchor, direction in spots:
                     text = _candidate(req, direction, gap, anchor)
                     box = text_box(text)
-                    hits = [] if hard_tree is None else [
-                        hard[i] for i in hard_tree.query(box, predicate="intersects")]
-                    on_labels = 0.0  # mm² of the labels placed before that it covers
-                    if placed:  # a label keeps GAP from the labels of other points, a
-                        # position's number from its own point's letter too ("¹B")
-                        near_box = shapely.box(
-                            *(a + d for a, d in zip(box.bounds, (-GAP, -GAP, GAP, GAP), strict=True)))
-                        mask = shapely.intersects(near_box, boxes)
-                        if not req.optional:
-                            mask &= shapely.intersects(box, boxes) | others
-                        near_labels = [p for p, m in zip(placed, mask, strict=True) if m]
-                        on_labels = sum(box.intersection(p).area for p in near_labels)
-                        hits += near_labels
-                    outside = 0.0 if region is None else _outside(box, region, region_box)
+                    hits, on_labels, outside = meets(req, box, boxes, others)
                     if not (hits or req.cross or hard_tree is None or outside > 1e-9):
                         if _beyond(anchor, box, hard, hard_tree):  # on its point's far side
+                            if _leader_near(anchor, box, placed):
+                                continue  # its leader would run through a letter
                             # for a leader that reads as one: oblique, a few mm long
                             n_soft = 0 if soft_tree is None else len(
                                 soft_tree.query(box, predicate="intersects"))
@@ -458,11 +494,29 @@ def place_labels(
             if chosen:
                 break
         leader = None
+        if chosen is None and across is None and not req.cross and hard_tree is not None:
+            # a narrow fan of vectors: no spot of the compass is clear on either side of
+            # them. Finer turns, and farther out on a leader
+            wider = _wider(req, distances, hard, hard_tree, soft, soft_tree, placed,
+                           functools.partial(blocked, req, boxes=boxes, others=others))
+            if wider is not None:
+                n_soft, far, text, box, anchor = wider
+                # clear of every line; or of the vectors at least, where the last resort
+                # covers one or a letter
+                if n_soft == 0 or fallback is None or _covers(
+                        fallback[2], *meets(req, fallback[2], boxes, others)[::2]):
+                    if far:
+                        across = ((), text, box, anchor)
+                    elif n_soft == 0:  # on its point's side, near it: as a spot of the compass
+                        chosen = (text, box)
+                    else:  # the last resort, on thin lines only
+                        fallback = ((False, 0.0), text, box)
         if chosen is None and across is not None:  # clear, with a leader to its point
             _, text, box, anchor = across
             chosen = (text, box)
             near = shapely.ops.nearest_points(shapely.Point(anchor), box)[1]
             leader = (anchor, (near.x, near.y))
+            leaders.append(LineString([anchor, leader[1]]).buffer(GAP))
         if chosen is not None:
             text, box = chosen
             clear = leader is None
@@ -475,6 +529,116 @@ def place_labels(
             placed_at.append(req.anchor)
         out.append(Placement(text, box, clear=clear, leader=leader))
     return out
+
+
+#: degrees between the turns tried around a point where no spot of the compass is clear
+TURN = 5.0
+#: mm between a point and its label on a leader, beyond the distances of the compass
+#: spots: where a narrow fan of vectors leaves no room near the point
+FAR = (10.0, 12.0, 14.0, 17.0, 20.0, 24.0)
+#: mm the end of such a leader keeps from the lines, beyond their widening
+LEADER_END = 1.0
+#: mm of such a leader, past the first :data:`LEADER_END` from its point, that may run
+#: within one line's widening: a crossing at 25° or more, not a run along the line
+ALONG = 3.0
+
+
+def _turn_centres(turns: np.ndarray, gap: float, hw: float, hh: float) -> np.ndarray:
+    """The centres (relative to the point, rows of x, y) of boxes ``2 hw`` × ``2 hh``
+    ``gap`` mm from the point, each on the ray ``turns`` degrees clockwise from east on
+    the sheet (y down) from it: past a side of the box, or past its corner."""
+    ux, uy = np.cos(np.radians(turns)), np.sin(np.radians(turns))
+    a, b = np.abs(ux), np.abs(uy)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        side_x = (gap + hw) / a  # the point beside the box's left or right side
+        side_y = (gap + hh) / b  # above or below it
+        c = a * hw + b * hh
+        corner = c + np.sqrt(np.maximum(c * c - (hw * hw + hh * hh - gap * gap), 0.0))
+        t = np.where(side_x * b <= hh + 1e-9, side_x,
+                     np.where(side_y * a <= hw + 1e-9, side_y, corner))
+    return np.stack([t * ux, t * uy], axis=1)
+
+
+def _at(req: LabelRequest, centre: tuple[float, float]) -> Text:
+    """The label with its box centred on ``centre``."""
+    x0, y0, x1, y1 = text_box(Text((0.0, 0.0), req.text, req.size, markup=req.markup)).bounds
+    return Text((centre[0] - (x0 + x1) / 2, centre[1] - (y0 + y1) / 2), req.text, req.size,
+                markup=req.markup)
+
+
+def _open_end(anchor: Point, box: Polygon, hard_tree, soft_tree) -> bool:
+    """Does the leader from ``anchor`` end at ``box`` in the open, :data:`LEADER_END` mm
+    clear of every line? One that ends on a vector reads as a tick on it, the letter
+    beyond as that vector's."""
+    near = shapely.ops.nearest_points(shapely.Point(anchor), box)[1].buffer(LEADER_END)
+    return not any(len(tree.query(near, predicate="intersects"))
+                   for tree in (hard_tree, soft_tree) if tree is not None)
+
+
+def _covers(box: Polygon, hits: list, outside: float) -> bool:
+    """Does ``box`` cover some of what it meets, or stand out of its region?"""
+    return outside > 1e-9 or any(box.intersection(g).area > 1e-6 for g in hits)
+
+
+def _leader_near(anchor: Point, box: Polygon, placed: list[Polygon]) -> bool:
+    """Does the leader from ``anchor`` to ``box`` come within :data:`GAP` of a label
+    placed before (run through it, or be broken by the blank under it)?"""
+    near = shapely.ops.nearest_points(shapely.Point(anchor), box)[1]
+    line = LineString([anchor, (near.x, near.y)])
+    return any(line.distance(p) < GAP for p in placed)
+
+
+def _runs_along(anchor: Point, box: Polygon, lines: Sequence[tuple[list, object]]) -> bool:
+    """Does the leader from ``anchor`` to ``box`` run along a line (more than
+    :data:`ALONG` mm within its widening) rather than cross it? ``lines``: (geometry,
+    its STRtree) pairs."""
+    near = shapely.ops.nearest_points(shapely.Point(anchor), box)[1]
+    line = LineString([anchor, (near.x, near.y)]).difference(
+        shapely.Point(anchor).buffer(LEADER_END))
+    return any(line.intersection(geoms[i]).length > ALONG
+               for geoms, tree in lines if tree is not None
+               for i in tree.query(line, predicate="intersects"))
+
+
+def _wider(req: LabelRequest, distances: Sequence[float], hard: list, hard_tree, soft: list,
+           soft_tree, placed: list[Polygon], blocked) -> tuple[int, bool, Text, Polygon, Point] | None:
+    """A spot for a plan's letter that no spot of the compass has room for: clear of the
+    vectors and the labels (not ``blocked``), at turns of :data:`TURN` degrees. On the point's
+    side of every vector within ``distances`` (nearest first), it needs no leader; else
+    the nearest spot out to :data:`FAR` whose leader keeps :data:`GAP` from the labels,
+    crosses the lines rather than runs along them, ends in the open and is at least
+    :data:`LEADER` long where it can be. Off the construction lines wherever one is, else
+    on the fewest. (n thin lines crossed, whether it needs a leader, text, box, anchor),
+    or None where every spot meets something."""
+    lines = ((hard, hard_tree), (soft, soft_tree))
+    x0, y0, x1, y1 = text_box(Text((0.0, 0.0), req.text, req.size, markup=req.markup)).bounds
+    hw, hh = (x1 - x0) / 2, (y1 - y0) / 2
+    start = math.degrees(math.atan2(_UNIT[req.prefer][1], _UNIT[req.prefer][0]))
+    half = int(round(180 / TURN))  # the preferred direction first, then by turn either way
+    turns = start + TURN * np.array([k * sign for k in range(half + 1)
+                                     for sign in ((1,) if k in (0, half) else (1, -1))])
+    best: tuple[tuple, tuple[int, bool, Text, Polygon, Point]] | None = None
+    for anchor in (req.anchor, *req.also):
+        for gap in (*distances, *[d for d in FAR if d > max(distances)]):
+            xy = _turn_centres(turns, gap, hw, hh) + np.asarray(anchor)
+            boxes = shapely.box(xy[:, 0] - hw, xy[:, 1] - hh, xy[:, 0] + hw, xy[:, 1] + hh)
+            for i in np.flatnonzero(~blocked(boxes)):
+                text = _at(req, tuple(xy[i]))
+                box = text_box(text)
+                n_soft = 0 if soft_tree is None else len(
+                    soft_tree.query(box, predicate="intersects"))
+                far = gap > max(distances) or bool(_beyond(anchor, box, hard, hard_tree))
+                if far and (_leader_near(anchor, box, placed)
+                            or not _open_end(anchor, box, hard_tree, soft_tree)
+                            or _runs_along(anchor, box, lines)):
+                    continue
+                key = (n_soft, far, far and gap < LEADER, gap, int(i))
+                if best is None or key < best[0]:
+                    best = (key, (n_soft, far, text, box, anchor))
+            if best is not None and (best[0][:2] == (0, False) or (
+                    gap >= max(distances) and best[0][:3] == (0, True, False))):
+                return best[1]  # off every line, and none nearer or with no leader
+    return None if best is None else best[1]
 
 
 def _beyond(anchor: Point, box: Polygon, hard: list, tree) -> list:

@@ -283,3 +283,74 @@ def test_the_area_outside_a_region_by_bounds_is_shapelys(b, r):
     lab = box(b[0], b[1], b[0] + b[2], b[1] + b[3])
     reg = box(r[0], r[1], r[0] + r[2], r[1] + r[3])
     assert _outside(lab, reg, True) == pytest.approx(lab.difference(reg).area, abs=1e-9)
+
+
+def _star(anchor, rays, length=20.0, ring=None):
+    """Vectors from ``anchor`` at each angle of ``rays`` (degrees, y down), widened as a
+    plan's are, and a circle of radius ``ring`` round it."""
+    ax, ay = anchor
+    lines = [LineString([anchor, (ax + length * math.cos(math.radians(t)),
+                                  ay + length * math.sin(math.radians(t)))]).buffer(0.65)
+             for t in rays]
+    if ring is not None:
+        lines.append(shapely.Point(anchor).buffer(ring).exterior.buffer(0.65))
+    return lines
+
+
+def test_a_plan_letter_in_a_star_of_vectors_takes_a_turn_between_them():
+    """Vectors leave the point along every compass direction: each spot of the compass
+    lies on one. The letter goes between two of them, on its point's side of both, near
+    it and with no leader, rather than over a vector."""
+    from shapely.geometry import Point
+
+    anchor = (50.0, 50.0)
+    star = _star(anchor, range(0, 360, 45))
+    (p,) = place_labels([LabelRequest(anchor, "s_3", 3.5, "ne", blank=True, cross=False)],
+                        star, distances=(1.0, 2.0, 3.0, 4.5, 6.0, 8.0))
+    assert p.clear and p.leader is None
+    assert not any(g.intersects(p.box) for g in star)
+    assert p.box.distance(Point(anchor)) <= 8.0
+
+
+def test_a_plan_letter_walled_in_by_vectors_hangs_on_a_leader_clear_of_them():
+    """A star of vectors and a circle round the point 6 mm out leave no clear spot
+    within 8 mm: the letter covered a vector (the least overlap) with nothing to join it
+    to its point. It now stands clear beyond the circle, on a leader from its point
+    that crosses the circle rather than runs along a vector, and ends in the open."""
+    from shapely.geometry import Point
+
+    from drawing.labels import GAP, LEADER_END
+
+    anchor = (50.0, 50.0)
+    walls = _star(anchor, range(0, 360, 30), ring=6.0)
+    first = LabelRequest((50.0, 30.0), "b", 3.5, "n", blank=True, cross=False)
+    req = LabelRequest(anchor, "s_3", 3.5, "ne", blank=True, cross=False)
+    other, p = place_labels([first, req], walls, distances=(1.0, 2.0, 3.0, 4.5, 6.0, 8.0))
+    assert p.leader is not None and p.leader[0] == anchor
+    assert not any(g.intersects(p.box) for g in walls)
+    leader = LineString(p.leader)
+    assert leader.distance(other.box) >= GAP  # no text on it, nor a break under one
+    assert p.box.distance(Point(p.leader[1])) < 1e-9
+    assert all(g.distance(Point(p.leader[1])) >= LEADER_END for g in walls)
+    assert Point(anchor).distance(p.box) > 6.0  # beyond the circle
+
+
+def test_a_later_letter_keeps_off_an_earlier_leader():
+    """A leader is drawn: the letters placed after it keep :data:`GAP` from it, as they
+    keep from each other, so that none stands on it nor breaks it."""
+    from drawing.labels import GAP
+
+    anchor = (50.0, 50.0)
+    walls = _star(anchor, range(0, 360, 30), ring=6.0)
+    reqs = [LabelRequest(anchor, "s_3", 3.5, "ne", blank=True, cross=False)]
+    (first,) = place_labels(reqs, walls, distances=(1.0, 2.0, 3.0, 4.5, 6.0, 8.0))
+    leader = LineString(first.leader)
+    # a second point just beside the leader's middle, its letter preferring the leader
+    mx, my = leader.interpolate(0.5, normalized=True).coords[0]
+    (ux, uy) = (first.leader[1][0] - anchor[0], first.leader[1][1] - anchor[1])
+    n = math.hypot(ux, uy)
+    beside = (mx - 2.0 * uy / n, my + 2.0 * ux / n)
+    second = LabelRequest(beside, "k", 3.5, "s", blank=True, cross=False)
+    _, q = place_labels([*reqs, second], walls, distances=(1.0, 2.0, 3.0, 4.5, 6.0, 8.0))
+    assert q.box.distance(leader) >= GAP - 1e-9
+

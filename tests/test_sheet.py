@@ -1245,6 +1245,50 @@ def test_a_plans_letter_stays_on_its_points_side_and_off_construction_lines(key,
     assert ("s_{3}" if key == 5 else "f") in names
 
 
+@pytest.mark.parametrize("key, fmt, plans", [(1, "A2", (2, 6, 10)), (1, "A2", (1, 5, 9)),
+                                             ("slot_rrp_moving", "A2", None)])
+def test_a_plans_letter_in_a_narrow_fan_hangs_on_a_leader_rather_than_touch_a_vector(
+        key, fmt, plans, monkeypatch):
+    """In a narrow fan of vectors no spot of the compass round a point was clear, on
+    either side of them: variant 1's s₂ (acceleration plan of position 6) covered a
+    vector by 0.9 mm², and of position 1 by 13 mm², the moving-slot scene's s₄ by 2 mm²,
+    with no leader. And a leader of variant 1 ran through the letter placed before it
+    (s₃, position 1). Every plan letter now stands clear of every vector, or hangs on a
+    leader clear of them whose line comes within GAP of no other letter."""
+    from shapely.geometry import LineString
+
+    from drawing import views as V
+    from drawing.labels import GAP
+
+    mech = SCENES[key].mechanism() if isinstance(key, str) else _mech(key)
+    calls = []
+    real = V.place_labels
+
+    def spy(requests, obstacles=(), *args, **kw):
+        got = real(requests, obstacles, *args, **kw)
+        calls.append((requests, obstacles, got))
+        return got
+
+    monkeypatch.setattr(V, "place_labels", spy)
+    build_sheet(mech, fmt, "ru", 12, list(plans) if plans else None)
+    plans_ = [c for c in calls if c[0] and not any(r.cross for r in c[0])]
+    assert plans_
+    leaders, bad = 0, []
+    for requests, hard, placed in plans_:
+        for i, (req, p) in enumerate(zip(requests, placed, strict=True)):
+            covered = sum(p.box.intersection(g).area for g in hard)  # mm² of vectors
+            if covered > 1e-6 or not (p.clear or p.leader):
+                bad.append((req.text, round(covered, 2), p.leader))
+            if p.leader:
+                leaders += 1
+                line = LineString(p.leader)
+                assert p.leader[0] == req.anchor and p.box.distance(line) < 1e-9
+                if any(line.distance(q.box) < GAP - 1e-9 for j, q in enumerate(placed) if j != i):
+                    bad.append((req.text, "leader at a letter"))
+    assert not bad
+    assert leaders
+
+
 #: the scenes' crank-rocker given from +y, measured and turning clockwise
 CR4 = SCENES["crank_rocker"].toml.replace(
     "angle_deg = 60\nomega = 10",
