@@ -384,7 +384,62 @@ def place_labels(
         obstacles: drawn geometry to avoid, already widened; see
             :func:`obstacles_of`.
         taken: boxes of labels placed earlier (e.g. by another view).
+
+    Labels are placed in turn, so an early one may take the only room a later one had:
+    where a ``cross=False`` label is left with no clear spot, the labels are placed again
+    with those left so first, and the placing kept where fewer labels cover a line.
     """
+    args = (obstacles, taken, region, distances, soft, near, max_soft)
+    hard = [g for g in (*obstacles, *taken) if not g.is_empty]
+    tree = shapely.STRtree(hard) if hard else None
+    order = list(range(len(requests)))
+    out = _in_order(requests, *args)
+    score = _score(requests, out, hard, tree, region)
+    front: list[int] = []  # the labels placed first, those left with no clear spot
+    for _ in range(RETRIES):
+        stuck = [i for i in order if not requests[i].cross and not (out[i].clear or out[i].leader)]
+        if not stuck or set(stuck) <= set(front):
+            break
+        front += [i for i in stuck if i not in front]
+        order = front + [i for i in range(len(requests)) if i not in front]
+        again = _in_order([requests[i] for i in order], *args)
+        placed = [again[order.index(i)] for i in range(len(requests))]
+        if (better := _score(requests, placed, hard, tree, region)) < score:
+            out, score = placed, better
+    return out
+
+
+#: how many times the labels are placed again, those left with no clear spot first
+RETRIES = 2
+
+
+def _score(requests: Sequence[LabelRequest], placed: list[Placement], hard: list,
+           tree, region: BaseGeometry | None) -> tuple[int, int, int, float]:
+    """How bad a placing is: the labels out of ``region`` (they would make the view
+    larger than it was sized for), those covering a line, those with no clear spot (and
+    no leader), the mm² of lines they cover and out of the region."""
+    region_box = region is not None and _is_box(region)
+    out = [0.0 if region is None or p.clear or p.leader else _outside(p.box, region, region_box)
+           for p in placed]
+    area = [0.0 if tree is None or p.clear or p.leader else
+            sum(p.box.intersection(hard[i]).area for i in tree.query(p.box, predicate="intersects"))
+            for p in placed]
+    return (sum(o > 1e-9 for o in out), sum(a > 1e-6 for a in area),
+            sum(not (p.clear or p.leader) for r, p in zip(requests, placed, strict=True)
+                if not r.optional), sum(area) + sum(out))
+
+
+def _in_order(
+    requests: Sequence[LabelRequest],
+    obstacles: Sequence[BaseGeometry],
+    taken: Sequence[BaseGeometry],
+    region: BaseGeometry | None,
+    distances: Sequence[float],
+    soft: Sequence[BaseGeometry],
+    near: float,
+    max_soft: int,
+) -> list[Placement]:
+    """:func:`place_labels`, each label in turn in the order given."""
     hard = [g for g in (*obstacles, *taken) if not g.is_empty]
     soft = [g for g in soft if not g.is_empty]
     hard_tree = shapely.STRtree(hard) if hard else None

@@ -354,3 +354,17 @@ def test_a_later_letter_keeps_off_an_earlier_leader():
     _, q = place_labels([*reqs, second], walls, distances=(1.0, 2.0, 3.0, 4.5, 6.0, 8.0))
     assert q.box.distance(leader) >= GAP - 1e-9
 
+
+def test_a_letter_left_with_no_room_is_placed_first_on_a_second_try():
+    """b's point sits in a fan of vectors open only towards a, whose letter prefers that
+    side and, placed first, took the one spot b had: b's letter covered a vector. The
+    letters are placed again with b's first, and a's goes round its point."""
+    a, b = (46.0, 50.0), (56.0, 50.0)
+    fan = _star(b, [t for t in range(0, 360, 15) if abs(t - 180) > 40], length=30.0)
+    reqs = [LabelRequest(a, "a", 3.5, "e", blank=True, cross=False),
+            LabelRequest(b, "b", 3.5, "w", blank=True, cross=False)]
+    placed = place_labels(reqs, fan, region=box(38, 42, 70, 58),
+                          distances=(1.0, 2.0, 3.0, 4.5, 6.0, 8.0))
+    assert all(p.clear for p in placed)
+    assert not any(g.intersects(p.box) for p in placed for g in fan)
+    assert [p.text.text for p in placed] == ["a", "b"]  # in the order asked for
