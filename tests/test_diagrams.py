@@ -112,3 +112,23 @@ def test_the_view_keeps_the_box_it_has_with_every_number_under_its_tick(name):
     _, _, info = build_sheet(variant(5), "A2", "en")
     (placed,) = [p for p in info["placed"] if p.view.name == "diagrams"]
     assert placed.rect.w > 240.0  # the 240 mm diagrams
+
+
+@pytest.mark.parametrize("width", [120.0, 180.0])
+@pytest.mark.parametrize("name", ["variant 2", "press"])
+def test_dense_positions_number_fewer_ticks_and_none_collides(name, width):
+    """72 positions on a 120 mm diagram put ticks 1.7 mm apart: every second tick's two
+    digits ran into the next number and onto the curves. Ticks are numbered every
+    fourth, sixth … position there, as far apart as a number is wide and a gap."""
+    mech = variant(int(name.split()[1])) if name.startswith("variant") else SCENES[name].mechanism()
+    view = diagrams_view(mech, analyse_cycle(mech, 72), "ru", width, DIAGRAMS[width])
+    numbers, _, _, curves = _parts(view)
+    strokes = obstacles_of(curves, clearance=0.0)
+    boxes = [text_box(t) for t, _ in numbers]
+    for (t, _), box in zip(numbers, boxes, strict=True):
+        assert not any(box.intersects(g) for g in strokes), (t.text, width)
+        assert not any(box.intersects(b) for b in boxes if b is not box), (t.text, width)
+    shown = sorted({int(t.text) for t, _ in numbers})
+    step = shown[1] - shown[0]
+    assert shown == list(range(0, 72, step))  # evenly, from position 0
+    assert step == (4 if width == 120.0 else 2)  # as close as the numbers allow
