@@ -373,7 +373,9 @@ def place_labels(
     line: the shortest way from its point to its box crosses no obstacle but those at
     the point itself (a letter beyond a vector reads as that vector's point); where it
     has no such spot, it takes the nearest clear one beyond a line with a ``leader``
-    line to its point (GOST 2.316).  A label keeps :data:`GAP` mm from the labels of other points
+    line to its point (GOST 2.316), one that ends :data:`LEADER_END` mm clear of every
+    line and crosses lines rather than runs along them (else the finer search of
+    :func:`_wider`; a leader ending on a line only where all else covers one).  A label keeps :data:`GAP` mm from the labels of other points
     (an ``optional`` one from every label: a position's number beside the letter of its
     own point read as one word, "¹B").  If
     none is free, the candidate with the least overlap area is taken and reported with
@@ -451,6 +453,7 @@ def _in_order(
     region_box = region is not None and _is_box(region)
     out: list[Placement] = []
     leaders: list[BaseGeometry] = []  # the leader lines drawn so far, widened: no letter on one
+    lines = ((hard, hard_tree), (soft, soft_tree))
 
     def meets(req: LabelRequest, box: Polygon, boxes, others) -> tuple[list, float, float]:
         """What ``box`` meets: the obstacles, leaders and labels placed before it that
@@ -500,6 +503,7 @@ def _in_order(
         chosen: tuple[Text, Polygon] | None = None
         fallback: tuple[tuple[bool, float], Text, Polygon] | None = None
         across: tuple[tuple, Text, Polygon, Point] | None = None  # clear, but beyond a line
+        on_line: tuple[tuple, Text, Polygon, Point] | None = None  # so, its leader ending on one
         spots = [(anchor, direction) for anchor in (req.anchor, *req.also)
                  for direction in _directions(req.prefer)]
         boxes = np.asarray(placed, dtype=object)  # the labels before this one, once
@@ -520,7 +524,13 @@ def _in_order(
                             n_soft = 0 if soft_tree is None else len(
                                 soft_tree.query(box, predicate="intersects"))
                             key = (n_soft, gap < LEADER, len(direction) == 1)
-                            if across is None or key < across[0]:
+                            if (not _open_end(anchor, box, hard_tree, soft_tree)
+                                    or _runs_along(anchor, box, lines)):
+                                # ending on a line it reads as a tick on it, running
+                                # along one as that line: the last resort of leaders
+                                if on_line is None or key < on_line[0]:
+                                    on_line = (key, text, box, anchor)
+                            elif across is None or key < across[0]:
                                 across = (key, text, box, anchor)
                             continue
                     if hits or outside > 1e-9:
@@ -566,6 +576,9 @@ def _in_order(
                         chosen = (text, box)
                     else:  # the last resort, on thin lines only
                         fallback = ((False, 0.0), text, box)
+        if chosen is None and across is None and on_line is not None and (
+                fallback is None or fallback[0][0] or fallback[0][1] > 1e-6):
+            across = on_line  # rather than a letter over a vector, or over a letter
         if chosen is None and across is not None:  # clear, with a leader to its point
             _, text, box, anchor = across
             chosen = (text, box)

@@ -1289,6 +1289,47 @@ def test_a_plans_letter_in_a_narrow_fan_hangs_on_a_leader_rather_than_touch_a_ve
     assert leaders
 
 
+@pytest.mark.parametrize("key, fmt, plans", [(1, "A2", (2, 6, 10)), (1, "A2", (1, 5, 9))])
+def test_a_plans_leader_ends_in_the_open_not_on_a_vector(key, fmt, plans, monkeypatch):
+    """A letter standing clear but across a vector from its point hung on a leader that
+    ended on the next vector, 0.2–0.5 mm from it: variant 1's s₃ on the plans of
+    positions 6 and 10, n₂ of position 6. The leader read as a tick on that vector, the
+    letter beyond as its point's. Every leader now ends LEADER_END mm clear of every
+    line, and crosses the lines on its way rather than runs along one."""
+    from shapely.geometry import LineString, Point
+
+    from drawing import views as V
+    from drawing.labels import ALONG, LEADER_END
+
+    mech = _mech(key)
+    calls = []
+    real = V.place_labels
+
+    def spy(requests, obstacles=(), *args, **kw):
+        got = real(requests, obstacles, *args, **kw)
+        calls.append((requests, obstacles, kw.get("soft", ()), got))
+        return got
+
+    monkeypatch.setattr(V, "place_labels", spy)
+    build_sheet(mech, fmt, "ru", 12, list(plans))
+    leaders, bad = 0, []
+    for requests, hard, soft, placed in calls:
+        if not requests or any(r.cross for r in requests):
+            continue  # not a plan's letters
+        lines = [g for g in (*hard, *soft) if not g.is_empty]
+        for req, p in zip(requests, placed, strict=True):
+            if p.leader is None:
+                continue
+            leaders += 1
+            end = min(g.distance(Point(p.leader[1])) for g in lines)
+            tail = LineString(p.leader).difference(Point(req.anchor).buffer(LEADER_END))
+            along = max(tail.intersection(g).length for g in lines)
+            if end < LEADER_END - 1e-9 or along > ALONG:
+                bad.append((req.text, round(end, 2), round(along, 2)))
+    assert leaders
+    assert not bad
+
+
 #: the scenes' crank-rocker given from +y, measured and turning clockwise
 CR4 = SCENES["crank_rocker"].toml.replace(
     "angle_deg = 60\nomega = 10",
