@@ -1198,6 +1198,24 @@ F = "below E"
 """
 
 
+def _plan_letters(monkeypatch, build) -> list[tuple]:
+    """(requests, obstacles, soft lines, placements) of each call of ``place_labels`` that
+    places a plan's letters, while ``build()`` draws a sheet."""
+    from drawing import views as V
+
+    calls = []
+    real = V.place_labels
+
+    def spy(requests, obstacles=(), *args, **kw):
+        got = real(requests, obstacles, *args, **kw)
+        calls.append((requests, obstacles, kw.get("soft", ()), got))
+        return got
+
+    monkeypatch.setattr(V, "place_labels", spy)
+    build()
+    return [c for c in calls if c[0] and not any(r.cross for r in c[0])]
+
+
 @pytest.mark.parametrize("key", [5, "six"])
 def test_a_plans_letter_stays_on_its_points_side_and_off_construction_lines(key, tmp_path,
                                                                             monkeypatch):
@@ -1209,7 +1227,6 @@ def test_a_plans_letter_stays_on_its_points_side_and_off_construction_lines(key,
     from shapely.geometry import Point
 
     from drawing import labels as L
-    from drawing import views as V
 
     if key == "six":
         path = tmp_path / "six.toml"
@@ -1217,17 +1234,8 @@ def test_a_plans_letter_stays_on_its_points_side_and_off_construction_lines(key,
         mech = load(path)
     else:
         mech = _mech(key)
-    calls = []
-    real = V.place_labels
-
-    def spy(requests, obstacles=(), *args, **kw):
-        got = real(requests, obstacles, *args, **kw)
-        calls.append((requests, obstacles, kw.get("soft", ()), got))
-        return got
-
-    monkeypatch.setattr(V, "place_labels", spy)
-    build_sheet(mech, "A1", "ru")  # the plans at the sheet's own scale factors
-    plans = [c for c in calls if c[0] and not any(r.cross for r in c[0])]
+    # the plans at the sheet's own scale factors
+    plans = _plan_letters(monkeypatch, lambda: build_sheet(mech, "A1", "ru"))
     assert len(plans) >= 2
     names = set()
     for requests, hard, soft, placed in plans:
@@ -1257,24 +1265,14 @@ def test_a_plans_letter_in_a_narrow_fan_hangs_on_a_leader_rather_than_touch_a_ve
     leader clear of them whose line comes within GAP of no other letter."""
     from shapely.geometry import LineString
 
-    from drawing import views as V
     from drawing.labels import GAP
 
     mech = SCENES[key].mechanism() if isinstance(key, str) else _mech(key)
-    calls = []
-    real = V.place_labels
-
-    def spy(requests, obstacles=(), *args, **kw):
-        got = real(requests, obstacles, *args, **kw)
-        calls.append((requests, obstacles, got))
-        return got
-
-    monkeypatch.setattr(V, "place_labels", spy)
-    build_sheet(mech, fmt, "ru", 12, list(plans) if plans else None)
-    plans_ = [c for c in calls if c[0] and not any(r.cross for r in c[0])]
+    plans_ = _plan_letters(
+        monkeypatch, lambda: build_sheet(mech, fmt, "ru", 12, list(plans) if plans else None))
     assert plans_
     leaders, bad = 0, []
-    for requests, hard, placed in plans_:
+    for requests, hard, _, placed in plans_:
         for i, (req, p) in enumerate(zip(requests, placed, strict=True)):
             covered = sum(p.box.intersection(g).area for g in hard)  # mm² of vectors
             if covered > 1e-6 or not (p.clear or p.leader):
@@ -1298,24 +1296,12 @@ def test_a_plans_leader_ends_in_the_open_not_on_a_vector(key, fmt, plans, monkey
     line, and crosses the lines on its way rather than runs along one."""
     from shapely.geometry import LineString, Point
 
-    from drawing import views as V
     from drawing.labels import ALONG, LEADER_END
 
     mech = _mech(key)
-    calls = []
-    real = V.place_labels
-
-    def spy(requests, obstacles=(), *args, **kw):
-        got = real(requests, obstacles, *args, **kw)
-        calls.append((requests, obstacles, kw.get("soft", ()), got))
-        return got
-
-    monkeypatch.setattr(V, "place_labels", spy)
-    build_sheet(mech, fmt, "ru", 12, list(plans))
     leaders, bad = 0, []
-    for requests, hard, soft, placed in calls:
-        if not requests or any(r.cross for r in requests):
-            continue  # not a plan's letters
+    for requests, hard, soft, placed in _plan_letters(
+            monkeypatch, lambda: build_sheet(mech, fmt, "ru", 12, list(plans))):
         lines = [g for g in (*hard, *soft) if not g.is_empty]
         for req, p in zip(requests, placed, strict=True):
             if p.leader is None:
