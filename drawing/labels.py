@@ -582,9 +582,9 @@ def _in_order(
         if chosen is None and across is not None:  # clear, with a leader to its point
             _, text, box, anchor = across
             chosen = (text, box)
-            near = shapely.ops.nearest_points(shapely.Point(anchor), box)[1]
-            leader = (anchor, (near.x, near.y))
-            leaders.append(LineString([anchor, leader[1]]).buffer(GAP))
+            line = _leader(anchor, box)
+            leader = (anchor, line.coords[1])
+            leaders.append(line.buffer(GAP))
         if chosen is not None:
             text, box = chosen
             clear = leader is None
@@ -634,11 +634,17 @@ def _at(req: LabelRequest, centre: tuple[float, float]) -> Text:
                 markup=req.markup)
 
 
+def _leader(anchor: Point, box: Polygon) -> LineString:
+    """The shortest way from ``anchor`` to ``box``: the line of its leader, or the sight
+    from a point to its letter."""
+    return LineString([anchor, shapely.ops.nearest_points(shapely.Point(anchor), box)[1]])
+
+
 def _open_end(anchor: Point, box: Polygon, hard_tree, soft_tree) -> bool:
     """Does the leader from ``anchor`` end at ``box`` in the open, :data:`LEADER_END` mm
     clear of every line? One that ends on a vector reads as a tick on it, the letter
     beyond as that vector's."""
-    near = shapely.ops.nearest_points(shapely.Point(anchor), box)[1].buffer(LEADER_END)
+    near = shapely.Point(_leader(anchor, box).coords[1]).buffer(LEADER_END)
     return not any(len(tree.query(near, predicate="intersects"))
                    for tree in (hard_tree, soft_tree) if tree is not None)
 
@@ -651,8 +657,7 @@ def _covers(box: Polygon, hits: list, outside: float) -> bool:
 def _leader_near(anchor: Point, box: Polygon, placed: list[Polygon]) -> bool:
     """Does the leader from ``anchor`` to ``box`` come within :data:`GAP` of a label
     placed before (run through it, or be broken by the blank under it)?"""
-    near = shapely.ops.nearest_points(shapely.Point(anchor), box)[1]
-    line = LineString([anchor, (near.x, near.y)])
+    line = _leader(anchor, box)
     return any(line.distance(p) < GAP for p in placed)
 
 
@@ -660,9 +665,7 @@ def _runs_along(anchor: Point, box: Polygon, lines: Sequence[tuple[list, object]
     """Does the leader from ``anchor`` to ``box`` run along a line (more than
     :data:`ALONG` mm within its widening) rather than cross it? ``lines``: (geometry,
     its STRtree) pairs."""
-    near = shapely.ops.nearest_points(shapely.Point(anchor), box)[1]
-    line = LineString([anchor, (near.x, near.y)]).difference(
-        shapely.Point(anchor).buffer(LEADER_END))
+    line = _leader(anchor, box).difference(shapely.Point(anchor).buffer(LEADER_END))
     return any(line.intersection(geoms[i]).length > ALONG
                for geoms, tree in lines if tree is not None
                for i in tree.query(line, predicate="intersects"))
@@ -713,10 +716,9 @@ def _beyond(anchor: Point, box: Polygon, hard: list, tree) -> list:
     """The obstacles between ``anchor`` and ``box``: those the shortest segment from the
     point to the box meets, but for those at the point itself (its own vectors)."""
     a = shapely.Point(anchor)
-    near = shapely.ops.nearest_points(a, box)[1]
-    if a.distance(near) < 1e-9:
+    sight = _leader(anchor, box)
+    if sight.length < 1e-9:
         return []
-    sight = LineString([anchor, (near.x, near.y)])
     return [hard[i] for i in tree.query(sight, predicate="intersects")
             if hard[i].distance(a) > 1e-9]
 
