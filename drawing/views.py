@@ -992,7 +992,9 @@ def _numbers(items: list[Item], numbers: list[tuple[float, float, str]]
 
     curves = [it for it in items if isinstance(it, Polyline)]
     segments = [it for it in items if isinstance(it, Segment)]  # the φ axes, the ticks
-    on_curves, curve_reach = shapely.STRtree(steps(curves)), reach(curves, NUMBER_CLEAR[0])
+    curve_steps = steps(curves)
+    on_curves, curve_reach = shapely.STRtree(curve_steps), reach(curves, NUMBER_CLEAR[0])
+    ink = None  # the curves' ink as one shape, where a number has no clear spot
     on_lines, line_reach = shapely.STRtree(steps(segments)), reach(segments, NUMBER_CLEAR[1])
     tree = shapely.STRtree([  # the vertical axes with their heads, the other texts
         *obstacles_of([it for it in items if isinstance(it, Arrow)], clearance=NUMBER_CLEAR[1]),
@@ -1021,8 +1023,9 @@ def _numbers(items: list[Item], numbers: list[tuple[float, float, str]]
         crossed = np.zeros(len(boxes))
         crossed[on_curves.query(boxes, predicate="dwithin", distance=curve_reach)[0]] = 1.0
         if (crossed[~hit & ~outside] > 0).all():  # nowhere clear: the least of the curves
-            crossed[crossed > 0] = shapely.area(shapely.intersection(
-                boxes[crossed > 0], shapely.union_all(steps(curves)).buffer(curve_reach)))
+            if ink is None:  # once a view, not once a number
+                ink = shapely.union_all(curve_steps).buffer(curve_reach)
+            crossed[crossed > 0] = shapely.area(shapely.intersection(boxes[crossed > 0], ink))
         # the first that meets nothing; where none, the one that meets no line and no text
         # and crosses the least of the curves; in the view's box always (the nearest
         # under the tick is)
