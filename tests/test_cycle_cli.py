@@ -262,30 +262,34 @@ def test_one_position_and_json_is_strict(capsys):
     assert np.isfinite(data["rows"][0]["conditioning"]["min_sine"])
 
 
-def test_cycle_pays_for_no_heavy_import(tmp_path):
-    """Commands that do not draw load neither plotting, geometry nor symbolic packages."""
+def _modules_after(tmp_path, runs: list[list[str]], names) -> str:
+    """Which of ``names`` (modules, or packages by their first part) a fresh process has
+    imported after ``plans.cli.main`` ran each argument list of ``runs`` (each must exit
+    0), as the printed sorted list."""
     import subprocess
     import sys
     from pathlib import Path
 
     root = Path(__file__).resolve().parent.parent
-    code = (
-        "import sys\n"
-        "from plans.cli import main\n"
-        f"assert main(['cycle', {str(root / PRESS)!r}, '--json', '-o', {str(tmp_path / 'c.json')!r}]) == 0\n"
-        f"assert main(['solve', {str(root / PRESS)!r}, '--json', '-o', {str(tmp_path / 's.json')!r}]) == 0\n"
-        "heavy = ('matplotlib', 'shapely', 'svgwrite', 'sympy', 'mpmath', 'cairosvg', 'pylinkage')\n"
-        "print(sorted({m.split('.')[0] for m in sys.modules} & set(heavy)))\n"
-    )
-    out = subprocess.run(
-        [sys.executable, "-c", code],
-        capture_output=True,
-        text=True,
-        cwd=tmp_path,
-        env={"PYTHONPATH": str(root), "PATH": ""},
-        check=True,
-    )
-    assert out.stdout.strip() == "[]"
+    code = "import sys\nfrom plans.cli import main\n" + "".join(
+        f"assert main({run!r}) == 0\n" for run in runs) + (
+        f"names = {set(names)!r}\n"
+        "print(sorted(m for m in names if m in sys.modules or any(\n"
+        "    k.split('.')[0] == m for k in sys.modules)))\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         cwd=tmp_path, env={"PYTHONPATH": str(root), "PATH": ""}, check=True)
+    return out.stdout.strip()
+
+
+def test_cycle_pays_for_no_heavy_import(tmp_path):
+    """Commands that do not draw load neither plotting, geometry nor symbolic packages."""
+    from pathlib import Path
+
+    press = str(Path(__file__).resolve().parent.parent / PRESS)
+    runs = [["cycle", press, "--json", "-o", str(tmp_path / "c.json")],
+            ["solve", press, "--json", "-o", str(tmp_path / "s.json")]]
+    heavy = ("matplotlib", "shapely", "svgwrite", "sympy", "mpmath", "cairosvg", "pylinkage")
+    assert _modules_after(tmp_path, runs, heavy) == "[]"
 
 
 def test_solve_imports_neither_the_other_commands_nor_what_only_errors_need(tmp_path):
@@ -293,22 +297,13 @@ def test_solve_imports_neither_the_other_commands_nor_what_only_errors_need(tmp_
     configures its own command only, and leaves the look-ups of a misspelt key (difflib),
     the built-in variant table (importlib.resources) and a cryptographic hash (hashlib,
     for a plan recipe's name) to the runs that need them."""
-    import subprocess
-    import sys
     from pathlib import Path
 
-    root = Path(__file__).resolve().parent.parent
-    code = (
-        "import sys\n"
-        "from plans.cli import main\n"
-        f"assert main(['solve', {str(root / PRESS)!r}, '--json', '-o', {str(tmp_path / 's.json')!r}]) == 0\n"
-        "unpaid = {'plans.cli_report', 'plans.cli_check', 'plans.bench', 'drawing.cli_sheet',\n"
-        "          'difflib', 'importlib.resources', 'hashlib'}\n"
-        "print(sorted(set(sys.modules) & unpaid))\n"
-    )
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         cwd=tmp_path, env={"PYTHONPATH": str(root), "PATH": ""}, check=True)
-    assert out.stdout.strip() == "[]"
+    press = str(Path(__file__).resolve().parent.parent / PRESS)
+    runs = [["solve", press, "--json", "-o", str(tmp_path / "s.json")]]
+    unpaid = ("plans.cli_report", "plans.cli_check", "plans.bench", "drawing.cli_sheet",
+              "difflib", "importlib.resources", "hashlib")
+    assert _modules_after(tmp_path, runs, unpaid) == "[]"
 
 
 def test_cycle_text_gives_every_crank_angle_in_the_files_convention(capsys):

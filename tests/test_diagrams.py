@@ -21,9 +21,14 @@ from plans.variants import variant
 MECHANISMS = ("variant 2", "variant 4", "press", "slotted_rotating", "crank_slider_central")
 
 
+def _mech(name: str):
+    """A built-in variant ("variant 2") or scene ("press") by name."""
+    return variant(int(name.split()[1])) if name.startswith("variant") else SCENES[name].mechanism()
+
+
 @cache
 def _view(name: str, width: float, lang: str = "ru"):
-    mech = variant(int(name.split()[1])) if name.startswith("variant") else SCENES[name].mechanism()
+    mech = _mech(name)
     return diagrams_view(mech, analyse_cycle(mech), lang, width, DIAGRAMS[width])
 
 
@@ -120,7 +125,7 @@ def test_dense_positions_number_fewer_ticks_and_none_collides(name, width):
     """72 positions on a 120 mm diagram put ticks 1.7 mm apart: every second tick's two
     digits ran into the next number and onto the curves. Ticks are numbered every
     fourth, sixth … position there, as far apart as a number is wide and a gap."""
-    mech = variant(int(name.split()[1])) if name.startswith("variant") else SCENES[name].mechanism()
+    mech = _mech(name)
     view = diagrams_view(mech, analyse_cycle(mech, 72), "ru", width, DIAGRAMS[width])
     numbers, _, _, curves = _parts(view)
     strokes = obstacles_of(curves, clearance=0.0)
