@@ -391,9 +391,9 @@ def place_labels(
     where a ``cross=False`` label is left with no clear spot, the labels are placed again
     with those left so first, and the placing kept where fewer labels cover a line.
     """
-    args = (obstacles, taken, region, distances, soft, near, max_soft)
     hard = [g for g in (*obstacles, *taken) if not g.is_empty]
     tree = shapely.STRtree(hard) if hard else None
+    args = (hard, tree, region, distances, soft, near, max_soft)
     order = list(range(len(requests)))
     out = _in_order(requests, *args)
     score = _score(requests, out, hard, tree, region)
@@ -433,18 +433,17 @@ def _score(requests: Sequence[LabelRequest], placed: list[Placement], hard: list
 
 def _in_order(
     requests: Sequence[LabelRequest],
-    obstacles: Sequence[BaseGeometry],
-    taken: Sequence[BaseGeometry],
+    hard: list[BaseGeometry],
+    hard_tree,
     region: BaseGeometry | None,
     distances: Sequence[float],
     soft: Sequence[BaseGeometry],
     near: float,
     max_soft: int,
 ) -> list[Placement]:
-    """:func:`place_labels`, each label in turn in the order given."""
-    hard = [g for g in (*obstacles, *taken) if not g.is_empty]
+    """:func:`place_labels`, each label in turn in the order given, against the
+    obstacles and labels taken before (``hard``, non-empty, and their STRtree)."""
     soft = [g for g in soft if not g.is_empty]
-    hard_tree = shapely.STRtree(hard) if hard else None
     soft_tree = shapely.STRtree(soft) if soft else None
     close = [d for d in distances if d <= near] or list(distances[:1])
     rings = [close, [d for d in distances if d not in close]] if soft else [list(distances)]
