@@ -1,7 +1,7 @@
 """Throughput of the vectorized solver (positions, velocities, accelerations of every
 point with the recorded constructions) against N, and what solving in cache-sized blocks
 would give if the Motion were not kept whole — the evidence behind leaving
-``plans/kinematics.py`` as it is (see the bench's notes).
+``plans/kinematics/solver.py`` as it is (see the bench's notes).
 
     python benchmarks/throughput.py [--scene press --scene crank_rocker] [--block 8192]
 
@@ -24,9 +24,9 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
 
-from plans.scenes import SCENES  # noqa: E402
+from plans.model.scenes import SCENES  # noqa: E402
 
-from plans.kinematics import Solver  # noqa: E402
+from plans.kinematics.solver import Solver  # noqa: E402
 
 
 def best(fn, runs=3):

@@ -105,7 +105,7 @@ def write_bytes_atomic(data: bytes, path: str | os.PathLike[str]) -> Path:
     """Write ``data`` to ``path`` with the command line's one atomic writer (a temporary
     file in the same folder, renamed when complete; the usual file mode; never over an
     input file)."""
-    from plans.cli import write_output
+    from plans.cli.common import write_output
 
     write_output(str(path), data)
     return Path(path)

@@ -38,7 +38,7 @@ from drawing.scene import (
     Segment,
     Text,
 )
-from drawing.sheet import Sheet
+from drawing.sheet.frame import Sheet
 from drawing.styles import LineType, Style
 
 __all__ = ["FONT_FILE", "fmt", "to_svg"]

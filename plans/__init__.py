@@ -14,20 +14,20 @@ Over many crank angles at once, without the recorded constructions (``Solver.swe
 (0.5114, 7.764)
 """
 
-from .cycle import Cycle, analyse_cycle, grashof_class
-from .errors import (
+from plans.cycle.analysis import Cycle, analyse_cycle, grashof_class
+from plans.errors import (
     AssemblyError,
     InputError,
     PlansError,
     SingularPlanError,
     StructureError,
 )
-from .kinematics import Motion, Solver
-from .mechanism import Mechanism, from_dict, load
-from .plan import Plan, PlanPoint, PlanVector, Solution, Source, solve_position
-from .structure import DyadKind, Structure, analyse
-from .sweep import Sweep
-from .variants import variant
+from plans.kinematics.solver import Motion, Solver
+from plans.model.mechanism import Mechanism, from_dict, load
+from plans.plan.solution import Plan, PlanPoint, PlanVector, Solution, Source, solve_position
+from plans.model.structure import DyadKind, Structure, analyse
+from plans.kinematics.sweep import Sweep
+from plans.model.variants import variant
 
 __all__ = [
     "AssemblyError", "Cycle", "DyadKind", "InputError", "Mechanism", "Motion", "Plan",

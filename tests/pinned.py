@@ -29,7 +29,7 @@ VARIANTS = range(10)
 
 
 def _run(argv: list[str]) -> tuple[int, bytes, bytes]:
-    from plans.cli import main
+    from plans.cli.common import main
 
     out, err = io.StringIO(), io.StringIO()
     with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
@@ -86,7 +86,7 @@ def _jobs(scenes: list[str]) -> list[tuple[str, list[str], str | None]]:
 def outputs() -> dict[str, bytes]:
     """Every pinned output, by name: its exit status, stdout (or the file written) and
     stderr."""
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     scenes = sorted(n for n, s in SCENES.items() if s.toml is not None)
     here = os.getcwd()

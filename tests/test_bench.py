@@ -1,5 +1,5 @@
 """``plans bench`` at tiny sizes: the row shape, small errors, the chart, and the error
-measure agreeing with ``plans.reference``."""
+measure agreeing with ``plans.verify.reference``."""
 
 import json
 import math
@@ -8,10 +8,11 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 
-from plans import bench, reference
-from plans.cli import main
-from plans.kinematics import Solver
-from plans.scenes import SCENES
+from plans.cli import bench
+from plans.verify import reference
+from plans.cli.common import main
+from plans.kinematics.solver import Solver
+from plans.model.scenes import SCENES
 
 ROW_KEYS = {"scene", "method", "positions", "seconds_per_position", "max_rel_error"}
 
@@ -136,7 +137,7 @@ def test_svg_chart_handles_zero_and_missing_errors():
         bench.Row("a", "fd h=1e-04", 12, 1e-5, None),
         bench.Row("b", "plan", 12, 1e-3, math.inf),
     ]
-    from drawing.bench_chart import svg_chart
+    from drawing.chart import svg_chart
 
     ET.fromstring(svg_chart(rows, "test"))
 
@@ -144,7 +145,7 @@ def test_svg_chart_handles_zero_and_missing_errors():
 def test_joints_only_four_bar_is_the_crank_rocker_without_its_extra_points():
     """The bench reads the four-bar target on ``fourbar_joints``: it must be the very
     crank-rocker of ``crank_rocker``, with only the points found by similarity dropped."""
-    from plans.sweep import sweep
+    from plans.kinematics.sweep import sweep
 
     full, bare = (Solver(SCENES[n].mechanism()) for n in ("crank_rocker", "fourbar_joints"))
     phi = SCENES["crank_rocker"].angles(29)
@@ -202,7 +203,7 @@ def test_best_time_counts_its_repeats_after_a_slow_first_run():
 def test_every_default_scene_has_its_own_marker_on_the_chart():
     """With the joints-only four-bar the bench has eight scenes; the chart had seven shapes
     and drew the press and the Scotch yoke both as filled circles."""
-    from drawing import bench_chart
+    from drawing import chart as bench_chart
 
     drawn = {bench_chart.marker(s, 0.0, 0.0, "#444") for s in bench_chart._SHAPES}
     assert len(drawn) == len(bench_chart._SHAPES) >= len(bench.BENCH_SCENES)

@@ -1,5 +1,5 @@
 """Change points: where a group's links lie in line and its two assemblies meet, the motion
-goes on smoothly (plans.branches.change_points, Solver.flips), checked against closed forms
+goes on smoothly (plans.kinematics.branches.change_points, Solver.flips), checked against closed forms
 (a parallelogram translates its coupler, an isosceles crank-slider's slider runs at 2R·cos φ,
 a slotted link whose pivot is on the crank circle turns at half the crank's rate) and
 against the smoothness of the velocities across the change point."""
@@ -10,9 +10,10 @@ import numpy as np
 import pytest
 from test_stability import crank_slider, fourbar, mech_of, slotted
 
-from plans import Solver, analyse_cycle
-from plans.cycle import summary
-from plans.positions import drawn
+from plans import Solver
+from plans import analyse_cycle
+from plans.cycle.analysis import summary
+from plans.cycle.positions import drawn
 
 A, B_, D = 0.05, 0.2, 0.2  # crank, coupler, frame: a parallelogram with c = a
 
@@ -213,7 +214,7 @@ def test_a_near_miss_is_no_change_point(scale):
 
 
 def test_well_shaped_mechanisms_have_no_change_points():
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     for name, scene in SCENES.items():
         sv = Solver(scene.mechanism())
@@ -365,7 +366,7 @@ def test_an_extreme_on_a_grid_sample_is_found_exactly():
 
 def test_the_diagrams_draw_rounding_as_zero_and_run_over_change_points():
     from drawing.scene import Polyline, Text
-    from drawing.views import diagrams_view
+    from drawing.views.views import diagrams_view
 
     mech = parallelogram()
     sv = Solver(mech)
@@ -401,7 +402,7 @@ def test_check_names_the_other_assembly_past_a_change_point(tmp_path):
 def test_a_limit_is_found_on_the_side_where_the_mechanism_closes():
     """A crank-slider with L = R − e reaches the guide's normal at 0° and 180°: the range
     read 'from −2.6e−11° to 180°'."""
-    from plans.report import no_full_turn
+    from plans.note.report import no_full_turn
 
     mech = mech_of(crank_slider(0.1, 0.05, 0.05).replace('B = "right of O"', 'B = "right of A"'))
     sv = Solver(mech)
@@ -468,10 +469,10 @@ def test_check_keeps_small_true_values_and_zeroes_only_rounding():
     """A crank at 1e-4 rad/s gives ε3 of 5e-10 rad/s²: a real value, which an absolute
     1e-9 floor had made 0 (and the student's right answer BEYOND). Only what is rounding
     relative to the plan, as the plan's own segments are, is 0."""
-    from plans import check as ck
+    from plans.check import verdict as ck
     from plans import solve_position
-    from plans.measured import Item, Tolerance
-    from plans.replay import expected, simulate
+    from plans.check.measured import Item, Tolerance
+    from plans.check.replay import expected, simulate
 
     item = Item("values.eps3", "ε3", "epsilon", "acceleration", 5.17e-10, link=3)
     d = ck.compare(item, 5.17e-10, Tolerance(5.0, 1.0))
@@ -662,7 +663,7 @@ def test_a_hint_met_only_by_rounding_picks_no_assembly():
     2.8e-13 m), where the crank and coupler fold onto the frame and the rocker stays. "Above
     OD" had picked it by the sign of rounding: 'the output B does not move'. It names the
     other, which swings the rocker 120° with K = 2."""
-    from plans.branches import hint_holds
+    from plans.kinematics.branches import hint_holds
 
     c = analyse_cycle(mech_of(fourbar(0.1, 0.1, 0.2, 0.2, angle=180.0)))
     assert c.K == pytest.approx(2.0, abs=1e-9)
@@ -697,7 +698,7 @@ def test_the_diagrams_run_over_a_block_passing_the_rockers_pivot():
     had trusted that sample (they read only the sine) and drew ε up to 4e16 rad/s², at
     μ_ε = 4e15. They skip what Solver.trusted refuses, as solve and cycle do."""
     from drawing.scene import Polyline, Text
-    from drawing.views import diagrams_view
+    from drawing.views.views import diagrams_view
 
     mech = mech_of(slotted(0.1, 0.1, angle=300.0))
     sv = Solver(mech)

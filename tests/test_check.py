@@ -22,12 +22,12 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from support import NON_GRASHOF, run
 
-from plans import check as ck
-from plans import mechanism
+from plans.check import verdict as ck
+from plans.model import mechanism
 from plans.errors import InputError
-from plans.kinematics import Solver
-from plans.plan import solve_position
-from plans.scenes import SCENES
+from plans.kinematics.solver import Solver
+from plans.plan.solution import solve_position
+from plans.model.scenes import SCENES
 
 SAMPLES = Path(__file__).resolve().parents[1] / "samples"
 PRESS = SAMPLES / "press.toml"
@@ -113,7 +113,7 @@ def press():
 
 @pytest.mark.parametrize("source", [PRESS, FOURBAR, "variant:2", "variant:5"])
 def test_replay_without_mistake_is_the_engine_plan(source):
-    from plans.variants import variant
+    from plans.model.variants import variant
 
     mech = variant(int(source.split(":")[1])) if isinstance(source, str) else mechanism.load(source)
     sol = solve_position(mech)
@@ -703,7 +703,7 @@ def test_variant_and_angle(tmp_path, capsys):
 
 
 def _boxes(svg: str):
-    from drawing.check_overlay import text_width
+    from drawing.overlay import text_width
 
     root = ET.fromstring(svg)
     out = []
@@ -956,7 +956,7 @@ def test_the_pictures_footer_says_what_a_look_alike_is(tmp_path, press):
     """The text said "are πc and πa3 swapped?" under "no single mistake explains this";
     the picture (check --svg, --png) gave only the verdict, so a teacher reading it saw
     no hint. Its footer now carries the same lines, in either language."""
-    from drawing.check_overlay import overlay
+    from drawing.overlay import overlay
 
     seg = {k: v for k, v in press.segments.items() if k in ("pa3", "aa3", "pc", "cd", "pd",
                                                                 "ak", "bn1", "πa3", "πc", "πd")}
@@ -1369,7 +1369,7 @@ def test_slips_that_explain_everything_are_not_under_no_single_mistake(tmp_path,
     the items' own look-alikes explain every item beyond tolerance, the diagnosis says the
     plans are right and lists the slips, with no mistake of construction that explains
     only some of them; the JSON says so too, and the picture's footer."""
-    from drawing.check_overlay import overlay
+    from drawing.overlay import overlay
 
     _, segs, write = _variant_exact(tmp_path, 1, {"mu_l": 0.0025, "mu_v": 0.01, "mu_a": 0.2})
     segs["pc"], segs["pe"] = segs["pe"], segs["pc"]

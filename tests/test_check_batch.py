@@ -16,7 +16,7 @@ import pytest
 from support import run
 from test_check import _variant_exact
 
-from plans import check as ck
+from plans.check import verdict as ck
 from plans import fmt
 
 MU = {"mu_l": 0.0025, "mu_v": 0.01, "mu_a": 0.2}
@@ -246,7 +246,7 @@ def test_two_files_of_one_name_would_draw_one_picture(klass, capsys, tmp_path):
 def test_solvers_are_shared_by_the_files_of_one_mechanism(klass):
     """Thirty files of one variant at one angle solve it once: one solver, whose cycle
     (for the angles the table writes) is analysed once."""
-    from plans.measured import Solvers
+    from plans.check.measured import Solvers
 
     solvers = Solvers()
     meas = [ck.load(klass[n], solvers) for n in ("exact", "scale", "swapped", "messy")]
@@ -398,7 +398,7 @@ def test_a_long_chinese_title_is_cut_to_the_columns_of_the_title_column(tmp_path
     """A title is cut at TITLE_WIDTH (40): counted in characters, thirty Chinese ones
     passed whole and took sixty columns of the table, half as wide again as the column
     any other title is cut to."""
-    from plans.cli_check_batch import TITLE_WIDTH
+    from plans.cli.check_batch import TITLE_WIDTH
 
     got = titled(tmp_path, capsys, "x" * 60, "机械原理课程设计" * 4)
     cell = got["b"].split("  ")[2]  # the file, then the title

@@ -5,7 +5,7 @@ The reviewer's files (tests/overlay_cases) had the diagnosis run past the right 
 cut ("…the acceleration plan is drawn 20", «…крупнее (при»), the velocity plan's list
 of deviations run into the acceleration plan's, labels on the plan without their value
 (πc, πa3) or missing (dn2, n1c, n2c), and the Russian SVG an English title with a raw
-"a^k_A3A". The layout's own boxes (:class:`drawing.check_overlay.Overlay`) are checked
+"a^k_A3A". The layout's own boxes (:class:`drawing.overlay.Overlay`) are checked
 with shapely, and they are checked against what DejaVu Sans (what "sans-serif" renders
 with here) draws.
 """
@@ -20,8 +20,8 @@ import pytest
 import shapely
 from support import run
 
-from drawing.check_overlay import Overlay, _mark, overlay
-from plans import check as ck
+from drawing.overlay import Overlay, _mark, overlay
+from plans.check import verdict as ck
 
 HERE = Path(__file__).resolve().parent
 CASES = HERE / "overlay_cases"
@@ -167,7 +167,7 @@ def test_coincident_points_are_lettered_as_on_the_sheet(results, name, shared):
     «π,o,b», the pole first, and the picture now takes the sheet's rule
     (drawing.scene.shared_label): the same labels on both."""
     from drawing.scene import Text, flatten
-    from drawing.views import plan_view
+    from drawing.views.views import plan_view
 
     res = results[name]
     sol = res.measurement.solution
@@ -186,7 +186,7 @@ def test_the_overlay_needs_no_shapely():
     import subprocess
     import sys
 
-    code = ("import sys\nimport drawing.check_overlay\n"
+    code = ("import sys\nimport drawing.overlay\n"
             "print(sorted({m.split('.')[0] for m in sys.modules} & {'shapely', 'svgwrite'}))\n")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True,
                          cwd=HERE.parent, env={"PYTHONPATH": str(HERE.parent), "PATH": ""})
@@ -198,7 +198,7 @@ def test_the_links_images_are_drawn_thin_on_both_panels(tmp_path):
     four-bar's coupler BCE); the check's picture drew only the plan's vectors, and on
     its acceleration panel e and s2 floated beside them. One thin line is drawn per
     side of ``plans.plan.image_sides``, on each panel."""
-    from plans.plan import image_sides
+    from plans.plan.solution import image_sides
 
     path = tmp_path / "m.toml"
     path.write_text(f'mechanism = "{(HERE.parent / "samples" / "fourbar.toml").as_posix()}"\n'

@@ -15,8 +15,8 @@ import pytest
 from support import expectations, run
 from test_errors import PARALLEL_RPP
 
-from plans import cli
-from plans.cli import main
+from plans.cli import common as cli
+from plans.cli.common import main
 
 ROOT = Path(__file__).resolve().parent.parent
 CORPUS = ROOT / "tests" / "corpus"
@@ -136,7 +136,7 @@ def press(tmp_path):
 
 
 def _forbid_computing(monkeypatch):
-    import plans.kinematics
+    import plans.kinematics.solver
 
     def boom(*a, **k):
         raise AssertionError("computed before refusing the output")
@@ -359,12 +359,12 @@ def test_neither_or_both_sources(capsys, press):
 
 
 def _break_solve(monkeypatch):
-    import plans.cli_solve
+    import plans.cli.solve
 
     def broken(args):
         raise ZeroDivisionError("float division by zero")
 
-    monkeypatch.setattr(plans.cli_solve, "run", broken)
+    monkeypatch.setattr(plans.cli.solve, "run", broken)
 
 
 def test_an_internal_error_is_one_line_and_exit_3(capsys, monkeypatch, press):
@@ -472,7 +472,7 @@ def test_subprocess_output_onto_input_and_success(tmp_path, press):
 
 def test_subprocess_internal_error_exit_3_without_traceback(press):
     script = (
-        "import sys, plans.cli_solve as s, plans.cli as c\n"
+        "import sys, plans.cli.solve as s, plans.cli as c\n"
         "def run(args): raise KeyError('boom')\n"
         "s.run = run\n"
         f"sys.exit(c.main(['solve', {str(press)!r}]))\n"
@@ -824,7 +824,7 @@ def test_a_table_is_read_once_and_its_other_rows_problems_are_capped(capsys, tmp
     """The table had been read again for the other rows' warnings (a pipe gave nothing the
     second time) and for every sheet of --variant all, and each row's problems were
     located apart: 300 broken rows took 11 s and printed 299 lines."""
-    import plans.variants as variants
+    import plans.model.variants as variants
 
     rows = [f"[[variant]]\nn = {n}\nAB = 0.06\nBC = 0.16\nCD = 0.12\n{'Ad' if n else 'AD'} = 0.11\n"
             "phi_deg = 50\nrpm = 115\n" for n in range(300)]

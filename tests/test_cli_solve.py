@@ -9,7 +9,7 @@ import pytest
 from support import NON_GRASHOF, run
 
 from plans.fmt import num
-from plans.variants import variant
+from plans.model.variants import variant
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -33,7 +33,7 @@ def test_solve_variant_json_shape(capsys, n):
     # the crank speed is ω1·l_AB, as in the table
     import math
 
-    from plans.variants import load_table
+    from plans.model.variants import load_table
 
     row = load_table()[1][n]
     vb = math.hypot(*data["points"]["B"]["velocity"])
@@ -55,8 +55,8 @@ def test_solve_press_json_includes_coincident_point(capsys):
 def test_solve_json_keeps_each_plans_segments_apart(capsys, tmp_path):
     """On a Scotch yoke the relative vector aa3 is drawn on both plans: V_A3A on the
     velocity plan, a^r_A3A on the acceleration plan. Each plan's table keeps its own."""
-    from plans.plan import solve_position
-    from plans.scenes import SCENES
+    from plans.plan.solution import solve_position
+    from plans.model.scenes import SCENES
 
     scene = SCENES["scotch_yoke"]
     path = tmp_path / "yoke.toml"
@@ -255,7 +255,7 @@ def test_the_note_finds_every_point_of_the_input_link_it_uses(capsys, tmp_path):
     the input link: V_S1 = ω1·l_AS1 exactly, a_S1 = ω1²·l_AS1 (ω1 constant)."""
     import math
 
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     code, out, _ = run(capsys, "report", "samples/fourbar.toml", "--lang", "ru")
     w1 = 149.2 * math.pi / 30
@@ -276,8 +276,8 @@ def test_the_note_explains_translating_links_sliding_links_and_its_own_guide_nam
     was never given, and a degenerate 'triangle a3de' stood for it), and no Coriolis term,
     with the reason. A link sliding on a turning one turns with it (ω5 = ω3 was used,
     never said). A guide the tool names x3-x3 is said to be link 3's slot."""
-    from plans.plan import solve_position
-    from plans.scenes import SCENES
+    from plans.plan.solution import solve_position
+    from plans.model.scenes import SCENES
 
     def note_of(name):
         path = tmp_path / f"{name}.toml"
@@ -311,7 +311,7 @@ def test_the_note_explains_translating_links_sliding_links_and_its_own_guide_nam
 
 
 def _notes():
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     yield "press", (ROOT / "samples" / "press.toml").read_text("utf-8")
     yield "fourbar", (ROOT / "samples" / "fourbar.toml").read_text("utf-8")
@@ -351,7 +351,7 @@ def test_every_substitution_in_the_note_gives_its_result_by_hand(capsys, tmp_pat
 def test_every_point_of_a_yoke_is_an_output_and_a_slider_link_says_so(capsys, tmp_path):
     """A Scotch yoke's E travels as D does: output = "E" was refused. A crank-slider's
     slider translates: the note says V_M = V_B (it said 'V_M:' alone)."""
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     path = tmp_path / "y.toml"
     path.write_text(SCENES["scotch_yoke"].toml.replace('output = "D"', 'output = "E"'), "utf-8")
@@ -544,7 +544,7 @@ def test_a_point_off_the_line_is_built_from_two_sides_each_by_formula(capsys, tm
     """A coupler point E off the line BC is drawn on the plan as a triangle on bc: the
     note said only '△bce ∼ △BCE: be = 17,94 мм', one side, with no formula and no
     substitution. Now both sides be and ce, each formula → substitution → result."""
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     path = tmp_path / "crank_rocker.toml"
     path.write_text(SCENES["crank_rocker"].toml, "utf-8")
@@ -573,7 +573,7 @@ def test_the_note_works_out_theta_from_the_cranks_turns_and_names_the_swing(caps
     worked out from the crank's turn over the working and the return stroke, and ψ named
     as the angle between the rocker's extreme positions at its pivot. The turns are the
     cycle's own: φ_рх − 180° = θ."""
-    from plans.cycle import analyse_cycle
+    from plans.cycle.analysis import analyse_cycle
 
     c = analyse_cycle(variant(3))
     th = math.degrees(c.theta)
@@ -599,7 +599,7 @@ def test_a_courses_table_gives_an_offset_omega_and_a_clockwise_crank(tmp_path, c
     sense, the offset crank-slider r = 0.1, l = 0.4, e = 0.05 m has the closed forms'
     stroke H = √((l+r)² − e²) − √((l−r)² − e²) and θ = asin(e/(l−r)) − asin(e/(l+r)),
     and its crank turns clockwise at ω1 = 10.5 rad/s."""
-    from plans.cycle import analyse_cycle
+    from plans.cycle.analysis import analyse_cycle
 
     table = tmp_path / "course.toml"
     table.write_text('designation = "ТММ.КП.{n:02d}"\n[[variant]]\nn = 4\nkind = "crank-slider"\n'

@@ -10,10 +10,10 @@ import numpy as np
 import pytest
 from support import NON_GRASHOF, run
 
-from plans import mechanism
-from plans.cycle import analyse_cycle
-from plans.kinematics import WARN_SINE, Solver
-from plans.plan import solve_position
+from plans.model import mechanism
+from plans.cycle.analysis import analyse_cycle
+from plans.kinematics.solver import WARN_SINE, Solver
+from plans.plan.solution import solve_position
 
 PRESS = "samples/press.toml"
 FOURBAR = "samples/fourbar.toml"
@@ -195,11 +195,11 @@ def test_a_linkage_that_cannot_turn_fully_has_its_positions_inside_its_exact_lim
 
 
 def test_singular_positions_are_errors_with_no_values(capsys, monkeypatch):
-    import plans.records
+    import plans.kinematics.records
 
     # make every position with |sin| < 0.7 count as singular, so the error path runs
-    monkeypatch.setattr(plans.records, "SINGULAR_SINE", 0.7)
-    monkeypatch.setattr(plans.records, "WARN_SINE", 0.9)
+    monkeypatch.setattr(plans.kinematics.records, "SINGULAR_SINE", 0.7)
+    monkeypatch.setattr(plans.kinematics.records, "WARN_SINE", 0.9)
     code, out, err = run(capsys, "cycle", FOURBAR, "--json", "--positions", "9")
     assert code == 2
     rows = json.loads(out)["rows"]
@@ -217,10 +217,10 @@ def test_singular_positions_are_errors_with_no_values(capsys, monkeypatch):
 
 
 def test_table_marks_warnings(capsys, monkeypatch):
-    import plans.records
+    import plans.kinematics.records
 
     # the five positions' sines are 0.54 at the ends and 0.86 or more between: warn below 0.6
-    monkeypatch.setattr(plans.records, "WARN_SINE", 0.6)
+    monkeypatch.setattr(plans.kinematics.records, "WARN_SINE", 0.6)
     code, out, _ = run(capsys, "cycle", FOURBAR, "--positions", "5")
     assert code == 0
     assert "position 0: warning: group 2–3 (RRR)" in out
@@ -238,7 +238,7 @@ def test_positions_out_of_range(capsys, n):
 def test_json_is_written_row_by_row_as_one_object():
     """The head, then one position per line, then the tail: one JSON object whatever the
     number of rows, each row on its own line."""
-    from plans.cli_cycle import compute, json_chunks
+    from plans.cli.cycle import compute, json_chunks
 
     for n in (1, 2, 7):
         chunks = list(json_chunks(compute(mechanism.load(PRESS), n)))
@@ -301,7 +301,7 @@ def test_solve_imports_neither_the_other_commands_nor_what_only_errors_need(tmp_
 
     press = str(Path(__file__).resolve().parent.parent / PRESS)
     runs = [["solve", press, "--json", "-o", str(tmp_path / "s.json")]]
-    unpaid = ("plans.cli_report", "plans.cli_check", "plans.bench", "drawing.cli_sheet",
+    unpaid = ("plans.cli.report", "plans.cli.check", "plans.cli.bench", "plans.cli.sheet",
               "difflib", "importlib.resources", "hashlib")
     assert _modules_after(tmp_path, runs, unpaid) == "[]"
 
@@ -329,7 +329,7 @@ def test_an_extreme_on_the_given_angle_is_one_turning_point(angle):
     """The central crank-slider drawn at φ1 = 0 (the textbook's first position): the
     slider's velocity is exactly 0 on the first sample of the cycle's grid. That sample
     counted as two changes of sign, so the cycle had "3 turning points" and no H, θ, K."""
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     text = SCENES["crank_slider_central"].toml.replace("angle_deg = 45", f"angle_deg = {angle}")
     mech = mechanism.from_dict(__import__("tomllib").loads(text), "<central>")
@@ -344,7 +344,7 @@ def test_an_extreme_on_the_given_angle_is_one_turning_point(angle):
 
 
 def test_a_velocity_that_touches_zero_is_no_turning_point():
-    from plans.cycle import _signs
+    from plans.cycle.analysis import _signs
 
     assert _signs(np.array([1.0, 0.0, 1.0, -1.0, 0.0, 0.0, -1.0, 0.0])).tolist() == [
         1, 1, 1, -1, -1, -1, -1, 1]
@@ -354,7 +354,7 @@ def test_a_velocity_that_touches_zero_is_no_turning_point():
 def test_a_cycle_from_an_angle_that_does_not_close_says_why(capsys, tmp_path):
     """The tangent mechanism given at φ1 = 90°, its dead point: the cycle had printed
     "assembles only for φ1 from 90° to 90°, a swing of 0°" and N empty positions."""
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     path = tmp_path / "t.toml"
     path.write_text(SCENES["tangent"].toml.replace("angle_deg = 25", "angle_deg = 90", 1), "utf-8")
@@ -409,7 +409,7 @@ def test_an_output_that_turns_fully_reads_its_angle_within_one_turn(capsys, tmp_
 
 
 def test_a_table_angle_moves_a_swing_by_whole_turns_and_keeps_it_continuous():
-    from plans.cycle import table_angle
+    from plans.cycle.analysis import table_angle
 
     swing = np.radians([-170.0, -178.0, -185.0, -190.0, -181.0])  # across ±180°
     got = np.degrees(table_angle(swing, full_turn=True))
@@ -430,7 +430,7 @@ def test_parallel_guides_end_the_cranks_range_wherever_the_samples_fall(given):
     guides turn parallel. The range was found only where one of the 3600 samples fell
     exactly there (given at 25°); given at 25.05° the cycle ran through infinity as a full
     turn, with y_C = 2.3 m at 85° and −0.43 m at 115°."""
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     toml = SCENES["tangent"].toml.replace("angle_deg = 25", f"angle_deg = {given}", 1)
     mech = mechanism.from_dict(__import__("tomllib").loads(toml))
@@ -443,7 +443,7 @@ def test_parallel_guides_end_the_cranks_range_wherever_the_samples_fall(given):
 
 
 def test_two_moving_guides_limit_the_crank_where_they_turn_parallel():
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     toml = SCENES["prp_two_moving"].toml
     got = []
@@ -465,7 +465,7 @@ def test_two_moving_guides_limit_the_crank_where_they_turn_parallel():
 def test_a_sine_is_never_above_one(capsys, tmp_path):
     """The cross product of two unit vectors as rounded reaches 1 + 4e-16: the CSV's sine
     of the oscillating slotted link read 1.0000000000000004, as did the sweep's."""
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     path = tmp_path / "s.toml"
     path.write_text(SCENES["slotted_oscillating"].toml, "utf-8")
@@ -490,7 +490,7 @@ def test_json_and_csv_never_write_a_negative_zero(capsys, tmp_path):
     """A crank-slider whose rod is as long as its crank, at 0°: ε of the rod worked out
     as −0.0, and solve --json, cycle --json and --csv wrote "epsilon": -0.0 (and -0.0 in
     its column), where the text writes 0."""
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     path = tmp_path / "s.toml"
     path.write_text(SCENES["crank_slider_central"].toml.replace("B = 0.4", "B = 0.1"), "utf-8")
@@ -504,7 +504,7 @@ def test_json_and_csv_never_write_a_negative_zero(capsys, tmp_path):
 def test_an_extreme_position_a_rounding_short_of_a_full_turn_reads_zero(capsys, tmp_path):
     """The crank-slider whose rod is as long as its crank has its extreme at 0°, found at
     359.99999999999855°: the table printed 360.00."""
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     path = tmp_path / "eq.toml"
     text = SCENES["crank_slider_central"].toml
@@ -619,7 +619,7 @@ def test_csv_converts_its_rows_a_stretch_at_a_time():
     the same, row for row."""
     import tracemalloc
 
-    from plans.cli_cycle import compute, csv_chunks
+    from plans.cli.cycle import compute, csv_chunks
 
     t = compute(mechanism.load(PRESS), 6000)
     whole = "".join(csv_chunks(t, rows=6000))

@@ -7,13 +7,13 @@ from functools import cache
 
 import pytest
 
-from drawing.cli_sheet import DIAGRAMS, build_sheet
+from plans.cli.sheet import DIAGRAMS, build_sheet
 from drawing.labels import obstacles_of, text_box
 from drawing.scene import Arrow, Polyline, Segment, Text, flatten
-from drawing.views import NUMBER_GAPS, WORDS, diagrams_view
-from plans.cycle import analyse_cycle
-from plans.scenes import SCENES
-from plans.variants import variant
+from drawing.views.views import NUMBER_GAPS, WORDS, diagrams_view
+from plans.cycle.analysis import analyse_cycle
+from plans.model.scenes import SCENES
+from plans.model.variants import variant
 
 #: the curves of these cross the φ axis at or beside a tick (v and a of a crank-slider
 #: at its middle position, ε of a rotating slotted link just under the axis from the

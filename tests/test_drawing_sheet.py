@@ -6,7 +6,7 @@ from shapely.geometry import LineString, box
 
 from drawing.labels import overlaps, text_box
 from drawing.scene import Segment, Text
-from drawing.sheet import (
+from drawing.sheet.frame import (
     FORMATS,
     Sheet,
     TitleBlock,

@@ -21,7 +21,7 @@ from drawing.scene import (
     Segment,
     Text,
 )
-from drawing.sheet import Sheet, TitleBlock, frame_scene
+from drawing.sheet.frame import Sheet, TitleBlock, frame_scene
 from drawing.styles import LineType, Style
 from drawing.svg import FONT_FILE, fmt, to_svg
 

@@ -16,7 +16,8 @@ from pathlib import Path
 import pytest
 from support import expectations, run, upright_fourbar
 
-from plans import fileformat, mechanism
+from plans.model import fileformat
+from plans.model import mechanism
 from plans.errors import (
     AssemblyError,
     InputError,
@@ -24,10 +25,10 @@ from plans.errors import (
     SingularPlanError,
     StructureError,
 )
-from plans.kinematics import Solver
-from plans.mechanism import from_dict, load
-from plans.plan import solve_position
-from plans.variants import load_table, variant, variant_numbers
+from plans.kinematics.solver import Solver
+from plans.model.mechanism import from_dict, load
+from plans.plan.solution import solve_position
+from plans.model.variants import load_table, variant, variant_numbers
 
 ROOT = Path(__file__).resolve().parent.parent
 CORPUS = ROOT / "tests" / "corpus"
@@ -78,7 +79,7 @@ def test_samples_stay_valid(path):
 
 
 def test_scenes_and_builtin_variants_stay_valid():
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     for scene in SCENES.values():
         scene.mechanism()
@@ -644,7 +645,7 @@ def test_a_hint_on_a_point_both_assemblies_share_names_one_that_parts_them(capsy
     stand in one place in both assemblies. The hint on A was "fits both … with B at
     (0, -0.3) and (0, -0.3)" or "fits neither (new point A3)": neither says what to
     write. It now names the rocker's end C and where each assembly puts it."""
-    from plans.scenes import SLOTTED_OFFSET
+    from plans.model.scenes import SLOTTED_OFFSET
 
     path = tmp_path / "slot.toml"
     path.write_text(SLOTTED_OFFSET + f"[assembly]\n{hint}\n", "utf-8")
@@ -672,7 +673,7 @@ def test_a_hint_on_a_point_both_assemblies_share_names_one_that_parts_them(capsy
 def test_a_number_with_a_unit_is_told_what_to_write_only_when_it_is_sure(value, unit, hint):
     """"12 см" in a field of metres was told "write 12 without the unit", and "1 000,5"
     "write 1": the number alone is suggested only after the field's own unit."""
-    from plans.fileformat import Problems, read_number
+    from plans.model.fileformat import Problems, read_number
 
     pr = Problems("f.toml")
     assert read_number(value, "k", pr, unit=unit) is None
@@ -705,7 +706,7 @@ def test_solve_position_refuses_scale_factors_a_file_could_not_hold(mu, message)
 def test_analyse_cycle_refuses_a_count_that_is_not_one(options, message):
     """``analyse_cycle(mech, 0)`` gave a cycle without positions, as ``plans cycle
     --positions 0`` does not; a count of 1.5 or a one-angle search failed inside numpy."""
-    from plans.cycle import analyse_cycle
+    from plans.cycle.analysis import analyse_cycle
 
     mech = load("samples/press.toml")
     with pytest.raises(InputError) as exc:

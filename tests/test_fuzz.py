@@ -25,12 +25,12 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from plans.cli import main
+from plans.cli.common import main
 from plans.errors import InputError, PlansError
-from plans.kinematics import Solver
-from plans.mechanism import Mechanism, from_dict
-from plans.plan import solve_position
-from plans.structure import DyadKind
+from plans.kinematics.solver import Solver
+from plans.model.mechanism import Mechanism, from_dict
+from plans.plan.solution import solve_position
+from plans.model.structure import DyadKind
 
 ROOT = Path(__file__).resolve().parent.parent
 SCALE = float(os.environ.get("PLANS_FUZZ_EXAMPLES", "0")) or None

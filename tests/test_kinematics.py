@@ -2,7 +2,7 @@
 
 * every scene (all five dyad kinds, the samples): the engine's positions, velocities,
   accelerations, ω and ε agree with the differentiated loop-closure reference
-  (``plans.reference``, mpmath) to 1e-10;
+  (``plans.verify.reference``, mpmath) to 1e-10;
 * closed forms: crank-slider, Scotch yoke, tangent mechanism, four-bar by the law of
   cosines, extreme positions (θ, ψ, K, H), the seed numbers of the two samples;
 * invariants: plan velocities/accelerations are derivatives of positions/velocities,
@@ -25,17 +25,17 @@ from hypothesis import strategies as st
 from support import upright_fourbar
 
 from plans.errors import InputError
-from plans.kinematics import Motion, Solver
-from plans.mechanism import Mechanism, from_dict
-from plans.reference import (
+from plans.kinematics.solver import Motion, Solver
+from plans.model.mechanism import Mechanism, from_dict
+from plans.verify.reference import (
     ReferenceArrays,
     ReferenceMotion,
     as_arrays,
     max_rel_error,
     reference,
 )
-from plans.scenes import SCENES, Scene
-from plans.structure import DyadKind, analyse
+from plans.model.scenes import SCENES, Scene
+from plans.model.structure import DyadKind, analyse
 
 TOL_REF = 1e-10  # engine vs the 30-digit reference (normwise, relative)
 H_FD = 1e-5  # rad, step of the central differences
@@ -764,7 +764,7 @@ def test_a_turned_crank_keeps_the_branch_the_hints_chose_at_the_files_angle():
 
 
 def test_a_file_angle_that_does_not_close_leaves_the_hints_to_the_angle_asked_for():
-    from plans.scenes import SAMPLES
+    from plans.model.scenes import SAMPLES
 
     text = (SAMPLES / "fourbar.toml").read_text("utf-8").replace("angle_deg = 40", "angle_deg = 180")
     mech = from_dict(tomllib.loads(text), "<fourbar at 180>")
@@ -781,7 +781,7 @@ def test_a_sweep_is_nan_where_the_mechanism_does_not_close():
     finite numbers where it does not close (C on a clipped intersection, ω of 1e17), and
     np.ptp or a max over the sweep took them for values; they are NaN now, and every
     value where it closes is as before."""
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     sv = Solver(SCENES["fourbar"].mechanism())
     phi = np.radians(np.arange(0.0, 360.0, 0.5))

@@ -1,5 +1,5 @@
 """The engine's paths agree: the recorded array solve, its one-angle scalar path and the
-blocked bulk sweep run the same group kernels (``plans/kernels.py``), so at every angle
+blocked bulk sweep run the same group kernels (``plans/kinematics/kernels.py``), so at every angle
 they must give the same numbers to rounding, and fail in the same words where a group
 does not close or a plan is singular."""
 
@@ -13,8 +13,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as hs
 
 from plans.errors import AssemblyError, SingularPlanError
-from plans.kinematics import Motion, Solver
-from plans.scenes import SCENES
+from plans.kinematics.solver import Motion, Solver
+from plans.model.scenes import SCENES
 
 ALL = sorted(SCENES)
 TOL = 1e-14  # relative to the largest value of the quantity at that angle
@@ -201,7 +201,7 @@ def test_solution_built_in_one_step_equals_the_dataclass_built():
     frozen."""
     import dataclasses
 
-    from plans.plan import Solution, solve_position
+    from plans.plan.solution import Solution, solve_position
 
     mech = SCENES["press"].mechanism()
     sol = solve_position(mech, 0.7)
@@ -222,7 +222,7 @@ def test_solution_built_in_one_step_equals_the_dataclass_built():
 def test_plan_recipe_made_once_gives_the_plans_made_afresh(name):
     """solve_position follows a recipe worked out at the first angle a solver sees; at
     every other angle its plans equal those of a solver that works the recipe out there."""
-    from plans.plan import solve_position
+    from plans.plan.solution import solve_position
 
     mech = SCENES[name].mechanism()
     shared = Solver(mech)
@@ -257,7 +257,7 @@ def test_plan_recipe_made_once_gives_the_plans_made_afresh(name):
 def test_plan_recipe_is_worked_out_again_where_a_similarity_base_degenerates():
     """A recipe whose similarity step divides by two points that have met is not
     followed blindly: the plan is worked out again there (and the result is finite)."""
-    from plans.plan import _SIMILAR, _compile, solve_position
+    from plans.plan.solution import _SIMILAR, _compile, solve_position
 
     mech = SCENES["press"].mechanism()
     sv = Solver(mech)
@@ -282,7 +282,7 @@ def test_a_compiled_recipe_shows_its_generated_line_in_a_traceback():
     import linecache
     import traceback
 
-    from plans.plan import solve_position
+    from plans.plan.solution import solve_position
 
     mech = SCENES["press"].mechanism()
     one, two = Solver(mech), Solver(mech)
@@ -302,7 +302,7 @@ def test_a_mechanism_whose_points_meet_at_some_angles_keeps_one_recipe_for_each_
     """The Scotch yoke's recipe changes where two of its points meet (at φ1 = 0); over
     angles that go back and forth between the two cases each recipe is worked out (and
     compiled) once."""
-    from plans.plan import solve_position
+    from plans.plan.solution import solve_position
 
     mech = SCENES["scotch_yoke"].mechanism()
     sv = Solver(mech)
@@ -362,7 +362,7 @@ def test_one_angle_that_is_no_number_is_a_value_error(phi):
 def test_the_sweep_gives_each_slotted_links_pivot_figure_as_the_cycle_does(name):
     """|QP| / (|OQ| + |OP|): the figure under which ``plans cycle`` refuses a block on the
     rocker's pivot, where the lines' sine stays 1; the sweep had only the sine."""
-    from plans.cli_cycle import conditioning
+    from plans.cli.cycle import conditioning
 
     mech = SCENES[name].mechanism()
     sv = Solver(mech)

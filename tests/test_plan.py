@@ -5,9 +5,9 @@ import math
 import numpy as np
 import pytest
 
-from plans.mechanism import load
-from plans.plan import solve_position
-from plans.variants import variant
+from plans.model.mechanism import load
+from plans.plan.solution import solve_position
+from plans.model.variants import variant
 
 
 @pytest.fixture(scope="module")
@@ -144,7 +144,7 @@ def test_sliding_groups_write_each_side_of_their_equations_as_on_paper(name, vel
     ("; V_C ∥ y-y", not the circular "= V_C(∥ y-y)"); a side along a turning link's guide
     starts at the coincident point and carries the Coriolis term; a block in a yoke that
     only translates has none."""
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     sol = solve_position(SCENES[name].mechanism())
     got = {p.source.equation for plan in (sol.velocity, sol.acceleration)
@@ -160,7 +160,7 @@ def test_sliding_groups_write_each_side_of_their_equations_as_on_paper(name, vel
 def _yoke_and_rocker() -> str:
     """The built-in Scotch yoke with a rocker FG whose block G slides in a second slot of
     the yoke."""
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     text = SCENES["scotch_yoke"].toml
     assert "[frame]\nO = [0.0, 0.0]\n" in text
@@ -186,8 +186,8 @@ def test_a_guide_on_a_link_that_only_translates_has_no_coriolis_term():
 
     import numpy as np
 
-    from plans.kinematics import Solver
-    from plans.mechanism import from_dict
+    from plans.kinematics.solver import Solver
+    from plans.model.mechanism import from_dict
 
     mech = from_dict(tomllib.loads(_yoke_and_rocker()), "yoke_rocker")
     assert mech.translating() == {0, 2, 3, 5}  # the yoke and the blocks in its slots
@@ -218,7 +218,7 @@ def test_a_guide_on_a_link_that_only_translates_has_no_coriolis_term():
 def test_the_unknown_along_a_fixed_guide_is_the_points_own_acceleration(name, point, unknowns):
     """Along a fixed guide the unknown is the point's own a_C (as the equation writes
     it), not a relative a^r_C."""
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     sol = solve_position(SCENES[name].mechanism())
     assert [ln.unknown for ln in sol.acceleration.points[point].source.lines] == unknowns
@@ -230,8 +230,8 @@ def test_a_segment_that_is_zero_reads_zero_not_rounding(deg):
     acceleration −ω²·OA points along the guide, so its share along the slot, a^r_A3A, is
     0. It was printed as 4.4e-16 m/s² (two equal vectors subtracted); every reader of the
     plan now gets 0. At 230° the same segment is the exact decomposition."""
-    from plans.report import note
-    from plans.scenes import SCENES
+    from plans.note.report import note
+    from plans.model.scenes import SCENES
 
     mech = SCENES["yoke_inclined"].mechanism()
     sol = solve_position(mech, math.radians(deg))
@@ -254,7 +254,7 @@ def test_a_real_small_segment_is_not_taken_for_rounding():
     """1e-4° from the press's extreme position V_A3B is 5e-6 m/s and a^n_A3B = V²/l is
     6.6e-11 m/s²: tiny but real, not two equal vectors subtracted. The plan keeps it, so
     the note's a^n and its segment bn1 agree."""
-    from plans.mechanism import load
+    from plans.model.mechanism import load
 
     mech = load("samples/press.toml").at_file_angle(250.06763)
     sol = solve_position(mech)
@@ -268,9 +268,9 @@ def test_a_rocker_at_rest_has_no_velocity_left_on_its_plan():
     """Variant 3 at its cycle's position 0, an extreme position: the rocker is at rest,
     and pc, dc had read 1.599e-12 mm on the sheet's table (1.2e-14 of the plan's longest
     vector, just above the 1e-14 rounding was taken to reach)."""
-    from plans.cycle import analyse_cycle
-    from plans.kinematics import Solver
-    from plans.variants import variant
+    from plans.cycle.analysis import analyse_cycle
+    from plans.kinematics.solver import Solver
+    from plans.model.variants import variant
 
     mech = variant(3)
     solver = Solver(mech)
@@ -306,8 +306,8 @@ def test_every_similarity_point_lies_on_a_side_of_its_links_image(scene):
     sides of the link's triangle (the crank-rocker's e and f): both ends of the
     triangle's sides are a base and the point itself. A link that translates (the Scotch
     yoke's) is one point on the plan, and has no image to draw."""
-    from plans.plan import image_sides
-    from plans.scenes import SCENES
+    from plans.plan.solution import image_sides
+    from plans.model.scenes import SCENES
 
     sol = solve_position(SCENES[scene].mechanism())
     for plan in (sol.velocity, sol.acceleration):
@@ -340,8 +340,8 @@ def test_every_value_read_off_a_plan_stands_under_its_heading(lang):
     group's points get: the note read as if the value were a second similarity step."""
     import re
 
-    from plans.report import T, note
-    from plans.variants import variant
+    from plans.note.report import T, note
+    from plans.model.variants import variant
 
     for n in (3, 4):
         text = note(solve_position(variant(n)), lang)
@@ -387,7 +387,7 @@ def test_one_position_refuses_what_is_not_one_angle_in_its_own_words(phi, error,
     """An array of angles given to solve_position or solve_one was numpy's "only
     0-dimensional arrays can be converted to Python scalars", a complex angle float()'s
     words: each now says what is wanted, and where many angles go."""
-    from plans.kinematics import Solver
+    from plans.kinematics.solver import Solver
 
     mech = load("samples/press.toml")
     for solve in (lambda: solve_position(mech, phi), lambda: Solver(mech).solve_one(phi)):
@@ -400,8 +400,8 @@ def test_one_position_refuses_what_is_not_one_angle_in_its_own_words(phi, error,
 def test_a_file_name_given_for_a_mechanism_is_told_to_be_loaded():
     """Solver("press.toml") and solve_position("press.toml") were AttributeError: 'str'
     object has no attribute 'revolutes', from deep in the structure analysis."""
-    from plans.cycle import analyse_cycle
-    from plans.kinematics import Solver
+    from plans.cycle.analysis import analyse_cycle
+    from plans.kinematics.solver import Solver
 
     for call in (Solver, solve_position, analyse_cycle):
         with pytest.raises(TypeError, match=r"^a mechanism \(plans\.load, plans\.from_dict\) is "

@@ -14,14 +14,14 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from drawing.cli_sheet import build_sheet
+from plans.cli.sheet import build_sheet
 from drawing.labels import overlaps, text_box
-from drawing.layout import share_covered
+from drawing.sheet.layout import share_covered
 from drawing.scene import Text
 from drawing.svg import to_svg
-from plans.mechanism import load
-from plans.scenes import SCENES
-from plans.variants import variant, variant_numbers
+from plans.model.mechanism import load
+from plans.model.scenes import SCENES
+from plans.model.variants import variant, variant_numbers
 
 ROOT = Path(__file__).resolve().parent.parent
 NS = "{http://www.w3.org/2000/svg}"
@@ -151,7 +151,7 @@ def test_cli_stdout_and_batch(tmp_path):
 def test_png_without_cairosvg_is_a_setup_error_and_writes_nothing(tmp_path, monkeypatch, capsys):
     import sys
 
-    from plans.cli import main
+    from plans.cli.common import main
 
     monkeypatch.setitem(sys.modules, "cairosvg", None)  # as if it were not installed
     svg, png = tmp_path / "s.svg", tmp_path / "s.png"
@@ -187,8 +187,8 @@ def test_sheet_scales_fill_the_sheet_where_the_file_leaves_them_free():
 def test_only_a_sheet_left_empty_by_the_files_own_scales_gets_a_note():
     """The press at its fixed scales fills a fifth of A1 (noted) and half of A2 (not);
     sheets whose scales the tool chose are not noted, however they fill the field."""
-    from drawing.cli_sheet import SPARSE, sparse_note
-    from drawing.layout import share_used
+    from plans.cli.sheet import SPARSE, sparse_note
+    from drawing.sheet.layout import share_used
 
     mech, _, sheet, info, _ = _sheet("press")
     assert 0.15 < share_used(sheet, info["placed"]) < SPARSE
@@ -232,7 +232,7 @@ def test_no_text_sits_on_a_vector_arrow(key):
 def test_a_rockers_swing_is_dimensioned_on_the_plan_of_positions():
     """A crank-rocker's plan of positions carries ψ between the two extreme positions of
     the rocker, with the value the cycle computes; a slider's carries H instead."""
-    from plans.cycle import analyse_cycle
+    from plans.cycle.analysis import analyse_cycle
 
     rockers = [n for n in variant_numbers() if n % 2]  # odd variants are four-bars
     checked = 0
@@ -265,7 +265,7 @@ def test_the_value_of_the_swing_breaks_the_thin_lines_under_it(scene):
     from drawing.labels import obstacles_of, text_box
     from drawing.scene import Blank, Polyline, Segment, flatten
     from drawing.styles import LineType
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     scene_, *_ = build_sheet(SCENES[scene].mechanism(), "A1", "ru", 12, None)
     view = next(g for g in scene_.layer("views").items if g.name == "view positions")
@@ -301,7 +301,7 @@ def test_swing_arc_runs_from_one_extreme_arm_to_the_other():
     import cmath
 
     from drawing.scene import Arrow, Polyline
-    from drawing.views import _SWING_R, _swing_arc
+    from drawing.views.views import _SWING_R, _swing_arc
 
     pivot, a, b = 0.1 + 0.2j, 0.1 + 0.2j + 0.3 * cmath.exp(0.4j), 0.1 + 0.2j + 0.25 * cmath.exp(1.9j)
     mu = 0.002
@@ -323,9 +323,9 @@ def test_trajectories_span_the_positions_drawn_when_the_crank_cannot_turn():
     trajectories must cover every position drawn, not stop at the file's angle."""
     import numpy as np
 
-    from plans.cycle import analyse_cycle
-    from plans.kinematics import Solver
-    from plans.positions import trajectory_angles
+    from plans.cycle.analysis import analyse_cycle
+    from plans.kinematics.solver import Solver
+    from plans.cycle.positions import trajectory_angles
 
     mech = _mech("fourbar")
     solver = Solver(mech)
@@ -346,7 +346,7 @@ def test_trajectories_span_the_positions_drawn_when_the_crank_cannot_turn():
 
 def test_batch_takes_the_variants_of_the_table_given(tmp_path):
     """--variant all with --table draws that table's rows, not the built-in table's."""
-    from plans.cli import main
+    from plans.cli.common import main
 
     table = tmp_path / "t.toml"
     table.write_text("[[variant]]\nn = 6\nAB = 0.05\nBC = 0.15\nphi_deg = 15\nrpm = 100\n",
@@ -358,7 +358,7 @@ def test_batch_takes_the_variants_of_the_table_given(tmp_path):
 
 def test_the_angle_asked_for_is_the_angle_the_titles_give(tmp_path):
     """sheet --angle 20 draws the plans at 20° in the file's convention, and says so."""
-    from plans.cli import main
+    from plans.cli.common import main
 
     out = tmp_path / "a.svg"
     assert main(["sheet", "samples/fourbar.toml", "--angle", "20", "-o", str(out)]) == 0
@@ -376,11 +376,11 @@ def test_a_scotch_yokes_slot_is_drawn_across_its_axis_and_its_block_slides_along
     a dot, not a bar."""
     import numpy as np
 
-    from drawing import views as V
-    from plans.cycle import analyse_cycle
-    from plans.kinematics import Solver
-    from plans.plan import solve_position
-    from plans.scenes import SCENES
+    from drawing.views import views as V
+    from plans.cycle.analysis import analyse_cycle
+    from plans.kinematics.solver import Solver
+    from plans.plan.solution import solve_position
+    from plans.model.scenes import SCENES
 
     mech = SCENES["scotch_yoke"].mechanism()
     solver = Solver(mech)
@@ -426,8 +426,8 @@ def test_positions_where_a_slider_runs_off_to_infinity_are_left_off_and_said_so(
     """The tangent mechanism's crank range ends where its slider runs off to infinity
     (C at 114 m at φ1 = ±89.9°): those positions are not drawn, the view says which, and
     the sheet's μl is chosen for the rest (not 1 m/mm for a speck)."""
-    from drawing.cli_sheet import build_sheet
-    from plans.scenes import SCENES
+    from plans.cli.sheet import build_sheet
+    from plans.model.scenes import SCENES
 
     mech = SCENES["tangent"].mechanism()
     _, sheet, info = build_sheet(mech, "A2", "en")
@@ -448,12 +448,12 @@ def test_the_plan_of_positions_is_sized_by_what_it_draws(name, low, high):
     positions drawn does not shrink the drawing. solve and the sheet use one rule."""
     import numpy as np
 
-    from plans.cycle import analyse_cycle
-    from plans.kinematics import Solver
-    from plans.plan import cycle_extent, solve_position
-    from plans.positions import drawn
+    from plans.cycle.analysis import analyse_cycle
+    from plans.kinematics.solver import Solver
+    from plans.plan.solution import cycle_extent, solve_position
+    from plans.cycle.positions import drawn
     from plans.scales import choose_mu_l
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     mech = SCENES[name].mechanism()
     solver = Solver(mech)
@@ -471,8 +471,8 @@ def test_solve_sizes_the_tangent_mechanism_as_the_sheet_does(capsys):
     """The tangent mechanism's slider runs off towards infinity near φ1 = ±90°: solve
     and report chose μl = 0.04 m/mm from every angle of the turn, a crank of 2.5 mm. They
     now leave those positions off as the sheet does."""
-    from plans.plan import solve_position
-    from plans.scenes import SCENES
+    from plans.plan.solution import solve_position
+    from plans.model.scenes import SCENES
 
     sol = solve_position(SCENES["tangent"].mechanism())
     crank_mm = sol.mechanism.driver.length / sol.mu_l
@@ -483,9 +483,9 @@ def _drawn_at(name_or_mech, angles=None):
     """(mech, positions at the cycle's angles and at the given one) of a built-in scene."""
     import numpy as np
 
-    from plans.cycle import analyse_cycle
-    from plans.kinematics import Solver
-    from plans.scenes import SCENES
+    from plans.cycle.analysis import analyse_cycle
+    from plans.kinematics.solver import Solver
+    from plans.model.scenes import SCENES
 
     mech = SCENES[name_or_mech].mechanism() if isinstance(name_or_mech, str) else name_or_mech
     solver = Solver(mech)
@@ -500,7 +500,7 @@ def test_a_block_past_the_end_of_its_links_bar_is_joined_to_it():
     """The tangent mechanism's block C slides on the crank's line beyond A: the guide is
     drawn from the bar's end A out past C, at every position; where the block is on the
     bar (the press's A3 on BC) nothing is added."""
-    from drawing import views as V
+    from drawing.views import views as V
 
     mech, drawn = _drawn_at("tangent")
     slots = V._slots(mech, drawn)
@@ -520,9 +520,9 @@ def test_a_point_named_like_a_centre_of_mass_but_carrying_a_pair_stays_on_the_ba
     bar S4–E is drawn; S3 off the axis is only a dot."""
     import tomllib
 
-    from drawing import views as V
-    from plans.mechanism import from_dict
-    from plans.scenes import SCENES
+    from drawing.views import views as V
+    from plans.model.mechanism import from_dict
+    from plans.model.scenes import SCENES
 
     text = SCENES["scotch_yoke"].toml.replace('"D"', '"S4"')
     mech = from_dict(tomllib.loads(text), "yoke_S4")
@@ -534,9 +534,9 @@ def test_a_point_named_like_a_centre_of_mass_but_carrying_a_pair_stays_on_the_ba
 
 
 def test_a_plan_no_sheet_can_hold_points_to_the_plans_option():
-    from drawing.layout import LayoutError, place_views
-    from drawing.sheet import Sheet
-    from drawing.views import View
+    from drawing.sheet.layout import LayoutError, place_views
+    from drawing.sheet.frame import Sheet
+    from drawing.views.views import View
 
     for name, option in (("positions", ""), ("acceleration-1", "--plans")):
         with pytest.raises(LayoutError) as info:
@@ -571,7 +571,7 @@ def test_a_russian_sheet_names_and_measures_in_russian():
 
 
 def test_a_gost_scale_has_a_decimal_comma_on_a_russian_sheet():
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     # a sheet whose μl the sheet chooses as 1:2.5 (the yoke on A1 was, before each scale
     # factor was chosen on its own: it is now 1:2)
@@ -593,7 +593,7 @@ def test_the_sheets_note_states_the_sheets_scales_for_each_plan(capsys, tmp_path
     """plans sheet --note writes the explanatory note of the positions the sheet draws
     plans for, at the sheet's own scale factors: the note and the sheet a student hands in
     cannot disagree. plans report alone chooses μ for a 150 mm drawing and may differ."""
-    from plans.cli import main
+    from plans.cli.common import main
 
     svg, md = tmp_path / "v3.svg", tmp_path / "v3.md"
     assert main(["sheet", "--variant", "3", "-o", str(svg), "--note", str(md), "--plans", "1,4"]) == 0
@@ -646,7 +646,7 @@ def test_the_stroke_stands_beside_its_extension_lines_when_it_has_no_room_betwee
     from drawing.labels import text_box
     from drawing.scene import Segment, flatten
     from drawing.styles import LineType
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     scene, *_ = build_sheet(SCENES["crank_slider_central"].mechanism(), "A3", "ru")
     view = next(g for g in scene.layer("views").items if g.name == "view positions")
@@ -661,7 +661,7 @@ def test_the_notes_plan_of_positions_is_the_heavy_one(tmp_path):
     """The note's section 2 describes the position the sheet draws heavy. With --plans 1,4
     that is positions 1 and 4 (BA3 = 48,91 mm at 1), no longer the file's own position
     (BA3 = 57,48 mm), which the sheet then leaves out; and the note says which are heavy."""
-    from plans.cli import main
+    from plans.cli.common import main
 
     md = tmp_path / "p.md"
     assert main(["sheet", str(ROOT / "samples" / "press.toml"), "--plans", "1,4", "-o",
@@ -695,7 +695,7 @@ def test_the_notes_plan_of_positions_gives_the_segments_of_each_position_drawn(t
     that the note never gave. Section 2 now says which position its segments are of (the
     first position of the plans, drawn heavy with the others) and gives those that change
     at each of the others."""
-    from plans.cli import main
+    from plans.cli.common import main
 
     md = tmp_path / "p.md"
     assert main(["sheet", str(ROOT / "samples" / "press.toml"), "--plans", "1,4", "-o",
@@ -721,8 +721,8 @@ def test_the_stroke_is_dimensioned_along_its_guide_at_its_true_length(scene):
 
     from drawing.labels import text_box
     from drawing.scene import Arrow, flatten
-    from plans.cycle import analyse_cycle
-    from plans.scenes import SCENES
+    from plans.cycle.analysis import analyse_cycle
+    from plans.model.scenes import SCENES
 
     mech = SCENES[scene].mechanism()
     scene_, _, info = build_sheet(mech, "A1", "ru")
@@ -756,9 +756,9 @@ def test_an_output_link_that_turns_all_the_way_gets_its_diagrams():
     """The rotating slotted link has no stroke, and its sheet said «Диаграммы не строятся:
     нет хода выходного звена». ψ(φ), ω(φ), ε(φ) are drawn; ψ grows by one full turn."""
     from drawing.scene import Polyline, Segment
-    from drawing.views import diagrams_view
-    from plans.cycle import analyse_cycle
-    from plans.scenes import SCENES
+    from drawing.views.views import diagrams_view
+    from plans.cycle.analysis import analyse_cycle
+    from plans.model.scenes import SCENES
 
     mech = SCENES["slotted_rotating"].mechanism()
     cycle = analyse_cycle(mech)
@@ -792,7 +792,7 @@ def _boxes_clear(sheet, placed):
     """Each view's box inside the free field, and clear of every other view's."""
     from shapely.geometry import box
 
-    from drawing.layout import GAP
+    from drawing.sheet.layout import GAP
 
     boxes = [box(*p.rect.bounds) for p in placed]
     area = sheet.drawing_area()
@@ -879,8 +879,8 @@ def test_a_pair_that_does_not_fit_together_is_packed_as_without_pairs():
     """A pair kept together never costs a view its place: a tall narrow partner cannot
     go right beside (it would meet the title block) or under a wide box, but both fit
     apart; pack then packs them as it did without pairs."""
-    from drawing.layout import pack
-    from drawing.sheet import Sheet
+    from drawing.sheet.layout import pack
+    from drawing.sheet.frame import Sheet
 
     sheet = Sheet("A2")
     sizes = [(400.0, 190.0), (150.0, 380.0)]
@@ -898,7 +898,7 @@ def test_the_orders_of_the_pairs_search_are_those_it_filtered_from_all(case):
     very same orders in the very same sequence, or a sheet would change."""
     from itertools import permutations
 
-    from drawing.layout import _in_order
+    from drawing.sheet.layout import _in_order
 
     n, rank = case
     want = [p for p in permutations(range(n))
@@ -912,8 +912,8 @@ def test_pairs_are_packed_together_in_their_order():
     acceleration plan is packed above its velocity plan and both before position 2's
     plans; with them each velocity plan has its acceleration plan right of it or under
     it, position 2's first."""
-    from drawing.layout import pack
-    from drawing.sheet import Sheet
+    from drawing.sheet.layout import pack
+    from drawing.sheet.frame import Sheet
 
     sheet = Sheet("A2")
     sizes = [(155.0, 137.0), (143.0, 98.0), (144.0, 59.0), (146.0, 171.0), (269.0, 116.0),
@@ -951,7 +951,7 @@ def test_every_title_on_a_sheet_is_one_size(key, fmt, lang, plans, size, broken,
     sheet. A sheet's titles now have one size: 5 mm, a long one broken before its scale
     factor, where the views so titled still fit at the scales chosen; else 3.5 mm. The
     second line stands under the first, over everything else of its view."""
-    from drawing.views import WORDS, _bbox
+    from drawing.views.views import WORDS, _bbox
 
     _, scene, sheet, info, _ = _sheet(key, fmt, lang, plans)
     w = WORDS[lang]
@@ -995,7 +995,7 @@ def test_plans_of_two_positions_are_drawn_large_on_a2(name):
     """With --plans 2,7 on A2 the sheet shrank every view together: the yoke's plans had a
     30 mm crank vector, its plan of positions a 15 mm crank. The plans' factors are now
     chosen for every position drawn and packed beside each other."""
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     mech = SCENES[name].mechanism()
     _, sheet, info = build_sheet(mech, "A2", "ru", 12, [2, 7])
@@ -1054,7 +1054,7 @@ def test_two_positions_on_a3_are_refused_rather_than_drawn_unreadably_small(caps
     as A4 is, naming A2, where every view is at least that large."""
     from support import run
 
-    from plans.plan import plan_name
+    from plans.plan.solution import plan_name
 
     out, png = tmp_path / "s.svg", tmp_path / "s.png"
     code, _, err = run(capsys, "sheet", "--variant", "6", "--format", "A3", "--plans", "2,8",
@@ -1119,7 +1119,7 @@ def test_a_title_block_entry_is_never_dropped_nor_shrunk_below_1_8_mm(capsys, tm
     fitted (1.5 s of a sheet, paid for every variant of --variant all)."""
     from support import run
 
-    from drawing import cli_sheet
+    from plans.cli import sheet as cli_sheet
 
     def no_fit(self, suggest=True):
         raise AssertionError("the views were fitted before the title block was checked")
@@ -1143,7 +1143,7 @@ def test_a_link_of_three_points_not_in_line_is_drawn_as_a_triangle():
     """The coupler AB with its point E was drawn as the bars AB and AE, the rocker DB with
     its point F as DB and DF: the closing sides BE and BF were missing. A point on the
     link's axis still makes no triangle."""
-    from drawing import views as V
+    from drawing.views import views as V
 
     mech, (*_, pos) = _drawn_at("crank_rocker")
 
@@ -1201,7 +1201,7 @@ F = "below E"
 def _plan_letters(monkeypatch, build) -> list[tuple]:
     """(requests, obstacles, soft lines, placements) of each call of ``place_labels`` that
     places a plan's letters, while ``build()`` draws a sheet."""
-    from drawing import views as V
+    from drawing.views import views as V
 
     calls = []
     real = V.place_labels
@@ -1331,11 +1331,11 @@ def test_the_angular_diagrams_say_which_sense_is_positive(name, tmp_path):
     and ω read off the diagram with it has the sign of ω in the table."""
     import numpy as np
 
-    from drawing.views import WORDS, diagram_curves, diagrams_view
-    from plans.cycle import analyse_cycle
-    from plans.kinematics import Solver
-    from plans.plan import solve_position
-    from plans.scenes import SCENES
+    from drawing.views.views import WORDS, diagram_curves, diagrams_view
+    from plans.cycle.analysis import analyse_cycle
+    from plans.kinematics.solver import Solver
+    from plans.plan.solution import solve_position
+    from plans.model.scenes import SCENES
 
     if name == "cr4":
         path = tmp_path / "cr4.toml"
@@ -1370,7 +1370,7 @@ def test_the_three_angular_axes_set_their_sense_one_space_after_the_unit(lang):
     """The ε axis read «ε, рад/с²  (+ против ч.с.)», two spaces where ψ and ω had one: the
     sense was a text of its own, set after an estimate of the name's width, which "²"
     overstated. Each axis is now one text, built by one formula."""
-    from drawing.views import WORDS
+    from drawing.views.views import WORDS
 
     _, texts = _texts(_sheet(3, "A2", lang)[4])
     w = WORDS[lang]
@@ -1412,7 +1412,7 @@ def test_views_at_free_scales_are_spread_to_the_fields_edges(key):
     from the field's top and left edges by as much as keeps them inside: so one view ends
     at the field's bottom (or on the title block) and one at its right edge, none resized
     and none overlapping."""
-    from drawing.layout import field
+    from drawing.sheet.layout import field
 
     mech, _, sheet, info, _ = _sheet(key)
     assert not mech.scales
@@ -1431,7 +1431,7 @@ def test_a_tall_segments_table_is_set_in_two_halves_where_the_sheet_needs_it():
     beside the plans: there its rows are set in two halves side by side, each with its
     head, every row once; on A1 it is one table."""
     from drawing.scene import Text
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     def texts(items):
         for it in items:
@@ -1461,8 +1461,8 @@ def test_points_found_by_similarity_lie_on_the_links_image_drawn(kind):
 
     from drawing.scene import Circle, Segment, flatten
     from drawing.styles import LineType
-    from drawing.views import plan_view
-    from plans.plan import solve_position
+    from drawing.views.views import plan_view
+    from plans.plan.solution import solve_position
 
     sol = solve_position(variant(1))
     plan = getattr(sol, kind)
@@ -1481,7 +1481,7 @@ def test_positions_whose_segments_are_those_above_are_named_in_one_sentence(tmp_
     отрезков те же», once per position; it now says it once, of both. (The segments are
     given at the first position of the plans, drawn heavy with the others: with --plans
     1,4,7 the sentence names 4 and 7.)"""
-    from plans.cli import main
+    from plans.cli.common import main
 
     md = tmp_path / "v2.md"
     assert main(["sheet", "--variant", "2", "-o", str(tmp_path / "v2.svg"), "--note", str(md),
@@ -1497,7 +1497,7 @@ def _positions_drawn(key, plans=None, fmt="A1", lang="ru"):
     """(mech, info, heavy line ends, joints, blocks' centres, (text, its box's centre)) of
     a sheet's plan of positions, every point in the world's sheet mm (views._sheet at the
     sheet's μl): the view's own offset is read off the first fixed pivot's support."""
-    from drawing import views as V
+    from drawing.views import views as V
     from drawing.scene import Circle, Polyline, Segment, flatten
     from drawing.styles import LineType
 
@@ -1526,7 +1526,7 @@ def _positions_drawn(key, plans=None, fmt="A1", lang="ru"):
 
 def _at(xy, pos, mu_l, names=None, tol=1e-6) -> bool:
     """``xy`` (sheet mm) is a point of the position ``pos``."""
-    from drawing import views as V
+    from drawing.views import views as V
 
     return any(math.dist(xy, V._sheet(pos[n], mu_l)) < tol for n in (names or pos))
 
@@ -1558,7 +1558,7 @@ def test_the_positions_of_the_plans_are_drawn_heavy_not_the_given_one(key):
         assert len(blocks) == 2
         assert all(any(_at(b, at[k], mu_l, [s.point]) for b in blocks) for k in ("1", "4"))
     # the points are lettered once, on position 1: the tip's letter by its tip there
-    from drawing import views as V
+    from drawing.views import views as V
 
     (centre,) = (c for t, c in texts if t == tip)
     assert math.dist(centre, V._sheet(at["1"][tip], mu_l)) < 10.0
@@ -1619,8 +1619,8 @@ def test_the_sheets_equations_write_the_tangential_component_as_its_language_doe
     """On a Russian sheet the acceleration plan's equation and the segments' table read
     a^τ_CB, as Russian textbooks write it; on an English one a^t_CB."""
     from drawing.scene import flatten
-    from drawing.views import plan_view
-    from plans.plan import solve_position
+    from drawing.views.views import plan_view
+    from plans.plan.solution import solve_position
 
     sol = solve_position(variant(1))
     texts = [it.text for it in flatten(plan_view(sol, "acceleration", "1", lang).items)
@@ -1634,8 +1634,8 @@ def test_the_diagrams_axes_name_the_output_point_or_link():
     """The axes read «s, м», «ω, рад/с»: whose? The note and the tables say ω3 and V_D,
     and a sheet has ω of several links. They now read s_D, v_D, a_D of the slider's
     point, ψ3, ω3, ε3 of the rocker."""
-    from drawing.views import diagrams_view
-    from plans.cycle import analyse_cycle
+    from drawing.views.views import diagrams_view
+    from plans.cycle.analysis import analyse_cycle
 
     for mech, names in ((load("samples/press.toml"), ("s_{D}, м", "v_{D}, м/с", "a_{D}, м/с²")),
                         (variant(3), ("ψ_{3}, рад", "ω_{3}, рад/с", "ε_{3}, рад/с²"))):

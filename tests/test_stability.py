@@ -20,12 +20,12 @@ import tomllib
 import numpy as np
 import pytest
 
-from plans import reference
-from plans.cli_cycle import compute, conditioning
-from plans.cycle import analyse_cycle, summary
-from plans.kinematics import WARN_SINE, Solver
-from plans.mechanism import from_dict, load
-from plans.scenes import SAMPLES, SCENES
+from plans.verify import reference
+from plans.cli.cycle import compute, conditioning
+from plans.cycle.analysis import analyse_cycle, summary
+from plans.kinematics.solver import WARN_SINE, Solver
+from plans.model.mechanism import from_dict, load
+from plans.model.scenes import SAMPLES, SCENES
 
 EPS = np.finfo(float).eps
 C = 32.0  # the "small multiple"
@@ -266,8 +266,8 @@ def test_one_position_with_the_block_on_the_pivot_is_refused_and_near_it_warned(
     pivot figure sees it. Now that position is an error and the ones near it warn, in
     the note's language too."""
     from plans.errors import SingularPlanError
-    from plans.plan import solve_position
-    from plans.report import warnings as note_warnings
+    from plans.plan.solution import solve_position
+    from plans.note.report import warnings as note_warnings
 
     R = 0.1
     mech = mech_of(slotted(R, R))
@@ -428,7 +428,7 @@ def test_a_warning_says_how_far_off_the_plans_may_be_where_digits_are_lost(tmp_p
     the digits printed are right (sin = 1.1e-5), it says nothing more."""
     from support import NON_GRASHOF
 
-    from plans.plan import solve_position
+    from plans.plan.solution import solve_position
 
     path = tmp_path / "ng.toml"
     path.write_text(NON_GRASHOF.format(angle=60), encoding="utf-8")

@@ -5,9 +5,9 @@ from pathlib import Path
 import pytest
 
 from plans.errors import StructureError
-from plans.mechanism import from_dict, load
-from plans.structure import DyadKind, analyse
-from plans.variants import variant
+from plans.model.mechanism import from_dict, load
+from plans.model.structure import DyadKind, analyse
+from plans.model.variants import variant
 
 
 def test_press_structure_matches_seed_000():
@@ -157,7 +157,7 @@ def test_two_slots_of_one_link_in_two_directions_get_two_names():
     were 'x3-x3' in two directions; the second is now x3′-x3′."""
     import tomllib
 
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     text = SCENES["yoke_on_rocker"].toml.replace("guide = { link = 3 }",
                                                   "guide = { link = 3, offset = 0.02, angle_deg = 5 }")
@@ -169,7 +169,7 @@ def test_two_slots_of_one_link_in_two_directions_get_two_names():
 def test_an_unlabelled_slot_does_not_take_the_name_the_file_gave_another():
     import tomllib
 
-    from plans.scenes import SCENES
+    from plans.model.scenes import SCENES
 
     text = SCENES["yoke_on_rocker"].toml.replace(
         "guide = { link = 3 }", 'guide = { link = 3, offset = 0.02, angle_deg = 5, label = "x3-x3" }')

@@ -1,0 +1,2 @@
+"""The sheet: GOST frame and title block, the views' layout and the fit of scale factors."""
+

@@ -1,0 +1,36 @@
+"""The views of a sheet, each built in its own box of sheet millimetres."""
+
+from .views import (  # noqa: F401
+    BLANK_PAD,
+    CAPTION,
+    CAPTION_OVER,
+    CAPTION_STYLES,
+    HEAD,
+    JOINT_R,
+    LETTER,
+    NUMBERS_APART,
+    NUMBER_BESIDE,
+    NUMBER_CLEAR,
+    NUMBER_GAPS,
+    PAD,
+    PART_GAP,
+    SHARED,
+    SMALL_CAPTION,
+    View,
+    WORDS,
+    caption_lines,
+    caption_texts,
+    captioned_width,
+    centred,
+    diagram_curves,
+    diagrams_view,
+    notation,
+    note_view,
+    omega_table_view,
+    plan_view,
+    positions_view,
+    retitled,
+    segments_table_view,
+)
+
+__all__ = ['BLANK_PAD', 'CAPTION', 'CAPTION_OVER', 'CAPTION_STYLES', 'HEAD', 'JOINT_R', 'LETTER', 'NUMBERS_APART', 'NUMBER_BESIDE', 'NUMBER_CLEAR', 'NUMBER_GAPS', 'PAD', 'PART_GAP', 'SHARED', 'SMALL_CAPTION', 'View', 'WORDS', 'caption_lines', 'caption_texts', 'captioned_width', 'centred', 'diagram_curves', 'diagrams_view', 'notation', 'note_view', 'omega_table_view', 'plan_view', 'positions_view', 'retitled', 'segments_table_view']

@@ -1,0 +1,2 @@
+"""Cam mechanisms: to come; needs only the ground and the model."""
+

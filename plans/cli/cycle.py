@@ -1,0 +1,649 @@
+"""``plans cycle``: every point and link over N crank positions of the cycle.
+
+The positions are numbered from an extreme position of the output, as the course numbers
+them (``plans.cycle.analyse_cycle``): position 0 starts the working (slower) stroke. For a
+linkage whose crank cannot make a full turn, the N positions span the crank range where it
+assembles.
+
+Each position carries its conditioning: for every group the sine of the angle between the
+two lines the plans intersect (``Construction.sine``; 1 = perpendicular, 0 = parallel, a
+dead point or toggle), and for a slotted link (RPR) also how far the block is from the
+rocker's pivot relative to the loop (|QP| / (|OQ| + |OP|), O the crank's pivot): near 0
+the rocker's ω = V / |QP| loses its digits. A figure below ``WARN_SINE`` (≈ 2°) makes a
+warning, below ``SINGULAR_SINE`` (or a group that does not close) an error: the values of
+that position are then left out (``—`` in the table, empty in CSV, null in JSON; its
+coordinates are given where its positions stand, ``placed``) and the command exits with
+status 2 after writing everything else.
+
+A position on a change point (a parallelogram at 0° and 180°) is no error: the positions
+stand there, only its plans are singular. So is one beside a change point whose figure is
+under ``CHANGE_SINE`` (1e-3), where the acceleration plan would lose its digits as
+1/sin³. Its row gives the positions, leaves the velocities and accelerations out, and
+says why ("singular"); the command still exits with status 0.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass
+
+from plans.cli.common import (
+    EXIT_INPUT,
+    EXIT_OK,
+    add_source,
+    angle_field,
+    mechanism_from,
+    number,
+    warn,
+    write_output,
+)
+from plans.fmt import from_x, num
+
+#: a table for reading or a file for a spreadsheet: 10⁵ rows of the press are 270 MB of
+#: JSON; for more angles, Solver.sweep works on arrays (README, "Whole cycle")
+MAX_POSITIONS = 100_000
+
+
+def configure(p) -> None:
+    add_source(p)
+    p.add_argument(
+        "--positions",
+        type=number(1, MAX_POSITIONS, integer=True),
+        default=12,
+        metavar="N",
+        help="number of crank positions (default 12), numbered from an extreme position",
+    )
+    fmt = p.add_mutually_exclusive_group()
+    fmt.add_argument(
+        "--csv", action="store_true", help="one row per position (SI units)"
+    )
+    fmt.add_argument(
+        "--json", action="store_true", help="machine-readable output (SI units)"
+    )
+    p.add_argument(
+        "-o", "--output", metavar="FILE", help="write to FILE instead of stdout"
+    )
+
+
+@dataclass(frozen=True)
+class Status:
+    """Conditioning and diagnostics of one position."""
+
+    ok: bool  # solved: every group closes and no figure is singular
+    placed: bool  # the positions stand: every group closes (or misses it by rounding)
+    min_sine: (
+        float  # the smallest |sin| between intersected lines (NaN if it does not close)
+    )
+    figures: dict[
+        str, float
+    ]  # per group: "group 2–3 (RPR)" → |sin|; "… pivot" → |QP| ratio
+    warnings: tuple[str, ...]
+    errors: tuple[str, ...]
+    #: why the plans are singular where the position is a change point (positions only)
+    singular: tuple[str, ...] = ()
+
+    @property
+    def state(self) -> str:
+        return ("error" if self.errors else "singular" if self.singular
+                else "warning" if self.warnings else "ok")
+
+
+@dataclass(frozen=True)
+class CycleTable:
+    mechanism: object
+    cycle: object
+    motion: object
+    status: tuple[Status, ...]
+    points: tuple[str, ...]
+    links: tuple[int, ...]
+    output_values: object | None  # array: s (m) or ψ (rad) of the output, or None
+
+
+def run(args) -> int:
+    import sys
+
+    from plans.cycle.analysis import outside, reachable_cycle
+    from plans.errors import AssemblyError
+
+    n = args.positions
+    mech = mechanism_from(args)
+    try:
+        table = compute(mech, n)
+    except AssemblyError:  # its angle does not assemble: the cycle where it does, if any
+        got = reachable_cycle(mech, n)
+        if got is None:
+            raise
+        turned, solver, c = got
+        # the hints read where the range is (the file's own angle does not close), or at
+        # the file's angle (--angle beyond the range of a file whose angle closes)
+        read = (", assembled as the hints ask at " + solver.at(solver.branch_at)
+                if solver.branch_at == turned.driver.phi else "")
+        warn("cycle", f"{outside(*angle_field(args, mech), c, mech.driver)}: the cycle runs "
+                      f"over that range{read}", mech.source)
+        table = compute(turned, n, solver)
+    if args.json:
+        text = json_chunks(table)
+    elif args.csv:
+        text = csv_chunks(table)
+    else:
+        text = to_text(table)
+    write_output(args.output, text)
+    warned = [i for i, s in enumerate(table.status) if s.warnings]
+    failed = [i for i, s in enumerate(table.status) if s.errors]
+    if warned:
+        worst = min(warned, key=lambda i: table.status[i].min_sine)
+        warn("cycle", f"{len(warned)} of {n} positions are near-singular (smallest figure at "
+                      f"position {worst}: {_fig(min(table.status[worst].figures.values()))})")
+    for i in failed:
+        for e in table.status[i].errors:
+            print(f"plans cycle: error: position {i}: {e}", file=sys.stderr)
+    singular = [i for i, s in enumerate(table.status) if s.singular]
+    if singular:
+        which = ", ".join(str(i) for i in singular)
+        warn("cycle", f"position{'s' if len(singular) > 1 else ''} {which} "
+                      f"{'are' if len(singular) > 1 else 'is'} on or beside a change point: "
+                      "positions only, the plans there are singular")
+    return EXIT_INPUT if failed else EXIT_OK
+
+
+# ---------------------------------------------------------------------------------------
+# computing
+# ---------------------------------------------------------------------------------------
+
+
+def compute(mech, n_positions: int, solver=None) -> CycleTable:
+    import numpy as np
+
+    from plans.cycle.analysis import analyse_cycle, table_angle
+    from plans.kinematics.solver import Solver
+
+    solver = solver or Solver(mech)
+    cycle = analyse_cycle(mech, n_positions=n_positions, solver=solver)
+    phi = np.array(cycle.positions, dtype=float)
+    with np.errstate(all="ignore"):
+        motion = solver.solve(phi)
+        status = conditioning(mech, motion, solver)
+        out_values = None
+        if cycle.output is not None:
+            out_values = cycle.output.value(motion, mech)
+            if cycle.output.kind == "angular":
+                out_values = table_angle(out_values, cycle.full_turn)
+    points = tuple(motion.position)
+    links = tuple(sorted(lid for lid in motion.links if lid != 0))
+    return CycleTable(mech, cycle, motion, status, points, links, out_values)
+
+
+def figure_labels(t: CycleTable) -> list[str]:
+    """The conditioning figures' keys, each once, in the order the rows give them: one
+    column each in the CSV and the text table, whichever rows lack one."""
+    return list(dict.fromkeys(key for st in t.status for key in st.figures))
+
+
+def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
+    """Per position: the figures of every group, warnings and errors (see the module doc);
+    ``solver``, the motion's, names the change points among the angles."""
+    import numpy as np
+
+    from plans.kinematics.records import (
+        SINGULAR_SINE,
+        WARN_SINE,
+        is_pivot,
+        near_pivot,
+        on_pivot,
+        pivot_figure,
+        pivot_key,
+        sine_figure,
+    )
+
+    n = len(motion.phi)
+    crank_pivot = mech.frame[mech.driver.pivot]
+    per_group = [(g, pivot_figure(g, motion.position, crank_pivot)) for g in motion.groups]
+    # each group's figures as Python lists, once; words only where a position is flagged
+    cols = []
+    for g, pivot in per_group:
+        s = np.broadcast_to(sine_figure(np.asarray(g.velocity.sine, dtype=float)), (n,))
+        valid = np.broadcast_to(np.asarray(g.valid, dtype=bool), (n,))
+        q = None if pivot is None else np.where(np.isfinite(pivot), pivot, 0.0).tolist()
+        cols.append((g, g.group.label, valid.tolist(), s.tolist(), (s < WARN_SINE).tolist(), q))
+    phis = np.asarray(motion.phi, dtype=float).tolist()
+    at_ = solver.at if solver is not None else mech.driver.at
+    at = functools.cache(lambda k: at_(phis[k]))  # words only where flagged, once
+    placed = np.broadcast_to(np.asarray(motion.placed, dtype=bool), (n,)).tolist()
+    plain = (SINGULAR_SINE, SINGULAR_SINE)
+    out = []
+    for k in range(n):
+        figures: dict[str, float] = {}
+        warnings: list[str] = []
+        errors: list[str] = []
+        singular: list[str] = []  # positions stand, plans singular: beside a change point
+        for i, (g, label, valid, sine, low, pivot) in enumerate(cols):
+            # a group beside one of its change points: its figures must reach CHANGE_SINE
+            # (Solver.singular_figures), and its failures are the change point's: positions
+            # only, no error. Looked up only where a figure calls for a word
+            flagged = not valid[k] or low[k] or (pivot is not None and pivot[k] < WARN_SINE)
+            under, under_q = (solver.singular_figures(i, phis[k])
+                              if flagged and solver is not None else plain)
+            fails = singular if under > SINGULAR_SINE and placed[k] else errors
+            if not valid[k]:
+                fails.append(str(g.failure(k, at(k))))
+                figures[label] = sine[k] if placed[k] else math.nan  # in line: about 0
+                if pivot is not None:  # every row has every figure: the CSV's columns
+                    figures[pivot_key(label)] = pivot[k] if placed[k] else math.nan
+                continue
+            figures[label] = sine[k]
+            if low[k]:
+                if (err := g.parallel(k, at(k), below=under)) is not None:
+                    fails.append(str(err))
+                elif (warning := g.near_parallel(k, at(k), below=under)) is not None:
+                    warnings.append(warning)
+            if pivot is not None:
+                q = pivot[k]
+                figures[pivot_key(label)] = q
+                if q < WARN_SINE:  # worded (and the angle with it) only where flagged
+                    if (err := on_pivot(g, q, at(k), below=under_q)) is not None:
+                        fails.append(str(err))
+                    else:
+                        warnings.append(near_pivot(g, q, at(k), below=under_q))
+        sines = [v for key, v in figures.items() if not is_pivot(key)]
+        if not sines:
+            min_sine = 1.0
+        elif all(math.isfinite(v) for v in sines):
+            min_sine = min(sines)
+        else:
+            min_sine = math.nan
+        out.append(Status(not errors and not singular, placed[k], min_sine, figures,
+                          tuple(warnings), tuple(errors), tuple(singular)))
+    return tuple(out)
+
+
+def _fig(x: float) -> str:
+    return "—" if not math.isfinite(x) else f"{x:.3g}"
+
+
+def _ok(x) -> float | None:
+    x = float(x) + 0.0  # + 0.0: no −0.0
+    return x if math.isfinite(x) else None
+
+
+# ---------------------------------------------------------------------------------------
+# output
+# ---------------------------------------------------------------------------------------
+
+
+def _cycle_summary(t: CycleTable) -> dict:
+    return cycle_json(t.cycle)
+
+
+def cycle_json(c) -> dict:
+    """The cycle's figures (:class:`plans.cycle.Cycle`) as ``plans cycle --json`` and
+    ``plans solve --json`` give them, in SI units and degrees from +x."""
+    out = {
+        "full_turn": c.full_turn,
+        "output": None
+        if c.output is None
+        else {"point": c.output.point, "kind": c.output.kind, "link": c.output.link,
+              "unit": "m" if c.output.kind == "linear" else "rad"},
+        "extremes_phi_deg": [from_x(x) for x in c.extremes],
+        "stroke": c.stroke,
+        "theta_deg": None if c.theta is None else math.degrees(c.theta),
+        "K": c.K,
+        "grashof": c.grashof,
+        # counter-clockwise from the first angle to the second: in the crank's order a
+        # clockwise crank's range named the arc that does not assemble
+        "crank_range_phi_deg": None if c.ccw_range is None else [from_x(x) for x in c.ccw_range],
+        "notes": list(c.notes),
+    }
+    return out
+
+
+def _numbering(t: CycleTable) -> str:
+    c = t.cycle
+    if not c.full_turn:
+        return "over the crank range where the linkage assembles (it cannot make a full turn)"
+    if len(c.extremes) == 2:
+        return "from the extreme position that starts the working stroke"
+    return "from the given crank position (the output has no two extreme positions)"
+
+
+def json_chunks(t: CycleTable):
+    """The JSON text of :func:`to_json` in pieces: the head, then one row per line, so
+    that 10⁵ rows are written as they are made."""
+    import json
+
+    def dumps(x) -> str:
+        return json.dumps(x, ensure_ascii=False, allow_nan=False)
+
+    head = _json_head(t)
+    yield "{\n" + "".join(f" {dumps(k)}: {dumps(v)},\n" for k, v in head.items()) + ' "rows": ['
+    sep = "\n  "
+    for row in _json_rows(t):
+        yield sep + dumps(row)
+        sep = ",\n  "
+    yield "\n ]\n}\n"
+
+
+def _json_head(t: CycleTable) -> dict:
+    mech = t.mechanism
+    return {
+        "mechanism": mech.name,
+        "positions": len(t.status),
+        "numbering": _numbering(t),
+        # the crank's ω by its link's number, as the CSV's columns and rows' links name it
+        "crank_link": mech.driver.link,
+        f"omega{mech.driver.link}": mech.driver.omega,
+        "cycle": _cycle_summary(t),
+        "point_names": list(t.points),
+        "link_ids": list(t.links),
+    }
+
+
+def _json_rows(t: CycleTable):
+    m, mech = t.motion, t.mechanism
+    for k, st in enumerate(t.status):
+        phi = float(m.phi[k])
+        good = st.ok
+        row = {
+            "index": k,
+            "phi_deg": from_x(phi),
+            "angle_deg": mech.driver.file_angle(phi),
+            "solved": good,
+            "placed": st.placed,  # the positions stand (where not solved: a change point)
+            "conditioning": {
+                "min_sine": _ok(st.min_sine),
+                "figures": {key: _ok(v) for key, v in st.figures.items()},
+            },
+            "warnings": list(st.warnings),
+            "errors": list(st.errors),
+            "singular": list(st.singular),
+        }
+        if t.output_values is not None:
+            row["output"] = _ok(t.output_values[k]) if st.placed else None
+        row["points"] = {
+            name: {
+                key: ([z.real + 0.0, z.imag + 0.0] if shown else None)
+                for key, z, shown in (
+                    ("position", complex(m.position[name][k]), st.placed),
+                    ("velocity", complex(m.velocity[name][k]), good),
+                    ("acceleration", complex(m.acceleration[name][k]), good),
+                )
+            }
+            for name in t.points
+        }
+        row["links"] = {
+            str(i): {
+                "omega": _ok(m.links[i].omega[k]) if good else None,
+                "epsilon": _ok(m.links[i].epsilon[k]) if good else None,
+            }
+            for i in t.links
+        }
+        yield row
+
+
+def _csv_header(t: CycleTable) -> list[str]:
+    # the figures by their keys in a JSON row's conditioning.figures and in Sweep.sine
+    # and Sweep.pivot: "group 2–3 (RPR)" (the lines' sine), "group 2–3 (RPR) pivot"
+    head = ["index", "phi_deg", "angle_deg", "solved", "placed", "min_sine", *figure_labels(t)]
+    if t.output_values is not None:  # s in m along the guide, or ψ in rad
+        o = t.cycle.output
+        head.append(f"output {o.point} ({'m' if o.kind == 'linear' else 'rad'})")
+    for name in t.points:
+        head += [f"{name}.{q}" for q in ("x", "y", "vx", "vy", "ax", "ay")]
+    for i in t.links:
+        head += [f"omega{i}", f"epsilon{i}"]
+    head += ["warnings", "errors", "singular"]
+    return head
+
+
+def csv_chunks(t: CycleTable, rows: int = 1000):
+    """The CSV text, ``rows`` rows at a time: each stretch of rows is converted to Python
+    numbers as it is written, so that 10⁵ rows never stand in memory as some six million
+    Python floats (about 200 MB for the press)."""
+    import csv
+    import io
+
+    import numpy as np
+
+    m, mech = t.motion, t.mechanism
+    n = len(t.status)
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(_csv_header(t))
+
+    def f(x) -> str:
+        x = float(x) + 0.0  # + 0.0: no −0.0
+        return repr(x) if math.isfinite(x) else ""
+
+    def column(arr):
+        return np.broadcast_to(np.asarray(arr), (n,))
+
+    # the columns as arrays (views, not copies), each with whether it is a coordinate,
+    # given where the position stands but the plans do not
+    arrays = []
+    coordinate: list[bool] = []
+    for name in t.points:
+        for arr, shown in ((m.position[name], True), (m.velocity[name], False),
+                           (m.acceleration[name], False)):
+            z = column(arr)
+            arrays += [z.real, z.imag]
+            coordinate += [shown, shown]
+    for i in t.links:
+        arrays += [column(m.links[i].omega), column(m.links[i].epsilon)]
+    coordinate += [False] * (len(arrays) - len(coordinate))  # ω and ε
+    phi_all = column(m.phi)
+    out_all = None if t.output_values is None else column(t.output_values)
+    blank = [""] * len(arrays)
+    labels = figure_labels(t)
+    for lo in range(0, n, rows):
+        hi = min(lo + rows, n)
+        # converted once a stretch (not cell by cell from numpy)
+        cols = [a[lo:hi].tolist() for a in arrays]
+        phis = phi_all[lo:hi].tolist()
+        out = None if out_all is None else out_all[lo:hi].tolist()
+        for j, st in enumerate(t.status[lo:hi]):
+            good = st.ok
+            row = [lo + j, f(from_x(phis[j])), f(mech.driver.file_angle(phis[j])), int(good),
+                   int(st.placed), f(st.min_sine)]
+            row += [f(st.figures.get(x, math.nan)) for x in labels]
+            if out is not None:
+                row.append(f(out[j]) if st.placed else "")
+            if good:
+                row += [f(c[j]) for c in cols]
+            elif st.placed:
+                row += [f(c[j]) if shown else "" for c, shown in zip(cols, coordinate, strict=True)]
+            else:
+                row += blank
+            row += ["; ".join(st.warnings), "; ".join(st.errors), "; ".join(st.singular)]
+            w.writerow(row)
+        yield buf.getvalue()
+        buf.seek(0)
+        buf.truncate()
+    if not n:
+        yield buf.getvalue()
+
+
+def _table(title: str, head: list[str], rows: list[list[str]]) -> list[str]:
+    widths = [max(len(h), *(len(r[i]) for r in rows)) for i, h in enumerate(head)]
+    out = ["", title]
+    out.append(
+        "  " + "  ".join(h.rjust(wd) for h, wd in zip(head, widths, strict=True))
+    )
+    for r in rows:
+        out.append(
+            "  " + "  ".join(c.rjust(wd) for c, wd in zip(r, widths, strict=True))
+        )
+    return out
+
+
+def to_text(t: CycleTable) -> str:
+    import numpy as np
+
+    from plans.kinematics.records import is_pivot
+
+    m, mech, c = t.motion, t.mechanism, t.cycle
+    d = mech.driver
+    n = len(t.status)
+    sense = "ccw" if d.omega > 0 else "cw"
+    lines = [mech.name, ""]
+    lines.append(
+        f"{n} crank position{'s' if n != 1 else ''}, numbered {_numbering(t)}; "
+        f"{d.omega_sym} = {num(abs(d.omega))} rad/s {sense}"
+    )
+    lines.append(
+        f"{d.phi_sym}: degrees from {d.reference}, measured {d.measured} (the file's convention)"
+    )
+    if c.output is not None and c.output.kind == "angular":
+        lines.append(
+            f"ψ_{c.output.point}: degrees of link {c.output.link} from +x, measured ccw"
+        )
+    from plans.cycle.analysis import summary
+
+    lines += summary(c, d)
+    moving = [p for p in t.points if p not in mech.frame]
+    fixed = [p for p in t.points if p in mech.frame]
+    if fixed:
+        lines.append(
+            "fixed points: "
+            + ", ".join(
+                f"{p} ({num(mech.frame[p].real)}, {num(mech.frame[p].imag)}) m"
+                for p in fixed
+            )
+        )
+
+    from plans.cycle.analysis import shown_from
+
+    lo = shown_from(c, d)  # a range through 0° writes its angles from −…°, as the range
+
+    def lead(k: int) -> list[str]:
+        return [str(k), table_degrees(d.file_angle(float(m.phi[k])), lo)]
+
+    def cell(k: int, value, big: float = 0.0, position: bool = False) -> str:
+        """A value of position k; rounding (below NOISE of its column's largest) is 0.
+        ``position``: it stands where the position does, even if the plans are singular."""
+        if not (t.status[k].placed if position else t.status[k].ok):
+            return "—"
+        value = float(value)
+        return num(0.0 if abs(value) <= NOISE * big else value)
+
+    from plans.plan.solution import NOISE
+
+    ok = np.array([st.ok for st in t.status], dtype=bool)
+    placed = np.array([st.placed for st in t.status], dtype=bool)
+
+    def largest(values, rows=ok) -> float:
+        """|value| largest over the positions solved (numpy: 10⁵ rows in Python took 3 s)."""
+        got = np.abs(np.broadcast_to(np.asarray(values), rows.shape)[rows])
+        return float(got.max()) if got.size else 0.0
+
+    base = ["№", f"{mech.driver.phi_sym} °"]
+    # a coordinate is rounding against the largest distance from the origin: x of a crank
+    # pin at 90° is R·cos(π/2) = 3e-18 m
+    size = max((largest(m.position[p], placed) for p in moving), default=0.0)
+    for title, key in (("x of points (m)", "x"), ("y of points (m)", "y")):
+        rows = [
+            lead(k)
+            + [
+                cell(
+                    k,
+                    getattr(
+                        complex(m.position[p][k]), "real" if key == "x" else "imag"
+                    ),
+                    size,
+                    position=True,
+                )
+                for p in moving
+            ]
+            for k in range(n)
+        ]
+        lines += _table(title, base + moving, rows)
+    for title, store in (
+        ("|V| of points (m/s)", m.velocity),
+        ("|a| of points (m/s²)", m.acceleration),
+    ):
+        big = max((largest(store[p]) for p in moving), default=0.0)
+        rows = [
+            lead(k) + [cell(k, abs(complex(store[p][k])), big) for p in moving]
+            for k in range(n)
+        ]
+        lines += _table(title, base + moving, rows)
+    head = base + [f"ω{i}" for i in t.links] + [f"ε{i}" for i in t.links]
+    big_w = max((largest(m.links[i].omega) for i in t.links), default=0.0)
+    # ε against ω1² as well, as solve rounds it (plan._rates): a rod that only
+    # translates has ε of 1e-13 at every position, the largest of its own column
+    big_e = max((largest(m.links[i].epsilon) for i in t.links), default=0.0)
+    big_e = max(big_e, d.omega * d.omega)
+    rows = [
+        lead(k)
+        + [cell(k, m.links[i].omega[k], big_w) for i in t.links]
+        + [cell(k, m.links[i].epsilon[k], big_e) for i in t.links]
+        for k in range(n)
+    ]
+    lines += _table(
+        "ω (rad/s) and ε (rad/s²) of links, counter-clockwise positive", head, rows
+    )
+    out_head = []
+    if t.output_values is not None:
+        unit = "m" if c.output.kind == "linear" else "°"
+        out_head = [
+            f"{'s' if c.output.kind == 'linear' else 'ψ'}_{c.output.point} {unit}"
+        ]
+    labels = figure_labels(t)
+    head = base + out_head + ["min sin"] + [_short(x) for x in labels] + ["status"]
+    rows = []
+    big_out = 0.0 if not out_head else largest(t.output_values, placed)
+    for k, st in enumerate(t.status):
+        r = lead(k)
+        if out_head:
+            v = float(t.output_values[k])
+            v = 0.0 if abs(v) <= NOISE * big_out else v  # s of 4.7e-15 m is rounding
+            if c.output.kind != "linear":
+                v = math.degrees(v)
+            r.append(num(v) if st.placed else "—")
+        r.append(_fig(st.min_sine))
+        r += [_fig(st.figures.get(x, math.nan)) for x in labels]
+        r.append(st.state)
+        rows.append(r)
+    lines += _table(
+        "Conditioning (sine of the angle between the intersected lines)", head, rows
+    )
+    if any(is_pivot(x) for x in labels):
+        lines.append("  QP: how far a slotted link's block P is from the rocker's pivot Q, "
+                     "|QP| / (|OQ| + |OP|), O the crank's pivot")
+    order = ("error", "singular", "warning")
+    notes = [(k, kind, text) for k, st in enumerate(t.status)
+             for kind, texts in zip(order, (st.errors, st.singular, st.warnings), strict=True)
+             for text in texts]
+    if notes:
+        lines.append("")
+        for k, kind, text in sorted(notes, key=lambda x: (x[0], order.index(x[1]))):
+            lines.append(f"position {k}: {kind}: {text}")
+        if any(st.singular for st in t.status):
+            lines.append("singular: on or beside a change point, where a group's two "
+                         "assemblies meet: the positions stand, the plans cannot be built")
+    return "\n".join(lines) + "\n"
+
+
+def table_degrees(deg: float, lo: float = 0.0) -> str:
+    """A crank angle (degrees) for the table's φ1 column: two decimals, within the turn
+    [lo, lo + 360) the rest of the output writes angles in (:func:`plans.fmt.angle`): an
+    extreme position found 1.4e-12° short of a full turn is 0.00, not 360.00.
+
+    >>> table_degrees(359.99999999999855), table_degrees(268.59, -180.0), table_degrees(-1e-9)
+    ('0.00', '-91.41', '0.00')
+    """
+    from plans.fmt import in_turn
+
+    x = in_turn(deg, lo) if lo else deg % 360.0
+    s = f"{x:.2f}"
+    if s == f"{lo + 360.0:.2f}":  # rounds up to the end of the turn: its start
+        s = f"{lo:.2f}"
+    return "0.00" if s == "-0.00" else s
+
+
+def _short(label: str) -> str:
+    """'group 2–3 (RPR)' → 'sin 2–3'; 'group 2–3 (RPR) pivot' → 'QP 2–3'."""
+    from plans.kinematics.records import is_pivot
+
+    parts = label.split()
+    links = parts[1] if len(parts) > 1 else label
+    return f"QP {links}" if is_pivot(label) else f"sin {links}"

@@ -1,0 +1,647 @@
+"""Quantities of the whole cycle: extreme positions, stroke H, θ and K, the N positions,
+trajectories, and whether the crank can make a full turn (Grashof for a four-bar).
+
+K = (180° + θ)/(180° − θ): the crank angle of the slower (working) stroke over that of the
+faster (return) stroke; θ is the crank angle between the extreme positions' lines.
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+from dataclasses import dataclass
+
+import numpy as np
+
+from plans.errors import InputError, PlansError
+from plans.fmt import angle, from_x
+from plans.geometry import apart
+from plans.kinematics.solver import Motion, Solver
+from plans.model.mechanism import Mechanism
+from plans.model.structure import DyadKind
+
+TWO_PI = 2 * math.pi
+
+
+@dataclass(frozen=True)
+class Output:
+    """The output coordinate: a slider's travel along its fixed guide (m) or a rocker's
+    angle (rad)."""
+
+    point: str
+    kind: str  # "linear" or "angular"
+    link: int
+
+    def value(self, m: Motion, mech: Mechanism):
+        if self.kind == "linear":
+            g = mech.slider_of(self.link).guide
+            return ((m.position[self.point] - g.point) * np.conj(g.direction)).real
+        psi = np.angle(m.links[self.link].rotor)
+        known = np.isfinite(psi)
+        if np.ndim(psi) == 0 or known.all():
+            return np.unwrap(psi)
+        out = np.full(psi.shape, np.nan)  # one position where the link is nowhere: not the rest
+        out[known] = np.unwrap(psi[known])
+        return out
+
+    def arm(self, mech: Mechanism) -> tuple[str, str] | None:
+        """A rocker's fixed pivot and its point farthest from it, the two the swing ψ is
+        measured by (∠C′DC″ between its extreme positions: the sheet's arc and the note's
+        angle alike); None for a slider, or a rocker with no fixed point."""
+        if self.kind != "angular":
+            return None
+        link = mech.links[self.link]
+        pivot = next((p for p in link.points if p in mech.frame), None)
+        others = [p for p in link.points if p != pivot]
+        if pivot is None or not others:
+            return None
+        return pivot, max(others, key=lambda p: abs(link.points[p] - link.points[pivot]))
+
+    def rate(self, m: Motion, mech: Mechanism, which: str = "velocity"):
+        data = m.velocity if which == "velocity" else m.acceleration
+        if self.kind == "linear":
+            g = mech.slider_of(self.link).guide
+            return (data[self.point] * np.conj(g.direction)).real
+        st = m.links[self.link]
+        return st.omega if which == "velocity" else st.epsilon
+
+
+def table_angle(psi, full_turn: bool):
+    """The output's angle ψ (rad, unwrapped over the positions in their order) as a table
+    gives it: an output that turns with the crank, a whole turn per turn, modulo 2π as φ1
+    is; one that swings, continuous over its swing and moved by whole turns so that the
+    middle of its swing lies in [0, 2π). A rocker then reads 170°…190° whichever side of
+    ±180° ``np.angle`` started it on, one swinging about +x −10°…10°, and a drag link's
+    output 150°…360°, 0°…120° rather than up to 480°.
+    NaN (a position where the link is nowhere) stays NaN."""
+    psi = np.array(psi, dtype=float)
+    known = np.isfinite(psi)
+    if psi.ndim == 0 or not known.any():
+        return psi
+    got = psi[known]
+    if full_turn and got.size > 1:
+        # the step from the last position back to the first closes the turn: the output
+        # turns fully when the steps add up to a whole turn, not to nothing
+        back = math.remainder(got[0] - got[-1], TWO_PI)
+        if round((got[-1] - got[0] + back) / TWO_PI) != 0:
+            psi[known] = np.mod(got, TWO_PI)
+            return psi
+    psi[known] = got - TWO_PI * math.floor((got.max() + got.min()) / 2 / TWO_PI)
+    return psi
+
+
+def find_output(mech: Mechanism) -> Output | None:
+    """The output named in the file, else the last slider on a fixed guide, else the last
+    link hinged to the frame (a rocker), named by its moving joint (C of a rocker DC, as
+    the textbook's ψ_C), never by its fixed pivot."""
+    for name in ([mech.output] if mech.output else []) + outputs(mech):
+        if (out := output_of(mech, name)) is not None:
+            return out
+    return None
+
+
+def outputs(mech: Mechanism) -> list[str]:
+    """Every point that can be the output (:func:`output_of`), in the order
+    :func:`find_output` takes them: the sliders' points on fixed guides, the last first,
+    then the points of each link from the last, a rocker's by its moving joints first
+    (the far end of its axis, then the points it shares with other links)."""
+    names = [s.point for s in reversed(mech.sliders)
+             if s.guide.link == 0 and output_of(mech, s.point) is not None]
+    for lid in sorted(mech.links, reverse=True):
+        link = mech.links[lid]
+        far = [link.axis[1]] if link.axis else []
+        joints = [p for p in link.points if len(mech.links_of(p)) > 1]
+        for p in far + joints + list(link.points):
+            if (out := output_of(mech, p)) is not None and out.link == lid:
+                names.append(p)
+    return list(dict.fromkeys(names))
+
+
+def no_output(mech: Mechanism, name: str) -> str | None:
+    """Why point ``name`` cannot be the output, naming the points of ``mech`` that can
+    (:func:`outputs`); None if it can. A coupler's point traces a curve, with no stroke
+    along a line nor swing about a pivot: it is refused, as a fixed point and the
+    crank's are."""
+    if output_of(mech, name) is not None:
+        return None
+    carriers = mech.links_of(name)
+    if 0 in carriers:
+        what = "it is a fixed point"
+    elif mech.driver.link in carriers:
+        what = "it is a point of the crank"
+    else:
+        links = " and ".join(f"link {lid}" for lid in carriers)
+        what = (f"it is a point of {links}, which neither "
+                f"{'slides' if len(carriers) == 1 else 'slide'} on a fixed guide nor "
+                f"{'turns' if len(carriers) == 1 else 'turn'} about a fixed pivot")
+    names = [f'"{p}"' for p in outputs(mech)]
+    here = ("here " + (names[0] if len(names) == 1 else
+                       ", ".join(names[:-1]) + " or " + names[-1])) if names else \
+        "this mechanism has none"
+    return (f'"{name}" has no stroke or swing: {what}; the output is the point of a slider '
+            "on a fixed guide or a moving point of a rocker (a link other than the crank "
+            f"hinged to the frame): {here}")
+
+
+def output_of(mech: Mechanism, name: str) -> Output | None:
+    """Point ``name`` as the output: the point of a slider on a fixed guide, or any point
+    of a link that only translates along one (its travel), or a moving point of a link
+    hinged to the frame other than the crank (its swing); None for any other point (a
+    fixed one, the crank's, a coupler's), which has no stroke."""
+    if name in mech.frame:  # it stands still: no stroke, no swing of its own
+        return None
+    still = mech.translating()
+    for lid in mech.links_of(name):
+        if lid == 0 or lid == mech.driver.link:
+            continue
+        s = mech.slider_of(lid)
+        if s is not None and s.guide.link == 0 and (s.point == name or lid in still):
+            return Output(name, "linear", lid)  # a yoke's every point travels as its slider does
+        if any(p in mech.frame for p in mech.links[lid].points):
+            return Output(name, "angular", lid)
+    return None
+
+
+@dataclass(frozen=True)
+class Cycle:
+    output: Output | None
+    full_turn: bool
+    #: crank angles (rad) of the extreme positions: the output's, the one that starts the
+    #: working stroke (position 0) first, or where the crank cannot make a full turn its
+    #: limit positions (dead points), ``crank_range``
+    extremes: tuple[float, ...]
+    stroke: float | None  # H (m) or swing ψ (rad)
+    theta: float | None  # rad
+    K: float | None
+    positions: tuple[float, ...]  # the N crank angles, numbered from an extreme
+    grashof: str | None
+    notes: tuple[str, ...]
+    crank_range: tuple[float, float] | None = None  # rad: where it assembles, if not a full turn
+    #: crank angles (rad from +x) of the change points the motion passes smoothly
+    #: (:func:`plans.kinematics.branches.change_points`), in the order the crank meets them
+    change_points: tuple[float, ...] = ()
+
+    @property
+    def ccw_range(self) -> tuple[float, float] | None:
+        """``crank_range`` counter-clockwise from its first angle to its second, whichever
+        way the crank turns (``crank_range`` runs in the crank's sense: numbers falling
+        for a clockwise crank)."""
+        if self.crank_range is None:
+            return None
+        lo, hi = self.crank_range
+        return (min(lo, hi), max(lo, hi))
+
+
+def file_range(c: Cycle, driver=None) -> tuple[float, float]:
+    """The crank range of ``c`` (where it cannot make a full turn) in the convention of
+    ``driver`` (degrees; without one, counter-clockwise from +x) as it is written: from
+    the smaller angle to the larger, the first one negative where it runs through 0°
+    ("from −128.8° to 128.8°"; in the crank's own order, a clockwise crank's "from 128.8°
+    to 231.2°" named the very angles where it does not assemble)."""
+    lo, hi = c.ccw_range
+    deg = driver.file_angle if driver else from_x
+    a, b = deg(lo), deg(hi)
+    if driver is not None and driver.measured == "cw":  # that convention counts the other way
+        a, b = b, a
+    b = 0.0 if b > 360.0 - 1e-9 else b  # 359.99999999999 is 0, as angle() writes it
+    a = a - 360.0 if a > b else a
+    a = 0.0 if abs(a) < 1e-9 else a  # a limit found to 1e-13 rad: −5.7e−14° is 0
+    return a, b
+
+
+def shown_from(c: Cycle | None, driver=None) -> float:
+    """Where the turn the output writes crank angles in begins (degrees, in the
+    convention of ``driver``): 0, for [0°, 360°), unless the crank cannot make a full
+    turn and its range is written through 0° (:func:`file_range`, "from −99.72° to
+    99.72°"); then the turn centred on that range, so that an angle compared with it
+    reads −99.7°, not 260.3° (:func:`plans.fmt.angle`)."""
+    if c is None or c.full_turn or c.crank_range is None:
+        return 0.0
+    a, b = file_range(c, driver)
+    return 0.0 if a >= 0.0 else (a + b) / 2 - 180.0
+
+
+def summary(c: Cycle, driver=None) -> list[str]:
+    """The cycle in a few lines, as ``plans solve`` and ``plans cycle`` print it: the
+    four-bar's Grashof class, the crank range where it cannot make a full turn, the notes,
+    the stroke H or swing ψ, the extreme positions, θ and K.
+
+    Angles are in the convention of ``driver`` (the file's), which they name (" (from +y,
+    cw)"); without one, counter-clockwise from +x."""
+    from plans.fmt import angle, num
+    from plans.note.report import no_full_turn
+
+    deg = driver.file_angle if driver else from_x
+    convention = driver.convention() if driver else ""
+    lines = [f"four-bar: {c.grashof}"] if c.grashof else []
+    if not c.full_turn:
+        lines.append(no_full_turn(c, "en", driver))
+    lines += c.notes
+    if c.stroke is not None and c.output is not None:
+        if c.output.kind == "linear":
+            lines.append(f"stroke of {c.output.point}: H = {num(c.stroke)} m")
+        else:
+            lines.append(f"swing of link {c.output.link}: ψ = {num(math.degrees(c.stroke))}°")
+        lines.append(
+            f"extreme positions at {driver.phi_sym if driver else 'φ1'} = "
+            + ", ".join(f"{angle(deg(x))}°" for x in c.extremes) + convention
+            + f"; θ = {num(math.degrees(c.theta))}°, K = {num(c.K)}")
+    return lines
+
+
+def analyse_cycle(mech: Mechanism, n_positions: int = 12, solver: Solver | None = None,
+                  samples: int = 3600) -> Cycle:
+    """The cycle of ``mech`` (see :class:`Cycle`); kept by the solver, which solves one
+    mechanism only, so that solve, its μl and its summary share one analysis.
+
+    ``n_positions``: how many crank positions (:attr:`Cycle.positions`), at least 1;
+    ``samples``: how many angles a turn is searched at, at least 2."""
+    _whole(n_positions, "n_positions", 1)
+    _whole(samples, "samples", 2)
+    if solver is not None and solver.mech is mech:
+        key = ("cycle", n_positions, samples)
+        got = solver.cache.get(key)
+        if got is None:
+            # the turn the solver's messages write angles in (Solver.at): [0°, 360°) while
+            # the cycle is found, then the cycle's own (shown_from)
+            fresh = SHOWN_FROM not in solver.cache
+            if fresh:
+                solver.cache[SHOWN_FROM] = 0.0
+            try:
+                got = solver.cache[key] = _analyse_cycle(mech, n_positions, solver, samples)
+            finally:
+                if fresh:
+                    del solver.cache[SHOWN_FROM]
+            solver.cache.setdefault(SHOWN_FROM, shown_from(got, mech.driver))
+        return got
+    return _analyse_cycle(mech, n_positions, solver or Solver(mech), samples)
+
+
+def _whole(value, name: str, least: int) -> None:
+    """``value`` is a whole number ≥ ``least``: 0 or −3 positions gave a cycle of none, 1.5
+    failed deep in numpy, and a turn searched at one angle indexed past its end."""
+    if isinstance(value, bool) or not isinstance(value, int | np.integer) or value < least:
+        raise InputError("analyse_cycle", f"{name}: must be a whole number from {least}, "
+                         f"got {value!r}")
+
+
+#: the solver's cache key of :func:`shown_from` for its cycle (:meth:`Solver.at`)
+SHOWN_FROM = "shown from"
+
+
+def reachable(mech: Mechanism, samples: int = 3600) -> Mechanism | None:
+    """Where the crank angle of ``mech`` does not assemble on any assembly: ``mech`` with
+    its crank turned to the middle of the nearest range of angles where it does, as
+    ``--angle`` turns it (:meth:`Mechanism.at_file_angle`: the hints are read at the
+    file's own angle where the mechanism closes there, else at the new one). None where
+    its angle assembles (on some assembly), or no angle does."""
+    import itertools
+
+    from plans.model.structure import analyse
+
+    structure = analyse(mech)
+    n = len(structure.groups)
+    grid = mech.driver.phi + np.linspace(0.0, TWO_PI, samples, endpoint=False)
+    closes = np.zeros(samples, dtype=bool)
+    # on every assembly: a later group may close on one of an earlier group's only
+    for sigmas in itertools.islice(itertools.product((1, -1), repeat=n), 64):
+        with np.errstate(all="ignore"):
+            closes |= Solver(mech, structure, sigmas, ((),) * n).solve(grid).placed
+    if closes[0] or not closes.any():
+        return None
+    got = np.flatnonzero(closes)
+    k = int(got[np.argmin(np.minimum(got, samples - got))])  # the nearest, either way
+    i = j = k
+    while closes[(i - 1) % samples] and k - i < samples:
+        i -= 1
+    while closes[(j + 1) % samples] and j - k < samples:
+        j += 1
+    mid = float(grid[0] + (i + j) / 2 * (grid[1] - grid[0]))
+    return mech.at_file_angle(mech.driver.file_angle(mid))
+
+
+def reachable_cycle(mech: Mechanism, n_positions: int = 12):
+    """(mechanism, its solver, its cycle) over the range :func:`reachable` finds, where the
+    crank angle of ``mech`` does not assemble; None where that finds none or the range's
+    cycle cannot be made."""
+    turned = reachable(mech)
+    if turned is None:
+        return None
+    try:
+        solver = Solver(turned)
+        c = analyse_cycle(turned, n_positions, solver=solver)
+    except PlansError:
+        return None
+    return None if c.full_turn else (turned, solver, c)
+
+
+def outside_range(mech: Mechanism, exc: PlansError, field: str, given: float) -> PlansError:
+    """The error for a crank angle where ``mech`` does not assemble, one line: the field
+    that gave it (``driver.angle_deg``, ``--angle``) and its value ``given``, the crank's
+    range where it does, in the file's convention, and the group that cannot close;
+    ``exc`` itself where there is no such range."""
+    from plans.errors import AssemblyError, InputError
+
+    if not isinstance(exc, AssemblyError) or (got := reachable_cycle(mech)) is None:
+        return exc
+    _, solver, c = got
+    d = mech.driver
+    at = d.at(d.phi, lo=shown_from(c, d))
+    why = ""
+    with np.errstate(all="ignore"):
+        m = solver.solve(np.array([d.phi]))
+    for g in m.groups:  # the group that misses, on the assembly the range is drawn in
+        if not g.valid[0]:
+            why = f": {g.failure(0, at)}"
+            break
+    return InputError(mech.source, f"{outside(field, given, c, d)}, where the mechanism "
+                                   f"assembles{why}")
+
+
+def outside(field: str, given: float, c: Cycle, driver) -> str:
+    """"driver.angle_deg = 150 is outside the crank's range, φ1 from −99.72° to 99.72°":
+    the field that gave a crank angle, its value as given, and the range of ``c``, in the
+    convention of ``driver``; ``field`` "" for "150° is outside …", the field named
+    before it (a measurement file's located problem)."""
+    from plans.fmt import angle as written
+
+    lo = shown_from(c, driver)
+    a, b = file_range(c, driver)
+    head = (f"{given:g}°" if not field else
+            f"{field}{' ' if field.startswith('--') else ' = '}{given:g}")
+    return (f"{head} is outside the crank's range, {driver.phi_sym} from "
+            f"{written(a, 4, 'en', lo)}° to {written(b, 4, 'en', lo)}°"
+            f"{driver.convention()}")
+
+
+def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: int) -> Cycle:
+    w1 = mech.driver.omega
+    sense = 1.0 if w1 > 0 else -1.0
+    phi0 = mech.driver.phi
+    grid = phi0 + sense * np.linspace(0.0, TWO_PI, samples, endpoint=False)
+    with np.errstate(all="ignore"):
+        m = solver.solve(grid)
+    valid = m.valid
+    notes: list[str] = []
+    grashof = _grashof(mech, solver)
+    changes, near = _change_points(solver, grid)
+    if changes:
+        deg = mech.driver.file_angle
+        # groups that meet them an odd number of times a turn: flipped (smooth) or kept;
+        # a rocking crank has no turn to repeat
+        odd = [bool(f) for c, f in zip(solver.changes, solver.flips, strict=True)
+               if len(c) % 2 and solver.seam is None]
+        if not odd:
+            how = "it could fold into its other assembly; the cycle follows the smooth motion"
+        elif any(odd):
+            how = ("its two assemblies meet; the cycle follows the smooth motion, which "
+                   f"repeats only after two turns: its two turns meet at {mech.driver.phi_sym} = "
+                   f"{angle(deg(solver.branch_at))}°")
+        else:
+            how = ("its two assemblies meet; the cycle keeps the assembly, so the linkage "
+                   "folds back there (its smooth motion would repeat only after two turns)")
+        # the plans are singular at the change points, not where two turns meet (a seam
+        # elsewhere): said beside them, not after the seam's angle at the end
+        notes.append(
+                f"change points at {mech.driver.phi_sym} = " + ", ".join(f"{x}°" for x in change_angles(changes, mech.driver))
+            + mech.driver.convention() + f": the links of a group lie in line there and the "
+            f"plans are singular; there {how}")
+    closes = valid | (near & m.placed)  # a sample on a change point closes to rounding
+    # where a PRP group's two guides turn parallel, the point on both runs off to infinity:
+    # the crank cannot pass, though both sides close (found by the sine's sign, not by a
+    # sample that happens to fall on it)
+    sides = _guide_sides(m)
+    for label, side in sides.items():
+        if (side != side[0]).any():
+            notes.append(f"{label}: its two guides turn parallel at a limit of the "
+                         "crank's range, where the point on both runs off to infinity")
+        closes &= side == side[0]
+    # the given angle on a limit of the crank's range ends it; on a change point where a
+    # point is nowhere (a kite's crank pin on the rocker's pivot) the motion goes through
+    closes[0] |= m.placed[0] or solver.on_change_point(phi0)
+    full = bool(closes.all())
+    out = find_output(mech)
+    if not full:  # the range is worded where it is shown (report.no_full_turn)
+        if not closes[0]:  # the given angle itself does not close: say why, as solve does
+            solver.solve_one(phi0)
+        lo, hi = _limits(solver, *_interval_around(grid, closes), grid[1] - grid[0],
+                         {label: side[0] for label, side in sides.items()})
+        span = lo + (hi - lo) * (np.arange(n_positions) + 0.5) / n_positions
+        return Cycle(out, False, (lo, hi), None, None, None, tuple(span), grashof,
+                     tuple(notes), (lo, hi), changes)
+    extremes: list[float] = []
+    stroke = theta = K = None
+    start = phi0
+    if out is not None:
+        rate = out.rate(m, mech)
+        # no sign where it is singular, nor where the rate is rounding of 0 (1e-9 of the
+        # crank's ω1, or of its pin's speed): an output at rest does not turn back
+        still = at_rest(mech, out.kind == "linear")
+        sgn = _signs(np.where(near | (np.abs(rate) < still), 0.0, rate))
+        if not sgn.any():
+            notes.append(f"the output {out.point} does not move")
+        idx = np.nonzero(sgn != np.roll(sgn, -1))[0]
+        for i in idx:
+            a, b = grid[i], grid[(i + 1) % samples] if i + 1 < samples else grid[0] + sense * TWO_PI
+            if near[(i + 1) % samples]:  # it turns back at a change point: a fold
+                extremes.append(min(changes, key=lambda x: apart(x, b)))
+                continue
+            extremes.append(_refine(solver, out, mech, a, b, sgn[i] > 0))
+        if len(extremes) == 2:
+            with np.errstate(all="ignore"):
+                me = solver.solve(np.array(extremes))
+            val = out.value(me, mech)
+            stroke = float(abs(val[1] - val[0]))
+            span = (sense * (extremes[1] - extremes[0])) % TWO_PI
+            slow, fast = max(span, TWO_PI - span), min(span, TWO_PI - span)
+            theta = (slow - fast) / 2
+            K = slow / fast
+            if abs(theta) < 1e-9:  # equal strokes, as the tie below: θ = 0 and K = 1 exactly
+                theta, K = 0.0, 1.0
+            # position 0 starts the slower (working) stroke; on a tie, the lower output value
+            if abs(span - (TWO_PI - span)) < 1e-9:
+                start = extremes[int(np.argmin(val))]
+            else:
+                start = extremes[0] if span >= TWO_PI - span else extremes[1]
+            if start is extremes[1]:  # the working stroke's start first, from any angle
+                extremes.reverse()
+        elif extremes:
+            notes.append(f"the output {out.point} has {len(extremes)} turning points per turn")
+    pos = tuple(start + sense * TWO_PI * i / n_positions for i in range(n_positions))
+    return Cycle(out, True, tuple(extremes), stroke, theta, K, pos, grashof, tuple(notes),
+                 change_points=changes)
+
+
+def change_angles(changes, driver, lang: str = "en") -> list[str]:
+    """Change points (rad from +x) as the file's angles, written to 1e-6°: they are found to
+    about 1e-10 rad, and 0° is not to read 5.7e-09°."""
+    return [angle(round(driver.file_angle(x), 6), 4, lang) for x in changes]
+
+
+def at_rest(mech: Mechanism, linear: bool, order: int = 1) -> float:
+    """Below this an output's value (``order`` 0), rate (1) or acceleration (2) is rounding
+    of 0: 1e-9 of the crank's own (its pin's for a linear output) to that order."""
+    return 1e-9 * (mech.driver.length if linear else 1.0) * abs(mech.driver.omega) ** order
+
+
+def _change_points(solver: Solver, grid: np.ndarray) -> tuple[tuple[float, ...], np.ndarray]:
+    """The change points of the solver's motion as crank angles (rad from +x) in the order
+    the crank meets them from ``grid[0]``, and the samples of ``grid`` within a step of
+    one (where a group may fail to close by rounding, and the plans are singular)."""
+    step = abs(grid[1] - grid[0])
+    turn = (grid - solver.branch_at) % TWO_PI
+    near = np.zeros(grid.shape, dtype=bool)
+    offsets = sorted({f for points in solver.changes for f in points})
+    for f in offsets:
+        near |= apart(turn, f) <= step
+    angles = [solver.branch_at + f for f in offsets]
+    sense = 1.0 if solver.mech.driver.omega > 0 else -1.0
+    angles.sort(key=lambda x: (sense * (x - grid[0])) % TWO_PI)
+    return tuple(angles), near
+
+
+def _signs(rate: np.ndarray) -> np.ndarray:
+    """The sign of the output's velocity at each sample, a sample where it is exactly 0
+    taking the sign of the next one that is not (round the turn): an extreme that falls on
+    a sample (the central crank-slider at φ1 = 0) is then one change of sign, between the
+    sample before and the zero, and a velocity that touches 0 without turning back is
+    none."""
+    sgn = np.sign(rate)
+    nz = np.flatnonzero(sgn)
+    if 0 < nz.size < sgn.size:
+        after = np.searchsorted(nz, np.arange(sgn.size)) % nz.size
+        sgn = sgn[nz[after]]
+    return sgn
+
+
+def _refine(solver: Solver, out: Output, mech: Mechanism, a: float, b: float,
+            rising: bool) -> float:
+    """The crank angle in [a, b] where the output's velocity changes sign, from ``rising``
+    (positive) at a to the other sign (bisection to 1e-13 rad: the velocity is exact, so
+    the extreme is as exact as the angle). The sign at a is the grid's: an extreme on a
+    sample has there a velocity of rounding, whose sign one path and the other differ on."""
+    def v(phi):
+        try:  # one angle on Python numbers: a sixth of the array path's time
+            return float(out.rate(solver.solve_one(phi), mech))
+        except PlansError:  # where it does not close the array path still gives a sign
+            with np.errstate(all="ignore"):
+                return float(out.rate(solver.solve(np.array([phi])), mech)[0])
+
+    for _ in range(60):
+        mid = 0.5 * (a + b)
+        if (v(mid) > 0) == rising:
+            a = mid
+        else:
+            b = mid
+        if abs(b - a) < 1e-13:
+            break
+    return 0.5 * (a + b)
+
+
+def _guide_sides(m: Motion) -> dict[str, np.ndarray]:
+    """Per PRP group (by label), the sign of the sine between its two guides at each angle
+    of ``m``: it changes where they turn parallel and their common point passes through
+    infinity, a limit the crank cannot pass."""
+    return {g.group.label: np.sign(np.asarray(g.velocity.sine, dtype=float))
+            for g in m.groups if g.group.kind == DyadKind.PRP}
+
+
+def _limits(solver: Solver, lo: float, hi: float, step: float,
+            sides: dict | None = None) -> tuple[float, float]:
+    """The crank's limit positions, refined from the last samples ``lo`` and ``hi`` that
+    close (``step`` before ``lo`` and after ``hi`` it does not) to 1e-13 rad by bisection,
+    both at once; each on the side where the mechanism closes. ``sides``: the sign of each
+    PRP group's sine where it closes (:func:`_guide_sides`), which the limits keep."""
+    inside = np.array([lo, hi])
+    outside = inside + np.array([-step, step])
+    for _ in range(60):
+        mid = 0.5 * (inside + outside)
+        with np.errstate(all="ignore"):
+            got = solver.solve(mid)
+            ok = got.valid
+            for label, side in _guide_sides(got).items() if sides else ():
+                ok = ok & (side == sides[label])
+        inside, outside = np.where(ok, mid, inside), np.where(ok, outside, mid)
+        if np.all(np.abs(outside - inside) < 1e-13):
+            break
+    return float(inside[0]), float(inside[1])
+
+
+def _interval_around(grid, valid):
+    """The assembling interval that contains the given angle (grid[0]), widened by wrap."""
+    n = len(grid)
+    if not valid[0]:
+        return float(grid[0]), float(grid[0])
+    j = 0
+    while j + 1 < n and valid[j + 1]:
+        j += 1
+    i = 0
+    while -i - 1 > -n and valid[(-i - 1) % n]:
+        i += 1
+    step = grid[1] - grid[0]
+    return float(grid[0] - i * step), float(grid[j])
+
+
+def _grashof(mech: Mechanism, solver: Solver) -> str | None:
+    """Grashof class when the mechanism is a hinged four-bar (crank + one RRR group).
+
+    The group's outer joints are read by what they join, not by their letters P and Q
+    nor by the links' numbers: the one on the frame is the rocker's pivot, the one on
+    the crank is the coupler's pin (a file may number the rocker before the coupler)."""
+    groups = solver.structure.groups
+    if len(groups) != 1 or groups[0].kind != DyadKind.RRR:
+        return None
+    g = groups[0]
+    drv = mech.driver
+    crank = mech.links[drv.link].points
+    ends = {g.P: g.a, g.Q: g.b}  # each outer joint and the link of the group hinged there
+    pivots = [p for p in ends if p in mech.frame]
+    pins = [p for p in ends if p not in mech.frame and p in crank]
+    if len(pivots) != 1 or len(pins) != 1:  # not a four-bar (a dyad carried by the crank)
+        return None
+    (pivot,), (pin,) = pivots, pins
+    coupler, rocker = mech.links[ends[pin]].points, mech.links[ends[pivot]].points
+    a = abs(crank[pin] - crank[drv.pivot])
+    b = abs(coupler[g.C] - coupler[pin])
+    c = abs(rocker[g.C] - rocker[pivot])
+    d = abs(mech.frame[pivot] - mech.frame[drv.pivot])
+    return grashof_class(a, b, c, d)
+
+
+def grashof_class(a: float, b: float, c: float, d: float) -> str:
+    """Grashof's rule for crank a, coupler b, rocker c, frame d.
+
+    >>> grashof_class(0.05, 0.2, 0.15, 0.2)
+    'crank-rocker (Grashof: 0.25 ≤ 0.35)'
+    >>> grashof_class(0.3, 0.35, 0.15, 0.4)
+    'rocker-crank (Grashof, the shortest link is the rocker, which turns fully: 0.55 ≤ 0.65)'
+    >>> grashof_class(0.3, 0.15, 0.35, 0.4)
+    'double rocker (Grashof, the shortest link is the coupler: 0.55 ≤ 0.65)'
+
+    Each length must be a positive finite number (a length of −0.03 or 0 was classed
+    as if it were a link):
+
+    >>> grashof_class(-0.05, 0.2, 0.15, 0.2)
+    Traceback (most recent call last):
+    ...
+    ValueError: grashof_class: the crank a must be a positive length (m), got -0.05
+    """
+    for name, x in (("the crank a", a), ("the coupler b", b), ("the rocker c", c),
+                    ("the frame d", d)):
+        if isinstance(x, bool) or not isinstance(x, numbers.Real) or not 0 < x < math.inf:
+            raise ValueError(f"grashof_class: {name} must be a positive length (m), got {x!r}")
+    lengths = sorted((a, b, c, d))
+    s, l, p, q = lengths[0], lengths[3], lengths[1], lengths[2]
+    lhs, rhs = s + l, p + q
+    tag = f"{lhs:.6g} {'≤' if lhs <= rhs else '>'} {rhs:.6g}"
+    if math.isclose(lhs, rhs, rel_tol=1e-12):
+        return f"change-point linkage (Grashof equality: {tag}): its links come in line at change points"
+    if lhs > rhs:
+        return f"double rocker (non-Grashof: {tag})"
+    if s == a:
+        return f"crank-rocker (Grashof: {tag})"
+    if s == d:
+        return f"double crank (Grashof: {tag})"
+    if s == c:  # the driven link turns fully, the driving one rocks
+        return f"rocker-crank (Grashof, the shortest link is the rocker, which turns fully: {tag})"
+    return f"double rocker (Grashof, the shortest link is the coupler: {tag})"

@@ -1,0 +1,2 @@
+"""Force analysis (kinetostatics by force plans, Zhukovsky's lever): to come."""
+

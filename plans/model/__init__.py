@@ -1,0 +1,58 @@
+"""The mechanism as data: its file format and reading, structure, variant tables and the built-in scenes."""
+
+from .mechanism import (  # noqa: F401
+    Driver,
+    FIXED_NAMES,
+    Guide,
+    LANGS,
+    Link,
+    MAX_FRAME,
+    MAX_ITEMS,
+    MAX_LINKS,
+    MAX_LINK_POINTS,
+    MAX_POINTS,
+    MIN_LEN,
+    MIN_LINK,
+    MU_UNIT,
+    Mechanism,
+    POINT_NAME,
+    REFERENCES,
+    RESERVED,
+    RPM_MIN,
+    SAME,
+    SCALE,
+    SENSES,
+    SPEED,
+    Slider,
+    from_dict,
+    load,
+    phi_of,
+)
+from .structure import (  # noqa: F401
+    DyadKind,
+    Edge,
+    Group,
+    Structure,
+    analyse,
+    chebyshev,
+    edges,
+)
+from .variants import (  # noqa: F401
+    BUILTIN,
+    BUILTIN_RU,
+    COLUMNS,
+    DESIGNATION,
+    KINDS,
+    MAX_ROWS,
+    OPTIONAL,
+    ROW_KEYS,
+    TABLE_KEYS,
+    Table,
+    load_table,
+    read_table,
+    variant,
+    variant_dict,
+    variant_numbers,
+)
+
+__all__ = ['BUILTIN', 'BUILTIN_RU', 'COLUMNS', 'DESIGNATION', 'Driver', 'DyadKind', 'Edge', 'FIXED_NAMES', 'Group', 'Guide', 'KINDS', 'LANGS', 'Link', 'MAX_FRAME', 'MAX_ITEMS', 'MAX_LINKS', 'MAX_LINK_POINTS', 'MAX_POINTS', 'MAX_ROWS', 'MIN_LEN', 'MIN_LINK', 'MU_UNIT', 'Mechanism', 'OPTIONAL', 'POINT_NAME', 'REFERENCES', 'RESERVED', 'ROW_KEYS', 'RPM_MIN', 'SAME', 'SCALE', 'SENSES', 'SPEED', 'Slider', 'Structure', 'TABLE_KEYS', 'Table', 'analyse', 'chebyshev', 'edges', 'from_dict', 'load', 'load_table', 'phi_of', 'read_table', 'variant', 'variant_dict', 'variant_numbers']

@@ -1,0 +1,523 @@
+"""The explanatory note (пояснительная записка): each step as formula, substitution, result.
+
+Everything is read from one :class:`~plans.plan.Solution`: the recorded constructions give
+the vector equations and the lines, the plan points give the measured segments, so the
+note cannot disagree with the sheet. Formatting only; no kinematics is computed here
+beyond products and quotients of values the plans already hold.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from plans.fmt import SENSE, angle, notation_in, num
+from plans.plan.solution import Solution, plan_name
+from plans.kinematics.records import flag_words
+
+T = {
+    "en": {
+        "title": "Kinematic analysis",
+        "structure": "Structural analysis",
+        "cheb": "Degrees of freedom (mobility) by the Chebyshev–Grübler–Kutzbach formula:",
+        "n": "moving links", "p5": "one-DOF pairs (revolute and prismatic)", "p4": "two-DOF pairs",
+        "groups": "Detaching the input link {d} and the frame, the chain splits into class-II (Assur) groups, dyads:",
+        "group": "links {a} and {b}: kind {k} ({name} dyad)",
+        "class": "The mechanism is of class {c}; structural formula {f}.",
+        "positions": "Plan of positions",
+        "mul": "Scale factor of the plan of positions:",
+        "seg": "Segments of the links on the drawing:",
+        "heavy": "The position of the plans below ({title}) is drawn in heavy lines, the other positions in thin lines.",
+        "heavy_all": "The positions of the plans below ({title}) are drawn in heavy lines, the other positions in thin lines.",
+        "seg_first": "Segments of the links on the drawing, in the position of the plans below ({title}):",
+        "seg_at": "Segments whose length changes with the position, in the position of the plans below ({title}):",
+        "seg_same": "In the position of the plans below ({title}) the segments are as above.",
+        "seg_same_all": "In the positions of the plans below ({title}) the segments are as above.",
+        "stroke": "Stroke of the output point {p}:",
+        "swing": "Swing of the output link {l}:",
+        "kth": "Crank angle between the extreme positions, θ, and the time ratio K, from the crank's turn over the working stroke φ_w (from the extreme position ′ to ″ in the sense of ω{d}) and over the return stroke φ_r:",
+        "change": "At {phi} = {at}°{conv}, {what}, the links of a group lie on one line and its two assemblies meet: the plans there are singular.",
+        "change1": "a change point",
+        "changes": "change points",
+        "noturn": "The input link {d} cannot make a full turn (it rocks, it is not a crank): the mechanism assembles only for {phi} from {lo}° to {hi}°{conv}, a swing of {span}°.",
+        "velocities": "Velocity plan",
+        "va": "Velocity of point {t} of the input link, ⊥ {p}{t} in the sense of {w}:",
+        "muv": "Scale factor of the velocity plan, with p{t} = {mm} mm:",
+        "eqs": "Vector equations for point {x}:",
+        "known": "known", "dir": "direction",
+        "build": "Through point {l0} draw a line {r0} and through point {l1} a line {r1}; they meet at point {x}.",
+        "sim": "By the {plan} image (the image of a link is similar to the link):",
+        "values": "Velocities read from the plan:",
+        "avalues": "Accelerations read from the plan:",
+        "omega": "Angular velocity of link {i}:",
+        "sense": {**SENSE["en"], 0: ""},
+        "accelerations": "Acceleration plan",
+        "aa": "Acceleration of point {t}, directed from {t} to {p} ({w} = const):",
+        "mua": "Scale factor of the acceleration plan, with π{t} = {mm} mm:",
+        "normal": "Normal component, directed from {x} to {y}:",
+        "coriolis": "Coriolis component: V_{x}{y} turned by 90° in the sense of ω{i}:",
+        "ontheplan": "on the plan",
+        "eps": "Angular acceleration of link {i}:",
+        "fixed": "fixed point: at the pole",
+        "warn": "Warning",
+        "translates": "Link {i} translates (ω{i} = 0): all its points have one {what}, {eq}:",
+        "vel": "velocity", "acc": "acceleration",
+        "nocor": "no Coriolis term: the guide's link {k} translates (ω{k} = 0)",
+        "same_w": "ω{i} = ω{k}: link {i} slides along a guide of link {k}, so it turns with it",
+        "xk": "{x}: the axis of the guide (slot) on link {k}",
+    },
+    "ru": {
+        "title": "Кинематический анализ",
+        "structure": "Структурный анализ механизма",
+        "cheb": "Число степеней свободы по формуле П. Л. Чебышева:",
+        "n": "число подвижных звеньев", "p5": "число одноподвижных пар", "p4": "число двухподвижных пар",
+        "groups": "После отделения начального звена {d} со стойкой цепь разбивается на группы Ассура II класса:",
+        "group": "звенья {a} и {b}: {k}-й вид ({name})",
+        "class": "Механизм относится к {c} классу; структурная формула {f}.",
+        "positions": "План положений механизма",
+        "mul": "Масштабный коэффициент плана положений:",
+        "seg": "Длины отрезков, изображающих звенья на чертеже:",
+        "heavy": "Положение, для которого ниже построены планы ({title}), выделено основными линиями, остальные положения — тонкими.",
+        "heavy_all": "Положения, для которых ниже построены планы ({title}), выделены основными линиями, остальные положения — тонкими.",
+        "seg_first": "Длины отрезков, изображающих звенья на чертеже, в положении, для которого ниже построены планы ({title}):",
+        "seg_at": "Отрезки, длина которых меняется с положением, в положении, для которого ниже построены планы ({title}):",
+        "seg_same": "В положении, для которого ниже построены планы ({title}), длины отрезков те же.",
+        "seg_same_all": "В положениях, для которых ниже построены планы ({title}), длины отрезков те же.",
+        "stroke": "Ход выходной точки {p}:",
+        "swing": "Угол размаха выходного звена {l}:",
+        "kth": "Угол между положениями кривошипа в крайних положениях механизма θ и коэффициент изменения средней скорости K — по углам поворота кривошипа за рабочий ход φ_рх (от крайнего положения ′ до ″ в сторону ω{d}) и за холостой ход φ_хх:",
+        "change": "При {phi} = {at}°{conv} ({what}) звенья группы лежат на одной прямой и обе её сборки совпадают: планы скоростей и ускорений там не строятся.",
+        "change1": "точка смены сборки",
+        "changes": "точки смены сборки",
+        "noturn": "Начальное звено {d} не может сделать полный оборот (это коромысло, а не кривошип): механизм собирается только при {phi} от {lo}° до {hi}°{conv}, угол качания {span}°.",
+        "velocities": "План скоростей механизма",
+        "va": "Скорость точки {t} начального звена, ⊥ {p}{t} в сторону вращения {w}:",
+        "muv": "Масштабный коэффициент плана скоростей при p{t} = {mm} мм:",
+        "eqs": "Векторные уравнения для точки {x}:",
+        "known": "известна", "dir": "направление",
+        "build": "Через точку {l0} проводим прямую {r0}, через точку {l1} — прямую {r1}; их пересечение даёт точку {x}.",
+        "sim": "По теореме подобия:",
+        "values": "Скорости точек по плану:",
+        "avalues": "Ускорения точек по плану:",
+        "omega": "Угловая скорость звена {i}:",
+        "sense": {**SENSE["ru"], 0: ""},
+        "accelerations": "План ускорений механизма",
+        "aa": "Ускорение точки {t} направлено от {t} к {p} ({w} = const):",
+        "mua": "Масштабный коэффициент плана ускорений при π{t} = {mm} мм:",
+        "normal": "Нормальное ускорение направлено от {x} к {y}:",
+        "coriolis": "Ускорение Кориолиса: вектор V_{x}{y}, повёрнутый на 90° в сторону ω{i}:",
+        "ontheplan": "на плане",
+        "eps": "Угловое ускорение звена {i}:",
+        "fixed": "неподвижная точка: в полюсе",
+        "warn": "Предупреждение",
+        "translates": "Звено {i} движется поступательно (ω{i} = 0): {what} всех его точек равны, {eq}:",
+        "vel": "скорости", "acc": "ускорения",
+        "nocor": "ускорение Кориолиса равно нулю: звено {k}, несущее направляющую, движется поступательно (ω{k} = 0)",
+        "same_w": "ω{i} = ω{k}: звено {i} движется по направляющей звена {k} и поворачивается вместе с ним",
+        "xk": "{x} — ось направляющей (паза) на звене {k}",
+    },
+}
+
+UNITS = {
+    "en": {"m": "m", "mm": "mm", "m/s": "m/s", "m/s²": "m/s²", "rad/s": "rad/s",
+           "rad/s²": "rad/s²", "mu_l": "m/mm", "mu_v": "(m/s)/mm", "mu_a": "(m/s²)/mm", "deg": "°"},
+    "ru": {"m": "м", "mm": "мм", "m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с",
+           "rad/s²": "рад/с²", "mu_l": "м/мм", "mu_v": "(м/с)/мм", "mu_a": "(м/с²)/мм", "deg": "°"},
+}
+
+
+@dataclass(frozen=True, slots=True)
+class Step:
+    """One line of the note: formula = substitution = result unit."""
+
+    formula: str
+    substitution: str
+    result: str
+    unit: str
+
+    def markdown(self) -> str:
+        mid = f" = {self.substitution}" if self.substitution else ""
+        unit = "" if not self.unit else self.unit if self.unit == "°" else f" {self.unit}"
+        return f"- `{self.formula}{mid} = {self.result}{unit}`"
+
+
+def note(sol: Solution, lang: str = "en", cycle=None,
+         plans: Sequence[tuple[str, Solution]] = ()) -> str:
+    """The whole explanatory note, in Markdown: the structure and the plan of positions,
+    then the velocity and acceleration plans of ``sol``'s crank position, or of each of
+    ``plans`` instead ((title, solution): the positions a sheet draws plans for, at the
+    sheet's scale factors), each titled. With ``plans``, the plan of positions is said to
+    draw theirs heavy (as the sheet does) and its segments are theirs; ``sol`` gives the
+    structure and μl."""
+    t, u = T[lang], UNITS[lang]
+
+    def n(x, d=4):
+        return num(x, d, lang)
+
+    mech, st = sol.mechanism, sol.structure
+    d = mech.driver
+    out = [f"# {t['title']}: {mech.name_in(lang)}", ""]
+    # structure ----------------------------------------------------------------------
+    out += [f"## 1. {t['structure']}", "", t["cheb"], ""]
+    out.append(f"- `{st.chebyshev()}`")
+    dash = " —" if lang == "ru" else ""  # «n = 5 — число подвижных звеньев»
+    out.append(f"  (n = {st.n}{dash} {t['n']}, p5 = {st.p5}{dash} {t['p5']}, p4 = 0{dash} {t['p4']})")
+    out += ["", t["groups"].format(d=d.link), ""]
+    for g in st.groups:
+        out.append("- " + t["group"].format(a=g.links[0], b=g.links[1], k=g.kind.value,
+                                            name=g.kind.name if lang == "en" else g.kind.ru))
+    out += ["", t["class"].format(c="II" if st.groups else "I", f=f"`{st.formula()}`"), ""]
+    # positions ----------------------------------------------------------------------
+    mu_l = sol.mu_l
+    crank_mm = d.length / mu_l
+    out += [f"## 2. {t['positions']}", "", t["mul"], ""]
+    out.append(Step(f"μl = l_{d.pivot}{d.tip} / {d.pivot}{d.tip}", f"{n(d.length)} / {n(crank_mm)}",
+                    n(mu_l), u["mu_l"]).markdown())
+    # with plans of other positions, the plan of positions draws theirs heavy (not the
+    # given one): the segments are given at the first, and those that change (BA3 of a
+    # slotted link) at each of the others, as their plans' similarity steps use them
+    base, rest = (plans[0][1], plans[1:]) if plans else (sol, ())
+    if plans:
+        titles = "; ".join(title for title, _ in plans)
+        out += ["", t["heavy" if len(plans) == 1 else "heavy_all"].format(title=titles)]
+    out += ["", t["seg_first"].format(title=plans[0][0]) if plans else t["seg"], ""]
+
+    def segment(k, v):
+        return Step(f"{k} = l_{k} / μl", f"{n(v, 5)} / {n(mu_l)}", n(v / mu_l), u["mm"]).markdown()
+
+    for k, v in base.lengths.items():
+        if k == d.pivot + d.tip or v == 0:  # the crank is above; a point on another: no segment
+            continue
+        out.append(segment(k, v))
+    same = []  # the positions whose segments are those above: said once, all together
+    for title, s in rest:
+        changed = [(k, v) for k, v in s.lengths.items() if k != d.pivot + d.tip and v != 0
+                   and not math.isclose(v, base.lengths.get(k, math.nan), rel_tol=1e-9)]
+        if not changed:
+            same.append(title)
+            continue
+        out += ["", t["seg_at"].format(title=title), ""]
+        out += [segment(k, v) for k, v in changed]
+    if same:
+        out += ["", t["seg_same" if len(same) == 1 else "seg_same_all"].format(title="; ".join(same))]
+    if cycle is not None:
+        out.append("")
+        if cycle.change_points:
+            out += [change_points(cycle, lang, d), ""]
+        if not cycle.full_turn:
+            out.append(no_full_turn(cycle, lang, d))
+        elif cycle.stroke is not None:
+            if cycle.output.kind == "linear":
+                out.append(t["stroke"].format(p=cycle.output.point))
+                out.append("")
+                p = cycle.output.point  # H on the drawing: from one extreme position to the other
+                out.append(Step(f"H = {p}′{p}″·μl", f"{n(cycle.stroke / mu_l, 5)}·{n(mu_l)}", n(cycle.stroke),
+                                u["m"]).markdown())
+            else:
+                out.append(t["swing"].format(l=cycle.output.link))
+                out.append("")
+                # the angle between the rocker's extreme positions, as the sheet's arc spans it
+                arm = cycle.output.arm(mech)
+                psi = f"ψ = ∠{arm[1]}′{arm[0]}{arm[1]}″" if arm else "ψ"
+                out.append(Step(psi, "", n(math.degrees(cycle.stroke)), u["deg"]).markdown())
+            out += ["", t["kth"].format(d=d.link), ""]
+            th = math.degrees(cycle.theta)
+            # the crank's turn over the working stroke, from the first extreme to the
+            # second: 180° + θ, as the cycle found θ from the two turns
+            work = 180.0 + th
+            w, r = ("φ_рх", "φ_хх") if lang == "ru" else ("φ_w", "φ_r")
+            # the turns carried to one decimal more than θ is given to, so that their
+            # difference gives θ as printed (3,855° from 183,855° and 176,145°)
+            shown = n(th)
+            carry = len(shown.replace(",", ".").partition(".")[2]) + 1
+
+            def turn(x: float) -> str:
+                return n(x, math.floor(math.log10(max(x, 1.0))) + 1 + carry)
+
+            out.append(Step(w, "", turn(work), u["deg"]).markdown())
+            out.append(Step(f"{r} = 360° − {w}", f"360° − {turn(work)}°", turn(360.0 - work),
+                            u["deg"]).markdown())
+            out.append(Step(f"θ = ({w} − {r}) / 2", f"({turn(work)}° − {turn(360.0 - work)}°) / 2",
+                            shown, u["deg"]).markdown())
+            out.append(Step("K = (180° + θ) / (180° − θ)", f"(180° + {n(th)}°) / (180° − {n(th)}°)",
+                            n(cycle.K), "").markdown())
+    out.append("")
+    number = 3
+    for title, s in plans or [("", sol)]:
+        for plan in (s.velocity, s.acceleration):
+            out += _plan_section(s, plan, lang, number, title)
+            number += 1
+        for w in warnings(s, lang):
+            out += [f"> {t['warn']}: {w}", ""]
+    return notation_in("\n".join(out).rstrip() + "\n", lang)
+
+
+def _letter(plan, name: str) -> str:
+    """The plan point's letter as the note writes it: the pole's for a fixed point, which
+    lies at the pole (the acceleration plan has no point b apart from π)."""
+    p = plan.points.get(name)
+    return plan.pole if p is not None and p.source.kind == "pole" else name
+
+
+def warnings(sol: Solution, lang: str = "en") -> list[str]:
+    """The solution's near-singular groups in ``lang``: ``sol.warnings`` in English, the
+    same figures (``sol.flags``) worded again in Russian."""
+    if lang == "en":
+        return list(sol.warnings)
+    at = sol.solver.at(sol.phi, lang)  # written as the crank's range is (Solver.at)
+    return [flag_words(f, at, lang) for f in sol.flags]
+
+
+def change_points(cycle, lang: str, driver) -> str:
+    """The sentence naming the cycle's change points, in the file's convention."""
+    from plans.cycle.analysis import change_angles  # the cycle words its summary from here
+
+    t = T[lang]
+    joined = {"en": " and ", "ru": " и "}.get(lang, ", ")
+    at = joined.join(change_angles(cycle.change_points, driver, lang))
+    what = t["change1"] if len(cycle.change_points) == 1 else t["changes"]
+    return t["change"].format(at=at, conv=driver.convention(lang), what=what, phi=driver.phi_sym)
+
+
+def no_full_turn(cycle, lang: str = "en", driver=None) -> str:
+    """The sentence for a crank that cannot make a full turn, with its range in the
+    convention of ``driver`` (:class:`plans.model.mechanism.Driver`), which it names; without
+    one, counter-clockwise from +x, and the input link is link 1.
+
+    The range reads as the convention counts, from the smaller angle to the larger, the
+    first one negative where it runs through 0°: "from −128.8° to 128.8°" (in the crank's
+    own order, a clockwise crank's "from 128.8° to 231.2°" named the very angles where it
+    does not assemble).
+    """
+    from plans.cycle.analysis import file_range
+
+    lo, hi = cycle.ccw_range
+    a, b = file_range(cycle, driver)
+    return T[lang]["noturn"].format(
+        d=driver.link if driver else 1, phi=driver.phi_sym if driver else "φ1",
+        lo=num(a, 4, lang).replace("-", "−"), hi=angle(b, 4, lang),
+        conv=driver.convention(lang) if driver else "",
+        span=num(math.degrees(abs(hi - lo)), 4, lang),
+    )
+
+
+def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") -> list[str]:
+    t, u = T[lang], UNITS[lang]
+
+    def n(x, d=4):
+        return num(x, d, lang)
+
+    acc = plan.kind == "acceleration"
+    mech, d = sol.mechanism, sol.mechanism.driver
+    m = sol.scalar  # the record the plans were built from, on Python numbers
+    unit = u["m/s²"] if acc else u["m/s"]
+    mu = plan.mu
+    sym = "a" if acc else "V"
+    mus = "μa" if acc else "μv"
+    pole = plan.pole
+    head = t["accelerations"] if acc else t["velocities"]
+    out = [f"## {number}. {head}" + (f" ({title})" if title else ""), ""]
+    tip = plan_name(d.tip)
+    w1 = abs(d.omega)
+    val = abs(plan.value(tip))
+    if acc:
+        out += [t["aa"].format(t=d.tip, p=d.pivot, w=d.omega_sym), ""]
+        out.append(Step(f"a_{d.tip} = {d.omega_sym}²·l_{d.pivot}{d.tip}", f"{n(w1, 5)}²·{n(d.length, 5)}", n(val), unit).markdown())
+        out += ["", t["mua"].format(mm=n(val / mu), t=tip), ""]
+        out.append(Step(f"μa = a_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu), u["mu_a"]).markdown())
+    else:
+        out += [t["va"].format(t=d.tip, p=d.pivot, w=d.omega_sym), ""]
+        if d.rpm:
+            out.append(Step(f"{d.omega_sym} = π·n{d.link} / 30", f"{n(math.pi, 5)}·{n(d.rpm)} / 30", n(w1), u["rad/s"]).markdown())
+        out.append(Step(f"V_{d.tip} = {d.omega_sym}·l_{d.pivot}{d.tip}", f"{n(w1, 5)}·{n(d.length, 5)}", n(val), unit).markdown())
+        out += ["", t["muv"].format(mm=n(val / mu), t=tip), ""]
+        out.append(Step(f"μv = V_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu), u["mu_v"]).markdown())
+    out.append("")
+    # the input link's other points (its centre of mass, a point a guide slides past)
+    sims = [p for p in plan.points.values() if p.source.kind == "similarity"
+            and _belongs(m, p.name, (d.link,))]
+    if sims:  # headed as a group's points are
+        out += _similar(sol, plan, sims, lang)
+        out += [t["avalues" if acc else "values"], ""]
+        out += _values(sol, plan, [p.name for p in sims], lang) + [""]
+    vplan = sol.velocity
+    for g in m.groups:
+        cons = g.acceleration if acc else g.velocity
+        x = cons.point
+        px = plan_name(x)
+        pt = plan.points[px]
+        out += [t["eqs"].format(x=x), "", f"- `{cons.equation}`"]
+        for sl in (g.group.s1, g.group.s2):  # a slot the tool named x3-x3: say what it is
+            if (sl is not None and sl.guide.named_by_tool and sl.guide.link
+                    and sl.guide.label.startswith(f"x{sl.guide.link}")):
+                out.append(f"- {t['xk'].format(x=sl.guide.label, k=sl.guide.link)}")
+        if acc:  # a block on a guide whose link translates: no Coriolis term, and why
+            for sl in (g.group.s1, g.group.s2):
+                if sl is not None and sl.guide.link and sl.guide.link in sol.solver.translating:
+                    out.append(f"- {t['nocor'].format(k=sl.guide.link)}")
+        for r in cons.routes:
+            parts = []
+            if r.base is not None and r.base in mech.frame:
+                parts.append(f"{sym}_{r.base} = 0")
+            for term in r.terms:
+                a_, b_ = term.about
+                rel = vplan.mm(plan_name(b_), plan_name(a_)) * vplan.mu  # 0 where it is rounding
+                if term.kind == "normal":
+                    l = abs(sol.positions[a_] - sol.positions[b_])
+                    out.append(f"- {t['normal'].format(x=a_, y=b_)}")
+                    out.append("  " + Step(f"{term.label} = V_{a_}{b_}² / l_{a_}{b_}",
+                                           f"{n(rel, 5)}² / {n(l, 5)}", n(rel**2 / l), unit).markdown()[2:])
+                else:
+                    owner = m.point_link.get(a_) if a_ in m.coincident else m.point_link.get(b_)
+                    w = abs(sol.omega[owner])
+                    out.append(f"- {t['coriolis'].format(x=a_, y=b_, i=owner)}")
+                    s = mech.slider_of(owner)
+                    if s is not None and s.guide.link not in (0, owner):  # slides on a turning link
+                        out.append(f"  {t['same_w'].format(i=owner, k=s.guide.link)}")
+                    out.append("  " + Step(f"{term.label} = 2·ω{owner}·V_{a_}{b_}",
+                                           f"2·{n(w, 5)}·{n(rel, 5)}", n(2 * w * rel), unit).markdown()[2:])
+                seg = _component_segment(plan, term.label)
+                if seg:
+                    s0, s1 = seg
+                    mm = plan.mm(s0, s1)
+                    out.append("  " + Step(f"{s0}{s1} = {term.label} / {mus}", f"{n(mm * mu, 5)} / {n(mu)}",
+                                           n(mm), u["mm"]).markdown()[2:])
+            out.append(f"- {r.unknown}: {t['dir']} {r.relation}" + (f"; {', '.join(parts)}" if parts else ""))
+        lines = pt.source.lines
+        out += ["", t["build"].format(l0=_letter(plan, lines[0].through), r0=lines[0].relation,
+                                      l1=_letter(plan, lines[1].through), r1=lines[1].relation,
+                                      x=px), ""]
+        # similarity points of the group's links, then values; a link that translates
+        # has one velocity and one acceleration for all its points
+        moving = tuple(k for k in (g.group.a, g.group.b) if k not in sol.solver.translating)
+        sims = [p for p in plan.points.values() if p.source.kind == "similarity"
+                and _belongs(m, p.name, moving)]
+        out += _similar(sol, plan, sims, lang)
+        out += [t["avalues" if acc else "values"], ""]
+        out += _values(sol, plan, [px] + [p.name for p in sims], lang)
+        for r in cons.routes:
+            # the unknown read off the plan: from where its line was drawn to the point found
+            if r.unknown_kind in ("relative", "tangential") or (
+                    r.unknown_kind == "sliding" and r.base is not None):
+                start = next((ln.through for ln in pt.source.lines if ln.unknown == r.unknown),
+                             r.base and plan_name(r.base))
+                mm = plan.mm(start, px)
+                out.append(Step(f"{r.unknown} = {_letter(plan, start)}{px}·{mus}",
+                                f"{n(mm, 5)}·{n(mu)}", n(mm * mu), unit).markdown())
+        for k in (g.group.a, g.group.b):  # after the values above, as a list of its own
+            if k in moving:
+                continue
+            own = list(dict.fromkeys([*mech.links[k].points,
+                                      *(q for q, o in m.point_link.items() if o == k)]))
+            same = [nm for nm in dict.fromkeys(plan_name(q) for q in own)
+                    if nm in plan.points and nm != px and plan.points[nm].source.kind != "pole"]
+            names = [_mech_name(sol, nm) for nm in same] + ([x] if x in own else [])
+            if len(names) >= 2:  # a block with one point has nothing to equate
+                eq = " = ".join(f"{sym}_{q}" for q in names)
+                out += ["", t["translates"].format(i=k, eq=eq, what=t["acc" if acc else "vel"]), ""]
+                out += _values(sol, plan, same, lang)
+        out.append("")
+        # ω or ε of the group's links that turn
+        for r in cons.routes:
+            if r.unknown_kind not in ("relative", "tangential"):
+                continue
+            A, B = _split(sol, r.unknown.split("_", 1)[1])  # "V_A3B" → A3, B
+            if not A:
+                continue
+            link = m.point_link.get(A) if A in m.coincident else _common_link(mech, A, B)
+            if link is None:
+                continue
+            l = abs(sol.positions[A] - sol.positions[B])
+            mag = abs(r.param)
+            mag = mag if mag > plan.tiny else 0.0  # rounding, as the plan's segments
+            val = (sol.epsilon if acc else sol.omega)[link]
+            sense = t["sense"][int(math.copysign(1, val)) if val else 0]
+            key = "eps" if acc else "omega"
+            out += [t[key].format(i=link), ""]
+            w = "ε" if acc else "ω"
+            out.append(Step(f"{w}{link} = {r.unknown} / l_{A}{B}", f"{n(mag, 5)} / {n(l, 5)}",
+                            n(mag / l), (u["rad/s²"] if acc else u["rad/s"]) + (f", {sense}" if sense else "")).markdown())
+            out.append("")
+    return out
+
+
+def _component_segment(plan, label):
+    for v in plan.vectors:
+        if v.label == label:
+            return v.start, v.end
+    return None
+
+
+def _belongs(m, plan_point: str, links) -> bool:
+    for name, owner in m.point_link.items():
+        if plan_name(name) == plan_point:
+            return owner in links
+    return False
+
+
+def _similar(sol: Solution, plan, sims, lang: str) -> list[str]:
+    """The similarity theorem's steps for the plan points ``sims``: a point on the line
+    of two known ones by the ratio of lengths, any other by its similar triangle."""
+    if not sims:
+        return []
+    # English texts name the step by its figure (Norton's "velocity image"); Russian by
+    # the theorem, «по теореме подобия», on either plan
+    out = [T[lang]["sim"].format(plan=plan.kind), ""]
+    for p in sims:
+        s = p.source
+        if s.in_line:
+            out.append(_side(sol, plan, p.name, s.base, s.other, s.base, lang).markdown())
+        else:  # the triangle is built on b0b1 from its two other sides, as on paper
+            out.append(f"- `{s.equation}`:")
+            out += ["  " + _side(sol, plan, p.name, s.base, s.other, end, lang).markdown()[2:]
+                    for end in (s.base, s.other)]
+    return out + [""]
+
+
+def _side(sol: Solution, plan, x: str, b0: str, b1: str, end: str, lang: str) -> Step:
+    """The similarity theorem's side ``end``–``x`` of a figure on the plan segment b0b1:
+    end·x = b0b1·(END X) / (B0 B1), the link's segments as drawn at μl."""
+    X, B0, B1, END = (_mech_name(sol, n) for n in (x, b0, b1, end))
+    w0, w1, e = (_letter(plan, n) for n in (b0, b1, end))  # a fixed point is the pole
+    l_ex, l_bb = (abs(sol.positions[q] - sol.positions[r]) / sol.mu_l for q, r in ((X, END), (B1, B0)))
+    sub = "·".join(num(v, 5, lang) for v in (plan.mm(b0, b1), l_ex)) + f" / {num(l_bb, 5, lang)}"
+    return Step(f"{e}{x} = {w0}{w1}·{END}{X} / {B0}{B1}", sub, num(plan.mm(end, x), 4, lang),
+                UNITS[lang]["mm"])
+
+
+def _values(sol: Solution, plan, names, lang: str) -> list[str]:
+    """V_X = pX·μv (a_X = πX·μa) for the plan points ``names``."""
+    u = UNITS[lang]
+    acc = plan.kind == "acceleration"
+    sym, mus, pole = ("a" if acc else "V"), ("μa" if acc else "μv"), plan.pole
+    unit = u["m/s²"] if acc else u["m/s"]
+    out = []
+    for name in names:
+        mm = plan.mm(pole, name)
+        out.append(Step(f"{sym}_{_mech_name(sol, name)} = {pole}{name}·{mus}",
+                        f"{num(mm, 5, lang)}·{num(plan.mu, 4, lang)}", num(mm * plan.mu, 4, lang),
+                        unit).markdown())
+    return out
+
+
+def _mech_name(sol: Solution, plan_point: str) -> str:
+    for name in sol.positions:
+        if plan_name(name) == plan_point:
+            return name
+    return plan_point.upper()
+
+
+def _split(sol: Solution, text: str) -> tuple[str | None, str | None]:
+    """'A3B' → ('A3', 'B') using the known point names (longest first)."""
+    names = sorted(sol.positions, key=len, reverse=True)
+    for a in names:
+        if text.startswith(a) and text[len(a):] in sol.positions:
+            return a, text[len(a):]
+    return None, None
+
+
+def _common_link(mech, A: str, B: str) -> int | None:
+    la, lb = set(mech.links_of(A)), set(mech.links_of(B))
+    common = sorted((la & lb) - {0})
+    return common[0] if common else None

@@ -1,0 +1,18 @@
+"""One crank position: the plans with every construction recorded."""
+
+from .solution import (  # noqa: F401
+    IN_LINE,
+    NOISE,
+    Plan,
+    PlanLine,
+    PlanPoint,
+    PlanVector,
+    Solution,
+    Source,
+    cycle_extent,
+    image_sides,
+    plan_name,
+    solve_position,
+)
+
+__all__ = ['IN_LINE', 'NOISE', 'Plan', 'PlanLine', 'PlanPoint', 'PlanVector', 'Solution', 'Source', 'cycle_extent', 'image_sides', 'plan_name', 'solve_position']

@@ -1,0 +1,2 @@
+"""Independent references for the engine: high-precision solves."""
+
