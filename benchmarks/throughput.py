@@ -24,9 +24,8 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
 
-from plans.model.scenes import SCENES  # noqa: E402
-
 from plans.kinematics.solver import Solver  # noqa: E402
+from plans.model.scenes import SCENES  # noqa: E402
 
 
 def best(fn, runs=3):

@@ -684,7 +684,7 @@ def _wider(req: LabelRequest, distances: Sequence[float], hard: list, hard_tree,
     x0, y0, x1, y1 = text_box(Text((0.0, 0.0), req.text, req.size, markup=req.markup)).bounds
     hw, hh = (x1 - x0) / 2, (y1 - y0) / 2
     start = math.degrees(math.atan2(_UNIT[req.prefer][1], _UNIT[req.prefer][0]))
-    half = int(round(180 / TURN))  # the preferred direction first, then by turn either way
+    half = round(180 / TURN)  # the preferred direction first, then by turn either way
     turns = start + TURN * np.array([k * sign for k in range(half + 1)
                                      for sign in ((1,) if k in (0, half) else (1, -1))])
     best: tuple[tuple, tuple[int, bool, Text, Polygon, Point]] | None = None

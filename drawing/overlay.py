@@ -329,7 +329,7 @@ class _Labels:
         best, best_cost = None, math.inf
         for ring in rings:
             n = 16 if ring < 30 else 32
-            steps = [0] + [s for k in range(1, n // 2 + 1) for s in (k, -k)][: n - 1]
+            steps = [0, *[s for k in range(1, n // 2 + 1) for s in (k, -k)][:n - 1]]
             ang = prefer + np.array(steps) * (2 * math.pi / n)
             cx = x + (ring + w / 2) * np.cos(ang)
             cy = y - (ring + h / 2) * np.sin(ang)

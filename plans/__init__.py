@@ -23,11 +23,11 @@ from plans.errors import (
     StructureError,
 )
 from plans.kinematics.solver import Motion, Solver
-from plans.model.mechanism import Mechanism, from_dict, load
-from plans.plan.solution import Plan, PlanPoint, PlanVector, Solution, Source, solve_position
-from plans.model.structure import DyadKind, Structure, analyse
 from plans.kinematics.sweep import Sweep
+from plans.model.mechanism import Mechanism, from_dict, load
+from plans.model.structure import DyadKind, Structure, analyse
 from plans.model.variants import variant
+from plans.plan.solution import Plan, PlanPoint, PlanVector, Solution, Source, solve_position
 
 __all__ = [
     "AssemblyError", "Cycle", "DyadKind", "InputError", "Mechanism", "Motion", "Plan",

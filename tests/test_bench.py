@@ -9,10 +9,10 @@ import numpy as np
 import pytest
 
 from plans.cli import bench
-from plans.verify import reference
 from plans.cli.common import main
 from plans.kinematics.solver import Solver
 from plans.model.scenes import SCENES
+from plans.verify import reference
 
 ROW_KEYS = {"scene", "method", "positions", "seconds_per_position", "max_rel_error"}
 

@@ -10,8 +10,7 @@ import numpy as np
 import pytest
 from test_stability import crank_slider, fourbar, mech_of, slotted
 
-from plans import Solver
-from plans import analyse_cycle
+from plans import Solver, analyse_cycle
 from plans.cycle.analysis import summary
 from plans.cycle.positions import drawn
 
@@ -469,8 +468,8 @@ def test_check_keeps_small_true_values_and_zeroes_only_rounding():
     """A crank at 1e-4 rad/s gives ε3 of 5e-10 rad/s²: a real value, which an absolute
     1e-9 floor had made 0 (and the student's right answer BEYOND). Only what is rounding
     relative to the plan, as the plan's own segments are, is 0."""
-    from plans.check import verdict as ck
     from plans import solve_position
+    from plans.check import verdict as ck
     from plans.check.measured import Item, Tolerance
     from plans.check.replay import expected, simulate
 
@@ -630,8 +629,8 @@ def test_a_row_within_rounding_of_a_change_point_is_no_dead_point(capsys, tmp_pa
     assert code == 0, err
     assert "dead point" not in out + err and "error" not in out
     assert out.count("singular: group 2–3 (RRR) at φ1 = ") == 2
-    assert "(beside the change point at φ1 = 0°" in out + err or angle == "1e-7" and \
-        "(beside the change point at φ1 = 0°" in out
+    assert "(beside the change point at φ1 = 0°" in out + err or (angle == "1e-7" and \
+        "(beside the change point at φ1 = 0°" in out)
 
 
 def test_a_slotted_link_given_on_its_change_point_turns_on_from_there(capsys, tmp_path):

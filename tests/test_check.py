@@ -23,11 +23,11 @@ from hypothesis import strategies as st
 from support import NON_GRASHOF, run
 
 from plans.check import verdict as ck
-from plans.model import mechanism
 from plans.errors import InputError
 from plans.kinematics.solver import Solver
-from plans.plan.solution import solve_position
+from plans.model import mechanism
 from plans.model.scenes import SCENES
+from plans.plan.solution import solve_position
 
 SAMPLES = Path(__file__).resolve().parents[1] / "samples"
 PRESS = SAMPLES / "press.toml"
@@ -897,7 +897,7 @@ def test_the_header_credits_the_student_only_with_the_scale_factors_given(tmp_pa
     meas.write_text(f'mechanism = "{FOURBAR}"\n[scales]\nmu_v = 0.02\n[segments]\npc = 40\n', "utf-8")
     code, out, _ = run(capsys, "check", meas)
     assert "Student's scale factors: μv = 0.02 (m/s)/mm\n" in out
-    code, out, _ = run(capsys, "check", meas, "--json")
+    _code, out, _ = run(capsys, "check", meas, "--json")
     assert json.loads(out)["scales"] == {"mu_v": 0.02}
 
 
@@ -1014,7 +1014,7 @@ def test_a_look_alike_is_sought_on_the_plan_of_the_mistake_named(tmp_path, press
     res = diagnose(tmp_path, PRESS, segs | {"πc": round(ac, 2)}, MU_PRESS)
     assert named(res).kind == "coriolis-reversed" and res.diagnosis.best.unexplained == ("πc",)
     assert [(lk.item, lk.kind, lk.other) for lk in res.diagnosis.lookalikes] == [("πc", "segment", "ac")]
-    code, out, _ = run(capsys, "check", tmp_path / "m.toml")
+    _code, out, _ = run(capsys, "check", tmp_path / "m.toml")
     assert "  πc = 43.63 mm is the length of ac (43.63 mm): measured from the wrong point?" in out
     res = diagnose(tmp_path, PRESS, segs | {"πd": round(segs["πd"] * 1.15, 2)}, MU_PRESS)
     assert named(res).kind == "coriolis-reversed" and res.diagnosis.best.unexplained == ("πd",)
@@ -1107,7 +1107,7 @@ def test_a_value_written_with_the_wrong_sense_alone_is_named(tmp_path, capsys, p
     assert got.correction() == (f"read the sense of {sym} off the {plan} plan: it is the sense in "
                                 f"which {vec}, placed at A3, turns the link about B")
     assert got.describe("ru").endswith("с обратным направлением; планы построены верно")
-    code, out, _ = run(capsys, "check", tmp_path / "m.toml")
+    _code, out, _ = run(capsys, "check", tmp_path / "m.toml")
     assert f"Diagnosis: {sym} written with the wrong sense; the plans are right." in out
     # ω3 alone is also what a velocity plan turned round (ω1 reversed) gives: said, second
     alts = [f.mistake.kind for f in res.diagnosis.alternatives]
@@ -1135,7 +1135,7 @@ def test_russian_words_agree_with_their_numbers(tmp_path, capsys, press):
     segs = {it.name: press.segments[it.name] * (20 if it.plan == "velocity" else 1)
             for it in plan_segments(press)}
     path = write_meas(tmp_path / "m.toml", PRESS, segs, MU_PRESS)
-    code, out, _ = run(capsys, "check", path, "--lang", "ru")
+    _code, out, _ = run(capsys, "check", path, "--lang", "ru")
     assert "Диагноз: план скоростей в 20 раз крупнее (при указанном μv)" in out
 
 
@@ -1253,7 +1253,7 @@ def test_the_crank_angle_is_given_as_solve_gives_it(capsys):
     assert ", φ1 = 60° from +x (30° from +y, cw, as the file gives it)\n" in out
     _, solve, _ = run(capsys, "solve", PRESS)
     assert "φ1 = 60° from +x (30° from +y, cw, as the file gives it)," in solve
-    code, out, _ = run(capsys, "check", SAMPLES / "check_press.toml", "--lang", "ru")
+    _code, out, _ = run(capsys, "check", SAMPLES / "check_press.toml", "--lang", "ru")
     assert ", φ1 = 60° от +x (30° от +y, по часовой стрелке, как задано в файле)\n" in out
     _, js, _ = run(capsys, "check", SAMPLES / "check_press.toml", "--json")
     data = json.loads(js)

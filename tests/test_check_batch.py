@@ -16,8 +16,8 @@ import pytest
 from support import run
 from test_check import _variant_exact
 
-from plans.check import verdict as ck
 from plans import fmt
+from plans.check import verdict as ck
 
 MU = {"mu_l": 0.0025, "mu_v": 0.01, "mu_a": 0.2}
 VELOCITY = ["pb", "ps1", "pc", "pe", "ps2", "ps3", "bc", "dc"]

@@ -659,7 +659,7 @@ def test_two_outputs_into_one_pipe_are_refused(tmp_path, argv):
     one pipe were written with exit 0."""
     r = subprocess.run([sys.executable, "-m", "plans", "sheet", "--variant", "3", *argv],
                        cwd=ROOT, env={**os.environ, "PYTHONPATH": str(ROOT)},
-                       stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+                       capture_output=True)
     assert r.returncode == 2 and r.stdout == b""
     assert b"are both stdout" in r.stderr
 

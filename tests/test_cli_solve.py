@@ -55,8 +55,8 @@ def test_solve_press_json_includes_coincident_point(capsys):
 def test_solve_json_keeps_each_plans_segments_apart(capsys, tmp_path):
     """On a Scotch yoke the relative vector aa3 is drawn on both plans: V_A3A on the
     velocity plan, a^r_A3A on the acceleration plan. Each plan's table keeps its own."""
-    from plans.plan.solution import solve_position
     from plans.model.scenes import SCENES
+    from plans.plan.solution import solve_position
 
     scene = SCENES["scotch_yoke"]
     path = tmp_path / "yoke.toml"
@@ -264,7 +264,7 @@ def test_the_note_finds_every_point_of_the_input_link_it_uses(capsys, tmp_path):
     assert "a_S1 = πs1·μa = " in out and f"= {a:.3f} м/с²`".replace(".", ",") in out
     path = tmp_path / "tangent.toml"
     path.write_text(SCENES["tangent"].toml, "utf-8")
-    code, out, _ = run(capsys, "report", path, "--lang", "ru")
+    _code, out, _ = run(capsys, "report", path, "--lang", "ru")
     velocity = out.split("## 3.")[1].split("## 4.")[0]
     assert velocity.index("- `pc1 = pa·OC1 / OA = ") < velocity.index("Через точку c1")
     assert "- `V_C1 = pc1·μv = " in velocity
@@ -276,8 +276,8 @@ def test_the_note_explains_translating_links_sliding_links_and_its_own_guide_nam
     was never given, and a degenerate 'triangle a3de' stood for it), and no Coriolis term,
     with the reason. A link sliding on a turning one turns with it (ω5 = ω3 was used,
     never said). A guide the tool names x3-x3 is said to be link 3's slot."""
-    from plans.plan.solution import solve_position
     from plans.model.scenes import SCENES
+    from plans.plan.solution import solve_position
 
     def note_of(name):
         path = tmp_path / f"{name}.toml"
@@ -341,7 +341,7 @@ def test_every_substitution_in_the_note_gives_its_result_by_hand(capsys, tmp_pat
             if not re.fullmatch(r"[\d.·/²+−() ]+", sub):
                 continue
             expr = sub.replace("·", "*").replace("²", "**2").replace("−", "-")
-            got = eval(expr, {"__builtins__": {}})  # noqa: S307 - digits and operators only
+            got = eval(expr, {"__builtins__": {}})
             decimals = len(res.split(".")[1]) if "." in res else 0
             assert abs(got - float(res)) <= 0.6 * 10 ** -decimals, (name, line, got)
             checked += 1
@@ -367,7 +367,7 @@ def test_every_point_of_a_yoke_is_an_output_and_a_slider_link_says_so(capsys, tm
 def test_a_fixed_point_is_the_pole_everywhere_in_the_note(capsys):
     """B is fixed, so b lies at the pole: the note drew 'through b' and read 'ba3' next to
     'pc = pa3·BC/BA3'. Every step now writes p (π)."""
-    code, out, _ = run(capsys, "report", "samples/press.toml")
+    _code, out, _ = run(capsys, "report", "samples/press.toml")
     assert "Through point a draw a line ∥ BC and through point p a line ⊥ BA3; they meet at point a3." in out
     assert "- `V_A3B = pa3·μv = 55.432·0.05 = 2.772 m/s`" in out
     assert "through b " not in out and "ba3·μ" not in out
@@ -375,7 +375,7 @@ def test_a_fixed_point_is_the_pole_everywhere_in_the_note(capsys):
 
 def test_a_zero_omega_has_no_sense_word(capsys):
     """The press's slider: 'ω5 = 0 rad/s —' printed a dash where a sense would stand."""
-    code, out, _ = run(capsys, "solve", "samples/press.toml")
+    _code, out, _ = run(capsys, "solve", "samples/press.toml")
     assert "  link 5 (slider): ω5 = 0 rad/s, ε5 = 0 rad/s²\n" in out
     assert "  link 1 (crank): ω1 = 20 rad/s ccw, ε1 = 0 rad/s²\n" in out
 

@@ -10,9 +10,9 @@ import numpy as np
 import pytest
 from support import NON_GRASHOF, run
 
-from plans.model import mechanism
 from plans.cycle.analysis import analyse_cycle
 from plans.kinematics.solver import WARN_SINE, Solver
+from plans.model import mechanism
 from plans.plan.solution import solve_position
 
 PRESS = "samples/press.toml"
@@ -375,7 +375,7 @@ def test_the_json_crank_range_runs_counter_clockwise(capsys, tmp_path, sense):
     path = tmp_path / "f.toml"
     path.write_text(Path(FOURBAR).read_text("utf-8").replace('sense = "ccw"', f'sense = "{sense}"'),
                     "utf-8")
-    code, out, _ = run(capsys, "cycle", path, "--json", "--positions", "3")
+    _code, out, _ = run(capsys, "cycle", path, "--json", "--positions", "3")
     lo, hi = json.loads(out)["cycle"]["crank_range_phi_deg"]
     assert lo == pytest.approx(231.2, abs=0.1) and hi == pytest.approx(128.8, abs=0.1)
 
@@ -473,7 +473,7 @@ def test_a_sine_is_never_above_one(capsys, tmp_path):
     assert code == 0, err
     rows = list(csv.reader(io.StringIO(out)))
     cols = [i for i, h in enumerate(rows[0]) if h == "min_sine"
-            or h.startswith("group ") and not h.endswith(" pivot")]
+            or (h.startswith("group ") and not h.endswith(" pivot"))]
     assert [rows[0][i] for i in cols] == ["min_sine", "group 2–3 (RPR)"]
     sines = [float(r[i]) for r in rows[1:] for i in cols if r[i]]
     assert max(sines) == 1.0 and min(sines) >= 0.0

@@ -7,10 +7,10 @@ from functools import cache
 
 import pytest
 
-from plans.cli.sheet import DIAGRAMS, build_sheet
 from drawing.labels import obstacles_of, text_box
 from drawing.scene import Arrow, Polyline, Segment, Text, flatten
 from drawing.views.views import NUMBER_GAPS, WORDS, diagrams_view
+from plans.cli.sheet import DIAGRAMS, build_sheet
 from plans.cycle.analysis import analyse_cycle
 from plans.model.scenes import SCENES
 from plans.model.variants import variant
@@ -65,7 +65,7 @@ def test_the_origins_zero_stands_beside_the_vertical_axis_not_across_it(name):
         origins = [(t, tick) for t, tick in numbers if tick[0] == axes[0].p1[0]]
         assert [t.text for t, _ in origins] == ["0"] * 3
         for t, (x, y) in origins:
-            x0, y0, x1, y1 = text_box(t).bounds
+            x0, y0, _x1, y1 = text_box(t).bounds
             assert x < x0 < x + 1.0 and (y0 > y or y1 < y), (width, text_box(t).bounds)
 
 

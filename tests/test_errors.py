@@ -16,8 +16,6 @@ from pathlib import Path
 import pytest
 from support import expectations, run, upright_fourbar
 
-from plans.model import fileformat
-from plans.model import mechanism
 from plans.errors import (
     AssemblyError,
     InputError,
@@ -26,9 +24,10 @@ from plans.errors import (
     StructureError,
 )
 from plans.kinematics.solver import Solver
+from plans.model import fileformat, mechanism
 from plans.model.mechanism import from_dict, load
-from plans.plan.solution import solve_position
 from plans.model.variants import load_table, variant, variant_numbers
+from plans.plan.solution import solve_position
 
 ROOT = Path(__file__).resolve().parent.parent
 CORPUS = ROOT / "tests" / "corpus"

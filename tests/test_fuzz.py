@@ -29,8 +29,8 @@ from plans.cli.common import main
 from plans.errors import InputError, PlansError
 from plans.kinematics.solver import Solver
 from plans.model.mechanism import Mechanism, from_dict
-from plans.plan.solution import solve_position
 from plans.model.structure import DyadKind
+from plans.plan.solution import solve_position
 
 ROOT = Path(__file__).resolve().parent.parent
 SCALE = float(os.environ.get("PLANS_FUZZ_EXAMPLES", "0")) or None

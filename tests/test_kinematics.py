@@ -27,6 +27,8 @@ from support import upright_fourbar
 from plans.errors import InputError
 from plans.kinematics.solver import Motion, Solver
 from plans.model.mechanism import Mechanism, from_dict
+from plans.model.scenes import SCENES, Scene
+from plans.model.structure import DyadKind, analyse
 from plans.verify.reference import (
     ReferenceArrays,
     ReferenceMotion,
@@ -34,8 +36,6 @@ from plans.verify.reference import (
     max_rel_error,
     reference,
 )
-from plans.model.scenes import SCENES, Scene
-from plans.model.structure import DyadKind, analyse
 
 TOL_REF = 1e-10  # engine vs the 30-digit reference (normwise, relative)
 H_FD = 1e-5  # rad, step of the central differences

@@ -179,7 +179,7 @@ def test_sweep_into_reuses_the_arrays_and_keeps_the_callers_angles():
     a = np.linspace(0, 2 * np.pi, 300)
     b = a + 0.5
     first = sv.sweep(a, block=64)
-    keep = {k: v for k, v in first.position.items()}
+    keep = dict(first.position.items())
     again = sv.sweep(b, block=64, into=first)
     fresh = sv.sweep(b, block=64)
     for k in fresh.position:

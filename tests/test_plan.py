@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 
 from plans.model.mechanism import load
-from plans.plan.solution import solve_position
 from plans.model.variants import variant
+from plans.plan.solution import solve_position
 
 
 @pytest.fixture(scope="module")
@@ -230,8 +230,8 @@ def test_a_segment_that_is_zero_reads_zero_not_rounding(deg):
     acceleration −ω²·OA points along the guide, so its share along the slot, a^r_A3A, is
     0. It was printed as 4.4e-16 m/s² (two equal vectors subtracted); every reader of the
     plan now gets 0. At 230° the same segment is the exact decomposition."""
-    from plans.note.report import note
     from plans.model.scenes import SCENES
+    from plans.note.report import note
 
     mech = SCENES["yoke_inclined"].mechanism()
     sol = solve_position(mech, math.radians(deg))
@@ -306,8 +306,8 @@ def test_every_similarity_point_lies_on_a_side_of_its_links_image(scene):
     sides of the link's triangle (the crank-rocker's e and f): both ends of the
     triangle's sides are a base and the point itself. A link that translates (the Scotch
     yoke's) is one point on the plan, and has no image to draw."""
-    from plans.plan.solution import image_sides
     from plans.model.scenes import SCENES
+    from plans.plan.solution import image_sides
 
     sol = solve_position(SCENES[scene].mechanism())
     for plan in (sol.velocity, sol.acceleration):
@@ -340,8 +340,8 @@ def test_every_value_read_off_a_plan_stands_under_its_heading(lang):
     group's points get: the note read as if the value were a second similarity step."""
     import re
 
-    from plans.note.report import T, note
     from plans.model.variants import variant
+    from plans.note.report import T, note
 
     for n in (3, 4):
         text = note(solve_position(variant(n)), lang)

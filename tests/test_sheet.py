@@ -14,11 +14,11 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from plans.cli.sheet import build_sheet
 from drawing.labels import overlaps, text_box
-from drawing.sheet.layout import share_covered
 from drawing.scene import Text
+from drawing.sheet.layout import share_covered
 from drawing.svg import to_svg
+from plans.cli.sheet import build_sheet
 from plans.model.mechanism import load
 from plans.model.scenes import SCENES
 from plans.model.variants import variant, variant_numbers
@@ -89,7 +89,7 @@ def test_sheet_size_letters_and_texts(key):
 
 @pytest.mark.parametrize("key", KEYS)
 def test_vectors_drawn_at_their_segment_lengths(key):
-    mech, scene, sheet, info, svg = _sheet(key)
+    mech, _scene, sheet, info, svg = _sheet(key)
     root, _ = _texts(svg)
     vecs = _vectors(root)
     checked = 0
@@ -187,8 +187,8 @@ def test_sheet_scales_fill_the_sheet_where_the_file_leaves_them_free():
 def test_only_a_sheet_left_empty_by_the_files_own_scales_gets_a_note():
     """The press at its fixed scales fills a fifth of A1 (noted) and half of A2 (not);
     sheets whose scales the tool chose are not noted, however they fill the field."""
-    from plans.cli.sheet import SPARSE, sparse_note
     from drawing.sheet.layout import share_used
+    from plans.cli.sheet import SPARSE, sparse_note
 
     mech, _, sheet, info, _ = _sheet("press")
     assert 0.15 < share_used(sheet, info["placed"]) < SPARSE
@@ -215,7 +215,7 @@ def test_no_text_sits_on_a_vector_arrow(key):
     from drawing.labels import text_box
     from drawing.scene import Arrow, Group, flatten
 
-    mech, scene, sheet, info, svg = _sheet(key)
+    mech, scene, sheet, _info, _svg = _sheet(key)
     views = [g for g in scene.layer("views").items if isinstance(g, Group)
              and ("velocity" in g.name or "acceleration" in g.name)]
     assert len(views) >= 2
@@ -324,8 +324,8 @@ def test_trajectories_span_the_positions_drawn_when_the_crank_cannot_turn():
     import numpy as np
 
     from plans.cycle.analysis import analyse_cycle
-    from plans.kinematics.solver import Solver
     from plans.cycle.positions import trajectory_angles
+    from plans.kinematics.solver import Solver
 
     mech = _mech("fourbar")
     solver = Solver(mech)
@@ -379,8 +379,8 @@ def test_a_scotch_yokes_slot_is_drawn_across_its_axis_and_its_block_slides_along
     from drawing.views import views as V
     from plans.cycle.analysis import analyse_cycle
     from plans.kinematics.solver import Solver
-    from plans.plan.solution import solve_position
     from plans.model.scenes import SCENES
+    from plans.plan.solution import solve_position
 
     mech = SCENES["scotch_yoke"].mechanism()
     solver = Solver(mech)
@@ -449,11 +449,11 @@ def test_the_plan_of_positions_is_sized_by_what_it_draws(name, low, high):
     import numpy as np
 
     from plans.cycle.analysis import analyse_cycle
-    from plans.kinematics.solver import Solver
-    from plans.plan.solution import cycle_extent, solve_position
     from plans.cycle.positions import drawn
-    from plans.scales import choose_mu_l
+    from plans.kinematics.solver import Solver
     from plans.model.scenes import SCENES
+    from plans.plan.solution import cycle_extent, solve_position
+    from plans.scales import choose_mu_l
 
     mech = SCENES[name].mechanism()
     solver = Solver(mech)
@@ -471,8 +471,8 @@ def test_solve_sizes_the_tangent_mechanism_as_the_sheet_does(capsys):
     """The tangent mechanism's slider runs off towards infinity near φ1 = ±90°: solve
     and report chose μl = 0.04 m/mm from every angle of the turn, a crank of 2.5 mm. They
     now leave those positions off as the sheet does."""
-    from plans.plan.solution import solve_position
     from plans.model.scenes import SCENES
+    from plans.plan.solution import solve_position
 
     sol = solve_position(SCENES["tangent"].mechanism())
     crank_mm = sol.mechanism.driver.length / sol.mu_l
@@ -534,8 +534,8 @@ def test_a_point_named_like_a_centre_of_mass_but_carrying_a_pair_stays_on_the_ba
 
 
 def test_a_plan_no_sheet_can_hold_points_to_the_plans_option():
-    from drawing.sheet.layout import LayoutError, place_views
     from drawing.sheet.frame import Sheet
+    from drawing.sheet.layout import LayoutError, place_views
     from drawing.views.views import View
 
     for name, option in (("positions", ""), ("acceleration-1", "--plans")):
@@ -879,8 +879,8 @@ def test_a_pair_that_does_not_fit_together_is_packed_as_without_pairs():
     """A pair kept together never costs a view its place: a tall narrow partner cannot
     go right beside (it would meet the title block) or under a wide box, but both fit
     apart; pack then packs them as it did without pairs."""
-    from drawing.sheet.layout import pack
     from drawing.sheet.frame import Sheet
+    from drawing.sheet.layout import pack
 
     sheet = Sheet("A2")
     sizes = [(400.0, 190.0), (150.0, 380.0)]
@@ -912,8 +912,8 @@ def test_pairs_are_packed_together_in_their_order():
     acceleration plan is packed above its velocity plan and both before position 2's
     plans; with them each velocity plan has its acceleration plan right of it or under
     it, position 2's first."""
-    from drawing.sheet.layout import pack
     from drawing.sheet.frame import Sheet
+    from drawing.sheet.layout import pack
 
     sheet = Sheet("A2")
     sizes = [(155.0, 137.0), (143.0, 98.0), (144.0, 59.0), (146.0, 171.0), (269.0, 116.0),
@@ -1022,7 +1022,7 @@ def test_a3_holds_sheet_1_its_diagrams_and_tables_sized_to_the_field(key):
 def test_a_long_note_is_wrapped_to_the_sheet(tmp_path):
     """The four-bar's one-line note (why there are no diagrams) was 430 mm long and never
     wrapped: the A3 sheet was refused for it."""
-    _, scene, sheet, info, _ = _sheet("fourbar", "A3")
+    _, _scene, sheet, info, _ = _sheet("fourbar", "A3")
     (note,) = [p for p in info["placed"] if p.view.name == "note"]
     assert note.rect.w <= 182 and len([t for t in note.view.items if isinstance(t, Text)]) > 1
     _boxes_clear(sheet, info["placed"])
@@ -1334,8 +1334,8 @@ def test_the_angular_diagrams_say_which_sense_is_positive(name, tmp_path):
     from drawing.views.views import WORDS, diagram_curves, diagrams_view
     from plans.cycle.analysis import analyse_cycle
     from plans.kinematics.solver import Solver
-    from plans.plan.solution import solve_position
     from plans.model.scenes import SCENES
+    from plans.plan.solution import solve_position
 
     if name == "cr4":
         path = tmp_path / "cr4.toml"
@@ -1417,7 +1417,7 @@ def test_views_at_free_scales_are_spread_to_the_fields_edges(key):
     mech, _, sheet, info, _ = _sheet(key)
     assert not mech.scales
     placed = info["placed"]
-    (x0, y0, x1, y1), (tb, _) = field(sheet)
+    (_x0, _y0, x1, y1), (tb, _) = field(sheet)
     rects = [p.rect for p in placed]
     assert any(abs(r.y1 - y1) < 1e-6 or (r.x < tb[2] and r.x1 > tb[0] and abs(r.y1 - tb[1]) < 1e-6)
                for r in rects)
@@ -1497,9 +1497,9 @@ def _positions_drawn(key, plans=None, fmt="A1", lang="ru"):
     """(mech, info, heavy line ends, joints, blocks' centres, (text, its box's centre)) of
     a sheet's plan of positions, every point in the world's sheet mm (views._sheet at the
     sheet's μl): the view's own offset is read off the first fixed pivot's support."""
-    from drawing.views import views as V
     from drawing.scene import Circle, Polyline, Segment, flatten
     from drawing.styles import LineType
+    from drawing.views import views as V
 
     mech, _, _, info, _ = _sheet(key, fmt, lang, plans)
     view = next(p.view for p in info["placed"] if p.view.name == "positions")
@@ -1610,7 +1610,7 @@ def test_the_stroke_stands_beside_its_guide_not_across_the_mechanism():
     assert len(ext) == 2
     assert all(s.p2[1] < s.p1[1] for s in ext)  # from the guide upwards
     assert max(math.dist(s.p1, s.p2) for s in ext) < 15
-    h, ext = stroke(6, "A1")  # crank-slider: the crank circle (R 120 mm) is beside its span
+    _h, ext = stroke(6, "A1")  # crank-slider: the crank circle (R 120 mm) is beside its span
     assert len(ext) == 2 and max(math.dist(s.p1, s.p2) for s in ext) < 100
 
 

@@ -20,12 +20,12 @@ import tomllib
 import numpy as np
 import pytest
 
-from plans.verify import reference
 from plans.cli.cycle import compute, conditioning
 from plans.cycle.analysis import analyse_cycle, summary
 from plans.kinematics.solver import WARN_SINE, Solver
 from plans.model.mechanism import from_dict, load
 from plans.model.scenes import SAMPLES, SCENES
+from plans.verify import reference
 
 EPS = np.finfo(float).eps
 C = 32.0  # the "small multiple"
@@ -266,8 +266,8 @@ def test_one_position_with_the_block_on_the_pivot_is_refused_and_near_it_warned(
     pivot figure sees it. Now that position is an error and the ones near it warn, in
     the note's language too."""
     from plans.errors import SingularPlanError
-    from plans.plan.solution import solve_position
     from plans.note.report import warnings as note_warnings
+    from plans.plan.solution import solve_position
 
     R = 0.1
     mech = mech_of(slotted(R, R))
@@ -338,7 +338,7 @@ def test_linkage_that_cannot_make_a_full_turn():
     _, _, kappa = check(mech, phi)
     assert kappa.max() > 1 / WARN_SINE
     assert not warnings_at(mech, np.array(cyc.positions))  # the middles of 12 parts
-    ws = warnings_at(mech, np.array(cyc.crank_range) + [1e-4, -1e-4])  # near the limits
+    ws = warnings_at(mech, [*np.array(cyc.crank_range), 0.0001, -0.0001])  # near the limits
     assert len(ws) == 2 and all("group 2–3 (RRR)" in w for w in ws)
     # outside the range it does not assemble, and says by how much
     with np.errstate(all="ignore"):

@@ -1,2 +1,1 @@
 """The sheet: GOST frame and title block, the views' layout and the fit of scale factors."""
-

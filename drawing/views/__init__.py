@@ -1,6 +1,6 @@
 """The views of a sheet, each built in its own box of sheet millimetres."""
 
-from .views import (  # noqa: F401
+from .views import (
     BLANK_PAD,
     CAPTION,
     CAPTION_OVER,
@@ -8,16 +8,16 @@ from .views import (  # noqa: F401
     HEAD,
     JOINT_R,
     LETTER,
-    NUMBERS_APART,
     NUMBER_BESIDE,
     NUMBER_CLEAR,
     NUMBER_GAPS,
+    NUMBERS_APART,
     PAD,
     PART_GAP,
     SHARED,
     SMALL_CAPTION,
-    View,
     WORDS,
+    View,
     caption_lines,
     caption_texts,
     captioned_width,
@@ -33,4 +33,35 @@ from .views import (  # noqa: F401
     segments_table_view,
 )
 
-__all__ = ['BLANK_PAD', 'CAPTION', 'CAPTION_OVER', 'CAPTION_STYLES', 'HEAD', 'JOINT_R', 'LETTER', 'NUMBERS_APART', 'NUMBER_BESIDE', 'NUMBER_CLEAR', 'NUMBER_GAPS', 'PAD', 'PART_GAP', 'SHARED', 'SMALL_CAPTION', 'View', 'WORDS', 'caption_lines', 'caption_texts', 'captioned_width', 'centred', 'diagram_curves', 'diagrams_view', 'notation', 'note_view', 'omega_table_view', 'plan_view', 'positions_view', 'retitled', 'segments_table_view']
+__all__ = [
+    "BLANK_PAD",
+    "CAPTION",
+    "CAPTION_OVER",
+    "CAPTION_STYLES",
+    "HEAD",
+    "JOINT_R",
+    "LETTER",
+    "NUMBERS_APART",
+    "NUMBER_BESIDE",
+    "NUMBER_CLEAR",
+    "NUMBER_GAPS",
+    "PAD",
+    "PART_GAP",
+    "SHARED",
+    "SMALL_CAPTION",
+    "WORDS",
+    "View",
+    "caption_lines",
+    "caption_texts",
+    "captioned_width",
+    "centred",
+    "diagram_curves",
+    "diagrams_view",
+    "notation",
+    "note_view",
+    "omega_table_view",
+    "plan_view",
+    "positions_view",
+    "retitled",
+    "segments_table_view",
+]

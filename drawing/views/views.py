@@ -51,9 +51,9 @@ from drawing.scene import (
 )
 from drawing.styles import LineType, Style
 from plans.cycle.analysis import at_rest
+from plans.cycle.positions import drawn
 from plans.fmt import notation_in, num
 from plans.plan.solution import image_sides
-from plans.cycle.positions import drawn
 
 __all__ = [
     "View",
@@ -83,7 +83,7 @@ BLANK_PAD = 0.5  # the break in thin lines around a dimension's value, mm
 #: mm: plan points closer than this share one label ("g₁,g₃"); two labels side by side
 #: would read as one word ("g₁g₃")
 SHARED = 2.0
-HEAD = dict(head_len=3.5, head_width=1.0)
+HEAD = {"head_len": 3.5, "head_width": 1.0}
 
 WORDS = {
     "ru": {
@@ -292,7 +292,7 @@ def _leader(point, end) -> Segment:
 
 def _captioned(name: str, items: list[Item], bounds, caption: str, under: list[str]) -> View:
     """The view of ``items`` (within ``bounds``) under ``caption``, ``under`` below."""
-    x0, y0, x1, y1 = bounds
+    x0, _y0, _x1, y1 = bounds
     lines = []
     y = y1 + 2.0
     for line in under:

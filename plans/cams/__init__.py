@@ -1,2 +1,1 @@
 """Cam mechanisms: to come; needs only the ground and the model."""
-

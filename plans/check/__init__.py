@@ -1,6 +1,6 @@
 """Check a hand-drawn plan against the computed one, and name the mistake."""
 
-from .verdict import (  # noqa: F401
+from .verdict import (
     CheckResult,
     Deviation,
     Diagnosis,
@@ -13,4 +13,15 @@ from .verdict import (  # noqa: F401
     rebuild,
 )
 
-__all__ = ['CheckResult', 'Deviation', 'Diagnosis', 'Finding', 'Lookalike', 'check', 'compare', 'diagnose', 'lookalikes', 'rebuild']
+__all__ = [
+    "CheckResult",
+    "Deviation",
+    "Diagnosis",
+    "Finding",
+    "Lookalike",
+    "check",
+    "compare",
+    "diagnose",
+    "lookalikes",
+    "rebuild",
+]

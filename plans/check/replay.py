@@ -13,13 +13,13 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from plans.check.measured import MU_KEY, PLANS, Item
 from plans.check.words import _text
 from plans.fmt import notation_in
 from plans.geometry import cross, intersect
 from plans.kinematics.solver import Solver
-from plans.check.measured import MU_KEY, PLANS, Item
-from plans.plan.solution import NOISE, Plan, Solution, plan_name, solve_position
 from plans.model.structure import DyadKind
+from plans.plan.solution import NOISE, Plan, Solution, plan_name, solve_position
 
 
 @dataclass(frozen=True)

@@ -40,8 +40,6 @@ import math
 from collections import Counter
 from dataclasses import dataclass, field, replace
 
-from plans.errors import PlansError
-from plans.geometry import apart, circle_circle, cross
 from plans.check.measured import (  # noqa: F401  (the public names of the check live here)
     MU_KEY,
     PLANS,
@@ -54,7 +52,6 @@ from plans.check.measured import (  # noqa: F401  (the public names of the check
     parse_tolerance,
     recorded_segments,
 )
-from plans.plan.solution import plan_name
 from plans.check.replay import (  # noqa: F401
     Mistake,
     State,
@@ -67,6 +64,9 @@ from plans.check.replay import (  # noqa: F401
     scale_example,
     simulate,
 )
+from plans.errors import PlansError
+from plans.geometry import apart, circle_circle, cross
+from plans.plan.solution import plan_name
 from plans.scales import series
 
 

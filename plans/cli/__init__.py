@@ -2,4 +2,4 @@
 
 from .common import main
 
-__all__ = ['main']
+__all__ = ["main"]

@@ -24,8 +24,8 @@ from pathlib import Path
 
 from plans.cli.common import EXIT_DEVIATIONS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, warn, write_output
 from plans.errors import InputError, PlansError
-from plans.model.fileformat import one_line
 from plans.fmt import angle, columns, cut, listing, notation_in, ru_plural
+from plans.model.fileformat import one_line
 
 #: a title wider than this (columns of a terminal) is cut in the table (the file's title
 #: may hold 300 characters)
@@ -262,9 +262,8 @@ def _draw(result, args, path: str, folders: dict[str, Path]) -> None:
     if not folders:
         return
     from drawing.overlay import overlay_svg
-
-    from plans.cli.common import check_outputs
     from plans.cli.check import PNG_SCALE
+    from plans.cli.common import check_outputs
 
     stem = Path(path).stem
     one = copy.copy(args)

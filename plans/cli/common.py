@@ -72,8 +72,7 @@ def mechanism_from(args, table=None):
     """
     import re
 
-    from plans.model import mechanism
-    from plans.model import variants
+    from plans.model import mechanism, variants
 
     if (args.file is None) == (args.variant is None):
         raise InputError("command line", "give a mechanism FILE or --variant N (one of them)")

@@ -316,8 +316,8 @@ class _Sheet1:
     def others(self, mu: dict[str, float]) -> list:
         """The views no free factor sizes: those of the factors the file fixes (at its
         values), the diagrams, the tables (at ``mu``) and the note."""
-        from drawing.views import views as V
         from drawing.sheet.fit import SCALED
+        from drawing.views import views as V
 
         out = []
         for key in SCALED:
@@ -387,8 +387,8 @@ class _Sheet1:
         """Why sheet 1 does not fit this format: what its views need at their smallest,
         and the smallest format that holds them."""
         from drawing.sheet.fit import SIZES
-        from drawing.sheet.layout import LayoutError, describe, room
         from drawing.sheet.frame import FORMATS, Sheet
+        from drawing.sheet.layout import LayoutError, describe, room
         from plans.scales import CRANK_MM, PLAN_MM
 
         smallest = {k: v[0] if k in fit.plain else v[-1] for k, v, _ in fit.factors}
@@ -427,8 +427,8 @@ def one_title_size(sheet, placed: list, together=()) -> list:
     title never costs a plan a step of its scale. Nor does it part the views kept
     ``together`` (:func:`drawing.sheet.layout.place_views`): where those are placed together
     and the full-size titles do not pack so, the titles are set smaller."""
-    from drawing.sheet.layout import Placed, kept_together, pack, pairs_of
     from drawing.scene import Rect
+    from drawing.sheet.layout import Placed, kept_together, pack, pairs_of
     from drawing.views.views import retitled
 
     if len({p.view.caption_size for p in placed if p.view.caption_size}) <= 1:

@@ -1,2 +1,1 @@
 """Force analysis (kinetostatics by force plans, Zhukovsky's lever): to come."""
-

@@ -1,21 +1,35 @@
 """Group-by-group kinematics: one formula per dyad kind, recorded and bulk solves."""
 
-from .solver import (  # noqa: F401
+from .solver import (
+    LIMIT_STEP,
+    SINGULAR_SINE,
+    WARN_SINE,
     Construction,
     GroupSolution,
-    LIMIT_STEP,
     LinkState,
     Route,
-    SINGULAR_SINE,
     Solver,
     Term,
-    WARN_SINE,
     coincident_name,
     crank_angle,
 )
-from .sweep import (  # noqa: F401
+from .sweep import (
     BLOCK,
     Sweep,
 )
 
-__all__ = ['BLOCK', 'Construction', 'GroupSolution', 'LIMIT_STEP', 'LinkState', 'Route', 'SINGULAR_SINE', 'Solver', 'Sweep', 'Term', 'WARN_SINE', 'coincident_name', 'crank_angle']
+__all__ = [
+    "BLOCK",
+    "LIMIT_STEP",
+    "SINGULAR_SINE",
+    "WARN_SINE",
+    "Construction",
+    "GroupSolution",
+    "LinkState",
+    "Route",
+    "Solver",
+    "Sweep",
+    "Term",
+    "coincident_name",
+    "crank_angle",
+]

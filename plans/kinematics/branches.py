@@ -14,8 +14,8 @@ import numpy as np
 
 from plans.errors import AssemblyError, InputError, SingularPlanError
 from plans.geometry import cross
-from plans.model.mechanism import Mechanism
 from plans.kinematics.records import IN_LINE, coincident_name
+from plans.model.mechanism import Mechanism
 from plans.model.structure import DyadKind, Structure
 
 RELATIONS = ("above", "below", "left of", "right of")

@@ -15,7 +15,6 @@ import numpy as np
 
 from plans.kinematics import kernels
 from plans.kinematics.kernels import record
-from plans.model.mechanism import Guide
 from plans.kinematics.records import (
     Construction,
     GroupSolution,
@@ -24,6 +23,7 @@ from plans.kinematics.records import (
     coincident_name,
     state_from,
 )
+from plans.model.mechanism import Guide
 from plans.model.structure import DyadKind, Group
 
 if TYPE_CHECKING:

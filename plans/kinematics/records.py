@@ -15,7 +15,7 @@ import numpy as np
 
 from plans.errors import AssemblyError, PlansError, SingularPlanError
 from plans.kinematics.kernels import (
-    SINGULAR_SINE,  # noqa: F401  (also read from here by the reports)
+    SINGULAR_SINE,
     record,
 )
 from plans.model.structure import DyadKind, Group

@@ -26,15 +26,12 @@ from pathlib import Path
 
 import numpy as np
 
-from plans.kinematics import kernels
-from plans.kinematics import records
-from plans.kinematics.branches import choose_branches, hint_holds, parse_hint
 from plans.errors import SingularPlanError
-from plans.model.fileformat import one_line
 from plans.geometry import apart
+from plans.kinematics import kernels, records
+from plans.kinematics.branches import choose_branches, hint_holds, parse_hint
 from plans.kinematics.groups import SOLVERS, ScalarFallback
 from plans.kinematics.kernels import record
-from plans.model.mechanism import Mechanism
 from plans.kinematics.records import (
     CHANGE_NEAR,
     CHANGE_PIVOT,
@@ -51,6 +48,8 @@ from plans.kinematics.records import (
     frozen,
     pivot_figure,
 )
+from plans.model.fileformat import one_line
+from plans.model.mechanism import Mechanism
 from plans.model.structure import Structure, analyse
 
 __all__ = [

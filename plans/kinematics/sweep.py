@@ -25,8 +25,8 @@ import numpy as np
 
 from plans.kinematics import kernels
 from plans.kinematics.groups import setup
-from plans.kinematics.solver import Solver
 from plans.kinematics.records import pivot_key, pivot_ratio
+from plans.kinematics.solver import Solver
 from plans.model.structure import DyadKind
 
 #: angles per block: 8192 complex numbers are 128 KiB an array, so the few arrays a step
@@ -325,14 +325,14 @@ class _Block:
 
     def _motion_at(self, lid: int, Y):
         """Velocity and acceleration of the point of link lid that is at Y."""
-        X, vX, aX, rot, w, e, xl = self.links[lid]
+        X, vX, aX, _rot, w, e, _xl = self.links[lid]
         return _rigid(vX, aX, Y - X, w, e)
 
     def _guide(self, guide):
         """As :func:`plans.kinematics.groups._guide`: ω, ε None where the guide's link never turns."""
         if guide.link == 0:
             return guide.point, guide.direction, 0j, 0j, None, None
-        X, vX, aX, rot, w, e, xl = self.links[guide.link]
+        _X, _vX, _aX, rot, w, e, _xl = self.links[guide.link]
         G, vG, aG = self._at(guide.link, guide.point)
         if guide.link in self.sv.translating:
             return G, rot * guide.direction, vG, aG, None, None

@@ -24,6 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from plans.errors import InputError
+from plans.geometry import cross
 from plans.model.fileformat import (
     MAX_ABS,
     MAX_TEXT,
@@ -39,7 +40,6 @@ from plans.model.fileformat import (
     read_text,
     read_toml,
 )
-from plans.geometry import cross
 
 #: names the plans reserve for their own construction points (n1, k, p, π)
 RESERVED = re.compile(r"^(P|N\d*|K\d*)$")

@@ -13,8 +13,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from plans.fmt import SENSE, angle, notation_in, num
-from plans.plan.solution import Solution, plan_name
 from plans.kinematics.records import flag_words
+from plans.plan.solution import Solution, plan_name
 
 T = {
     "en": {
@@ -340,7 +340,7 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
     if sims:  # headed as a group's points are
         out += _similar(sol, plan, sims, lang)
         out += [t["avalues" if acc else "values"], ""]
-        out += _values(sol, plan, [p.name for p in sims], lang) + [""]
+        out += [*_values(sol, plan, [p.name for p in sims], lang), ""]
     vplan = sol.velocity
     for g in m.groups:
         cons = g.acceleration if acc else g.velocity
@@ -472,7 +472,7 @@ def _similar(sol: Solution, plan, sims, lang: str) -> list[str]:
             out.append(f"- `{s.equation}`:")
             out += ["  " + _side(sol, plan, p.name, s.base, s.other, end, lang).markdown()[2:]
                     for end in (s.base, s.other)]
-    return out + [""]
+    return [*out, ""]
 
 
 def _side(sol: Solution, plan, x: str, b0: str, b1: str, end: str, lang: str) -> Step:

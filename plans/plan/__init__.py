@@ -1,6 +1,6 @@
 """One crank position: the plans with every construction recorded."""
 
-from .solution import (  # noqa: F401
+from .solution import (
     IN_LINE,
     NOISE,
     Plan,
@@ -15,4 +15,17 @@ from .solution import (  # noqa: F401
     solve_position,
 )
 
-__all__ = ['IN_LINE', 'NOISE', 'Plan', 'PlanLine', 'PlanPoint', 'PlanVector', 'Solution', 'Source', 'cycle_extent', 'image_sides', 'plan_name', 'solve_position']
+__all__ = [
+    "IN_LINE",
+    "NOISE",
+    "Plan",
+    "PlanLine",
+    "PlanPoint",
+    "PlanVector",
+    "Solution",
+    "Source",
+    "cycle_extent",
+    "image_sides",
+    "plan_name",
+    "solve_position",
+]

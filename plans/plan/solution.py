@@ -20,13 +20,13 @@ from typing import NamedTuple
 
 import numpy as np
 
-from plans.model.fileformat import Problems, check_keys, read_number
 from plans.kinematics.kernels import record
-from plans.kinematics.solver import Motion, Solver, crank_angle
-from plans.model.mechanism import MU_UNIT, Mechanism
 from plans.kinematics.records import flag_words, flagged, frozen
-from plans.scales import choose_mu, choose_mu_l
+from plans.kinematics.solver import Motion, Solver, crank_angle
+from plans.model.fileformat import Problems, check_keys, read_number
+from plans.model.mechanism import MU_UNIT, Mechanism
 from plans.model.structure import Structure
+from plans.scales import choose_mu, choose_mu_l
 
 
 def plan_name(point: str) -> str:
@@ -588,7 +588,7 @@ def _compile(kind: str, pole: str, tip: str, steps, ends):
         var[pn] = v
         points.append((pn, v, rec))
         absolute(v, vec)
-    values = ", ".join(dict((pn, v) for pn, v, _ in points).values())  # as the plan keeps them
+    values = ", ".join({pn: v for pn, v, _ in points}.values())  # as the plan keeps them
     # each length 0 up to ``tiny`` (see NOISE), in the one dict display
     segments = ", ".join(
         f"{key!r}: (m_ if (m_ := abs({var[b]} - {var[a]}) / mu) > tiny_mm else 0.0)" if var[a] != "0j"
@@ -616,7 +616,7 @@ def _compile(kind: str, pole: str, tip: str, steps, ends):
     # named by its text, so that a traceback through it shows the generated line, and one
     # mechanism solved again and again keeps one entry in linecache
     filename = f"<plan recipe {kind} {zlib.crc32(source.encode()):08x}{len(source):08x}>"
-    exec(compile(source, filename, "exec"), scope)  # noqa: S102
+    exec(compile(source, filename, "exec"), scope)
     linecache.cache[filename] = (len(source), None, source.splitlines(True), filename)
     follow = scope["follow"]
     follow.source = source

@@ -1,2 +1,1 @@
 """Independent references for the engine: high-precision solves."""
-
