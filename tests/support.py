@@ -3,7 +3,7 @@ of the malformed-input corpus says it must produce, and a four-bar standing upri
 
 from pathlib import Path
 
-from plans.cli.common import main
+from plans.cli import main
 
 
 def run(capsys, *argv):

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from plans.cli import bench
-from plans.cli.common import main
+from plans.cli import main
 from plans.kinematics.solver import Solver
 from plans.model.scenes import SCENES
 from plans.verify import reference

@@ -3,6 +3,7 @@ traceback, and no file lost (never an input written, never a half-written output
 
 from __future__ import annotations
 
+import argparse
 import json
 import os
 import re
@@ -16,7 +17,8 @@ from support import expectations, run
 from test_errors import PARALLEL_RPP
 
 from plans.cli import common as cli
-from plans.cli.common import main
+from plans.cli import main
+from plans.cli.main import COMMANDS, build_parser
 
 ROOT = Path(__file__).resolve().parent.parent
 CORPUS = ROOT / "tests" / "corpus"
@@ -112,7 +114,7 @@ def test_a_chain_that_cannot_move_is_reported_with_its_file(capsys, tmp_path, co
 @pytest.mark.parametrize("command", ["report", "cycle", "sheet"])
 @pytest.mark.parametrize("name", ["many_problems", "toml_truncated", "garbage_bytes", "unknown_point_in_axis"])
 def test_other_commands_report_bad_files_the_same_way(capsys, tmp_path, command, name):
-    assert command in cli.build_parser()._subparsers._group_actions[0].choices
+    assert command in build_parser()._subparsers._group_actions[0].choices
     path = CORPUS / f"{name}.toml"
     code, _, err = run(capsys, command, path, "-o", tmp_path / "out")
     assert code == 2
@@ -192,12 +194,13 @@ def test_check_never_writes_over_the_variant_table_it_read(capsys, tmp_path):
 
 
 def test_write_output_itself_refuses_the_inputs(tmp_path, press):
-    cli._INPUTS[:] = [str(press)]
-    try:
-        with pytest.raises(cli.InputError, match="is the input file"):
-            cli.write_output(str(press), "x")
-    finally:
-        cli._INPUTS.clear()
+    with pytest.raises(cli.InputError, match="is the input file"):
+        cli.write_output(str(press), "x", inputs=[str(press)])
+    files = cli.RunFiles()  # a run's files: what it claims it never writes
+    files.claim(argparse.Namespace(), [press])
+    with pytest.raises(cli.InputError, match="is the input file"):
+        files.write(str(press), "x")
+    assert press.read_text("utf-8") != "x"
 
 
 def test_a_failing_run_leaves_the_existing_output_alone(capsys, tmp_path):
@@ -394,26 +397,26 @@ def test_help_and_a_misspelt_command_still_name_every_command(capsys):
     """A run configures only the command it names; the others are still listed."""
     assert main(["--help"]) == 0
     out = capsys.readouterr().out
-    for name, (_, help_text) in cli.COMMANDS.items():
+    for name, (_, help_text) in COMMANDS.items():
         assert re.search(rf"^ +{name} +{re.escape(help_text)}$", out, re.M), name
     assert main(["sovle", "x.toml"]) == 2
     err = capsys.readouterr().err
     assert err == ("plans: command line: argument COMMAND: invalid choice: 'sovle' (choose from "
-                   + ", ".join(f"'{n}'" for n in cli.COMMANDS) + ") (see plans --help)\n")
+                   + ", ".join(f"'{n}'" for n in COMMANDS) + ") (see plans --help)\n")
 
 
 @pytest.mark.parametrize("module", ["plans.cli_not_built", "family_not_built.cli"])
 def test_a_command_whose_module_is_not_there_is_left_out(capsys, tmp_path, monkeypatch, module):
     """A command family not built yet, a module or its whole package, is left out of the
     list; the other commands run as ever, whichever of them the run names."""
-    monkeypatch.setitem(cli.COMMANDS, "later", (module, "a command still to come"))
+    monkeypatch.setitem(COMMANDS, "later", (module, "a command still to come"))
     target = tmp_path / "s.json"
     assert main(["solve", str(PRESS), "--json", "-o", str(target)]) == 0
     assert main(["--help"]) == 0
     assert "later" not in capsys.readouterr().out
     assert main(["later"]) == 2
     assert "invalid choice: 'later'" in capsys.readouterr().err
-    assert "later" not in cli.build_parser().commands
+    assert "later" not in build_parser().commands
 
 
 def test_the_readme_documents_the_exit_status():
@@ -684,7 +687,7 @@ def test_output_to_dev_stdout_appends_to_what_stdout_is(tmp_path):
     (["solve", "F"], False),
 ])
 def test_debug_is_taken_before_or_after_the_command(argv, debug):
-    args = cli.build_parser().parse_args(argv)
+    args = build_parser().parse_args(argv)
     assert args.debug is debug
 
 

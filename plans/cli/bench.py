@@ -45,7 +45,7 @@ import sys
 import time
 from dataclasses import dataclass
 
-from plans.cli.common import check_outputs, number, write_output
+from plans.cli.common import number
 
 SIZES = (12, 100, 1_000, 10_000, 100_000, 1_000_000)
 QUICK_SIZES = (12, 100)
@@ -171,7 +171,7 @@ def run(args) -> int:
             "command line", f"--methods: unknown {', '.join(sorted(unknown))}" if unknown
             else f"--methods: give at least one of {','.join(METHODS)}"
         )
-    check_outputs(args)  # a bad --chart is found now, not after minutes of timing
+    args.run_files.check(args)  # a bad --chart is found now, not after minutes of timing
     scenes = load_scenes()
     names = args.scene or [n for n in BENCH_SCENES if n in scenes]
     skipped = [n for n in BENCH_SCENES if n not in scenes]
@@ -218,9 +218,9 @@ def run(args) -> int:
         from drawing.chart import svg_chart  # drawing alone writes SVG
 
         chart = svg_chart(rows, machine())
-    write_output(args.output, text)
+    args.run_files.write(args.output, text)
     if chart is not None:
-        write_output(args.chart, chart)
+        args.run_files.write(args.chart, chart)
         if not args.json:
             print(f"plans bench: chart written to {args.chart}", file=sys.stderr)
     return 0

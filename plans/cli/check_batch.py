@@ -22,10 +22,26 @@ import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from plans.cli.common import EXIT_DEVIATIONS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, warn, write_output
+from drawing import export
+from drawing.overlay import overlay_svg
+from plans.check import verdict as ck
+from plans.check.measured import Solvers
+from plans.cli.check_report import PNG_SCALE, _all, command_tolerance, plan_unit
+from plans.cli.check_report import to_json as file_json
+from plans.cli.common import (
+    EXIT_DEVIATIONS,
+    EXIT_INPUT,
+    EXIT_INTERNAL,
+    EXIT_OK,
+    arg_text,
+    error_lines,
+    same_file,
+    warn,
+)
 from plans.errors import InputError, PlansError
 from plans.fmt import angle, columns, cut, listing, notation_in, ru_plural
-from plans.model.fileformat import one_line
+from plans.model.fileformat import one_line, read_toml
+from plans.model.variants import BUILTIN, BUILTIN_RU
 
 #: a title wider than this (columns of a terminal) is cut in the table (the file's title
 #: may hold 300 characters)
@@ -104,8 +120,6 @@ class Row:
 
 def _read(path: str) -> dict:
     """The file's TOML, where it reads as TOML at all; else {}."""
-    from plans.model.fileformat import read_toml
-
     try:
         data, _ = read_toml(path)
     except (PlansError, OSError, ValueError):
@@ -138,23 +152,17 @@ def status(rows: list[Row]) -> int:
 
 
 def run(args, files: list[str]) -> int:
-    from plans.cli.common import claim_inputs
-
     report = copy.copy(args)  # the report's own output, checked as one run checks it
     report.svg = report.png = None
     # every file the run reads, refused as -o before anything is checked or drawn (a
     # file that cannot be checked has its mechanism file read, or named, all the same)
-    claim_inputs(report, [*files, *(p for f in files for p in _named(f))])
+    report.run_files.claim(report, [*files, *(p for f in files for p in _named(f))])
     folders = _picture_folders(args, files)
     if args.png:
-        from drawing import export
-
         export.require()  # before anything is computed
-    from plans.cli.check import command_tolerance
 
     tol = command_tolerance(args)
     _make_folders(args, folders)
-    from plans.check.measured import Solvers
 
     solvers = Solvers()  # a mechanism at one angle is solved once for all its files
     tty = sys.stderr.isatty()
@@ -174,7 +182,7 @@ def run(args, files: list[str]) -> int:
         text = json.dumps(to_json(rows, args.lang), ensure_ascii=False, indent=2) + "\n"
     else:
         text = to_text(rows, args.lang, tol)
-    write_output(args.output, text)
+    args.run_files.write(args.output, text)
     return status(rows)
 
 
@@ -182,12 +190,9 @@ def _one(args, report, path: str, tol, folders: dict[str, Path], solvers=None) -
     """Check one file of the batch, and draw its pictures; a problem of its own (bad
     input, an unsolvable position, a picture that cannot be written) is its row's, not the
     batch's. A problem of the command line stops the batch."""
-    from plans.check import verdict as ck
-    from plans.cli.common import claim_inputs, error_lines
-
     try:
         meas = ck.load(path, solvers)
-        claim_inputs(report, meas.inputs[1:])  # -o is never a mechanism file read
+        report.run_files.claim(report, meas.inputs[1:])  # -o is never a mechanism file read
         result = ck.check(meas, tol)  # None: the file's own, or the default
         _draw(result, args, path, folders)
         return Row(path, result, status=EXIT_OK if result.ok else EXIT_DEVIATIONS)
@@ -230,15 +235,14 @@ def _picture_folders(args, files: list[str]) -> dict[str, Path]:
                 raise InputError("command line", f"{seen[stem]} and {path} would both be "
                                  f"drawn as {name}{'/'.join(out)}: check them in two runs")
             seen[stem] = path
-        from plans.cli.common import _arg, _same_file
 
         report = args.output
         for path in files if report not in (None, "-") else ():
             for suffix, d in out.items():
                 picture = d / f"{Path(path).stem}{suffix}"
-                if _same_file(report, picture):  # the table would replace the picture
+                if same_file(report, picture):  # the table would replace the picture
                     opt = "--svg" if suffix == ".svg" else "--png"
-                    raise InputError("command line", f"-o and {opt} are both {_arg(picture)}: "
+                    raise InputError("command line", f"-o and {opt} are both {arg_text(picture)}: "
                                      "give each output its own file")
     return out
 
@@ -261,26 +265,21 @@ def _draw(result, args, path: str, folders: dict[str, Path]) -> None:
     """The file's pictures in their folders, all rendered before the first is written."""
     if not folders:
         return
-    from drawing.overlay import overlay_svg
-    from plans.cli.check import PNG_SCALE
-    from plans.cli.common import check_outputs
 
     stem = Path(path).stem
     one = copy.copy(args)
     one.output = None  # stdout: checked already, as the report's
     one.svg = str(folders[".svg"] / f"{stem}.svg") if ".svg" in folders else None
     one.png = str(folders[".png"] / f"{stem}.png") if ".png" in folders else None
-    check_outputs(one)  # not an input, not a folder
+    one.run_files.check(one)  # not an input, not a folder
     svg = overlay_svg(result, lang=args.lang)
     files = []
     if one.svg:
         files.append((one.svg, svg))
     if one.png:
-        from drawing import export
-
         files.append((one.png, export.png_bytes(svg, scale=PNG_SCALE)))
     for out, data in files:
-        write_output(out, data)
+        args.run_files.write(out, data)
 
 
 # ---------------------------------------------------------------------------------------
@@ -290,8 +289,6 @@ def mechanism_cell(meas, lang: str) -> str:
     """"variant 3, φ1 = 30°" or "samples/press.toml, φ1 = 30°": where the mechanism
     comes from (a row of the built-in table by its number alone) and the crank angle, as
     the file gives it."""
-    from plans.model.variants import BUILTIN, BUILTIN_RU
-
     mech = meas.mechanism
     source = mech.source_in(lang)
     for prefix in (BUILTIN, BUILTIN_RU):
@@ -303,8 +300,6 @@ def mechanism_cell(meas, lang: str) -> str:
 
 
 def verdict_cell(row: Row, lang: str, tol=None) -> str:
-    from plans.cli.check import _all
-
     w = WORDS[lang]
     if row.status == EXIT_INTERNAL:
         return w["internal"]
@@ -352,8 +347,6 @@ def diagnosis_cell(row: Row, lang: str) -> str:
 
 def _slips(res, lang: str) -> str:
     """The look-alikes in a few words each: "pc and pe swapped", "pd measured as ad"."""
-    from plans.cli.check import plan_unit
-
     w = WORDS[lang]
     out: list[str] = []
     said: set[frozenset[str]] = set()
@@ -403,14 +396,12 @@ def to_text(rows: list[Row], lang: str = "en", tol=None) -> str:
 
 def to_json(rows: list[Row], lang: str = "en") -> list[dict]:
     """A list, one object per file in the order given: the single file's JSON
-    (:func:`plans.cli.check.to_json`, which names its file), or for a file that could not
+    (:func:`plans.cli.check_report.to_json`, which names its file), or for a file that could not
     be checked its file, ``"ok": null`` and the lines of its error."""
-    from plans.cli.check import to_json as one
-
     out = []
     for r in rows:
         if r.result is not None:
-            out.append(one(r.result, lang))
+            out.append(file_json(r.result, lang))
         else:
             out.append({"file": r.path, "ok": None, "error": list(r.error),
                         "internal": r.status == EXIT_INTERNAL})

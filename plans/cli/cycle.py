@@ -24,21 +24,40 @@ says why ("singular"); the command still exits with status 0.
 
 from __future__ import annotations
 
+import csv
 import functools
+import io
+import json
 import math
+import sys
 from dataclasses import dataclass
+
+import numpy as np
 
 from plans.cli.common import (
     EXIT_INPUT,
     EXIT_OK,
     add_source,
     angle_field,
+    cycle_json,
     mechanism_from,
     number,
     warn,
-    write_output,
 )
-from plans.fmt import from_x, num
+from plans.cycle.analysis import analyse_cycle, outside, reachable_cycle, shown_from, summary, table_angle
+from plans.errors import AssemblyError
+from plans.fmt import from_x, in_turn, num
+from plans.kinematics import records
+from plans.kinematics.records import (
+    is_pivot,
+    near_pivot,
+    on_pivot,
+    pivot_figure,
+    pivot_key,
+    sine_figure,
+)
+from plans.kinematics.solver import Solver
+from plans.plan.solution import NOISE
 
 #: a table for reading or a file for a spreadsheet: 10⁵ rows of the press are 270 MB of
 #: JSON; for more angles, Solver.sweep works on arrays (README, "Whole cycle")
@@ -101,11 +120,6 @@ class CycleTable:
 
 
 def run(args) -> int:
-    import sys
-
-    from plans.cycle.analysis import outside, reachable_cycle
-    from plans.errors import AssemblyError
-
     n = args.positions
     mech = mechanism_from(args)
     try:
@@ -128,7 +142,7 @@ def run(args) -> int:
         text = csv_chunks(table)
     else:
         text = to_text(table)
-    write_output(args.output, text)
+    args.run_files.write(args.output, text)
     warned = [i for i, s in enumerate(table.status) if s.warnings]
     failed = [i for i, s in enumerate(table.status) if s.errors]
     if warned:
@@ -153,11 +167,6 @@ def run(args) -> int:
 
 
 def compute(mech, n_positions: int, solver=None) -> CycleTable:
-    import numpy as np
-
-    from plans.cycle.analysis import analyse_cycle, table_angle
-    from plans.kinematics.solver import Solver
-
     solver = solver or Solver(mech)
     cycle = analyse_cycle(mech, n_positions=n_positions, solver=solver)
     phi = np.array(cycle.positions, dtype=float)
@@ -183,21 +192,11 @@ def figure_labels(t: CycleTable) -> list[str]:
 def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
     """Per position: the figures of every group, warnings and errors (see the module doc);
     ``solver``, the motion's, names the change points among the angles."""
-    import numpy as np
-
-    from plans.kinematics.records import (
-        SINGULAR_SINE,
-        WARN_SINE,
-        is_pivot,
-        near_pivot,
-        on_pivot,
-        pivot_figure,
-        pivot_key,
-        sine_figure,
-    )
-
     n = len(motion.phi)
     crank_pivot = mech.frame[mech.driver.pivot]
+    # read here, not bound at import: the thresholds are the records module's (a test
+    # moves them to exercise the error path)
+    warn_sine, singular_sine = records.WARN_SINE, records.SINGULAR_SINE
     per_group = [(g, pivot_figure(g, motion.position, crank_pivot)) for g in motion.groups]
     # each group's figures as Python lists, once; words only where a position is flagged
     cols = []
@@ -205,12 +204,12 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
         s = np.broadcast_to(sine_figure(np.asarray(g.velocity.sine, dtype=float)), (n,))
         valid = np.broadcast_to(np.asarray(g.valid, dtype=bool), (n,))
         q = None if pivot is None else np.where(np.isfinite(pivot), pivot, 0.0).tolist()
-        cols.append((g, g.group.label, valid.tolist(), s.tolist(), (s < WARN_SINE).tolist(), q))
+        cols.append((g, g.group.label, valid.tolist(), s.tolist(), (s < warn_sine).tolist(), q))
     phis = np.asarray(motion.phi, dtype=float).tolist()
     at_ = solver.at if solver is not None else mech.driver.at
     at = functools.cache(lambda k: at_(phis[k]))  # words only where flagged, once
     placed = np.broadcast_to(np.asarray(motion.placed, dtype=bool), (n,)).tolist()
-    plain = (SINGULAR_SINE, SINGULAR_SINE)
+    plain = (singular_sine, singular_sine)
     out = []
     for k in range(n):
         figures: dict[str, float] = {}
@@ -221,10 +220,10 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
             # a group beside one of its change points: its figures must reach CHANGE_SINE
             # (Solver.singular_figures), and its failures are the change point's: positions
             # only, no error. Looked up only where a figure calls for a word
-            flagged = not valid[k] or low[k] or (pivot is not None and pivot[k] < WARN_SINE)
+            flagged = not valid[k] or low[k] or (pivot is not None and pivot[k] < warn_sine)
             under, under_q = (solver.singular_figures(i, phis[k])
                               if flagged and solver is not None else plain)
-            fails = singular if under > SINGULAR_SINE and placed[k] else errors
+            fails = singular if under > singular_sine and placed[k] else errors
             if not valid[k]:
                 fails.append(str(g.failure(k, at(k))))
                 figures[label] = sine[k] if placed[k] else math.nan  # in line: about 0
@@ -240,7 +239,7 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
             if pivot is not None:
                 q = pivot[k]
                 figures[pivot_key(label)] = q
-                if q < WARN_SINE:  # worded (and the angle with it) only where flagged
+                if q < warn_sine:  # worded (and the angle with it) only where flagged
                     if (err := on_pivot(g, q, at(k), below=under_q)) is not None:
                         fails.append(str(err))
                     else:
@@ -275,28 +274,6 @@ def _cycle_summary(t: CycleTable) -> dict:
     return cycle_json(t.cycle)
 
 
-def cycle_json(c) -> dict:
-    """The cycle's figures (:class:`plans.cycle.Cycle`) as ``plans cycle --json`` and
-    ``plans solve --json`` give them, in SI units and degrees from +x."""
-    out = {
-        "full_turn": c.full_turn,
-        "output": None
-        if c.output is None
-        else {"point": c.output.point, "kind": c.output.kind, "link": c.output.link,
-              "unit": "m" if c.output.kind == "linear" else "rad"},
-        "extremes_phi_deg": [from_x(x) for x in c.extremes],
-        "stroke": c.stroke,
-        "theta_deg": None if c.theta is None else math.degrees(c.theta),
-        "K": c.K,
-        "grashof": c.grashof,
-        # counter-clockwise from the first angle to the second: in the crank's order a
-        # clockwise crank's range named the arc that does not assemble
-        "crank_range_phi_deg": None if c.ccw_range is None else [from_x(x) for x in c.ccw_range],
-        "notes": list(c.notes),
-    }
-    return out
-
-
 def _numbering(t: CycleTable) -> str:
     c = t.cycle
     if not c.full_turn:
@@ -309,8 +286,6 @@ def _numbering(t: CycleTable) -> str:
 def json_chunks(t: CycleTable):
     """The JSON text of :func:`to_json` in pieces: the head, then one row per line, so
     that 10⁵ rows are written as they are made."""
-    import json
-
     def dumps(x) -> str:
         return json.dumps(x, ensure_ascii=False, allow_nan=False)
 
@@ -399,11 +374,6 @@ def csv_chunks(t: CycleTable, rows: int = 1000):
     """The CSV text, ``rows`` rows at a time: each stretch of rows is converted to Python
     numbers as it is written, so that 10⁵ rows never stand in memory as some six million
     Python floats (about 200 MB for the press)."""
-    import csv
-    import io
-
-    import numpy as np
-
     m, mech = t.motion, t.mechanism
     n = len(t.status)
     buf = io.StringIO()
@@ -476,10 +446,6 @@ def _table(title: str, head: list[str], rows: list[list[str]]) -> list[str]:
 
 
 def to_text(t: CycleTable) -> str:
-    import numpy as np
-
-    from plans.kinematics.records import is_pivot
-
     m, mech, c = t.motion, t.mechanism, t.cycle
     d = mech.driver
     n = len(t.status)
@@ -496,7 +462,6 @@ def to_text(t: CycleTable) -> str:
         lines.append(
             f"ψ_{c.output.point}: degrees of link {c.output.link} from +x, measured ccw"
         )
-    from plans.cycle.analysis import summary
 
     lines += summary(c, d)
     moving = [p for p in t.points if p not in mech.frame]
@@ -510,8 +475,6 @@ def to_text(t: CycleTable) -> str:
             )
         )
 
-    from plans.cycle.analysis import shown_from
-
     lo = shown_from(c, d)  # a range through 0° writes its angles from −…°, as the range
 
     def lead(k: int) -> list[str]:
@@ -524,8 +487,6 @@ def to_text(t: CycleTable) -> str:
             return "—"
         value = float(value)
         return num(0.0 if abs(value) <= NOISE * big else value)
-
-    from plans.plan.solution import NOISE
 
     ok = np.array([st.ok for st in t.status], dtype=bool)
     placed = np.array([st.placed for st in t.status], dtype=bool)
@@ -631,8 +592,6 @@ def table_degrees(deg: float, lo: float = 0.0) -> str:
     >>> table_degrees(359.99999999999855), table_degrees(268.59, -180.0), table_degrees(-1e-9)
     ('0.00', '-91.41', '0.00')
     """
-    from plans.fmt import in_turn
-
     x = in_turn(deg, lo) if lo else deg % 360.0
     s = f"{x:.2f}"
     if s == f"{lo + 360.0:.2f}":  # rounds up to the end of the turn: its start
@@ -642,8 +601,6 @@ def table_degrees(deg: float, lo: float = 0.0) -> str:
 
 def _short(label: str) -> str:
     """'group 2–3 (RPR)' → 'sin 2–3'; 'group 2–3 (RPR) pivot' → 'QP 2–3'."""
-    from plans.kinematics.records import is_pivot
-
     parts = label.split()
     links = parts[1] if len(parts) > 1 else label
     return f"QP {links}" if is_pivot(label) else f"sin {links}"
