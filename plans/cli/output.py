@@ -106,6 +106,28 @@ def picture_names(args, pictures: dict[str, tuple[str, str]]) -> None:
                          f"writes {suffix[1:].upper()}){hint}")
 
 
+def picture_format(args, attr: str, opt: str, formats=(".png", ".svg", ".pdf")) -> str:
+    """The format a picture option (``attr``, given as ``opt``) writes, by its file name's
+    ending: "png", "svg" or "pdf"; refused in one line, before anything is computed,
+    where the name ends otherwise. A device (/dev/null, a pipe) is written SVG.
+
+    >>> import argparse
+    >>> picture_format(argparse.Namespace(plot="cycle.PDF"), "plot", "--plot")
+    'pdf'
+    """
+    path = str(getattr(args, attr))
+    p = Path(path)
+    suffix = p.suffix.lower()
+    if suffix in formats:
+        return suffix[1:]
+    if p.exists() and not p.is_file() and not p.is_dir():  # /dev/null, a pipe
+        return "svg"
+    names = ", ".join(formats[:-1]) + f" or {formats[-1]}"
+    kinds = ", ".join(f[1:].upper() for f in formats[:-1]) + f" or {formats[-1][1:].upper()}"
+    raise InputError("command line", f"{opt} {arg_text(path)[1:-1]}: the name must end in {names} "
+                     f"({opt} writes {kinds}, as the name ends)")
+
+
 def arg_text(value, limit: int = 200) -> str:
     """A command-line value for a message: one line, cut short, in quotes.
 
