@@ -238,7 +238,8 @@ def test_positions_out_of_range(capsys, n):
 def test_json_is_written_row_by_row_as_one_object():
     """The head, then one position per line, then the tail: one JSON object whatever the
     number of rows, each row on its own line."""
-    from plans.cli.cycle import compute, json_chunks
+    from plans.cli.cycle import json_chunks
+    from plans.cycle.table import compute
 
     for n in (1, 2, 7):
         chunks = list(json_chunks(compute(mechanism.load(PRESS), n)))
@@ -619,7 +620,8 @@ def test_csv_converts_its_rows_a_stretch_at_a_time():
     the same, row for row."""
     import tracemalloc
 
-    from plans.cli.cycle import compute, csv_chunks
+    from plans.cli.cycle import csv_chunks
+    from plans.cycle.table import compute
 
     t = compute(mechanism.load(PRESS), 6000)
     whole = "".join(csv_chunks(t, rows=6000))

@@ -20,7 +20,7 @@ import tomllib
 import numpy as np
 import pytest
 
-from plans.cli.cycle import compute, conditioning
+from plans.cycle.table import compute, conditioning
 from plans.cycle.analysis import analyse_cycle, summary
 from plans.kinematics.solver import WARN_SINE, Solver
 from plans.model.mechanism import from_dict, load
