@@ -20,6 +20,7 @@ import sys
 
 import numpy as np
 
+from drawing import chart as charts
 from plans.cli.common import (
     EXIT_INPUT,
     EXIT_OK,
@@ -30,6 +31,7 @@ from plans.cli.common import (
     number,
     warn,
 )
+from plans.cli.output import picture_format
 from plans.cycle.analysis import outside, reachable_cycle, shown_from, summary
 from plans.cycle.table import CycleTable, compute, figure_labels
 from plans.errors import AssemblyError
@@ -61,11 +63,17 @@ def configure(p) -> None:
     p.add_argument(
         "-o", "--output", metavar="FILE", help="write to FILE instead of stdout"
     )
+    p.add_argument(
+        "--plot", metavar="FILE",
+        help="also plot the output's s, v, a and every link's ω, ε over the cycle "
+        "(PNG, SVG or PDF by the name's ending)",
+    )
 
 
 def run(args) -> int:
     n = args.positions
-    mech = mechanism_from(args)
+    plot_format = picture_format(args, "plot", "--plot") if args.plot is not None else None
+    mech = mechanism_from(args)  # refuses an output that is an input, or two outputs one file
     try:
         table = compute(mech, n)
     except AssemblyError:  # its angle does not assemble: the cycle where it does, if any
@@ -86,7 +94,14 @@ def run(args) -> int:
         text = csv_chunks(table)
     else:
         text = to_text(table)
+    plot = None
+    if plot_format is not None:  # drawn before anything is written: all outputs or none
+        angle_deg, panels = plot_panels(table)
+        plot = charts.cycle_chart(angle_deg, panels, title=mech.name, fmt=plot_format,
+                                  x_label=f"{mech.driver.phi_sym}, degrees turned from position 0")
     args.run_files.write(args.output, text)
+    if plot is not None:
+        args.run_files.write(args.plot, plot)
     warned = [i for i, s in enumerate(table.status) if s.warnings]
     failed = [i for i, s in enumerate(table.status) if s.errors]
     if warned:
@@ -106,8 +121,54 @@ def run(args) -> int:
 
 
 # ---------------------------------------------------------------------------------------
-# computing
+# the plot
 # ---------------------------------------------------------------------------------------
+
+
+def plot_panels(t: CycleTable) -> tuple[list[float], list[tuple[str, list[tuple[str, list[float]]]]]]:
+    """What ``--plot`` draws over the crank angle (degrees turned from position 0, in the
+    crank's sense): the output's s, v, a (a rocker's ψ, ω, ε), then ω and ε of every
+    link, one panel each, as ``drawing.chart.cycle_chart`` takes them. A value a position
+    does not give (its plans singular, or the position not placed) is NaN: a gap.
+
+    >>> from plans.model.scenes import SCENES
+    >>> from plans.cycle.table import compute
+    >>> angle, panels = plot_panels(compute(SCENES["crank_slider_offset"].mechanism(), 4))
+    >>> angle
+    [0.0, 90.0, 180.0, 270.0]
+    >>> [label for label, _ in panels]
+    ['s_B, m', 'V_B, m/s', 'a_B, m/s²', 'ω, rad/s', 'ε, rad/s²']
+    """
+    m, mech, c = t.motion, t.mechanism, t.cycle
+    n = len(t.status)
+    phi = np.broadcast_to(np.asarray(m.phi, dtype=float), (n,))
+    sense = 1.0 if mech.driver.omega >= 0 else -1.0
+    turned = np.degrees(np.mod((phi - phi[0]) * sense, 2 * math.pi)) if n else phi
+    ok = np.array([st.ok for st in t.status], dtype=bool)
+    placed = np.array([st.placed for st in t.status], dtype=bool)
+
+    def shown(values, rows) -> list[float]:
+        got = np.broadcast_to(np.asarray(values, dtype=float), (n,))
+        return np.where(rows, got, math.nan).tolist()
+
+    panels = []
+    o = c.output
+    if o is not None and t.output_values is not None:
+        if o.kind == "linear":
+            heads = (f"s_{o.point}", f"V_{o.point}", f"a_{o.point}")
+            units = ("m", "m/s", "m/s²")
+            value = t.output_values
+        else:
+            heads = (f"ψ_{o.point}", f"ω{o.link}", f"ε{o.link}")
+            units = ("°", "rad/s", "rad/s²")
+            value = np.degrees(t.output_values)
+        for head, unit, values, rows in zip(
+                heads, units, (value, o.rate(m, mech), o.rate(m, mech, "acceleration")),
+                (placed, ok, ok), strict=True):
+            panels.append((f"{head}, {unit}", [(head, shown(values, rows))]))
+    panels.append(("ω, rad/s", [(f"ω{i}", shown(m.links[i].omega, ok)) for i in t.links]))
+    panels.append(("ε, rad/s²", [(f"ε{i}", shown(m.links[i].epsilon, ok)) for i in t.links]))
+    return turned.tolist(), panels
 
 
 def _fig(x: float) -> str:

@@ -20,7 +20,7 @@ from plans.errors import InputError
 #: the output options of the commands: (option, attribute); ``-o`` alone is stdout when
 #: absent, the others are then not written at all
 OUTPUTS = (("-o", "output"), ("--svg", "svg"), ("--note", "note"), ("--png", "png"),
-           ("--pdf", "pdf"), ("--chart", "chart"))
+           ("--pdf", "pdf"), ("--chart", "chart"), ("--plot", "plot"))
 
 KINDS = {".svg": "an SVG", ".png": "a PNG", ".pdf": "a PDF"}
 #: names of other picture formats, which no command writes
