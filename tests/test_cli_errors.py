@@ -112,7 +112,8 @@ def test_a_chain_that_cannot_move_is_reported_with_its_file(capsys, tmp_path, co
 
 
 @pytest.mark.parametrize("command", ["report", "cycle", "sheet"])
-@pytest.mark.parametrize("name", ["many_problems", "toml_truncated", "garbage_bytes", "unknown_point_in_axis"])
+@pytest.mark.parametrize("name", ["many_problems", "toml_truncated", "garbage_bytes",
+                                  "unknown_point_in_axis"])
 def test_other_commands_report_bad_files_the_same_way(capsys, tmp_path, command, name):
     assert command in build_parser()._subparsers._group_actions[0].choices
     path = CORPUS / f"{name}.toml"
@@ -390,7 +391,8 @@ def test_debug_shows_the_traceback(monkeypatch, press):
 def test_help_documents_the_exit_status(capsys, argv):
     assert main(argv) == 0  # main returns argparse's code, it does not exit
     text = " ".join(capsys.readouterr().out.split())
-    assert "exit status: 0 success, 1 a check found deviations, 2 bad input or an unsolvable scene, 3 internal error (rerun with --debug for the traceback)" in text
+    assert ("exit status: 0 success, 1 a check found deviations, 2 bad input or an unsolvable "
+            "scene, 3 internal error (rerun with --debug for the traceback)") in text
 
 
 def test_help_and_a_misspelt_command_still_name_every_command(capsys):
@@ -481,9 +483,11 @@ def test_subprocess_internal_error_exit_3_without_traceback(press):
         f"sys.exit(c.main(['solve', {str(press)!r}]))\n"
     )
     env = dict(os.environ, PYTHONPATH=str(ROOT))
-    proc = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=env, timeout=120)
+    proc = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=env,
+                          timeout=120)
     assert proc.returncode == 3
-    assert proc.stderr == "plans solve: internal error: KeyError: 'boom' (rerun with --debug for the traceback)\n"
+    assert proc.stderr == ("plans solve: internal error: KeyError: 'boom' (rerun with --debug for "
+                           "the traceback)\n")
 
 
 # ---------------------------------------------------------------------------------------
@@ -526,11 +530,16 @@ def test_outputs_that_would_collide_or_fail_are_refused_first(capsys, tmp_path, 
 
 
 @pytest.mark.parametrize(("argv", "message"), [
-    (["solve", "{p}", "--angle", "abc"], "plans solve: command line: argument --angle: 'abc' is not a number from -1e+06 to 1e+06"),
-    (["sheet", "{p}", "--format", "a2"], "plans sheet: command line: argument --format: invalid choice: 'a2'"),
-    (["sheet", "{p}", "--dpi", "nan"], "plans sheet: command line: argument --dpi: 'nan' is not a number from 10 to 600"),
-    (["sheet", "{p}", "--plans", "1,4,1"], "plans sheet: --plans: position 1 given twice in '1,4,1': each position's plans are drawn once"),
-    (["bench", "--budget", "inf"], "plans bench: command line: argument --budget: 'inf' is not a number from 0 to 600"),
+    (["solve", "{p}", "--angle", "abc"],
+     "plans solve: command line: argument --angle: 'abc' is not a number from -1e+06 to 1e+06"),
+    (["sheet", "{p}", "--format", "a2"],
+     "plans sheet: command line: argument --format: invalid choice: 'a2'"),
+    (["sheet", "{p}", "--dpi", "nan"],
+     "plans sheet: command line: argument --dpi: 'nan' is not a number from 10 to 600"),
+    (["sheet", "{p}", "--plans", "1,4,1"],
+     "plans sheet: --plans: position 1 given twice in '1,4,1': each position's plans are drawn once"),
+    (["bench", "--budget", "inf"],
+     "plans bench: command line: argument --budget: 'inf' is not a number from 0 to 600"),
     (["bench", "--plan-max", "0"], "argument --plan-max: '0' is not a whole number from 1 to 10000000"),
     (["bench", "--methods", ","], "plans bench: command line: --methods: give at least one of"),
     (["solve", "{p}", "{p}"], "plans solve: command line: unrecognized arguments"),
@@ -612,7 +621,8 @@ def test_an_output_with_no_stroke_is_refused_not_replaced(capsys, tmp_path, poin
 def test_batch_output_that_looks_like_a_file_is_refused(capsys, tmp_path):
     code, _, err = run(capsys, "sheet", "--variant", "all", "-o", tmp_path / "b.svg")
     assert code == 2 and not (tmp_path / "b.svg").exists()
-    assert err == f"plans sheet: -o: {tmp_path / 'b.svg'} looks like a file name: with --variant all give a folder, e.g. -o sheets/\n"
+    assert err == (f"plans sheet: -o: {tmp_path / 'b.svg'} looks like a file name: with --variant "
+                   "all give a folder, e.g. -o sheets/\n")
 
 
 def test_a_date_in_place_of_a_number_is_quoted_as_the_file_wrote_it(capsys, tmp_path):

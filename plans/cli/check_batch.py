@@ -25,8 +25,9 @@ from pathlib import Path
 from drawing import export
 from drawing.overlay import overlay_svg
 from plans.check import verdict as ck
+from plans.check.describe import plan_unit
 from plans.check.measured import Solvers
-from plans.cli.check_report import PNG_SCALE, _all, command_tolerance, plan_unit
+from plans.cli.check_report import PNG_SCALE, all_items, command_tolerance
 from plans.cli.check_report import to_json as file_json
 from plans.cli.common import (
     EXIT_DEVIATIONS,
@@ -38,70 +39,15 @@ from plans.cli.common import (
     same_file,
     warn,
 )
+from plans.cli.words import WORDS
 from plans.errors import InputError, PlansError
-from plans.fmt import angle, columns, cut, listing, notation_in, ru_plural
+from plans.fmt import angle, columns, cut, listing, notation_in
 from plans.model.fileformat import one_line, read_toml
 from plans.model.variants import BUILTIN, BUILTIN_RU
 
 #: a title wider than this (columns of a terminal) is cut in the table (the file's title
 #: may hold 300 characters)
 TITLE_WIDTH = 40
-
-WORDS = {
-    "en": {
-        "head": "Check of hand-drawn plans: {n}",
-        "tol": "Tolerance",
-        "cols": ("file", "title", "mechanism", "verdict", "diagnosis"),
-        "variant": "variant",
-        "all_ok": "{all} within tolerance",
-        "some": "{k} of {n} beyond tolerance",
-        "bad": "not checked",
-        "internal": "internal error",
-        "none": "no single mistake",
-        "slips": "slips:",
-        "not": "not",
-        "or": "or",
-        "swapped": "{a} and {b} swapped",
-        "segment": "{a} measured as {b}",
-        "value": "{a} is {b} in {unit}",
-        "length": "{a} is {b} in mm",
-        "more": "(and {k} more: see stderr)",
-        "total": "Overall: {files}: {parts}.",
-        "files": lambda n: f"{n} file{'' if n == 1 else 's'}",
-        "n_ok": "{k} within tolerance",
-        "n_some": "{k} beyond tolerance",
-        "n_bad": "{k} not checked",
-        "n_internal": "{k} with an internal error",
-        "own_tol": "tolerance {tol}",
-    },
-    "ru": {
-        "head": "Проверка планов, построенных вручную: {n}",
-        "tol": "Допуск",
-        "cols": ("файл", "заголовок", "механизм", "вывод", "диагноз"),
-        "variant": "вариант",
-        "all_ok": "{all} в допуске",
-        "some": "{k} из {n} вне допуска",
-        "bad": "не проверен",
-        "internal": "внутренняя ошибка",
-        "none": "ни одна отдельная ошибка не объясняет",
-        "slips": "ошибки измерения или записи:",
-        "not": "не объясняет",
-        "or": "или",
-        "swapped": "{a} и {b} перепутаны",
-        "segment": "{a} измерен как {b}",
-        "value": "{a} — это {b} в {unit}",
-        "length": "{a} — это {b} в мм",
-        "more": "(и ещё {k}: см. stderr)",
-        "total": "Итог: {files}: {parts}.",
-        "files": lambda n: f"{n} {ru_plural(n, 'файл', 'файла', 'файлов')}",
-        "n_ok": "в допуске {k}",
-        "n_some": "вне допуска {k}",
-        "n_bad": "не проверено {k}",
-        "n_internal": "с внутренней ошибкой {k}",
-        "own_tol": "допуск {tol}",
-    },
-}
-
 
 @dataclass
 class Row:
@@ -300,14 +246,14 @@ def mechanism_cell(meas, lang: str) -> str:
 
 
 def verdict_cell(row: Row, lang: str, tol=None) -> str:
-    w = WORDS[lang]
+    w = WORDS[lang]["batch"]
     if row.status == EXIT_INTERNAL:
         return w["internal"]
     if row.result is None:
         return w["bad"]
     res = row.result
     n = len(res.deviations)
-    text = (w["all_ok"].format(all=_all(n, lang)) if res.ok else
+    text = (w["all_ok"].format(all=all_items(n, lang)) if res.ok else
             w["some"].format(k=len(res.failed), n=n))
     if tol is not None and res.tolerance != tol:
         text += f" ({w['own_tol'].format(tol=res.tolerance.describe(lang))})"
@@ -317,7 +263,7 @@ def verdict_cell(row: Row, lang: str, tol=None) -> str:
 def diagnosis_cell(row: Row, lang: str) -> str:
     """The diagnosis in a few words: the mistake named (and what it leaves unexplained),
     the slips, or "no single mistake"; for a file not checked, its first problem."""
-    w = WORDS[lang]
+    w = WORDS[lang]["batch"]
     if row.result is None:
         first = row.error[0] if row.error else ""
         if first.startswith(f"{row.path}: "):  # the file is in the first column
@@ -347,7 +293,7 @@ def diagnosis_cell(row: Row, lang: str) -> str:
 
 def _slips(res, lang: str) -> str:
     """The look-alikes in a few words each: "pc and pe swapped", "pd measured as ad"."""
-    w = WORDS[lang]
+    w = WORDS[lang]["batch"]
     out: list[str] = []
     said: set[frozenset[str]] = set()
     plan = {d.item.name: d.item.plan for d in res.deviations}
@@ -363,7 +309,7 @@ def _slips(res, lang: str) -> str:
 
 def to_text(rows: list[Row], lang: str = "en", tol=None) -> str:
     """The summary table: one row per file, then the count of each verdict."""
-    w = WORDS[lang]
+    w = WORDS[lang]["batch"]
     out = [w["head"].format(n=w["files"](len(rows)))]
     checked = [r.result for r in rows if r.result is not None]
     common = tol

@@ -7,7 +7,9 @@ from __future__ import annotations
 import math
 
 from plans.check import verdict as ck
-from plans.check.measured import MU_KEY, MU_SYMBOL
+from plans.check.describe import lookalike_lines, unit_in
+from plans.check.items import MU_KEY, MU_SYMBOL
+from plans.cli.words import WORDS
 from plans.errors import InputError
 from plans.fmt import (
     columns,
@@ -16,10 +18,10 @@ from plans.fmt import (
     listing,
     notation_in,
     num,
-    ru_plural,
     signed,
 )
-from plans.note.report import UNITS, warnings
+from plans.model.mechanism import MU_UNIT
+from plans.note.report import warnings
 
 #: the PNG of the drawing: two pixels for each px of the SVG
 PNG_SCALE = 2.0
@@ -35,125 +37,26 @@ def command_tolerance(args):
         raise InputError("command line", f"--tolerance: {exc}") from None
 
 
-WORDS = {
-    "en": {
-        "head": "Check of a hand-drawn plan",
-        "mech": "Mechanism",
-        "scales": "Student's scale factors",
-        "none_given": "none given",
-        "tol": "Tolerance",
-        "cols": ("segment", "measured", "computed", "deviation", "%", "verdict"),
-        "vcols": ("value", "student", "computed", "deviation", "%", "verdict"),
-        "positions": "Plan of positions (μl), mm",
-        "velocity": "Velocity plan (pole p, μv), mm",
-        "acceleration": "Acceleration plan (pole π, μa), mm",
-        "values": "Values the student computed",
-        "ok": "ok",
-        "bad": "BEYOND",
-        "sense": "wrong sense",
-        "all_ok": "Overall: {all} within tolerance.",
-        "some": "Overall: {k} of {n} {items} beyond tolerance: {names}.",
-        "diag": "Diagnosis",
-        "none": "no single mistake explains this.",
-        "slips": "the plans are right; the items beyond tolerance are slips in measuring or writing down:",
-        "less": "or, less closely: {what}",
-        "closest": "closest: {what}; it explains {ex} but not {un}",
-        "explains": "explains",
-        "all_of": "{all} beyond tolerance",
-        "like_segment": "{item} = {m} mm is the length of {other} ({exact} mm): measured from the wrong point?",
-        "like_swapped": "{item} = {m} mm is the length of {other} ({exact} mm): are {item} and {other} swapped?",
-        "like_value": "{item} = {m} is {other} in {unit} ({exact}): a segment is {other}/{mu}, in mm",
-        "like_length": "{item} = {m} is the length of {other} in mm ({exact} mm): the value is {other}·{mu}, in {unit}",
-        "k_of": "{e} of the {k} items beyond tolerance; not {un}",
-        "correction": "correction",
-        "also": "equally consistent with",
-        "hint": ' (the sense of ω{link} tells them apart: give it in [values], e.g. omega{link} = "4.8 ccw")',
-        "warning": "warning",
-        "ccw": "ccw",
-        "cw": "cw",
-    },
-    "ru": {
-        "head": "Проверка плана, построенного вручную",
-        "mech": "Механизм",
-        "scales": "Масштабные коэффициенты студента",
-        "none_given": "не заданы",
-        "tol": "Допуск",
-        "cols": ("отрезок", "измерено", "расчёт", "отклонение", "%", "вывод"),
-        "vcols": ("величина", "студент", "расчёт", "отклонение", "%", "вывод"),
-        "positions": "План положений (μl), мм",
-        "velocity": "План скоростей (полюс p, μv), мм",
-        "acceleration": "План ускорений (полюс π, μa), мм",
-        "values": "Величины, вычисленные студентом",
-        "ok": "в допуске",
-        "bad": "ВНЕ ДОПУСКА",
-        "sense": "не то направление",
-        "all_ok": "Итог: {all} в допуске.",
-        "some": "Итог: {k} из {n} вне допуска: {names}.",
-        "diag": "Диагноз",
-        "none": "ни одна отдельная ошибка этого не объясняет.",
-        "slips": "планы построены верно; отклонения — ошибки измерения или записи отдельных величин:",
-        "less": "или, с меньшей точностью: {what}",
-        "closest": "ближе всего: {what}; объясняет {ex}, но не {un}",
-        "explains": "объясняет",
-        "all_of": "{all} вне допуска",
-        "k_of": "{e} из {k} величин вне допуска; не объясняет {un}",
-        "correction": "исправление",
-        "also": "столь же хорошо объясняет",
-        "hint": ' (их различает направление ω{link}: укажите его в [values], например omega{link} = "4,8 против ч.с.")',
-        "warning": "предупреждение",
-        "like_segment": "{item} = {m} мм — это длина {other} ({exact} мм): отрезок измерен не от той точки?",
-        "like_swapped": "{item} = {m} мм — это длина {other} ({exact} мм): {item} и {other} перепутаны?",
-        "like_value": "{item} = {m} — это {other} в {unit} ({exact}): отрезок равен {other}/{mu}, в мм",
-        "like_length": "{item} = {m} — это длина {other} в мм ({exact} мм): величина равна {other}·{mu}, в {unit}",
-        "ccw": "против ч.с.",
-        "cw": "по ч.с.",
-    },
-}
-
-
-def _items(n: int, lang: str) -> str:
-    """The noun after "all n": "items" / "item"; in Russian it agrees with the number
-    (все 21 величина, все 2 величины, все 5 величин).
-
-    >>> _items(1, "en"), _items(2, "ru"), _items(5, "ru"), _items(21, "ru"), _items(12, "ru")
-    ('item', 'величины', 'величин', 'величина', 'величин')
-    """
-    if lang != "ru":
-        return "item" if n == 1 else "items"
-    return ru_plural(n, "величина", "величины", "величин")
-
-
-def _all(n: int, lang: str) -> str:
+def all_items(n: int, lang: str) -> str:
     """"All n items", as the number has it: the one item, both items, all 5 items; in
     Russian agreeing with it (обе величины, все 5 величин, все 21 величина).
 
-    >>> [_all(n, "en") for n in (1, 2, 3)]
+    >>> [all_items(n, "en") for n in (1, 2, 3)]
     ['the one item', 'both items', 'all 3 items']
-    >>> [_all(n, "ru") for n in (1, 2, 3, 5, 21)]
-    ['единственная величина', 'обе величины', 'все 3 величины', 'все 5 величин', 'все 21 величина']
+    >>> [all_items(n, "ru") for n in (1, 2, 3, 5, 21)]
+    ['единственная величина', 'обе величины', 'все 3 величины', 'все 5 величин',
+     'все 21 величина']
     """
+    w = WORDS[lang]["check"]
     if n == 1:
-        return "единственная величина" if lang == "ru" else "the one item"
+        return w["one_item"]
     if n == 2:
-        return "обе величины" if lang == "ru" else "both items"
-    return f"{'все' if lang == 'ru' else 'all'} {n} {_items(n, lang)}"
+        return w["two_items"]
+    return w["all_items"].format(n=n, items=w["items"](n))
 
 
 def _pct(x: float, lang: str) -> str:
     return signed(x, lang, 1)
-
-
-def _u(unit: str, lang: str) -> str:
-    """A unit written in English, in ``lang``: the note's own words (report.UNITS)."""
-    if lang == "en":
-        return unit
-    return next((UNITS[lang][k] for k, v in UNITS["en"].items() if v == unit), unit)
-
-
-def plan_unit(plan: str | None, lang: str) -> str:
-    """The unit of a value of the velocity plan (m/s) or of the acceleration plan
-    (m/s²), in ``lang``."""
-    return _u("m/s" if plan == "velocity" else "m/s²", lang)
 
 
 def _sense(x: float, w) -> str:
@@ -171,13 +74,13 @@ def _row(d, lang, w) -> list[str]:
     verdict = w["ok"] if d.ok else w["bad"]
     if d.sense_ok is False:
         verdict += f" ({w['sense']})"
-    name = it.name + ("" if it.kind == "segment" else f", {_u(it.unit, lang)}")
+    name = it.name + ("" if it.kind == "segment" else f", {unit_in(it.unit, lang)}")
     dev = signed(d.deviation, lang, 2 if it.kind == "segment" else None)
     return [name, meas, comp, dev, _pct(d.percent, lang), verdict]
 
 
 def to_text(result, lang: str = "en") -> str:
-    w = WORDS[lang]
+    w = WORDS[lang]["check"]
     meas = result.measurement
     sol = meas.solution
     mech = meas.mechanism
@@ -189,7 +92,7 @@ def to_text(result, lang: str = "en") -> str:
                f"{mech.driver.both(sol.phi, lang, lo=sol.solver.shown_from())}")
     mu = meas.mu
 
-    given = [f"{MU_SYMBOL[plan]} = {num(mu[key], 4, lang)} {UNITS[lang][key]}"
+    given = [f"{MU_SYMBOL[plan]} = {num(mu[key], 4, lang)} {unit_in(MU_UNIT[key], lang)}"
              for plan, key in MU_KEY.items() if key in meas.given]
     out.append(f"{w['scales']}: {listing(given, lang) if given else w['none_given']}")
     out.append(f"{w['tol']}: {result.tolerance.describe(lang)}")
@@ -209,9 +112,9 @@ def to_text(result, lang: str = "en") -> str:
     n = len(result.deviations)
     failed = result.failed
     if not failed:
-        out.append(w["all_ok"].format(all=_all(n, lang)))
+        out.append(w["all_ok"].format(all=all_items(n, lang)))
     else:
-        out.append(w["some"].format(k=len(failed), n=n, items=_items(n, lang),
+        out.append(w["some"].format(k=len(failed), n=n, items=w["items"](n),
                                     names=", ".join(d.item.name for d in failed)))
         out += diagnosis_lines(result, lang)
 
@@ -222,7 +125,7 @@ def to_text(result, lang: str = "en") -> str:
 
 
 def diagnosis_lines(result, lang: str = "en") -> list[str]:
-    w = WORDS[lang]
+    w = WORDS[lang]["check"]
     diag = result.diagnosis
     k = len(result.failed)
     if result.slips_only:
@@ -245,7 +148,7 @@ def diagnosis_lines(result, lang: str = "en") -> list[str]:
     if b.unexplained:
         ex = w["k_of"].format(e=len(b.explained), k=k, un=", ".join(b.unexplained))
     else:
-        ex = w["all_of"].format(all=_all(k, lang))
+        ex = w["all_of"].format(all=all_items(k, lang))
     lines.append(f"  {w['explains']}: {', '.join(b.explained)} ({ex})")
     lines.append(f"  {w['correction']}: {b.mistake.correction(lang)}")
     reported = {it.link for it in result.measurement.items if it.kind == "omega" and it.sense}
@@ -256,27 +159,6 @@ def diagnosis_lines(result, lang: str = "en") -> list[str]:
             line += w["hint"].format(link=min(ids))
         lines.append(line)
     return lines + lookalike_lines(result, lang)
-
-
-def lookalike_lines(result, lang: str = "en") -> list[str]:
-    """One line per item beyond tolerance that no mistake explains but that matches
-    something else (:func:`plans.check.lookalikes`)."""
-    w = WORDS[lang]
-    measured = {d.item.name: d.item for d in result.deviations}
-    out = []
-    for lk in result.diagnosis.lookalikes:
-        it = measured[lk.item]
-        if lk.kind in ("value", "length"):
-            unit = plan_unit(it.plan, lang)
-            exact = num(lk.exact, 4, lang) + (f" {unit}" if lk.kind == "value" else "")
-            text = w[f"like_{lk.kind}"].format(
-                item=lk.item, m=num(it.measured, 4, lang), other=lk.other, unit=unit,
-                exact=exact, mu=MU_SYMBOL[it.plan])
-        else:
-            text = w[f"like_{lk.kind}"].format(item=lk.item, m=num(it.measured, 4, lang),
-                                                other=lk.other, exact=num(lk.exact, 4, lang))
-        out.append(f"  {text}")
-    return out
 
 
 def _finding(f, lang: str):
