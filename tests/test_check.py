@@ -1581,3 +1581,25 @@ def test_a_tangential_value_may_be_written_a_tau_and_is_said_so_in_russian(tmp_p
     assert "a^t" not in out
     code, out, _ = run(capsys, "check", path)
     assert "  a^t_DC, m/s²" in out and "a^τ" not in out
+
+
+def test_a_third_language_is_a_table(monkeypatch):
+    """No function of the check's words forks on the language: a language registered with
+    a table of the same keys (here English again, as "xx") words every mistake, its
+    correction, the tolerance and "all n items" as that table does."""
+    from plans import fmt
+    from plans.check import describe, words
+    from plans.cli import check_report
+    from plans.cli import words as cli_words
+
+    monkeypatch.setitem(words.WORDS, "xx", words.EN)
+    monkeypatch.setitem(cli_words.WORDS, "xx", cli_words.EN)
+    monkeypatch.setitem(fmt.SENSE, "xx", fmt.SENSE["en"])  # the ground's own table
+    sol = solve_position(mechanism.load(PRESS))
+    mistakes = ck.hypotheses(sol)
+    assert len({m.kind for m in mistakes}) >= 10
+    for mk in mistakes:
+        assert describe.mistake_words(mk, "xx") == describe.mistake_words(mk, "en")
+    assert ck.Tolerance(3, 0.5).describe("xx") == ck.Tolerance(3, 0.5).describe("en")
+    assert [check_report.all_items(n, "xx") for n in (1, 2, 7)] == [
+        check_report.all_items(n, "en") for n in (1, 2, 7)]

@@ -115,7 +115,7 @@ def test_a_chain_that_cannot_move_is_reported_with_its_file(capsys, tmp_path, co
 @pytest.mark.parametrize("name", ["many_problems", "toml_truncated", "garbage_bytes",
                                   "unknown_point_in_axis"])
 def test_other_commands_report_bad_files_the_same_way(capsys, tmp_path, command, name):
-    assert command in build_parser()._subparsers._group_actions[0].choices
+    assert command in build_parser().commands
     path = CORPUS / f"{name}.toml"
     code, _, err = run(capsys, command, path, "-o", tmp_path / "out")
     assert code == 2

@@ -12,9 +12,11 @@ import json
 from drawing import export
 from drawing.overlay import overlay_svg
 from plans.check import verdict as ck
+from plans.check.words import WORDS as CHECK_WORDS
 from plans.cli.check_batch import run as run_batch
 from plans.cli.check_report import PNG_SCALE, command_tolerance, to_json, to_text
 from plans.cli.common import EXIT_DEVIATIONS, EXIT_OK, picture_names, warn
+from plans.cli.words import WORDS
 
 
 def configure(p) -> None:
@@ -37,7 +39,8 @@ def configure(p) -> None:
     p.add_argument("--png", metavar="OUT.png|DIR",
                    help="the same drawing as a PNG (needs cairosvg: pip install "
                         "'vector-plans[export]'; several files: a folder, as --svg)")
-    p.add_argument("--lang", choices=("en", "ru"), default="en",
+    # the languages both word tables speak, the check's and the report's
+    p.add_argument("--lang", choices=[lang for lang in WORDS if lang in CHECK_WORDS], default="en",
                    help="language of the report (ru: decimal commas)")
     p.add_argument("-o", "--output", metavar="FILE",
                    help="write the report (several files: the table) to FILE instead of stdout")

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from plans.cli.common import add_source, mechanism_from, solved_position, warn
+from plans.cli.common import EXIT_OK, add_source, mechanism_from, solved_position, warn
 from plans.cycle.analysis import analyse_cycle
 from plans.note.report import note
 
@@ -20,4 +20,4 @@ def run(args) -> int:
     args.run_files.write(args.output, note(sol, args.lang, analyse_cycle(mech, solver=solver)))
     for w in sol.warnings:
         warn("report", w)
-    return 0
+    return EXIT_OK

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import json
 
-from plans.cli.common import add_source, cycle_json, mechanism_from, solved_position, warn
+from plans.cli.common import EXIT_OK, add_source, cycle_json, mechanism_from, solved_position, warn
 from plans.cycle.analysis import analyse_cycle, summary
 from plans.fmt import from_x, json_angle, num
 
@@ -26,7 +26,7 @@ def run(args) -> int:
     args.run_files.write(args.output, text)
     for w in sol.warnings:
         warn("solve", w)
-    return 0
+    return EXIT_OK
 
 
 def _xy(z: complex) -> list[float]:
