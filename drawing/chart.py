@@ -8,8 +8,6 @@ from __future__ import annotations
 
 import math
 
-from plans.cli.bench import Row
-
 _COLORS = {
     "vectorized": "#1f77b4",
     "reused": "#17becf",
@@ -68,7 +66,7 @@ def marker(shape: str, x: float, y: float, color: str, size: float = 5.0) -> str
     return f'<polygon points="{pts}" fill="{color}" fill-opacity="0.75"/>'
 
 
-def svg_chart(rows: list[Row], subtitle: str = "") -> str:
+def svg_chart(rows: list, subtitle: str = "") -> str:
     """Error versus run time per position, log-log, one colour per method, one marker
     shape per scene; errors below 1e-17 (0 included) are drawn on the floor."""
     from xml.sax.saxutils import escape
@@ -182,3 +180,14 @@ def svg_chart(rows: list[Row], subtitle: str = "") -> str:
     )
     out.append("</svg>")
     return "\n".join(out) + "\n"
+
+
+def bench_chart(rows: list, title: str, fmt: str) -> bytes:
+    """The bench's chart as ``fmt`` bytes (``plans bench --chart``); rows are read
+    duck-typed (scene, method, positions, seconds_per_position, max_rel_error).
+
+    This SVG-only stand-in keeps ``plans bench --chart`` working until the matplotlib
+    chart of the same signature takes its place."""
+    if fmt != "svg":
+        raise ValueError(f"the bench's chart is written as SVG only, not {fmt!r}")
+    return svg_chart(rows, title).encode("utf-8")

@@ -443,7 +443,7 @@ def _footer(result: CheckResult, lang: str, width: float) -> list[tuple[list[str
     """The verdict, the diagnosis and the correction, then what each item beyond
     tolerance that no mistake explains looks like ("are πc and πa3 swapped?", as the
     text says it), each wrapped to ``width``."""
-    from plans.cli.check import lookalike_lines
+    from plans.check.describe import lookalike_lines
 
     w = WORDS[lang]
     tol = result.tolerance.describe(lang)

@@ -1,3 +1,3 @@
-from plans.cli.common import main
+from plans.cli.main import main
 
 raise SystemExit(main())

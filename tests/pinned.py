@@ -29,7 +29,7 @@ VARIANTS = range(10)
 
 
 def _run(argv: list[str]) -> tuple[int, bytes, bytes]:
-    from plans.cli.common import main
+    from plans.cli import main
 
     out, err = io.StringIO(), io.StringIO()
     with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):

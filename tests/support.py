@@ -1,9 +1,11 @@
 """What several test files share: the command line run in-process, the problems a file
-of the malformed-input corpus says it must produce, and a four-bar standing upright."""
+of the malformed-input corpus says it must produce, a four-bar standing upright, and
+measurement files of a variant's exact plans (the check's tests)."""
 
 from pathlib import Path
 
-from plans.cli.common import main
+from plans.check import verdict as ck
+from plans.cli import main
 
 
 def run(capsys, *argv):
@@ -73,3 +75,33 @@ points = {{ C = 0.1 }}
 [assembly]
 C = "above BD"
 """
+
+
+def ascii_name(name: str) -> str:
+    return name.replace("π", "pi")
+
+
+def plan_segments(sol) -> list[ck.Item]:
+    """Every segment the two plans name, as items to measure."""
+    out = []
+    for kind, plan in (("velocity", sol.velocity), ("acceleration", sol.acceleration)):
+        for name, (a, b) in ck.recorded_segments(plan).items():
+            out.append(ck.Item("segments." + name, name, "segment", kind, 0.0, a, b))
+    return out
+
+
+def variant_exact(tmp_path, n: int, mu: dict):
+    """Variant ``n``'s exact plans at the scales ``mu``, its plans' segments at them (mm),
+    and ``write(segs)``: the measurement file of those segments, to 0.01 mm."""
+    head = f"variant = {n}\n[scales]\n" + "".join(f"{k} = {v}\n" for k, v in mu.items())
+    path = tmp_path / f"v{n}.toml"
+    path.write_text(head + "[segments]\npb = 70\n", encoding="utf-8")
+    sol = ck.load(path).solution
+    exact = ck.simulate(sol, None)
+
+    def write(segs):
+        path.write_text(head + "[segments]\n" + "".join(f"{ascii_name(k)} = {x:.2f}\n"
+                                                        for k, x in segs.items()), encoding="utf-8")
+        return path
+
+    return exact, {it.name: ck.expected(it, exact, mu) for it in plan_segments(sol)}, write

@@ -8,10 +8,10 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 
-from plans.cli import bench
-from plans.cli.common import main
+from plans.cli import bench, main
 from plans.kinematics.solver import Solver
 from plans.model.scenes import SCENES
+from plans.verify import bench as measure
 from plans.verify import reference
 
 ROW_KEYS = {"scene", "method", "positions", "seconds_per_position", "max_rel_error"}
@@ -117,7 +117,7 @@ def test_error_measure_is_the_reference_norm():
     phi = scene.angles(7)
     motion = Solver(mech).solve(phi)
     ref = reference.reference(mech, phi, motion=motion)
-    ours = bench.motion_error(motion, ref.arrays())
+    ours = measure.motion_error(motion, ref.arrays())
     theirs = reference.max_rel_error(motion, ref)["max"]
     assert ours == pytest.approx(theirs, rel=1e-12)
     assert ours < 1e-14
@@ -125,10 +125,57 @@ def test_error_measure_is_the_reference_norm():
 
 def test_shared_reference_angles():
     scene = SCENES["crank_rocker"]
-    sub = {n: bench.grid(scene, n)[bench.subset(n, 100)] for n in (100, 1000, 10_000)}
+    sub = {n: measure.grid(scene, n)[measure.subset(n, 100)] for n in (100, 1000, 10_000)}
     assert np.array_equal(sub[100], sub[1000]) and np.array_equal(sub[100], sub[10_000])
-    assert len(bench.subset(12, 100)) == 12
-    assert len(bench.subset(1234, 100)) == 100
+    assert len(measure.subset(12, 100)) == 12
+    assert len(measure.subset(1234, 100)) == 100
+
+
+def _chart_spy(monkeypatch) -> list:
+    """What the bench hands drawing.chart.bench_chart: (rows, title, fmt) of each call,
+    answered with bytes that say their format."""
+    from drawing import chart
+
+    calls = []
+
+    def spy(rows, title, fmt):
+        calls.append((list(rows), title, fmt))
+        return f"<{fmt} chart of {len(calls[-1][0])} rows>".encode()
+
+    monkeypatch.setattr(chart, "bench_chart", spy, raising=False)
+    return calls
+
+
+@pytest.mark.parametrize("fmt", ["png", "svg", "pdf"])
+def test_the_chart_is_written_in_the_format_its_name_ends_in(capsys, tmp_path, monkeypatch, fmt):
+    """--chart FILE.png|svg|pdf: the rows measured go to the chart (the very rows of the
+    JSON), the format is the name's ending, and the chart's bytes are the file."""
+    calls = _chart_spy(monkeypatch)
+    target = tmp_path / f"bench.{fmt.upper() if fmt == 'pdf' else fmt}"
+    code = main(["bench", "--json", "--quick", "--max-positions", "12", "--scene", "scotch_yoke",
+                 "--methods", "vectorized", "--chart", str(target)])
+    out, err = capsys.readouterr()
+    assert code == 0, err
+    ((rows, title, got),) = calls
+    assert got == fmt
+    assert [r.as_json() for r in rows] == json.loads(out)
+    assert "cores" in title and "numpy" in title  # the machine it was measured on
+    assert target.read_bytes() == f"<{fmt} chart of {len(rows)} rows>".encode()
+
+
+def test_a_chart_of_another_format_is_refused_before_anything_is_timed(capsys, tmp_path,
+                                                                        monkeypatch):
+    calls = _chart_spy(monkeypatch)
+
+    def never(*_):
+        raise AssertionError("timed before the chart's name was checked")
+
+    monkeypatch.setattr(measure.Bench, "scene", never)
+    code = main(["bench", "--quick", "--scene", "scotch_yoke", "--chart", str(tmp_path / "b.jpg")])
+    _, err = capsys.readouterr()
+    assert code == 2 and not calls and not (tmp_path / "b.jpg").exists()
+    assert err == (f"plans bench: command line: --chart {tmp_path / 'b.jpg'}: the name must end "
+                   "in .png, .svg or .pdf (--chart writes PNG, SVG or PDF, as the name ends)\n")
 
 
 def test_svg_chart_handles_zero_and_missing_errors():
@@ -195,7 +242,7 @@ def test_best_time_counts_its_repeats_after_a_slow_first_run():
         if len(calls) == 1:
             time.sleep(0.05)
 
-    best = bench._best_time(fn, budget=0.1)
+    best = measure.best_time(fn, budget=0.1)
     assert len(calls) > 50
     assert best < 0.01
 

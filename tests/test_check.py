@@ -20,7 +20,7 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from support import NON_GRASHOF, run
+from support import NON_GRASHOF, ascii_name, plan_segments, run, variant_exact
 
 from plans.check import verdict as ck
 from plans.errors import InputError
@@ -59,19 +59,6 @@ points = { C = 0.1025 }
 C = "above BD"
 """
 
-
-
-def ascii_name(name: str) -> str:
-    return name.replace("π", "pi")
-
-
-def plan_segments(sol) -> list[ck.Item]:
-    """Every segment the two plans name, as items to measure."""
-    out = []
-    for kind, plan in (("velocity", sol.velocity), ("acceleration", sol.acceleration)):
-        for name, (a, b) in ck.recorded_segments(plan).items():
-            out.append(ck.Item("segments." + name, name, "segment", kind, 0.0, a, b))
-    return out
 
 
 def write_meas(path: Path, mech: Path | str, segments: dict[str, float], mu: dict[str, float],
@@ -117,7 +104,7 @@ def test_replay_without_mistake_is_the_engine_plan(source):
 
     mech = variant(int(source.split(":")[1])) if isinstance(source, str) else mechanism.load(source)
     sol = solve_position(mech)
-    rep = ck._Replayer(sol)
+    rep = ck.Replayer(sol)
     st = rep.run(ck.Mistake("term-scale", "acceleration", "no such term", 7.0))
     scale = max(abs(p.value) for p in sol.acceleration.points.values())
     for plan, vals in ((sol.velocity, st.velocity), (sol.acceleration, st.acceleration)):
@@ -389,7 +376,7 @@ def test_every_mistake_is_named_or_indistinguishable(name):
     scene = SCENES[name]
     mech = scene.mechanism()
     sol = solve_position(mech.with_phi(float(scene.angles(5)[2])))
-    st = ck._Replayer(sol).run(ck.Mistake("term-scale", "acceleration", "no such term", 7.0))
+    st = ck.Replayer(sol).run(ck.Mistake("term-scale", "acceleration", "no such term", 7.0))
     for plan, vals in ((sol.velocity, st.velocity), (sol.acceleration, st.acceleration)):
         top = max(abs(p.value) for p in plan.points.values())
         assert all(abs(vals[n] - p.value) <= 1e-12 * top for n, p in plan.points.items())
@@ -400,7 +387,7 @@ def test_every_mistake_is_named_or_indistinguishable(name):
     for mk in ck.hypotheses(sol):
         try:
             state = ck.simulate(sol, mk, mu)
-        except (ck._Degenerate, ck.PlansError):
+        except (ck.Degenerate, ck.PlansError):
             continue
         meas_items = tuple(
             ck.Item(it.key, it.name, it.kind, it.plan,
@@ -734,7 +721,8 @@ def test_svg_overlay(tmp_path, capsys, press, case, lang):
     # the legend's sample is the sheet's first deviation beyond tolerance, in the language
     first = next(d for d in ck.check(ck.load(meas_path)).failed if d.item.kind == "segment")
     dev = f"{abs(first.deviation):.1f}"
-    sample = f"{first.item.name} {'+' if first.deviation > 0 else '−'}{dev.replace('.', ',') if lang == 'ru' else dev}"
+    shown = dev.replace(".", ",") if lang == "ru" else dev
+    sample = f"{first.item.name} {'+' if first.deviation > 0 else '−'}{shown}"
     assert sample in texts  # the legend's sample (it was always "pd −4.2", on every sheet)
     if case == "coriolis":  # a sheet with no segment pd beyond tolerance
         assert not any("pd −4" in (t or "") or "pd −4,2" in (t or "") for t in texts)
@@ -895,7 +883,7 @@ def test_the_header_credits_the_student_only_with_the_scale_factors_given(tmp_pa
     μa = 200000 (m/s²)/mm", the other two being the tool's own choice."""
     meas = tmp_path / "m.toml"
     meas.write_text(f'mechanism = "{FOURBAR}"\n[scales]\nmu_v = 0.02\n[segments]\npc = 40\n', "utf-8")
-    code, out, _ = run(capsys, "check", meas)
+    _, out, _ = run(capsys, "check", meas)
     assert "Student's scale factors: μv = 0.02 (m/s)/mm\n" in out
     _code, out, _ = run(capsys, "check", meas, "--json")
     assert json.loads(out)["scales"] == {"mu_v": 0.02}
@@ -1119,7 +1107,8 @@ def test_russian_words_agree_with_their_numbers(tmp_path, capsys, press):
     в 5–20, 21, 25 раз; в 1,25 раза). "на плане (план скоростей) линия" named the plan in
     the nominative inside brackets."""
     scale = find(press, "scale", plan="velocity")
-    assert (scale.factor, scale.describe("ru")) == (10.0, "план скоростей в 10 раз крупнее (при указанном μv)")
+    assert (scale.factor, scale.describe("ru")) == (
+        10.0, "план скоростей в 10 раз крупнее (при указанном μv)")
     for f, words in ((1 / 20, "в 20 раз мельче"), (1.25, "в 1,25 раза крупнее"),
                      (22.0, "в 22 раза крупнее"), (21.0, "в 21 раз крупнее"), (2.0, "в 2 раза крупнее"),
                      (1 / 16, "в 16 раз мельче")):
@@ -1145,7 +1134,8 @@ def test_a_mistake_on_both_plans_is_said_without_an_article(tmp_path, press):
     side = find(sol, "similarity-mirrored", "e", "both", how="side")
     assert side.describe() == "e on both plans laid off on the wrong side of b"
     inverse = find(press, "similarity-ratio", "c", "velocity", how="inverse")
-    assert inverse.describe() == "c on the velocity plan found with the ratio of the wrong segments (inverted)"
+    assert inverse.describe() == ("c on the velocity plan found with the ratio of the wrong "
+                                  "segments (inverted)")
     line = find(press, "line-swapped", "a^t_DC", "acceleration")
     assert line.describe() == "on the acceleration plan the line of a^t_DC is drawn ∥ DC instead of ⊥ DC"
     for mk in ck.hypotheses(press) + ck.hypotheses(sol):
@@ -1249,7 +1239,7 @@ def test_the_crank_angle_is_given_as_solve_gives_it(capsys):
     """The press measures φ1 from +y, clockwise, and its measurement file gives 30°. The
     check printed only "φ1 = 60° from +x" and its JSON 59.99999999999999; it now words it
     as solve does, in both languages, and the JSON holds both angles as solve's does."""
-    code, out, _ = run(capsys, "check", SAMPLES / "check_press.toml")
+    _, out, _ = run(capsys, "check", SAMPLES / "check_press.toml")
     assert ", φ1 = 60° from +x (30° from +y, cw, as the file gives it)\n" in out
     _, solve, _ = run(capsys, "solve", PRESS)
     assert "φ1 = 60° from +x (30° from +y, cw, as the file gives it)," in solve
@@ -1344,23 +1334,6 @@ def test_a_check_at_an_angle_outside_the_crank_range_gives_the_range(capsys, tmp
                    "φ1 = 150°: needs BD within [0.05, 0.25] m, misses by 0.059789 m\n")
 
 
-def _variant_exact(tmp_path, n: int, mu: dict):
-    """Variant ``n``'s exact plans at the scales ``mu``, its plans' segments at them (mm),
-    and ``write(segs)``: the measurement file of those segments, to 0.01 mm."""
-    head = f"variant = {n}\n[scales]\n" + "".join(f"{k} = {v}\n" for k, v in mu.items())
-    path = tmp_path / f"v{n}.toml"
-    path.write_text(head + "[segments]\npb = 70\n", encoding="utf-8")
-    sol = ck.load(path).solution
-    exact = ck.simulate(sol, None)
-
-    def write(segs):
-        path.write_text(head + "[segments]\n" + "".join(f"{ascii_name(k)} = {x:.2f}\n"
-                                                        for k, x in segs.items()), encoding="utf-8")
-        return path
-
-    return exact, {it.name: ck.expected(it, exact, mu) for it in plan_segments(sol)}, write
-
-
 def test_slips_that_explain_everything_are_not_under_no_single_mistake(tmp_path, capsys):
     """A four-bar (variant 1) with pc and pe swapped, all else exact: the text said
     "Diagnosis: no single mistake explains this.", then "closest: e laid off from the
@@ -1371,7 +1344,7 @@ def test_slips_that_explain_everything_are_not_under_no_single_mistake(tmp_path,
     only some of them; the JSON says so too, and the picture's footer."""
     from drawing.overlay import overlay
 
-    _, segs, write = _variant_exact(tmp_path, 1, {"mu_l": 0.0025, "mu_v": 0.01, "mu_a": 0.2})
+    _, segs, write = variant_exact(tmp_path, 1, {"mu_l": 0.0025, "mu_v": 0.01, "mu_a": 0.2})
     segs["pc"], segs["pe"] = segs["pe"], segs["pc"]
     path = write(segs)
     res = ck.check(ck.load(path))
@@ -1398,7 +1371,7 @@ def test_a_segment_measured_from_the_wrong_point_beats_a_loose_mistake(tmp_path,
     said "s2 found with the ratio meant for e", whose ps2 is |pe| = 65.05 mm, 4 % off
     but within tolerance, while bs2 matches to 0.04 mm. The closer slip is named, the
     mistake kept as the less close reading."""
-    exact, segs, write = _variant_exact(tmp_path, 9, {"mu_l": 0.004, "mu_v": 0.02, "mu_a": 0.5})
+    exact, segs, write = variant_exact(tmp_path, 9, {"mu_l": 0.004, "mu_v": 0.02, "mu_a": 0.5})
     v = exact.values("velocity")
     segs["ps2"] = abs(v["s2"] - v["b"]) / 0.02
     path = write(segs)
@@ -1450,7 +1423,8 @@ def test_a_normal_acceleration_with_another_links_length_is_named(tmp_path, caps
     assert not any("S" in m.get("wrong") for m in ck.hypotheses(sol) if m.kind == "normal-length")
     code, out, _ = run(capsys, "check", path, "--lang", "ru")
     own = term[-2:]
-    assert code == 1 and f"Диагноз: нормальное ускорение {term} вычислено по длине l_{wrong} вместо l_{own}." in out
+    assert code == 1
+    assert f"Диагноз: нормальное ускорение {term} вычислено по длине l_{wrong} вместо l_{own}." in out
 
 
 def test_a_normal_acceleration_with_the_rockers_length_names_it(tmp_path, capsys, press):
@@ -1535,7 +1509,7 @@ def test_plans_of_another_crank_angle_are_named(tmp_path, capsys, turn):
     single mistake", its closest a wrong length that explains a few. The angle whose exact
     plans fit is found, to the whole degree the student turned the crank by."""
     mu = {"mu_l": 0.0025, "mu_v": 0.01, "mu_a": 0.2}
-    _, segs, write = _variant_exact(tmp_path, 1, mu)
+    _, segs, write = variant_exact(tmp_path, 1, mu)
     sol = ck.load(write(segs)).solution
     other = ck.at_angle(sol, sol.phi + math.radians(turn), mu)
     rng = np.random.default_rng(7)
@@ -1565,26 +1539,26 @@ def test_the_crank_angle_is_not_searched_where_one_slip_is_all(tmp_path, monkeyp
         raise AssertionError("a position solved")
 
     monkeypatch.setattr(ck, "at_angle", solved)
-    _, segs, write = _variant_exact(tmp_path, 1, {"mu_l": 0.0025, "mu_v": 0.01, "mu_a": 0.2})
+    _, segs, write = variant_exact(tmp_path, 1, {"mu_l": 0.0025, "mu_v": 0.01, "mu_a": 0.2})
     segs["pc"] *= 1.4
     meas = ck.load(write(segs))
     devs = ck.check(meas, diagnose_=False).deviations
     assert [d.item.name for d in devs if not d.ok] == ["pc"]
-    assert ck._fitted_angle(meas, devs, ck.Tolerance()) == []
+    assert ck.fitted_angle(meas, devs, ck.Tolerance()) == []
 
 
 def test_the_crank_angle_is_not_searched_where_slips_explain_everything(tmp_path, monkeypatch):
     """pc and pe swapped, all else exact: the slips say what happened (the plans are right),
     and the angle search (two hundred positions solved, slower than the rest of the check
     of such a file) must not run for it, as it did on every such file of a class."""
-    _, segs, write = _variant_exact(tmp_path, 1, {"mu_l": 0.0025, "mu_v": 0.01, "mu_a": 0.2})
+    _, segs, write = variant_exact(tmp_path, 1, {"mu_l": 0.0025, "mu_v": 0.01, "mu_a": 0.2})
     segs["pc"], segs["pe"] = segs["pe"], segs["pc"]
     meas = ck.load(write(segs))
 
     def searched(*args):
         raise AssertionError("the crank angle was searched")
 
-    monkeypatch.setattr(ck, "_fitted_angle", searched)
+    monkeypatch.setattr(ck, "fitted_angle", searched)
     res = ck.check(meas)
     assert res.slips_only and {lk.item for lk in res.diagnosis.lookalikes} == {"pc", "pe"}
 
@@ -1607,3 +1581,25 @@ def test_a_tangential_value_may_be_written_a_tau_and_is_said_so_in_russian(tmp_p
     assert "a^t" not in out
     code, out, _ = run(capsys, "check", path)
     assert "  a^t_DC, m/s²" in out and "a^τ" not in out
+
+
+def test_a_third_language_is_a_table(monkeypatch):
+    """No function of the check's words forks on the language: a language registered with
+    a table of the same keys (here English again, as "xx") words every mistake, its
+    correction, the tolerance and "all n items" as that table does."""
+    from plans import fmt
+    from plans.check import describe, words
+    from plans.cli import check_report
+    from plans.cli import words as cli_words
+
+    monkeypatch.setitem(words.WORDS, "xx", words.EN)
+    monkeypatch.setitem(cli_words.WORDS, "xx", cli_words.EN)
+    monkeypatch.setitem(fmt.SENSE, "xx", fmt.SENSE["en"])  # the ground's own table
+    sol = solve_position(mechanism.load(PRESS))
+    mistakes = ck.hypotheses(sol)
+    assert len({m.kind for m in mistakes}) >= 10
+    for mk in mistakes:
+        assert describe.mistake_words(mk, "xx") == describe.mistake_words(mk, "en")
+    assert ck.Tolerance(3, 0.5).describe("xx") == ck.Tolerance(3, 0.5).describe("en")
+    assert [check_report.all_items(n, "xx") for n in (1, 2, 7)] == [
+        check_report.all_items(n, "en") for n in (1, 2, 7)]

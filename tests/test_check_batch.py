@@ -13,8 +13,7 @@ import os
 from pathlib import Path
 
 import pytest
-from support import run
-from test_check import _variant_exact
+from support import run, variant_exact
 
 from plans import fmt
 from plans.check import verdict as ck
@@ -26,7 +25,7 @@ VELOCITY = ["pb", "ps1", "pc", "pe", "ps2", "ps3", "bc", "dc"]
 @pytest.fixture
 def klass(tmp_path):
     """Five students' files of variant 1, by what is in them."""
-    _, segs, write = _variant_exact(tmp_path, 1, MU)
+    _, segs, write = variant_exact(tmp_path, 1, MU)
     out = {}
 
     def save(name, s, title=None, text=None):
@@ -338,7 +337,7 @@ def test_the_table_is_not_written_over_a_picture_of_the_batch(klass, capsys, tmp
 def titled(tmp_path, capsys, a: str, b: str) -> dict[str, str]:
     """The rows of two exact files of variant 1 titled ``a`` and ``b``, each checked to
     have its mechanism's column start where the other's does (in a terminal's columns)."""
-    _, segs, write = _variant_exact(tmp_path, 1, MU)
+    _, segs, write = variant_exact(tmp_path, 1, MU)
     body = write(segs).read_text(encoding="utf-8")
     files = []
     for name, title in (("a", a), ("b", b)):

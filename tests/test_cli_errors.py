@@ -3,6 +3,7 @@ traceback, and no file lost (never an input written, never a half-written output
 
 from __future__ import annotations
 
+import argparse
 import json
 import os
 import re
@@ -16,7 +17,8 @@ from support import expectations, run
 from test_errors import PARALLEL_RPP
 
 from plans.cli import common as cli
-from plans.cli.common import main
+from plans.cli import main
+from plans.cli.main import COMMANDS, build_parser
 
 ROOT = Path(__file__).resolve().parent.parent
 CORPUS = ROOT / "tests" / "corpus"
@@ -110,9 +112,10 @@ def test_a_chain_that_cannot_move_is_reported_with_its_file(capsys, tmp_path, co
 
 
 @pytest.mark.parametrize("command", ["report", "cycle", "sheet"])
-@pytest.mark.parametrize("name", ["many_problems", "toml_truncated", "garbage_bytes", "unknown_point_in_axis"])
+@pytest.mark.parametrize("name", ["many_problems", "toml_truncated", "garbage_bytes",
+                                  "unknown_point_in_axis"])
 def test_other_commands_report_bad_files_the_same_way(capsys, tmp_path, command, name):
-    assert command in cli.build_parser()._subparsers._group_actions[0].choices
+    assert command in build_parser().commands
     path = CORPUS / f"{name}.toml"
     code, _, err = run(capsys, command, path, "-o", tmp_path / "out")
     assert code == 2
@@ -192,12 +195,13 @@ def test_check_never_writes_over_the_variant_table_it_read(capsys, tmp_path):
 
 
 def test_write_output_itself_refuses_the_inputs(tmp_path, press):
-    cli._INPUTS[:] = [str(press)]
-    try:
-        with pytest.raises(cli.InputError, match="is the input file"):
-            cli.write_output(str(press), "x")
-    finally:
-        cli._INPUTS.clear()
+    with pytest.raises(cli.InputError, match="is the input file"):
+        cli.write_output(str(press), "x", inputs=[str(press)])
+    files = cli.RunFiles()  # a run's files: what it claims it never writes
+    files.claim(argparse.Namespace(), [press])
+    with pytest.raises(cli.InputError, match="is the input file"):
+        files.write(str(press), "x")
+    assert press.read_text("utf-8") != "x"
 
 
 def test_a_failing_run_leaves_the_existing_output_alone(capsys, tmp_path):
@@ -387,33 +391,34 @@ def test_debug_shows_the_traceback(monkeypatch, press):
 def test_help_documents_the_exit_status(capsys, argv):
     assert main(argv) == 0  # main returns argparse's code, it does not exit
     text = " ".join(capsys.readouterr().out.split())
-    assert "exit status: 0 success, 1 a check found deviations, 2 bad input or an unsolvable scene, 3 internal error (rerun with --debug for the traceback)" in text
+    assert ("exit status: 0 success, 1 a check found deviations, 2 bad input or an unsolvable "
+            "scene, 3 internal error (rerun with --debug for the traceback)") in text
 
 
 def test_help_and_a_misspelt_command_still_name_every_command(capsys):
     """A run configures only the command it names; the others are still listed."""
     assert main(["--help"]) == 0
     out = capsys.readouterr().out
-    for name, (_, help_text) in cli.COMMANDS.items():
+    for name, (_, help_text) in COMMANDS.items():
         assert re.search(rf"^ +{name} +{re.escape(help_text)}$", out, re.M), name
     assert main(["sovle", "x.toml"]) == 2
     err = capsys.readouterr().err
     assert err == ("plans: command line: argument COMMAND: invalid choice: 'sovle' (choose from "
-                   + ", ".join(f"'{n}'" for n in cli.COMMANDS) + ") (see plans --help)\n")
+                   + ", ".join(f"'{n}'" for n in COMMANDS) + ") (see plans --help)\n")
 
 
 @pytest.mark.parametrize("module", ["plans.cli_not_built", "family_not_built.cli"])
 def test_a_command_whose_module_is_not_there_is_left_out(capsys, tmp_path, monkeypatch, module):
     """A command family not built yet, a module or its whole package, is left out of the
     list; the other commands run as ever, whichever of them the run names."""
-    monkeypatch.setitem(cli.COMMANDS, "later", (module, "a command still to come"))
+    monkeypatch.setitem(COMMANDS, "later", (module, "a command still to come"))
     target = tmp_path / "s.json"
     assert main(["solve", str(PRESS), "--json", "-o", str(target)]) == 0
     assert main(["--help"]) == 0
     assert "later" not in capsys.readouterr().out
     assert main(["later"]) == 2
     assert "invalid choice: 'later'" in capsys.readouterr().err
-    assert "later" not in cli.build_parser().commands
+    assert "later" not in build_parser().commands
 
 
 def test_the_readme_documents_the_exit_status():
@@ -478,9 +483,11 @@ def test_subprocess_internal_error_exit_3_without_traceback(press):
         f"sys.exit(c.main(['solve', {str(press)!r}]))\n"
     )
     env = dict(os.environ, PYTHONPATH=str(ROOT))
-    proc = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=env, timeout=120)
+    proc = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=env,
+                          timeout=120)
     assert proc.returncode == 3
-    assert proc.stderr == "plans solve: internal error: KeyError: 'boom' (rerun with --debug for the traceback)\n"
+    assert proc.stderr == ("plans solve: internal error: KeyError: 'boom' (rerun with --debug for "
+                           "the traceback)\n")
 
 
 # ---------------------------------------------------------------------------------------
@@ -523,11 +530,16 @@ def test_outputs_that_would_collide_or_fail_are_refused_first(capsys, tmp_path, 
 
 
 @pytest.mark.parametrize(("argv", "message"), [
-    (["solve", "{p}", "--angle", "abc"], "plans solve: command line: argument --angle: 'abc' is not a number from -1e+06 to 1e+06"),
-    (["sheet", "{p}", "--format", "a2"], "plans sheet: command line: argument --format: invalid choice: 'a2'"),
-    (["sheet", "{p}", "--dpi", "nan"], "plans sheet: command line: argument --dpi: 'nan' is not a number from 10 to 600"),
-    (["sheet", "{p}", "--plans", "1,4,1"], "plans sheet: --plans: position 1 given twice in '1,4,1': each position's plans are drawn once"),
-    (["bench", "--budget", "inf"], "plans bench: command line: argument --budget: 'inf' is not a number from 0 to 600"),
+    (["solve", "{p}", "--angle", "abc"],
+     "plans solve: command line: argument --angle: 'abc' is not a number from -1e+06 to 1e+06"),
+    (["sheet", "{p}", "--format", "a2"],
+     "plans sheet: command line: argument --format: invalid choice: 'a2'"),
+    (["sheet", "{p}", "--dpi", "nan"],
+     "plans sheet: command line: argument --dpi: 'nan' is not a number from 10 to 600"),
+    (["sheet", "{p}", "--plans", "1,4,1"],
+     "plans sheet: --plans: position 1 given twice in '1,4,1': each position's plans are drawn once"),
+    (["bench", "--budget", "inf"],
+     "plans bench: command line: argument --budget: 'inf' is not a number from 0 to 600"),
     (["bench", "--plan-max", "0"], "argument --plan-max: '0' is not a whole number from 1 to 10000000"),
     (["bench", "--methods", ","], "plans bench: command line: --methods: give at least one of"),
     (["solve", "{p}", "{p}"], "plans solve: command line: unrecognized arguments"),
@@ -609,7 +621,8 @@ def test_an_output_with_no_stroke_is_refused_not_replaced(capsys, tmp_path, poin
 def test_batch_output_that_looks_like_a_file_is_refused(capsys, tmp_path):
     code, _, err = run(capsys, "sheet", "--variant", "all", "-o", tmp_path / "b.svg")
     assert code == 2 and not (tmp_path / "b.svg").exists()
-    assert err == f"plans sheet: -o: {tmp_path / 'b.svg'} looks like a file name: with --variant all give a folder, e.g. -o sheets/\n"
+    assert err == (f"plans sheet: -o: {tmp_path / 'b.svg'} looks like a file name: with --variant "
+                   "all give a folder, e.g. -o sheets/\n")
 
 
 def test_a_date_in_place_of_a_number_is_quoted_as_the_file_wrote_it(capsys, tmp_path):
@@ -684,7 +697,7 @@ def test_output_to_dev_stdout_appends_to_what_stdout_is(tmp_path):
     (["solve", "F"], False),
 ])
 def test_debug_is_taken_before_or_after_the_command(argv, debug):
-    args = cli.build_parser().parse_args(argv)
+    args = build_parser().parse_args(argv)
     assert args.debug is debug
 
 

@@ -211,7 +211,8 @@ def test_the_russian_note_reads_as_a_teacher_wants(capsys):
     code span; the Chebyshev line's quantities take a dash."""
     code, out, _ = run(capsys, "report", "samples/press.toml", "--lang", "ru")
     assert code == 0
-    assert "- `θ = (φ_рх − φ_хх) / 2 = (219,865° − 140,135°) / 2 = 39,86°`\n- `K = (180° + θ) / (180° − θ) = (180° + 39,86°) / (180° − 39,86°) = 1,569`" in out
+    assert ("- `θ = (φ_рх − φ_хх) / 2 = (219,865° − 140,135°) / 2 = 39,86°`\n"
+            "- `K = (180° + θ) / (180° − θ) = (180° + 39,86°) / (180° − 39,86°) = 1,569`") in out
     assert "- `H = D′D″·μl = 51,136·0,01 = 0,5114 м`" in out
     assert "(n = 5 — число подвижных звеньев, p5 = 7 — число одноподвижных пар" in out
     assert not re.search(r" `$", out, re.M)  # no "= 1,569 `" at a line's end
@@ -257,7 +258,7 @@ def test_the_note_finds_every_point_of_the_input_link_it_uses(capsys, tmp_path):
 
     from plans.model.scenes import SCENES
 
-    code, out, _ = run(capsys, "report", "samples/fourbar.toml", "--lang", "ru")
+    _, out, _ = run(capsys, "report", "samples/fourbar.toml", "--lang", "ru")
     w1 = 149.2 * math.pi / 30
     v, a = w1 * 0.03125, w1 * w1 * 0.03125
     assert f"- `V_S1 = ps1·μv = 24,413·0,02 = {v:.4f} м/с`".replace(".", ",") in out
@@ -292,10 +293,13 @@ def test_the_note_explains_translating_links_sliding_links_and_its_own_guide_nam
     assert v_d == pytest.approx(abs(sol.velocity.value("a3")), rel=1e-12)  # one velocity
     assert "△a3de" not in out
     if lang == "ru":
-        assert "Звено 3 движется поступательно (ω3 = 0): скорости всех его точек равны, V_D = V_E = V_S3 = V_A3:" in out
-        assert "- ускорение Кориолиса равно нулю: звено 3, несущее направляющую, движется поступательно (ω3 = 0)" in out
+        assert ("Звено 3 движется поступательно (ω3 = 0): скорости всех его точек равны, "
+                "V_D = V_E = V_S3 = V_A3:") in out
+        assert ("- ускорение Кориолиса равно нулю: звено 3, несущее направляющую, движется "
+                "поступательно (ω3 = 0)") in out
         mu_v = sol.velocity.mu
-        assert f"- `V_D = pd·μv = {num(v_d / mu_v, 5, 'ru')}·{num(mu_v, 4, 'ru')} = {num(v_d, 4, 'ru')} м/с`" in out
+        assert (f"- `V_D = pd·μv = {num(v_d / mu_v, 5, 'ru')}·{num(mu_v, 4, 'ru')} = "
+                f"{num(v_d, 4, 'ru')} м/с`") in out
     else:
         assert "Link 3 translates (ω3 = 0): all its points have one velocity, V_D = V_E = V_S3 = V_A3:" in out
         assert "Link 2 translates" not in out  # the block has one point: nothing to equate
@@ -606,11 +610,11 @@ def test_a_courses_table_gives_an_offset_omega_and_a_clockwise_crank(tmp_path, c
                      'AB = 0.1\nBC = 0.4\ne = "0,05"\nphi_deg = 30\nomega = 10.5\nsense = "cw"\n',
                      encoding="utf-8")
     mech = variant(4, table)
-    r, l, e = 0.1, 0.4, 0.05
+    r, rod, e = 0.1, 0.4, 0.05
     assert mech.driver.omega == -10.5
     c = analyse_cycle(mech)
-    assert c.stroke == pytest.approx(math.sqrt((l + r) ** 2 - e * e) - math.sqrt((l - r) ** 2 - e * e),
-                                     rel=1e-12)
-    assert c.theta == pytest.approx(math.asin(e / (l - r)) - math.asin(e / (l + r)), rel=1e-9)
+    assert c.stroke == pytest.approx(
+        math.sqrt((rod + r) ** 2 - e * e) - math.sqrt((rod - r) ** 2 - e * e), rel=1e-12)
+    assert c.theta == pytest.approx(math.asin(e / (rod - r)) - math.asin(e / (rod + r)), rel=1e-9)
     code, out, _ = run(capsys, "solve", "--variant", "4", "--table", str(table))
     assert code == 0 and "ω1 = 10.5 rad/s cw" in out, out

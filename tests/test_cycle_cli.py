@@ -238,7 +238,8 @@ def test_positions_out_of_range(capsys, n):
 def test_json_is_written_row_by_row_as_one_object():
     """The head, then one position per line, then the tail: one JSON object whatever the
     number of rows, each row on its own line."""
-    from plans.cli.cycle import compute, json_chunks
+    from plans.cli.cycle import json_chunks
+    from plans.cycle.table import compute
 
     for n in (1, 2, 7):
         chunks = list(json_chunks(compute(mechanism.load(PRESS), n)))
@@ -619,7 +620,8 @@ def test_csv_converts_its_rows_a_stretch_at_a_time():
     the same, row for row."""
     import tracemalloc
 
-    from plans.cli.cycle import compute, csv_chunks
+    from plans.cli.cycle import csv_chunks
+    from plans.cycle.table import compute
 
     t = compute(mechanism.load(PRESS), 6000)
     whole = "".join(csv_chunks(t, rows=6000))
@@ -636,3 +638,135 @@ def test_csv_converts_its_rows_a_stretch_at_a_time():
     assert "".join(csv_chunks(t, rows=7)) == whole
     rows = list(csv.reader(io.StringIO(whole)))
     assert len(rows) == 6001 and rows[1][0] == "0" and rows[-1][0] == "5999"
+
+
+# ---------------------------------------------------------------------------------------
+# --plot: the curves over the cycle, drawn by drawing.chart.cycle_chart
+# ---------------------------------------------------------------------------------------
+
+
+def _plot_spy(monkeypatch, fail: bool = False) -> list:
+    """What plans cycle hands drawing.chart.cycle_chart, one dict a call; answered with
+    bytes that name the format (or an error, with ``fail``)."""
+    from drawing import chart
+
+    calls = []
+
+    def spy(angle_deg, panels, *, title, x_label, fmt):
+        calls.append({"angle": list(angle_deg), "panels": panels, "title": title,
+                      "x_label": x_label, "fmt": fmt})
+        if fail:
+            raise RuntimeError("the plot could not be drawn")
+        return f"<{fmt} plot>".encode()
+
+    monkeypatch.setattr(chart, "cycle_chart", spy, raising=False)
+    return calls
+
+
+@pytest.mark.parametrize("fmt", ["png", "svg", "pdf"])
+def test_plot_draws_the_outputs_s_v_a_and_every_links_omega_epsilon(capsys, monkeypatch,
+                                                                    tmp_path, fmt):
+    """The press's slider D: s, V and a along its guide, then ω and ε of every link, over
+    the crank angle turned from position 0, the very values of the JSON table."""
+    calls = _plot_spy(monkeypatch)
+    plot, table = tmp_path / f"press.{fmt}", tmp_path / "press.json"
+    code, _, err = run(capsys, "cycle", PRESS, "--positions", "24", "--json", "-o", table,
+                       "--plot", plot)
+    assert code == 0, err
+    assert plot.read_bytes() == f"<{fmt} plot>".encode()
+    ((call,),) = [calls]
+    assert call["fmt"] == fmt and call["title"] == mechanism.load(PRESS).name
+    assert call["x_label"] == "φ1, degrees turned from position 0"
+    assert call["angle"] == pytest.approx([15.0 * k for k in range(24)])
+    data = json.loads(table.read_text("utf-8"))
+    labels = [label for label, _ in call["panels"]]
+    links = data["link_ids"]
+    assert labels == ["s_D, m", "V_D, m/s", "a_D, m/s²", "ω, rad/s", "ε, rad/s²"]
+    series = {name: values for _, lines in call["panels"] for name, values in lines}
+    assert list(series) == ["s_D", "V_D", "a_D", *(f"ω{i}" for i in links),
+                            *(f"ε{i}" for i in links)]
+    rows = data["rows"]
+    assert series["s_D"] == pytest.approx([r["output"] for r in rows], abs=1e-15)
+    # the slider moves along its guide: its speed is the size of its velocity
+    assert np.abs(series["V_D"]) == pytest.approx(
+        [math.hypot(*r["points"]["D"]["velocity"]) for r in rows], rel=1e-12, abs=1e-12)
+    assert np.abs(series["a_D"]) == pytest.approx(
+        [math.hypot(*r["points"]["D"]["acceleration"]) for r in rows], rel=1e-12, abs=1e-12)
+    for i in links:
+        assert series[f"ω{i}"] == pytest.approx([r["links"][str(i)]["omega"] for r in rows])
+        assert series[f"ε{i}"] == pytest.approx([r["links"][str(i)]["epsilon"] for r in rows])
+
+
+def test_plot_of_a_rocker_draws_its_angle_in_degrees(capsys, monkeypatch, tmp_path):
+    calls = _plot_spy(monkeypatch)
+    code, out, err = run(capsys, "cycle", FOURBAR, "--json", "--plot", tmp_path / "f.svg")
+    assert code == 0, err
+    data = json.loads(out)
+    o = data["cycle"]["output"]
+    assert o["kind"] == "angular"
+    (call,) = calls
+    labels = [label for label, _ in call["panels"]]
+    assert labels[:3] == [f"ψ_{o['point']}, °", f"ω{o['link']}, rad/s", f"ε{o['link']}, rad/s²"]
+    psi = call["panels"][0][1][0][1]
+    assert psi == pytest.approx([math.degrees(r["output"]) for r in data["rows"]])
+    # a crank that cannot make a full turn: its positions span its range, from 0 upwards
+    assert call["angle"][0] == 0.0 and np.all(np.diff(call["angle"]) > 0)
+    assert call["angle"][-1] < 360.0
+
+
+def test_plot_leaves_the_values_of_a_singular_position_out(capsys, monkeypatch, tmp_path):
+    import plans.kinematics.records
+
+    monkeypatch.setattr(plans.kinematics.records, "SINGULAR_SINE", 0.7)
+    monkeypatch.setattr(plans.kinematics.records, "WARN_SINE", 0.9)
+    calls = _plot_spy(monkeypatch)
+    code, out, _ = run(capsys, "cycle", FOURBAR, "--json", "--positions", "9",
+                       "--plot", tmp_path / "f.png")
+    assert code == 2 and (tmp_path / "f.png").exists()  # everything else is written
+    rows = json.loads(out)["rows"]
+    omega = {name: values for _, lines in calls[0]["panels"] for name, values in lines}["ω2"]
+    assert any(not r["solved"] for r in rows)
+    for r, w in zip(rows, omega, strict=True):
+        assert math.isnan(w) if not r["solved"] else w == pytest.approx(r["links"]["2"]["omega"])
+
+
+@pytest.mark.parametrize(("name", "says"), [
+    ("curves.jpg", "--plot {p}: the name must end in .png, .svg or .pdf (--plot writes PNG, "
+                   "SVG or PDF, as the name ends)"),
+    ("link.png", "--plot '{p}' is the input file"),  # a link to the mechanism file
+])
+def test_plot_names_are_refused_before_anything_is_computed(capsys, monkeypatch, tmp_path,
+                                                             name, says):
+    import shutil
+
+    import plans.cli.cycle
+
+    calls = _plot_spy(monkeypatch)
+
+    def never(*_):
+        raise AssertionError("computed before the plot's name was checked")
+
+    monkeypatch.setattr(plans.cli.cycle, "compute", never)
+    press = tmp_path / "press.toml"
+    shutil.copy(PRESS, press)
+    before = press.read_bytes()
+    plot = tmp_path / name
+    if name == "link.png":
+        plot.symlink_to(press)
+    code, out, err = run(capsys, "cycle", press, "--plot", plot)
+    assert code == 2 and out == "" and not calls
+    assert err.startswith("plans cycle: command line: " + says.format(p=plot))
+    assert press.read_bytes() == before and not (tmp_path / "curves.jpg").exists()
+
+
+def test_plot_and_table_are_written_both_or_neither(capsys, monkeypatch, tmp_path):
+    """A plot that cannot be drawn leaves the table's file as it was: all outputs or none."""
+    _plot_spy(monkeypatch, fail=True)
+    table = tmp_path / "t.csv"
+    table.write_text("KEEP")
+    code, _, err = run(capsys, "cycle", PRESS, "--csv", "-o", table, "--plot", tmp_path / "p.png")
+    assert code == 3 and "the plot could not be drawn" in err
+    assert table.read_text() == "KEEP" and not (tmp_path / "p.png").exists()
+    code, _, err = run(capsys, "cycle", PRESS, "-o", tmp_path / "same.png", "--plot",
+                       tmp_path / "same.png")
+    assert code == 2 and "-o and --plot are both" in err

@@ -25,7 +25,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from plans.cli.common import main
+from plans.cli import main
 from plans.errors import InputError, PlansError
 from plans.kinematics.solver import Solver
 from plans.model.mechanism import Mechanism, from_dict

@@ -362,7 +362,7 @@ def test_one_angle_that_is_no_number_is_a_value_error(phi):
 def test_the_sweep_gives_each_slotted_links_pivot_figure_as_the_cycle_does(name):
     """|QP| / (|OQ| + |OP|): the figure under which ``plans cycle`` refuses a block on the
     rocker's pivot, where the lines' sine stays 1; the sweep had only the sine."""
-    from plans.cli.cycle import conditioning
+    from plans.cycle.table import conditioning
 
     mech = SCENES[name].mechanism()
     sv = Solver(mech)

@@ -151,7 +151,7 @@ def test_cli_stdout_and_batch(tmp_path):
 def test_png_without_cairosvg_is_a_setup_error_and_writes_nothing(tmp_path, monkeypatch, capsys):
     import sys
 
-    from plans.cli.common import main
+    from plans.cli import main
 
     monkeypatch.setitem(sys.modules, "cairosvg", None)  # as if it were not installed
     svg, png = tmp_path / "s.svg", tmp_path / "s.png"
@@ -346,7 +346,7 @@ def test_trajectories_span_the_positions_drawn_when_the_crank_cannot_turn():
 
 def test_batch_takes_the_variants_of_the_table_given(tmp_path):
     """--variant all with --table draws that table's rows, not the built-in table's."""
-    from plans.cli.common import main
+    from plans.cli import main
 
     table = tmp_path / "t.toml"
     table.write_text("[[variant]]\nn = 6\nAB = 0.05\nBC = 0.15\nphi_deg = 15\nrpm = 100\n",
@@ -358,7 +358,7 @@ def test_batch_takes_the_variants_of_the_table_given(tmp_path):
 
 def test_the_angle_asked_for_is_the_angle_the_titles_give(tmp_path):
     """sheet --angle 20 draws the plans at 20° in the file's convention, and says so."""
-    from plans.cli.common import main
+    from plans.cli import main
 
     out = tmp_path / "a.svg"
     assert main(["sheet", "samples/fourbar.toml", "--angle", "20", "-o", str(out)]) == 0
@@ -593,7 +593,7 @@ def test_the_sheets_note_states_the_sheets_scales_for_each_plan(capsys, tmp_path
     """plans sheet --note writes the explanatory note of the positions the sheet draws
     plans for, at the sheet's own scale factors: the note and the sheet a student hands in
     cannot disagree. plans report alone chooses μ for a 150 mm drawing and may differ."""
-    from plans.cli.common import main
+    from plans.cli import main
 
     svg, md = tmp_path / "v3.svg", tmp_path / "v3.md"
     assert main(["sheet", "--variant", "3", "-o", str(svg), "--note", str(md), "--plans", "1,4"]) == 0
@@ -661,7 +661,7 @@ def test_the_notes_plan_of_positions_is_the_heavy_one(tmp_path):
     """The note's section 2 describes the position the sheet draws heavy. With --plans 1,4
     that is positions 1 and 4 (BA3 = 48,91 mm at 1), no longer the file's own position
     (BA3 = 57,48 mm), which the sheet then leaves out; and the note says which are heavy."""
-    from plans.cli.common import main
+    from plans.cli import main
 
     md = tmp_path / "p.md"
     assert main(["sheet", str(ROOT / "samples" / "press.toml"), "--plans", "1,4", "-o",
@@ -695,7 +695,7 @@ def test_the_notes_plan_of_positions_gives_the_segments_of_each_position_drawn(t
     that the note never gave. Section 2 now says which position its segments are of (the
     first position of the plans, drawn heavy with the others) and gives those that change
     at each of the others."""
-    from plans.cli.common import main
+    from plans.cli import main
 
     md = tmp_path / "p.md"
     assert main(["sheet", str(ROOT / "samples" / "press.toml"), "--plans", "1,4", "-o",
@@ -1481,7 +1481,7 @@ def test_positions_whose_segments_are_those_above_are_named_in_one_sentence(tmp_
     отрезков те же», once per position; it now says it once, of both. (The segments are
     given at the first position of the plans, drawn heavy with the others: with --plans
     1,4,7 the sentence names 4 and 7.)"""
-    from plans.cli.common import main
+    from plans.cli import main
 
     md = tmp_path / "v2.md"
     assert main(["sheet", "--variant", "2", "-o", str(tmp_path / "v2.svg"), "--note", str(md),

@@ -20,8 +20,8 @@ import tomllib
 import numpy as np
 import pytest
 
-from plans.cli.cycle import compute, conditioning
 from plans.cycle.analysis import analyse_cycle, summary
+from plans.cycle.table import compute, conditioning
 from plans.kinematics.solver import WARN_SINE, Solver
 from plans.model.mechanism import from_dict, load
 from plans.model.scenes import SAMPLES, SCENES

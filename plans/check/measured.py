@@ -8,14 +8,19 @@ the file is reported at once, with its location.
 
 from __future__ import annotations
 
-import math
 import os
 import re
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from plans.errors import InputError, PlansError
+from plans.check.items import MU_KEY, PLANS, Item, Tolerance, parse_tolerance
+from plans.check.replay import reading_pairs
+from plans.cycle.analysis import outside, reachable_cycle
+from plans.errors import AssemblyError, InputError, PlansError
+from plans.kinematics.solver import Solver
+from plans.model import mechanism as mechmod
+from plans.model import variants
 from plans.model.fileformat import (
     DECIMAL,
     LOOKALIKES,
@@ -33,10 +38,6 @@ from plans.model.fileformat import (
 from plans.model.mechanism import MU_UNIT, Mechanism
 from plans.plan.solution import Plan, Solution, plan_name, solve_position
 
-PLANS = ("positions", "velocity", "acceleration")
-MU_KEY = {"positions": "mu_l", "velocity": "mu_v", "acceleration": "mu_a"}
-#: the scale factor of each plan as the note writes it
-MU_SYMBOL = {"positions": "μl", "velocity": "μv", "acceleration": "μa"}
 #: the sense of an ω or ε as a student writes it after the magnitude, +1 ccw, −1 cw
 SENSE_WORDS = {
     "ccw": 1, "cw": -1, "counterclockwise": 1, "counter-clockwise": 1, "anticlockwise": 1,
@@ -60,93 +61,8 @@ _WHAT = {"velocity": "a velocity", "acceleration": "an acceleration",
 
 
 # ---------------------------------------------------------------------------------------
-# tolerance
-# ---------------------------------------------------------------------------------------
-
-
-@dataclass(frozen=True, slots=True)
-class Tolerance:
-    """A deviation is within tolerance when it is at most the larger of ``mm`` (on the
-    drawing) and ``percent`` of the computed length."""
-
-    percent: float = 5.0
-    mm: float = 1.0
-
-    def limit(self, computed: float, per_mm: float = 1.0) -> float:
-        """The allowed deviation of an item whose 1 mm of drawing is ``per_mm`` units."""
-        return max(self.mm * per_mm, self.percent / 100.0 * abs(computed))
-
-    def describe(self, lang: str = "en") -> str:
-        from plans.fmt import num
-
-        if lang == "ru":
-            return f"большее из {num(self.mm, 3, lang)} мм и {num(self.percent, 3, lang)} %"
-        return f"the larger of {num(self.mm, 3)} mm and {num(self.percent, 3)} %"
-
-
-def parse_tolerance(text: str, base: Tolerance | None = None) -> Tolerance:
-    """``"5%"``, ``"1.5mm"``, ``"3%,0.5mm"`` → :class:`Tolerance` (unnamed parts stay).
-
-    >>> parse_tolerance("3%")
-    Tolerance(percent=3.0, mm=1.0)
-    >>> parse_tolerance("0.5 mm, 2 %")
-    Tolerance(percent=2.0, mm=0.5)
-    >>> parse_tolerance("5%,1mm,2mm")
-    Traceback (most recent call last):
-    ValueError: "5%,1mm,2mm" gives the mm part twice: give a percentage and a length at most once each, e.g. "5%,1mm"
-    """
-    base = base or Tolerance()
-    pct, mm = base.percent, base.mm
-    token = r"(\d+(?:[.,]\d+)?)\s*(%|mm|мм)?"
-    text = str(text).strip()
-    if not re.fullmatch(rf"{token}(?:\s*[,;]?\s*{token})*", text):
-        raise ValueError(f'"{text[:40]}" is not a tolerance (e.g. "5%", "1mm" or "5%,1mm")')
-    seen: set[str] = set()
-    for number, unit in re.findall(token, text):
-        x = float(number.replace(",", "."))
-        if not math.isfinite(x) or x > 1000:
-            raise ValueError(f'"{number}" is out of range')
-        part = "mm" if unit in ("mm", "мм") else "%"
-        if part in seen:  # "5%,1mm,2mm": which one was meant?
-            raise ValueError(f'"{text[:40]}" gives the {part} part twice: give a percentage and '
-                             'a length at most once each, e.g. "5%,1mm"')
-        seen.add(part)
-        if part == "mm":
-            mm = x
-        else:
-            pct = x
-    return Tolerance(pct, mm)
-
-
-# ---------------------------------------------------------------------------------------
 # what the student measured
 # ---------------------------------------------------------------------------------------
-
-
-@dataclass(frozen=True, slots=True)
-class Item:
-    """One measured segment or one value the student wrote down.
-
-    kind: "segment" (mm on a plan), "value" (m/s, m/s²), "omega", "epsilon" (rad/s,
-    rad/s²). ``start``/``end``: plan point names (mechanism names on the plan of
-    positions); ``per_mm``: how much of the item 1 mm of drawing is (for the tolerance).
-    """
-
-    key: str  # where in the file, e.g. "segments.pia3"
-    name: str  # as shown, e.g. "πa3", "ω3", "V_A3"
-    kind: str
-    plan: str  # positions, velocity, acceleration
-    measured: float
-    start: str = ""
-    end: str = ""
-    link: int = 0
-    sense: int = 0  # ω, ε: +1 ccw, −1 cw, 0 not given
-    per_mm: float = 1.0
-
-    @property
-    def unit(self) -> str:
-        return {"segment": "mm", "omega": "rad/s", "epsilon": "rad/s²"}.get(
-            self.kind, "m/s" if self.plan == "velocity" else "m/s²")
 
 
 @dataclass(frozen=True)
@@ -190,8 +106,6 @@ class Solvers:
         self.known: list[tuple[Mechanism, Any]] = []  # a Mechanism holds dicts: no hash
 
     def __call__(self, mech: Mechanism):
-        from plans.kinematics.solver import Solver
-
         for m, solver in self.known:
             if m == mech:
                 return solver
@@ -215,8 +129,6 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
               text: str | None = None, solvers: Solvers | None = None) -> Measurement:
     """Build a :class:`Measurement` from parsed TOML (the mechanism is loaded and solved,
     with the solver ``solvers`` has for it, if given)."""
-    from plans.model import mechanism as mechmod
-
     problems = Problems(source, text)
     if why := other_kind(data, source, "measurement"):
         raise InputError(source, why)
@@ -319,8 +231,6 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
     except PlansError as exc:
         problems.raise_if_any()  # these first; the mechanism's own problems once they are fixed
         if angle is not None and not isinstance(exc, InputError):  # the file's own angle
-            from plans.cycle.analysis import outside, reachable_cycle
-            from plans.errors import AssemblyError
 
             got = reachable_cycle(m) if isinstance(exc, AssemblyError) else None
             head = f"{angle:g}°" if got is None else outside("", angle, got[2], m.driver)
@@ -389,8 +299,6 @@ def _table_of(n: int, table: Path | None, problems: Problems):
     """The table of variants (:class:`plans.model.variants.Table`) that has row ``n``; None, and
     a problem of the key ``variant``, where it has no such row. A table that cannot be
     used at all is its own file's problem (raised after the measurement file's own)."""
-    from plans.model import variants
-
     try:
         rows = variants.read_table(table)
         have = rows.numbers
@@ -417,14 +325,12 @@ class _Names:
     """Resolves the names a student writes to plan segments and values."""
 
     def __init__(self, sol: Solution):
-        from plans.check.replay import _Replayer  # it reads measurements' names in turn
-
         self.sol = sol
         self.plans = {"velocity": sol.velocity, "acceleration": sol.acceleration}
         self.recorded = {k: recorded_segments(p) for k, p in self.plans.items()}
         self.recorded["positions"] = {k: (k, "") for k in sol.lengths}
         self.pos_names = set(sol.positions)
-        self.rep = _Replayer(sol)
+        self.pairs = reading_pairs(sol)
 
     def names(self) -> list[str]:
         """Every segment a file may name: the plan of positions', then the plans'."""
@@ -498,7 +404,7 @@ class _Names:
             if mag is None:
                 return None
             plan = "velocity" if kind == "omega" else "acceleration"
-            pair = self.rep.pairs.get(link)
+            pair = self.pairs.get(link)
             per_mm = 0.0
             if pair:
                 per_mm = sol.mu[MU_KEY[plan]] / abs(sol.positions[pair[0]] - sol.positions[pair[1]])

@@ -13,9 +13,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from plans.check.measured import MU_KEY, PLANS, Item
-from plans.check.words import _text
-from plans.fmt import notation_in
+from plans.check import describe
+from plans.check.items import MU_KEY, PLANS, Item
 from plans.geometry import cross, intersect
 from plans.kinematics.solver import Solver
 from plans.model.structure import DyadKind
@@ -56,7 +55,7 @@ def expected(item: Item, st: State, mu: dict[str, float]) -> float:
     return d if item.kind == "value" else d / mu[MU_KEY[item.plan]]
 
 
-class _Degenerate(Exception):
+class Degenerate(Exception):
     """A simulated mistake makes two lines parallel: no plan can be drawn that way."""
 
 
@@ -104,13 +103,56 @@ class Mistake:
         return dict(self.info).get(key, "")
 
     def describe(self, lang: str = "en") -> str:
-        return notation_in(_text(self, lang)[0], lang)
+        """What the mistake is, in ``lang`` (:mod:`plans.check.describe`)."""
+        return describe.describe(self, lang)
 
     def correction(self, lang: str = "en") -> str:
-        return notation_in(_text(self, lang)[1], lang)
+        """How to correct it, in the method's words, in ``lang``."""
+        return describe.correction(self, lang)
 
 
-class _Replayer:
+def link_points(sol: Solution) -> dict[int, list[str]]:
+    """The points of each link, with the coincident points (A3) that belong to it."""
+    m = sol.scalar
+    out: dict[int, list[str]] = {}
+    for lid, link in sol.mechanism.links.items():
+        pts = list(link.points)
+        pts += [n for n, owner in m.point_link.items() if owner == lid and n in m.coincident]
+        out[lid] = pts
+    return out
+
+
+def reading_pairs(sol: Solution, points: dict[int, list[str]] | None = None
+                  ) -> dict[int, tuple[str, str]]:
+    """The pair of points the student reads ω and ε of each link from: the ends of its
+    relative velocity vector if the plan has one, else its two farthest points.
+    ``points``: :func:`link_points` of ``sol``, if worked out already."""
+    points = link_points(sol) if points is None else points
+    pos = sol.positions
+    mech_name = {plan_name(n): n for n in sol.positions}
+    pairs: dict[int, tuple[str, str]] = {}
+    for v in sol.velocity.vectors:
+        if v.component != "relative":
+            continue
+        X, Y = mech_name.get(v.end), mech_name.get(v.start)
+        for lid, pts in points.items():
+            if X in pts and Y in pts and lid not in pairs and abs(pos[X] - pos[Y]) > 0:
+                pairs[lid] = (X, Y)
+    for lid, pts in points.items():
+        if lid in pairs:
+            continue
+        best, far = None, 0.0
+        for i, a in enumerate(pts):
+            for b in pts[i + 1:]:
+                d = abs(pos[a] - pos[b])
+                if d > far * (1 + 1e-9):
+                    best, far = (b, a), d
+        if best and far > 1e-9 * max(1.0, max(abs(z) for z in pos.values())):
+            pairs[lid] = best
+    return pairs
+
+
+class Replayer:
     """Replays the recorded constructions of one solution, with at most one mistake."""
 
     def __init__(self, sol: Solution):
@@ -119,32 +161,8 @@ class _Replayer:
         self.pos = sol.positions
         self.mech_name = {plan_name(n): n for n in sol.positions}
         self.terms = {t.label: t for g in m.groups for r in g.acceleration.routes for t in r.terms}
-        self.link_points: dict[int, list[str]] = {}
-        for lid, link in sol.mechanism.links.items():
-            pts = list(link.points)
-            pts += [n for n, owner in m.point_link.items() if owner == lid and n in m.coincident]
-            self.link_points[lid] = pts
-        # the pair of points the student reads ω and ε of a link from: the ends of its
-        # relative velocity vector if the plan has one, else its two farthest points
-        self.pairs: dict[int, tuple[str, str]] = {}
-        for v in sol.velocity.vectors:
-            if v.component != "relative":
-                continue
-            X, Y = self.mech_name.get(v.end), self.mech_name.get(v.start)
-            for lid, pts in self.link_points.items():
-                if X in pts and Y in pts and lid not in self.pairs and abs(self.pos[X] - self.pos[Y]) > 0:
-                    self.pairs[lid] = (X, Y)
-        for lid, pts in self.link_points.items():
-            if lid in self.pairs:
-                continue
-            best, far = None, 0.0
-            for i, a in enumerate(pts):
-                for b in pts[i + 1:]:
-                    d = abs(self.pos[a] - self.pos[b])
-                    if d > far * (1 + 1e-9):
-                        best, far = (b, a), d
-            if best and far > 1e-9 * max(1.0, max(abs(z) for z in self.pos.values())):
-                self.pairs[lid] = best
+        self.link_points = link_points(sol)
+        self.pairs = reading_pairs(sol, self.link_points)
 
     def guide_link(self, t) -> int:
         m = self.sol.scalar
@@ -254,7 +272,7 @@ class _Replayer:
                 with np.errstate(all="ignore"):
                     t0, _, sine = intersect(vals[l0.through], d0, vals[l1.through], d1)
                 if not abs(sine) >= 1e-6:
-                    raise _Degenerate(name)
+                    raise Degenerate(name)
                 v = vals[l0.through] + t0 * d0
             else:  # "rigid": moves with the first known point of its link
                 X = self.mech_name.get(name, "")
@@ -288,7 +306,7 @@ class _Replayer:
 def simulate(sol: Solution, mk: Mistake | None, mu: dict[str, float] | None = None) -> State:
     """The plans as a student who makes mistake ``mk`` draws them (None: the exact ones)."""
     if mk is None:
-        return _Replayer(sol).exact()
+        return Replayer(sol).exact()
     if mk.kind == "crank-angle":  # the plans of another position, at the stated scales
         return at_angle(sol, float(mk.get("phi")), mu)
     if mk.kind == "branch":
@@ -300,29 +318,29 @@ def simulate(sol: Solution, mk: Mistake | None, mu: dict[str, float] | None = No
         mu = mu or sol.mu
         other = solve_position(sol.mechanism, sol.phi, solver=Solver(
             sol.mechanism, sol.structure, tuple(sigmas), ((),) * n), mu=mu)
-        return _Replayer(other).exact()
+        return Replayer(other).exact()
     if mk.kind in ("scale", "scale-swapped", "crank-omega"):
         # ω1 k times off: every velocity (and ω) k times, every acceleration (and ε) k²
-        st = _Replayer(sol).exact()
+        st = Replayer(sol).exact()
         factor = dict.fromkeys(PLANS, 1.0)
         for plan, f in mk.info:
             if plan in factor:  # ("fits", μ), ("example", OA): words only
                 factor[plan] = float(f)
         return State(st.positions, st.velocity, st.acceleration, st.omega, st.epsilon, factor)
-    return _Replayer(sol).run(mk)
+    return Replayer(sol).run(mk)
 
 
 def at_angle(sol: Solution, phi: float, mu: dict[str, float] | None = None) -> State:
     """The exact plans at crank angle ``phi`` (rad), at the scales ``mu``: those of a
     student who drew the crank at that angle, not at the solution's."""
-    return _Replayer(solve_position(sol.mechanism, phi, solver=sol.solver,
+    return Replayer(solve_position(sol.mechanism, phi, solver=sol.solver,
                                     mu=mu or sol.mu)).exact()
 
 
 def hypotheses(sol: Solution, plans: set[str] | None = None) -> list[Mistake]:
     """Every common mistake that can be made on these plans, in order of preference."""
     plans = set(PLANS) if plans is None else plans
-    rep = _Replayer(sol)
+    rep = Replayer(sol)
     m = sol.scalar
     out: list[Mistake] = []
     cor = [t for t in rep.terms.values() if t.kind == "coriolis"]

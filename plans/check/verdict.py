@@ -40,30 +40,34 @@ import math
 from collections import Counter
 from dataclasses import dataclass, field, replace
 
-from plans.check.measured import (  # noqa: F401  (the public names of the check live here)
+from plans.check.items import (  # noqa: F401  (the public names of the check live here)
     MU_KEY,
     PLANS,
-    SENSE_WORDS,
     Item,
-    Measurement,
     Tolerance,
+    parse_tolerance,
+)
+from plans.check.measured import (  # noqa: F401
+    SENSE_WORDS,
+    Measurement,
     from_dict,
     load,
-    parse_tolerance,
     recorded_segments,
 )
 from plans.check.replay import (  # noqa: F401
+    Degenerate,
     Mistake,
+    Replayer,
     State,
-    _Degenerate,
-    _Replayer,
     at_angle,
     cons_point,
     expected,
     hypotheses,
+    reading_pairs,
     scale_example,
     simulate,
 )
+from plans.check.words import WORDS
 from plans.errors import PlansError
 from plans.geometry import apart, circle_circle, cross
 from plans.plan.solution import plan_name
@@ -155,7 +159,7 @@ class CheckResult:
 def check(meas: Measurement, tol: Tolerance | None = None, *, diagnose_: bool = True) -> CheckResult:
     """Compare every measured item with the exact plans; diagnose what is beyond tolerance."""
     tol = tol or meas.tolerance or Tolerance()
-    st = _Replayer(meas.solution).exact()
+    st = Replayer(meas.solution).exact()
     devs = tuple(compare(it, expected(it, st, meas.mu), tol) for it in meas.items)
     diag = diagnose(meas, devs, tol, exact=st) if diagnose_ else Diagnosis(None)
     if diagnose_ and not all(d.ok for d in devs):
@@ -370,10 +374,10 @@ def diagnose(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance,
     # solves some two hundred positions
     if not any(not f.broken and not f.unexplained for f in findings):
         if exact is None:
-            exact = _Replayer(meas.solution).exact()
+            exact = Replayer(meas.solution).exact()
         failed = {items[i].name for i in bad}
         if not failed <= {lk.item for lk in lookalikes(meas, devs, exact, tol, failed)}:
-            judge(_fitted_angle(meas, devs, tol))
+            judge(fitted_angle(meas, devs, tol))
     allowed = (len(bad) - 1) // 4
     # mistakes that draw the same plans score the same but for the last digits: scores are
     # compared to 9 digits, and the sorts being stable, the hypotheses' order of
@@ -399,7 +403,7 @@ def _redrawn(meas: Measurement, drawn, tol: Tolerance) -> tuple[State, list[Devi
     try:
         st = drawn()
         return st, [compare(it, expected(it, st, meas.mu), tol) for it in meas.items]
-    except (_Degenerate, PlansError, ZeroDivisionError, KeyError):
+    except (Degenerate, PlansError, ZeroDivisionError, KeyError):
         return None
 
 
@@ -453,13 +457,13 @@ def _fitted_scales(meas: Measurement, devs: tuple[Deviation, ...]) -> list[Mista
     return out
 
 
-#: the grid the crank angle of :func:`_fitted_angle` is searched on, and how near the
+#: the grid the crank angle of :func:`fitted_angle` is searched on, and how near the
 #: given angle a fit is drawing scatter, not another position (rad)
 _ANGLE_STEP = math.radians(2.0)
 _ANGLE_APART = math.radians(2.5)
 
 
-def _fitted_angle(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance) -> list[Mistake]:
+def fitted_angle(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance) -> list[Mistake]:
     """The plans of another crank position: the crank drawn at a wrong angle on the plan
     of positions (measured from the other axis, the other way round, or another numbered
     position's), and both plans built for it, right. The angle whose exact plans fit the
@@ -504,9 +508,11 @@ def _fitted_angle(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance
     if apart(phi, given) <= _ANGLE_APART:
         return []
     at = sol.solver.at
+    # the two angles in the words of every language the check speaks (at_en, given_ru…)
+    words = [(f"{key}_{lang}", at(x, lang)) for lang in WORDS
+             for key, x in (("at", phi), ("given", given))]
     return [Mistake("crank-angle", "both", sol.mechanism.driver.phi_sym,
-                    info=(("phi", phi), ("at", at(phi)), ("at_ru", at(phi, "ru")),
-                          ("given", at(given)), ("given_ru", at(given, "ru"))))]
+                    info=(("phi", phi), *words))]
 
 
 # ---------------------------------------------------------------------------------------
@@ -522,7 +528,7 @@ def rebuild(result: CheckResult) -> dict[str, dict[str, complex]]:
     plan. Points that no measurement reaches are left out."""
     meas = result.measurement
     diag = result.diagnosis
-    st = diag.best.state if diag.best and diag.best.state is not None else _Replayer(meas.solution).exact()
+    st = diag.best.state if diag.best and diag.best.state is not None else Replayer(meas.solution).exact()
     out: dict[str, dict[str, complex]] = {}
     for kind in ("velocity", "acceleration"):
         plan = meas.solution.velocity if kind == "velocity" else meas.solution.acceleration

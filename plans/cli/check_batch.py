@@ -22,70 +22,32 @@ import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from plans.cli.common import EXIT_DEVIATIONS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, warn, write_output
+from drawing import export
+from drawing.overlay import overlay_svg
+from plans.check import verdict as ck
+from plans.check.describe import plan_unit
+from plans.check.measured import Solvers
+from plans.cli.check_report import PNG_SCALE, all_items, command_tolerance
+from plans.cli.check_report import to_json as file_json
+from plans.cli.common import (
+    EXIT_DEVIATIONS,
+    EXIT_INPUT,
+    EXIT_INTERNAL,
+    EXIT_OK,
+    arg_text,
+    error_lines,
+    same_file,
+    warn,
+)
+from plans.cli.words import WORDS
 from plans.errors import InputError, PlansError
-from plans.fmt import angle, columns, cut, listing, notation_in, ru_plural
-from plans.model.fileformat import one_line
+from plans.fmt import angle, columns, cut, listing, notation_in
+from plans.model.fileformat import one_line, read_toml
+from plans.model.variants import BUILTIN, BUILTIN_RU
 
 #: a title wider than this (columns of a terminal) is cut in the table (the file's title
 #: may hold 300 characters)
 TITLE_WIDTH = 40
-
-WORDS = {
-    "en": {
-        "head": "Check of hand-drawn plans: {n}",
-        "tol": "Tolerance",
-        "cols": ("file", "title", "mechanism", "verdict", "diagnosis"),
-        "variant": "variant",
-        "all_ok": "{all} within tolerance",
-        "some": "{k} of {n} beyond tolerance",
-        "bad": "not checked",
-        "internal": "internal error",
-        "none": "no single mistake",
-        "slips": "slips:",
-        "not": "not",
-        "or": "or",
-        "swapped": "{a} and {b} swapped",
-        "segment": "{a} measured as {b}",
-        "value": "{a} is {b} in {unit}",
-        "length": "{a} is {b} in mm",
-        "more": "(and {k} more: see stderr)",
-        "total": "Overall: {files}: {parts}.",
-        "files": lambda n: f"{n} file{'' if n == 1 else 's'}",
-        "n_ok": "{k} within tolerance",
-        "n_some": "{k} beyond tolerance",
-        "n_bad": "{k} not checked",
-        "n_internal": "{k} with an internal error",
-        "own_tol": "tolerance {tol}",
-    },
-    "ru": {
-        "head": "Проверка планов, построенных вручную: {n}",
-        "tol": "Допуск",
-        "cols": ("файл", "заголовок", "механизм", "вывод", "диагноз"),
-        "variant": "вариант",
-        "all_ok": "{all} в допуске",
-        "some": "{k} из {n} вне допуска",
-        "bad": "не проверен",
-        "internal": "внутренняя ошибка",
-        "none": "ни одна отдельная ошибка не объясняет",
-        "slips": "ошибки измерения или записи:",
-        "not": "не объясняет",
-        "or": "или",
-        "swapped": "{a} и {b} перепутаны",
-        "segment": "{a} измерен как {b}",
-        "value": "{a} — это {b} в {unit}",
-        "length": "{a} — это {b} в мм",
-        "more": "(и ещё {k}: см. stderr)",
-        "total": "Итог: {files}: {parts}.",
-        "files": lambda n: f"{n} {ru_plural(n, 'файл', 'файла', 'файлов')}",
-        "n_ok": "в допуске {k}",
-        "n_some": "вне допуска {k}",
-        "n_bad": "не проверено {k}",
-        "n_internal": "с внутренней ошибкой {k}",
-        "own_tol": "допуск {tol}",
-    },
-}
-
 
 @dataclass
 class Row:
@@ -104,8 +66,6 @@ class Row:
 
 def _read(path: str) -> dict:
     """The file's TOML, where it reads as TOML at all; else {}."""
-    from plans.model.fileformat import read_toml
-
     try:
         data, _ = read_toml(path)
     except (PlansError, OSError, ValueError):
@@ -138,23 +98,17 @@ def status(rows: list[Row]) -> int:
 
 
 def run(args, files: list[str]) -> int:
-    from plans.cli.common import claim_inputs
-
     report = copy.copy(args)  # the report's own output, checked as one run checks it
     report.svg = report.png = None
     # every file the run reads, refused as -o before anything is checked or drawn (a
     # file that cannot be checked has its mechanism file read, or named, all the same)
-    claim_inputs(report, [*files, *(p for f in files for p in _named(f))])
+    report.run_files.claim(report, [*files, *(p for f in files for p in _named(f))])
     folders = _picture_folders(args, files)
     if args.png:
-        from drawing import export
-
         export.require()  # before anything is computed
-    from plans.cli.check import command_tolerance
 
     tol = command_tolerance(args)
     _make_folders(args, folders)
-    from plans.check.measured import Solvers
 
     solvers = Solvers()  # a mechanism at one angle is solved once for all its files
     tty = sys.stderr.isatty()
@@ -174,7 +128,7 @@ def run(args, files: list[str]) -> int:
         text = json.dumps(to_json(rows, args.lang), ensure_ascii=False, indent=2) + "\n"
     else:
         text = to_text(rows, args.lang, tol)
-    write_output(args.output, text)
+    args.run_files.write(args.output, text)
     return status(rows)
 
 
@@ -182,12 +136,9 @@ def _one(args, report, path: str, tol, folders: dict[str, Path], solvers=None) -
     """Check one file of the batch, and draw its pictures; a problem of its own (bad
     input, an unsolvable position, a picture that cannot be written) is its row's, not the
     batch's. A problem of the command line stops the batch."""
-    from plans.check import verdict as ck
-    from plans.cli.common import claim_inputs, error_lines
-
     try:
         meas = ck.load(path, solvers)
-        claim_inputs(report, meas.inputs[1:])  # -o is never a mechanism file read
+        report.run_files.claim(report, meas.inputs[1:])  # -o is never a mechanism file read
         result = ck.check(meas, tol)  # None: the file's own, or the default
         _draw(result, args, path, folders)
         return Row(path, result, status=EXIT_OK if result.ok else EXIT_DEVIATIONS)
@@ -230,15 +181,14 @@ def _picture_folders(args, files: list[str]) -> dict[str, Path]:
                 raise InputError("command line", f"{seen[stem]} and {path} would both be "
                                  f"drawn as {name}{'/'.join(out)}: check them in two runs")
             seen[stem] = path
-        from plans.cli.common import _arg, _same_file
 
         report = args.output
         for path in files if report not in (None, "-") else ():
             for suffix, d in out.items():
                 picture = d / f"{Path(path).stem}{suffix}"
-                if _same_file(report, picture):  # the table would replace the picture
+                if same_file(report, picture):  # the table would replace the picture
                     opt = "--svg" if suffix == ".svg" else "--png"
-                    raise InputError("command line", f"-o and {opt} are both {_arg(picture)}: "
+                    raise InputError("command line", f"-o and {opt} are both {arg_text(picture)}: "
                                      "give each output its own file")
     return out
 
@@ -261,26 +211,21 @@ def _draw(result, args, path: str, folders: dict[str, Path]) -> None:
     """The file's pictures in their folders, all rendered before the first is written."""
     if not folders:
         return
-    from drawing.overlay import overlay_svg
-    from plans.cli.check import PNG_SCALE
-    from plans.cli.common import check_outputs
 
     stem = Path(path).stem
     one = copy.copy(args)
     one.output = None  # stdout: checked already, as the report's
     one.svg = str(folders[".svg"] / f"{stem}.svg") if ".svg" in folders else None
     one.png = str(folders[".png"] / f"{stem}.png") if ".png" in folders else None
-    check_outputs(one)  # not an input, not a folder
+    one.run_files.check(one)  # not an input, not a folder
     svg = overlay_svg(result, lang=args.lang)
     files = []
     if one.svg:
         files.append((one.svg, svg))
     if one.png:
-        from drawing import export
-
         files.append((one.png, export.png_bytes(svg, scale=PNG_SCALE)))
     for out, data in files:
-        write_output(out, data)
+        args.run_files.write(out, data)
 
 
 # ---------------------------------------------------------------------------------------
@@ -290,8 +235,6 @@ def mechanism_cell(meas, lang: str) -> str:
     """"variant 3, φ1 = 30°" or "samples/press.toml, φ1 = 30°": where the mechanism
     comes from (a row of the built-in table by its number alone) and the crank angle, as
     the file gives it."""
-    from plans.model.variants import BUILTIN, BUILTIN_RU
-
     mech = meas.mechanism
     source = mech.source_in(lang)
     for prefix in (BUILTIN, BUILTIN_RU):
@@ -303,16 +246,14 @@ def mechanism_cell(meas, lang: str) -> str:
 
 
 def verdict_cell(row: Row, lang: str, tol=None) -> str:
-    from plans.cli.check import _all
-
-    w = WORDS[lang]
+    w = WORDS[lang]["batch"]
     if row.status == EXIT_INTERNAL:
         return w["internal"]
     if row.result is None:
         return w["bad"]
     res = row.result
     n = len(res.deviations)
-    text = (w["all_ok"].format(all=_all(n, lang)) if res.ok else
+    text = (w["all_ok"].format(all=all_items(n, lang)) if res.ok else
             w["some"].format(k=len(res.failed), n=n))
     if tol is not None and res.tolerance != tol:
         text += f" ({w['own_tol'].format(tol=res.tolerance.describe(lang))})"
@@ -322,7 +263,7 @@ def verdict_cell(row: Row, lang: str, tol=None) -> str:
 def diagnosis_cell(row: Row, lang: str) -> str:
     """The diagnosis in a few words: the mistake named (and what it leaves unexplained),
     the slips, or "no single mistake"; for a file not checked, its first problem."""
-    w = WORDS[lang]
+    w = WORDS[lang]["batch"]
     if row.result is None:
         first = row.error[0] if row.error else ""
         if first.startswith(f"{row.path}: "):  # the file is in the first column
@@ -352,9 +293,7 @@ def diagnosis_cell(row: Row, lang: str) -> str:
 
 def _slips(res, lang: str) -> str:
     """The look-alikes in a few words each: "pc and pe swapped", "pd measured as ad"."""
-    from plans.cli.check import plan_unit
-
-    w = WORDS[lang]
+    w = WORDS[lang]["batch"]
     out: list[str] = []
     said: set[frozenset[str]] = set()
     plan = {d.item.name: d.item.plan for d in res.deviations}
@@ -370,7 +309,7 @@ def _slips(res, lang: str) -> str:
 
 def to_text(rows: list[Row], lang: str = "en", tol=None) -> str:
     """The summary table: one row per file, then the count of each verdict."""
-    w = WORDS[lang]
+    w = WORDS[lang]["batch"]
     out = [w["head"].format(n=w["files"](len(rows)))]
     checked = [r.result for r in rows if r.result is not None]
     common = tol
@@ -403,14 +342,12 @@ def to_text(rows: list[Row], lang: str = "en", tol=None) -> str:
 
 def to_json(rows: list[Row], lang: str = "en") -> list[dict]:
     """A list, one object per file in the order given: the single file's JSON
-    (:func:`plans.cli.check.to_json`, which names its file), or for a file that could not
+    (:func:`plans.cli.check_report.to_json`, which names its file), or for a file that could not
     be checked its file, ``"ok": null`` and the lines of its error."""
-    from plans.cli.check import to_json as one
-
     out = []
     for r in rows:
         if r.result is not None:
-            out.append(one(r.result, lang))
+            out.append(file_json(r.result, lang))
         else:
             out.append({"file": r.path, "ok": None, "error": list(r.error),
                         "internal": r.status == EXIT_INTERNAL})

@@ -1,44 +1,43 @@
-"""``plans cycle``: every point and link over N crank positions of the cycle.
+"""``plans cycle``: every point and link over N crank positions of the cycle, as text,
+CSV or JSON.
 
-The positions are numbered from an extreme position of the output, as the course numbers
-them (``plans.cycle.analyse_cycle``): position 0 starts the working (slower) stroke. For a
-linkage whose crank cannot make a full turn, the N positions span the crank range where it
-assembles.
-
-Each position carries its conditioning: for every group the sine of the angle between the
-two lines the plans intersect (``Construction.sine``; 1 = perpendicular, 0 = parallel, a
-dead point or toggle), and for a slotted link (RPR) also how far the block is from the
-rocker's pivot relative to the loop (|QP| / (|OQ| + |OP|), O the crank's pivot): near 0
-the rocker's ω = V / |QP| loses its digits. A figure below ``WARN_SINE`` (≈ 2°) makes a
-warning, below ``SINGULAR_SINE`` (or a group that does not close) an error: the values of
-that position are then left out (``—`` in the table, empty in CSV, null in JSON; its
-coordinates are given where its positions stand, ``placed``) and the command exits with
-status 2 after writing everything else.
-
-A position on a change point (a parallelogram at 0° and 180°) is no error: the positions
-stand there, only its plans are singular. So is one beside a change point whose figure is
-under ``CHANGE_SINE`` (1e-3), where the acceleration plan would lose its digits as
-1/sin³. Its row gives the positions, leaves the velocities and accelerations out, and
-says why ("singular"); the command still exits with status 0.
+The table and its conditioning are computed by :mod:`plans.cycle.table` (positions
+numbered from an extreme position of the output; per position the sines of the lines the
+plans intersect). A position whose figure is singular has its values left out (``—`` in
+the text, empty in CSV, null in JSON; its coordinates are given where its positions
+stand, ``placed``) and the command exits with status 2 after writing everything else. A
+position on or beside a change point gives its positions only and says why
+("singular"); the command still exits with status 0.
 """
 
 from __future__ import annotations
 
-import functools
+import csv
+import io
+import json
 import math
-from dataclasses import dataclass
+import sys
 
+import numpy as np
+
+from drawing import chart as charts
 from plans.cli.common import (
     EXIT_INPUT,
     EXIT_OK,
     add_source,
     angle_field,
+    cycle_json,
     mechanism_from,
     number,
     warn,
-    write_output,
 )
-from plans.fmt import from_x, num
+from plans.cli.output import picture_format
+from plans.cycle.analysis import outside, reachable_cycle, shown_from, summary
+from plans.cycle.table import CycleTable, compute, figure_labels
+from plans.errors import AssemblyError
+from plans.fmt import from_x, in_turn, num
+from plans.kinematics.records import is_pivot
+from plans.plan.solution import NOISE
 
 #: a table for reading or a file for a spreadsheet: 10⁵ rows of the press are 270 MB of
 #: JSON; for more angles, Solver.sweep works on arrays (README, "Whole cycle")
@@ -64,50 +63,17 @@ def configure(p) -> None:
     p.add_argument(
         "-o", "--output", metavar="FILE", help="write to FILE instead of stdout"
     )
-
-
-@dataclass(frozen=True)
-class Status:
-    """Conditioning and diagnostics of one position."""
-
-    ok: bool  # solved: every group closes and no figure is singular
-    placed: bool  # the positions stand: every group closes (or misses it by rounding)
-    min_sine: (
-        float  # the smallest |sin| between intersected lines (NaN if it does not close)
+    p.add_argument(
+        "--plot", metavar="FILE",
+        help="also plot the output's s, v, a and every link's ω, ε over the cycle "
+        "(PNG, SVG or PDF by the name's ending)",
     )
-    figures: dict[
-        str, float
-    ]  # per group: "group 2–3 (RPR)" → |sin|; "… pivot" → |QP| ratio
-    warnings: tuple[str, ...]
-    errors: tuple[str, ...]
-    #: why the plans are singular where the position is a change point (positions only)
-    singular: tuple[str, ...] = ()
-
-    @property
-    def state(self) -> str:
-        return ("error" if self.errors else "singular" if self.singular
-                else "warning" if self.warnings else "ok")
-
-
-@dataclass(frozen=True)
-class CycleTable:
-    mechanism: object
-    cycle: object
-    motion: object
-    status: tuple[Status, ...]
-    points: tuple[str, ...]
-    links: tuple[int, ...]
-    output_values: object | None  # array: s (m) or ψ (rad) of the output, or None
 
 
 def run(args) -> int:
-    import sys
-
-    from plans.cycle.analysis import outside, reachable_cycle
-    from plans.errors import AssemblyError
-
     n = args.positions
-    mech = mechanism_from(args)
+    plot_format = picture_format(args, "plot", "--plot") if args.plot is not None else None
+    mech = mechanism_from(args)  # refuses an output that is an input, or two outputs one file
     try:
         table = compute(mech, n)
     except AssemblyError:  # its angle does not assemble: the cycle where it does, if any
@@ -128,7 +94,14 @@ def run(args) -> int:
         text = csv_chunks(table)
     else:
         text = to_text(table)
-    write_output(args.output, text)
+    plot = None
+    if plot_format is not None:  # drawn before anything is written: all outputs or none
+        angle_deg, panels = plot_panels(table)
+        plot = charts.cycle_chart(angle_deg, panels, title=mech.name, fmt=plot_format,
+                                  x_label=f"{mech.driver.phi_sym}, degrees turned from position 0")
+    args.run_files.write(args.output, text)
+    if plot is not None:
+        args.run_files.write(args.plot, plot)
     warned = [i for i, s in enumerate(table.status) if s.warnings]
     failed = [i for i, s in enumerate(table.status) if s.errors]
     if warned:
@@ -148,113 +121,54 @@ def run(args) -> int:
 
 
 # ---------------------------------------------------------------------------------------
-# computing
+# the plot
 # ---------------------------------------------------------------------------------------
 
 
-def compute(mech, n_positions: int, solver=None) -> CycleTable:
-    import numpy as np
+def plot_panels(t: CycleTable) -> tuple[list[float], list[tuple[str, list[tuple[str, list[float]]]]]]:
+    """What ``--plot`` draws over the crank angle (degrees turned from position 0, in the
+    crank's sense): the output's s, v, a (a rocker's ψ, ω, ε), then ω and ε of every
+    link, one panel each, as ``drawing.chart.cycle_chart`` takes them. A value a position
+    does not give (its plans singular, or the position not placed) is NaN: a gap.
 
-    from plans.cycle.analysis import analyse_cycle, table_angle
-    from plans.kinematics.solver import Solver
+    >>> from plans.model.scenes import SCENES
+    >>> from plans.cycle.table import compute
+    >>> angle, panels = plot_panels(compute(SCENES["crank_slider_offset"].mechanism(), 4))
+    >>> angle
+    [0.0, 90.0, 180.0, 270.0]
+    >>> [label for label, _ in panels]
+    ['s_B, m', 'V_B, m/s', 'a_B, m/s²', 'ω, rad/s', 'ε, rad/s²']
+    """
+    m, mech, c = t.motion, t.mechanism, t.cycle
+    n = len(t.status)
+    phi = np.broadcast_to(np.asarray(m.phi, dtype=float), (n,))
+    sense = 1.0 if mech.driver.omega >= 0 else -1.0
+    turned = np.degrees(np.mod((phi - phi[0]) * sense, 2 * math.pi)) if n else phi
+    ok = np.array([st.ok for st in t.status], dtype=bool)
+    placed = np.array([st.placed for st in t.status], dtype=bool)
 
-    solver = solver or Solver(mech)
-    cycle = analyse_cycle(mech, n_positions=n_positions, solver=solver)
-    phi = np.array(cycle.positions, dtype=float)
-    with np.errstate(all="ignore"):
-        motion = solver.solve(phi)
-        status = conditioning(mech, motion, solver)
-        out_values = None
-        if cycle.output is not None:
-            out_values = cycle.output.value(motion, mech)
-            if cycle.output.kind == "angular":
-                out_values = table_angle(out_values, cycle.full_turn)
-    points = tuple(motion.position)
-    links = tuple(sorted(lid for lid in motion.links if lid != 0))
-    return CycleTable(mech, cycle, motion, status, points, links, out_values)
+    def shown(values, rows) -> list[float]:
+        got = np.broadcast_to(np.asarray(values, dtype=float), (n,))
+        return np.where(rows, got, math.nan).tolist()
 
-
-def figure_labels(t: CycleTable) -> list[str]:
-    """The conditioning figures' keys, each once, in the order the rows give them: one
-    column each in the CSV and the text table, whichever rows lack one."""
-    return list(dict.fromkeys(key for st in t.status for key in st.figures))
-
-
-def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
-    """Per position: the figures of every group, warnings and errors (see the module doc);
-    ``solver``, the motion's, names the change points among the angles."""
-    import numpy as np
-
-    from plans.kinematics.records import (
-        SINGULAR_SINE,
-        WARN_SINE,
-        is_pivot,
-        near_pivot,
-        on_pivot,
-        pivot_figure,
-        pivot_key,
-        sine_figure,
-    )
-
-    n = len(motion.phi)
-    crank_pivot = mech.frame[mech.driver.pivot]
-    per_group = [(g, pivot_figure(g, motion.position, crank_pivot)) for g in motion.groups]
-    # each group's figures as Python lists, once; words only where a position is flagged
-    cols = []
-    for g, pivot in per_group:
-        s = np.broadcast_to(sine_figure(np.asarray(g.velocity.sine, dtype=float)), (n,))
-        valid = np.broadcast_to(np.asarray(g.valid, dtype=bool), (n,))
-        q = None if pivot is None else np.where(np.isfinite(pivot), pivot, 0.0).tolist()
-        cols.append((g, g.group.label, valid.tolist(), s.tolist(), (s < WARN_SINE).tolist(), q))
-    phis = np.asarray(motion.phi, dtype=float).tolist()
-    at_ = solver.at if solver is not None else mech.driver.at
-    at = functools.cache(lambda k: at_(phis[k]))  # words only where flagged, once
-    placed = np.broadcast_to(np.asarray(motion.placed, dtype=bool), (n,)).tolist()
-    plain = (SINGULAR_SINE, SINGULAR_SINE)
-    out = []
-    for k in range(n):
-        figures: dict[str, float] = {}
-        warnings: list[str] = []
-        errors: list[str] = []
-        singular: list[str] = []  # positions stand, plans singular: beside a change point
-        for i, (g, label, valid, sine, low, pivot) in enumerate(cols):
-            # a group beside one of its change points: its figures must reach CHANGE_SINE
-            # (Solver.singular_figures), and its failures are the change point's: positions
-            # only, no error. Looked up only where a figure calls for a word
-            flagged = not valid[k] or low[k] or (pivot is not None and pivot[k] < WARN_SINE)
-            under, under_q = (solver.singular_figures(i, phis[k])
-                              if flagged and solver is not None else plain)
-            fails = singular if under > SINGULAR_SINE and placed[k] else errors
-            if not valid[k]:
-                fails.append(str(g.failure(k, at(k))))
-                figures[label] = sine[k] if placed[k] else math.nan  # in line: about 0
-                if pivot is not None:  # every row has every figure: the CSV's columns
-                    figures[pivot_key(label)] = pivot[k] if placed[k] else math.nan
-                continue
-            figures[label] = sine[k]
-            if low[k]:
-                if (err := g.parallel(k, at(k), below=under)) is not None:
-                    fails.append(str(err))
-                elif (warning := g.near_parallel(k, at(k), below=under)) is not None:
-                    warnings.append(warning)
-            if pivot is not None:
-                q = pivot[k]
-                figures[pivot_key(label)] = q
-                if q < WARN_SINE:  # worded (and the angle with it) only where flagged
-                    if (err := on_pivot(g, q, at(k), below=under_q)) is not None:
-                        fails.append(str(err))
-                    else:
-                        warnings.append(near_pivot(g, q, at(k), below=under_q))
-        sines = [v for key, v in figures.items() if not is_pivot(key)]
-        if not sines:
-            min_sine = 1.0
-        elif all(math.isfinite(v) for v in sines):
-            min_sine = min(sines)
+    panels = []
+    o = c.output
+    if o is not None and t.output_values is not None:
+        if o.kind == "linear":
+            heads = (f"s_{o.point}", f"V_{o.point}", f"a_{o.point}")
+            units = ("m", "m/s", "m/s²")
+            value = t.output_values
         else:
-            min_sine = math.nan
-        out.append(Status(not errors and not singular, placed[k], min_sine, figures,
-                          tuple(warnings), tuple(errors), tuple(singular)))
-    return tuple(out)
+            heads = (f"ψ_{o.point}", f"ω{o.link}", f"ε{o.link}")
+            units = ("°", "rad/s", "rad/s²")
+            value = np.degrees(t.output_values)
+        for head, unit, values, rows in zip(
+                heads, units, (value, o.rate(m, mech), o.rate(m, mech, "acceleration")),
+                (placed, ok, ok), strict=True):
+            panels.append((f"{head}, {unit}", [(head, shown(values, rows))]))
+    panels.append(("ω, rad/s", [(f"ω{i}", shown(m.links[i].omega, ok)) for i in t.links]))
+    panels.append(("ε, rad/s²", [(f"ε{i}", shown(m.links[i].epsilon, ok)) for i in t.links]))
+    return turned.tolist(), panels
 
 
 def _fig(x: float) -> str:
@@ -275,28 +189,6 @@ def _cycle_summary(t: CycleTable) -> dict:
     return cycle_json(t.cycle)
 
 
-def cycle_json(c) -> dict:
-    """The cycle's figures (:class:`plans.cycle.Cycle`) as ``plans cycle --json`` and
-    ``plans solve --json`` give them, in SI units and degrees from +x."""
-    out = {
-        "full_turn": c.full_turn,
-        "output": None
-        if c.output is None
-        else {"point": c.output.point, "kind": c.output.kind, "link": c.output.link,
-              "unit": "m" if c.output.kind == "linear" else "rad"},
-        "extremes_phi_deg": [from_x(x) for x in c.extremes],
-        "stroke": c.stroke,
-        "theta_deg": None if c.theta is None else math.degrees(c.theta),
-        "K": c.K,
-        "grashof": c.grashof,
-        # counter-clockwise from the first angle to the second: in the crank's order a
-        # clockwise crank's range named the arc that does not assemble
-        "crank_range_phi_deg": None if c.ccw_range is None else [from_x(x) for x in c.ccw_range],
-        "notes": list(c.notes),
-    }
-    return out
-
-
 def _numbering(t: CycleTable) -> str:
     c = t.cycle
     if not c.full_turn:
@@ -309,8 +201,6 @@ def _numbering(t: CycleTable) -> str:
 def json_chunks(t: CycleTable):
     """The JSON text of :func:`to_json` in pieces: the head, then one row per line, so
     that 10⁵ rows are written as they are made."""
-    import json
-
     def dumps(x) -> str:
         return json.dumps(x, ensure_ascii=False, allow_nan=False)
 
@@ -399,11 +289,6 @@ def csv_chunks(t: CycleTable, rows: int = 1000):
     """The CSV text, ``rows`` rows at a time: each stretch of rows is converted to Python
     numbers as it is written, so that 10⁵ rows never stand in memory as some six million
     Python floats (about 200 MB for the press)."""
-    import csv
-    import io
-
-    import numpy as np
-
     m, mech = t.motion, t.mechanism
     n = len(t.status)
     buf = io.StringIO()
@@ -476,10 +361,6 @@ def _table(title: str, head: list[str], rows: list[list[str]]) -> list[str]:
 
 
 def to_text(t: CycleTable) -> str:
-    import numpy as np
-
-    from plans.kinematics.records import is_pivot
-
     m, mech, c = t.motion, t.mechanism, t.cycle
     d = mech.driver
     n = len(t.status)
@@ -496,7 +377,6 @@ def to_text(t: CycleTable) -> str:
         lines.append(
             f"ψ_{c.output.point}: degrees of link {c.output.link} from +x, measured ccw"
         )
-    from plans.cycle.analysis import summary
 
     lines += summary(c, d)
     moving = [p for p in t.points if p not in mech.frame]
@@ -510,8 +390,6 @@ def to_text(t: CycleTable) -> str:
             )
         )
 
-    from plans.cycle.analysis import shown_from
-
     lo = shown_from(c, d)  # a range through 0° writes its angles from −…°, as the range
 
     def lead(k: int) -> list[str]:
@@ -524,8 +402,6 @@ def to_text(t: CycleTable) -> str:
             return "—"
         value = float(value)
         return num(0.0 if abs(value) <= NOISE * big else value)
-
-    from plans.plan.solution import NOISE
 
     ok = np.array([st.ok for st in t.status], dtype=bool)
     placed = np.array([st.placed for st in t.status], dtype=bool)
@@ -631,8 +507,6 @@ def table_degrees(deg: float, lo: float = 0.0) -> str:
     >>> table_degrees(359.99999999999855), table_degrees(268.59, -180.0), table_degrees(-1e-9)
     ('0.00', '-91.41', '0.00')
     """
-    from plans.fmt import in_turn
-
     x = in_turn(deg, lo) if lo else deg % 360.0
     s = f"{x:.2f}"
     if s == f"{lo + 360.0:.2f}":  # rounds up to the end of the turn: its start
@@ -642,8 +516,6 @@ def table_degrees(deg: float, lo: float = 0.0) -> str:
 
 def _short(label: str) -> str:
     """'group 2–3 (RPR)' → 'sin 2–3'; 'group 2–3 (RPR) pivot' → 'QP 2–3'."""
-    from plans.kinematics.records import is_pivot
-
     parts = label.split()
     links = parts[1] if len(parts) > 1 else label
     return f"QP {links}" if is_pivot(label) else f"sin {links}"

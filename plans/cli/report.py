@@ -2,22 +2,22 @@
 
 from __future__ import annotations
 
-from plans.cli.common import add_source, mechanism_from, solved_position, warn, write_output
+from plans.cli.common import EXIT_OK, add_source, mechanism_from, solved_position, warn
+from plans.cycle.analysis import analyse_cycle
+from plans.note.report import note
 
 
 def configure(p) -> None:
     add_source(p)
-    p.add_argument("--lang", choices=("ru", "en"), default="en", help="language of the note (ru uses a decimal comma)")
+    p.add_argument("--lang", choices=("ru", "en"), default="en",
+                   help="language of the note (ru uses a decimal comma)")
     p.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of stdout")
 
 
 def run(args) -> int:
-    from plans.cycle.analysis import analyse_cycle
-    from plans.note.report import note
-
     mech = mechanism_from(args)
     solver, sol = solved_position(args, mech)
-    write_output(args.output, note(sol, args.lang, analyse_cycle(mech, solver=solver)))
+    args.run_files.write(args.output, note(sol, args.lang, analyse_cycle(mech, solver=solver)))
     for w in sol.warnings:
         warn("report", w)
-    return 0
+    return EXIT_OK

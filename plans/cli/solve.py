@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import json
 
-from plans.cli.common import add_source, mechanism_from, solved_position, warn, write_output
+from plans.cli.common import EXIT_OK, add_source, cycle_json, mechanism_from, solved_position, warn
+from plans.cycle.analysis import analyse_cycle, summary
 from plans.fmt import from_x, json_angle, num
 
 
@@ -15,8 +16,6 @@ def configure(p) -> None:
 
 
 def run(args) -> int:
-    from plans.cycle.analysis import analyse_cycle
-
     mech = mechanism_from(args)
     solver, sol = solved_position(args, mech)
     cycle = analyse_cycle(mech, solver=solver)
@@ -24,10 +23,10 @@ def run(args) -> int:
         text = json.dumps(to_json(sol, cycle), ensure_ascii=False, indent=2) + "\n"
     else:
         text = to_text(sol, cycle)
-    write_output(args.output, text)
+    args.run_files.write(args.output, text)
     for w in sol.warnings:
         warn("solve", w)
-    return 0
+    return EXIT_OK
 
 
 def _xy(z: complex) -> list[float]:
@@ -37,8 +36,6 @@ def _xy(z: complex) -> list[float]:
 def to_json(sol, cycle=None) -> dict:
     """The solution as JSON; with ``cycle`` (:func:`plans.cycle.analyse_cycle`), its
     figures too (stroke or swing, extreme positions, θ, K, Grashof), as the text gives."""
-    from plans.cli.cycle import cycle_json
-
     m = sol.scalar
     points = {
         name: {
@@ -122,8 +119,6 @@ def to_text(sol, cycle=None) -> str:
         )
     if cycle is not None:
         out.append("")
-        from plans.cycle.analysis import summary
-
         out.append("Cycle")
         out += [f"  {line}" for line in summary(cycle, d)]
     for w in sol.warnings:

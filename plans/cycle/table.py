@@ -1,0 +1,170 @@
+"""The table of ``plans cycle``: every point and link over N crank positions of the cycle,
+and the conditioning of each position.
+
+The positions are numbered from an extreme position of the output, as the course numbers
+them (``plans.cycle.analyse_cycle``): position 0 starts the working (slower) stroke. For a
+linkage whose crank cannot make a full turn, the N positions span the crank range where it
+assembles.
+
+Each position carries its conditioning: for every group the sine of the angle between the
+two lines the plans intersect (``Construction.sine``; 1 = perpendicular, 0 = parallel, a
+dead point or toggle), and for a slotted link (RPR) also how far the block is from the
+rocker's pivot relative to the loop (|QP| / (|OQ| + |OP|), O the crank's pivot): near 0
+the rocker's ω = V / |QP| loses its digits. A figure below ``WARN_SINE`` (≈ 2°) makes a
+warning, below ``SINGULAR_SINE`` (or a group that does not close) an error: the values of
+that position are then left out (the position is not ``ok``; where the positions stand it
+is still ``placed``).
+
+A position on a change point (a parallelogram at 0° and 180°) is no error: the positions
+stand there, only its plans are singular. So is one beside a change point whose figure is
+under ``CHANGE_SINE`` (1e-3), where the acceleration plan would lose its digits as
+1/sin³. Its status gives the positions, leaves the velocities and accelerations out, and
+says why (``singular``).
+
+How the table is written (text, CSV, JSON) is the command's: :mod:`plans.cli.cycle`.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from plans.cycle.analysis import analyse_cycle, table_angle
+from plans.kinematics import records
+from plans.kinematics.records import (
+    is_pivot,
+    near_pivot,
+    on_pivot,
+    pivot_figure,
+    pivot_key,
+    sine_figure,
+)
+from plans.kinematics.solver import Solver
+
+
+@dataclass(frozen=True)
+class Status:
+    """Conditioning and diagnostics of one position."""
+
+    ok: bool  # solved: every group closes and no figure is singular
+    placed: bool  # the positions stand: every group closes (or misses it by rounding)
+    min_sine: float  # the smallest |sin| between intersected lines (NaN if it does not close)
+    figures: dict[str, float]  # per group: "group 2–3 (RPR)" → |sin|; "… pivot" → |QP| ratio
+    warnings: tuple[str, ...]
+    errors: tuple[str, ...]
+    #: why the plans are singular where the position is a change point (positions only)
+    singular: tuple[str, ...] = ()
+
+    @property
+    def state(self) -> str:
+        return ("error" if self.errors else "singular" if self.singular
+                else "warning" if self.warnings else "ok")
+
+
+@dataclass(frozen=True)
+class CycleTable:
+    """N positions of the cycle (:func:`compute`): the motion over them (arrays, one
+    value a position) and each position's :class:`Status`."""
+
+    mechanism: object
+    cycle: object
+    motion: object
+    status: tuple[Status, ...]
+    points: tuple[str, ...]
+    links: tuple[int, ...]
+    output_values: object | None  # array: s (m) or ψ (rad) of the output, or None
+
+
+def compute(mech, n_positions: int, solver=None) -> CycleTable:
+    """The table of ``mech`` over ``n_positions`` positions of its cycle, numbered as
+    :func:`plans.cycle.analyse_cycle` numbers them; ``solver``: the mechanism's, if made."""
+    solver = solver or Solver(mech)
+    cycle = analyse_cycle(mech, n_positions=n_positions, solver=solver)
+    phi = np.array(cycle.positions, dtype=float)
+    with np.errstate(all="ignore"):
+        motion = solver.solve(phi)
+        status = conditioning(mech, motion, solver)
+        out_values = None
+        if cycle.output is not None:
+            out_values = cycle.output.value(motion, mech)
+            if cycle.output.kind == "angular":
+                out_values = table_angle(out_values, cycle.full_turn)
+    points = tuple(motion.position)
+    links = tuple(sorted(lid for lid in motion.links if lid != 0))
+    return CycleTable(mech, cycle, motion, status, points, links, out_values)
+
+
+def figure_labels(t: CycleTable) -> list[str]:
+    """The conditioning figures' keys, each once, in the order the rows give them: one
+    column each in the CSV and the text table, whichever rows lack one."""
+    return list(dict.fromkeys(key for st in t.status for key in st.figures))
+
+
+def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
+    """Per position: the figures of every group, warnings and errors (see the module doc);
+    ``solver``, the motion's, names the change points among the angles."""
+    n = len(motion.phi)
+    crank_pivot = mech.frame[mech.driver.pivot]
+    # read here, not bound at import: the thresholds are the records module's (a test
+    # moves them to exercise the error path)
+    warn_sine, singular_sine = records.WARN_SINE, records.SINGULAR_SINE
+    per_group = [(g, pivot_figure(g, motion.position, crank_pivot)) for g in motion.groups]
+    # each group's figures as Python lists, once; words only where a position is flagged
+    cols = []
+    for g, pivot in per_group:
+        s = np.broadcast_to(sine_figure(np.asarray(g.velocity.sine, dtype=float)), (n,))
+        valid = np.broadcast_to(np.asarray(g.valid, dtype=bool), (n,))
+        q = None if pivot is None else np.where(np.isfinite(pivot), pivot, 0.0).tolist()
+        cols.append((g, g.group.label, valid.tolist(), s.tolist(), (s < warn_sine).tolist(), q))
+    phis = np.asarray(motion.phi, dtype=float).tolist()
+    at_ = solver.at if solver is not None else mech.driver.at
+    at = functools.cache(lambda k: at_(phis[k]))  # words only where flagged, once
+    placed = np.broadcast_to(np.asarray(motion.placed, dtype=bool), (n,)).tolist()
+    plain = (singular_sine, singular_sine)
+    out = []
+    for k in range(n):
+        figures: dict[str, float] = {}
+        warnings: list[str] = []
+        errors: list[str] = []
+        singular: list[str] = []  # positions stand, plans singular: beside a change point
+        for i, (g, label, valid, sine, low, pivot) in enumerate(cols):
+            # a group beside one of its change points: its figures must reach CHANGE_SINE
+            # (Solver.singular_figures), and its failures are the change point's: positions
+            # only, no error. Looked up only where a figure calls for a word
+            flagged = not valid[k] or low[k] or (pivot is not None and pivot[k] < warn_sine)
+            under, under_q = (solver.singular_figures(i, phis[k])
+                              if flagged and solver is not None else plain)
+            fails = singular if under > singular_sine and placed[k] else errors
+            if not valid[k]:
+                fails.append(str(g.failure(k, at(k))))
+                figures[label] = sine[k] if placed[k] else math.nan  # in line: about 0
+                if pivot is not None:  # every row has every figure: the CSV's columns
+                    figures[pivot_key(label)] = pivot[k] if placed[k] else math.nan
+                continue
+            figures[label] = sine[k]
+            if low[k]:
+                if (err := g.parallel(k, at(k), below=under)) is not None:
+                    fails.append(str(err))
+                elif (warning := g.near_parallel(k, at(k), below=under)) is not None:
+                    warnings.append(warning)
+            if pivot is not None:
+                q = pivot[k]
+                figures[pivot_key(label)] = q
+                if q < warn_sine:  # worded (and the angle with it) only where flagged
+                    if (err := on_pivot(g, q, at(k), below=under_q)) is not None:
+                        fails.append(str(err))
+                    else:
+                        warnings.append(near_pivot(g, q, at(k), below=under_q))
+        sines = [v for key, v in figures.items() if not is_pivot(key)]
+        if not sines:
+            min_sine = 1.0
+        elif all(math.isfinite(v) for v in sines):
+            min_sine = min(sines)
+        else:
+            min_sine = math.nan
+        out.append(Status(not errors and not singular, placed[k], min_sine, figures,
+                          tuple(warnings), tuple(errors), tuple(singular)))
+    return tuple(out)
