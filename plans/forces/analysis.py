@@ -155,58 +155,117 @@ def analyse(sol: Solution, loads: Loads, stroke: Stroke | None = None, mu_F: flo
     working stroke (:func:`plans.forces.loads.stroke_of`), which a P(S) graph needs;
     ``mu_F``: one scale factor for every force plan (None: each its own standard value)."""
     mech, m = sol.mechanism, sol.scalar
-    external = at_position(mech, loads, m, sol.phi, stroke)
+    # a load that is exactly nothing here (the inertia force of a centre on the pivot) is left out
+    external = [ld for ld in at_position(mech, loads, m, sol.phi, stroke) if ld.force != 0 or ld.moment != 0]
     on: dict[int, list[Load]] = {lid: [] for lid in mech.links}
     for ld in external:
         on[ld.link].append(ld)
-    groups = sol.structure.groups
-    known_before = []
-    known = {0, mech.driver.link}
-    for g in groups:
-        known_before.append(set(known))
-        known |= {g.a, g.b}
-    results = []
-    for gi in reversed(range(len(groups))):
-        g = groups[gi]
-        gf, back = _group(mech, m, g, on, known_before[gi], mu_F, sol)
-        results.append(gf)
-        for b in back:
-            if b.link:
-                on[b.link].append(Load(b.name, "reaction", b.link, b.point, b.at, b.force, b.moment))
-    d = mech.driver
-    crank_loads = tuple(on[d.link])
-    terms = [ld.term for ld in crank_loads]
-    O = m.position[d.pivot]
-    M_y, R01 = K.crank(O, K.resultant(terms), K.moment(terms, O))
-    return ForceAnalysis(sol, tuple(external), tuple(results), crank_loads, complex(R01), float(M_y), stroke)
-
-
-class _Back(NamedTuple):
-    link: int
-    name: str
-    point: str | None
-    at: complex
-    force: complex
-    moment: float
+    steps, M_y, R01 = walk(mech, sol.structure.groups, m, on)
+    groups = tuple(_recorded(mech, st, mu_F, sol) for st in steps)
+    return ForceAnalysis(sol, tuple(external), groups, tuple(on[mech.driver.link]), complex(R01), float(M_y),
+                         stroke)
 
 
 def _terms(loads):
     return [ld.term for ld in loads]
 
 
-def _group(mech, m, g: Group, on, known, mu_F, sol):
-    """One group's forces: its reactions, equations and force plan, and what it puts on
-    the links solved before it."""
+class Step(NamedTuple):
+    """One group's equilibrium as :func:`walk` finds it: the kernel's record, the points
+    and directions it used, and the forces the group puts back on the links before it."""
+
+    group: Group
+    result: object  # a record of :mod:`plans.forces.kernels`
+    geometry: dict  # "P", "C", "Q", "u", "u1", "u2", "us", "B0" as the kind uses them
+    partners: dict  # joint → the known link the group is hinged to there
+    loads: dict  # link → its loads (its own and those later groups put on it)
+    backs: tuple[K.Back, ...]
+
+
+def walk(mech: Mechanism, groups, motion, on: dict[int, list[Load]]):
+    """The groups' equilibrium, the last attached first, at the position(s) of ``motion``
+    (Python numbers or arrays alike: the sweep over the cycle walks the same way), each
+    group's forces on the links before it added to their loads in ``on``. Returns the
+    steps in the order solved and the driving link's (M_у, R_01)."""
+    known_before = []
+    known = {0, mech.driver.link}
+    for g in groups:
+        known_before.append(set(known))
+        known |= {g.a, g.b}
+    steps = []
+    for gi in reversed(range(len(groups))):
+        step = _step(mech, motion, groups[gi], on, known_before[gi])
+        steps.append(step)
+        for b in step.backs:
+            if b.link:
+                on[b.link].append(Load(b.name, "reaction", b.link, None, b.at, b.force, b.moment))
+    d = mech.driver
+    terms = [ld.term for ld in on[d.link]]
+    O = motion.position[d.pivot]
+    M_y, R01 = K.crank(O, K.resultant(terms), K.moment(terms, O))
+    return steps, M_y, R01
+
+
+def _direction(motion, guide):
+    return motion.links[guide.link].rotor * guide.direction if guide.link else guide.direction
+
+
+def _step(mech, m, g: Group, on, known) -> Step:
     pos = m.position
     A, B = tuple(on[g.a]), tuple(on[g.b])
     ta, tb = _terms(A), _terms(B)
     Fa, Fb = K.resultant(ta), K.resultant(tb)
     kind = g.kind
-    name_a, name_b = f"{g.a}", f"{g.b}"
     if kind == DyadKind.RRR:
         P, C, Q = pos[g.P], pos[g.C], pos[g.Q]
         kP, kQ = _partner(mech, g.P, g.a, known), _partner(mech, g.Q, g.b, known)
         r = K.rrr(P, C, Q, Fa, K.moment(ta, C), Fb, K.moment(tb, C))
+        backs = (K.Back(kP, _name(g.a, kP), g.a, P, -r.R_P, 0.0), K.Back(kQ, _name(g.b, kQ), g.b, Q, -r.R_Q, 0.0))
+        return Step(g, r, {"P": P, "C": C, "Q": Q}, {g.P: kP, g.Q: kQ}, {g.a: A, g.b: B}, backs)
+    if kind == DyadKind.RRP:
+        P, C = pos[g.P], pos[g.C]
+        kP, k = _partner(mech, g.P, g.a, known), g.s1.guide.link
+        u = _direction(m, g.s1.guide)
+        r = K.rrp(P, C, u, Fa, K.moment(ta, C), Fb, K.moment(tb, C))
+        backs = (K.Back(kP, _name(g.a, kP), g.a, P, -r.R_P, 0.0), K.Back(k, _name(g.b, k), g.b, C, -r.N, r.m_b))
+        return Step(g, r, {"P": P, "C": C, "u": u}, {g.P: kP}, {g.a: A, g.b: B}, backs)
+    if kind == DyadKind.RPR:
+        P, Q = pos[g.P], pos[g.Q]
+        kP, kQ = _partner(mech, g.P, g.a, known), _partner(mech, g.Q, g.b, known)
+        u = m.links[g.b].rotor * g.s1.guide.direction
+        r = K.rpr(P, Q, u, Fa, K.moment(ta, P), Fb, K.moment(tb, Q))
+        backs = (K.Back(kP, _name(g.a, kP), g.a, P, -r.R_P, 0.0), K.Back(kQ, _name(g.b, kQ), g.b, Q, -r.R_Q, 0.0))
+        return Step(g, r, {"P": P, "Q": Q, "u": u}, {g.P: kP, g.Q: kQ}, {g.a: A, g.b: B}, backs)
+    if kind == DyadKind.PRP:
+        C = pos[g.C]
+        g1, g2 = g.s1.guide, g.s2.guide
+        u1, u2 = _direction(m, g1), _direction(m, g2)
+        r = K.prp(C, u1, u2, Fa, K.moment(ta, C), Fb, K.moment(tb, C))
+        backs = (K.Back(g1.link, _name(g.a, g1.link), g.a, C, -r.N1, r.m_a),
+                 K.Back(g2.link, _name(g.b, g2.link), g.b, C, -r.N2, r.m_b))
+        return Step(g, r, {"C": C, "u1": u1, "u2": u2}, {}, {g.a: A, g.b: B}, backs)
+    # RPP: the block a hinged at P slides in link b, which slides on the guide of link k
+    P = pos[g.P]
+    kP = _partner(mech, g.P, g.a, known)
+    gin, gout = g.s1.guide, g.s2.guide
+    k = gout.link
+    us = m.links[g.b].rotor * gin.direction
+    u = _direction(m, gout)
+    B0 = m.links[k].pos(gout.point) if k else gout.point
+    r = K.rpp(P, B0, us, u, Fa, K.moment(ta, P), Fb, K.moment(tb, B0))
+    backs = (K.Back(kP, _name(g.a, kP), g.a, P, -r.R_P, 0.0), K.Back(k, _name(g.b, k), g.b, B0, -r.N_kb, -r.couple))
+    return Step(g, r, {"P": P, "us": us, "u": u, "B0": B0}, {g.P: kP}, {g.a: A, g.b: B}, backs)
+
+
+def _recorded(mech, step: Step, mu_F, sol) -> GroupForces:
+    """A step of the walk at one position, recorded: its reactions by name, its moment
+    equations with their arms, and its force plan."""
+    g, r, geo, kp = step.group, step.result, step.geometry, step.partners
+    A, B = step.loads[g.a], step.loads[g.b]
+    kind = g.kind
+    if kind == DyadKind.RRR:
+        P, C, Q = geo["P"], geo["C"], geo["Q"]
+        kP, kQ = kp[g.P], kp[g.Q]
         _singular(r.sine, g, sol, f"the lines ∥ {g.P}{g.C} and ∥ {g.Q}{g.C}")
         RP = Reaction(_name(kP, g.a), kP, g.a, "revolute", g.P, P, r.R_P, 1j * r.tau_a * r.e_a, r.n_a * r.e_a)
         RQ = Reaction(_name(kQ, g.b), kQ, g.b, "revolute", g.Q, Q, r.R_Q, 1j * r.tau_b * r.e_b, r.n_b * r.e_b)
@@ -220,19 +279,14 @@ def _group(mech, m, g: Group, on, known, mu_F, sol):
             (RQ.name + "^n", r.e_b, f"∥ {g.Q}{g.C}", r.n_b * r.e_b),
             (RP.name + "^n", r.e_a, f"∥ {g.P}{g.C}", r.n_a * r.e_a),
             r.sine, mu_F, [RP, RQ], RC, A)
-        back = [_Back(kP, _name(g.a, kP), g.P, P, -r.R_P, 0.0), _Back(kQ, _name(g.b, kQ), g.Q, Q, -r.R_Q, 0.0)]
-        return GroupForces(g, {g.a: A, g.b: B}, (RP, RQ, RC, RCb), eqs, plan, abs(r.sine)), back
+        return GroupForces(g, {g.a: A, g.b: B}, (RP, RQ, RC, RCb), eqs, plan, abs(r.sine))
     if kind == DyadKind.RRP:
-        P, C = pos[g.P], pos[g.C]
-        kP = _partner(mech, g.P, g.a, known)
-        guide = g.s1.guide
+        P, C, u = geo["P"], geo["C"], geo["u"]
+        kP, guide = kp[g.P], g.s1.guide
         k = guide.link
-        u = m.links[k].rotor * guide.direction
-        r = K.rrp(P, C, u, Fa, K.moment(ta, C), Fb, K.moment(tb, C))
         _singular(r.sine, g, sol, f"the lines ∥ {g.P}{g.C} and ⊥ the guide {guide.label}")
         RP = Reaction(_name(kP, g.a), kP, g.a, "revolute", g.P, P, r.R_P, 1j * r.tau_a * r.e_a, r.n_a * r.e_a)
-        at = _contact(C, u, r.m_b, r.nu)
-        RN = Reaction(_name(k, g.b), k, g.b, "prismatic", None, at, r.N)
+        RN = Reaction(_name(k, g.b), k, g.b, "prismatic", None, _contact(C, u, r.m_b, r.nu), r.N)
         RC = Reaction(_name(g.b, g.a), g.b, g.a, "revolute", g.C, C, r.R_C)
         RCb = Reaction(_name(g.a, g.b), g.a, g.b, "revolute", g.C, C, -r.R_C)
         eqs = (_equation(A, g.a, g.C, C, RP.name + "^τ", P, 1j * r.e_a, r.tau_a),)
@@ -241,14 +295,10 @@ def _group(mech, m, g: Group, on, known, mu_F, sol):
             (RN.name, r.w, f"⊥ {guide.label}", r.N),
             (RP.name + "^n", r.e_a, f"∥ {g.P}{g.C}", r.n_a * r.e_a),
             r.sine, mu_F, [RP, RN], RC, A)
-        back = [_Back(kP, _name(g.a, kP), g.P, P, -r.R_P, 0.0),
-                _Back(k, _name(g.b, k), None, C, -r.N, r.m_b)]
-        return GroupForces(g, {g.a: A, g.b: B}, (RP, RN, RC, RCb), eqs, plan, abs(r.sine)), back
+        return GroupForces(g, {g.a: A, g.b: B}, (RP, RN, RC, RCb), eqs, plan, abs(r.sine))
     if kind == DyadKind.RPR:
-        P, Q = pos[g.P], pos[g.Q]
-        kP, kQ = _partner(mech, g.P, g.a, known), _partner(mech, g.Q, g.b, known)
-        u = m.links[g.b].rotor * g.s1.guide.direction
-        r = K.rpr(P, Q, u, Fa, K.moment(ta, P), Fb, K.moment(tb, Q))
+        P, Q, u = geo["P"], geo["Q"], geo["u"]
+        kP, kQ = kp[g.P], kp[g.Q]
         _singular(r.sine, g, sol, f"the guide of link {g.b} and the line {g.Q}{g.P}")
         RP = Reaction(_name(kP, g.a), kP, g.a, "revolute", g.P, P, r.R_P)
         RQ = Reaction(_name(kQ, g.b), kQ, g.b, "revolute", g.Q, Q, r.R_Q)
@@ -258,14 +308,10 @@ def _group(mech, m, g: Group, on, known, mu_F, sol):
         eqs = (_group_equation(A, B, g, Q, P, r.w, r.nu),)
         plan = _vector_plan([(RP.name, "reaction", r.R_P), *_vectors(A), *_vectors(B)],
                             (RQ.name, r.R_Q), mu_F, RN, A)
-        back = [_Back(kP, _name(g.a, kP), g.P, P, -r.R_P, 0.0), _Back(kQ, _name(g.b, kQ), g.Q, Q, -r.R_Q, 0.0)]
-        return GroupForces(g, {g.a: A, g.b: B}, (RP, RN, RNb, RQ), eqs, plan, 1.0), back
+        return GroupForces(g, {g.a: A, g.b: B}, (RP, RN, RNb, RQ), eqs, plan, 1.0)
     if kind == DyadKind.PRP:
-        C = pos[g.C]
+        C, u1, u2 = geo["C"], geo["u1"], geo["u2"]
         g1, g2 = g.s1.guide, g.s2.guide
-        u1 = m.links[g1.link].rotor * g1.direction
-        u2 = m.links[g2.link].rotor * g2.direction
-        r = K.prp(C, u1, u2, Fa, K.moment(ta, C), Fb, K.moment(tb, C))
         _singular(r.sine, g, sol, f"the lines ⊥ {g1.label} and ⊥ {g2.label}")
         R1 = Reaction(_name(g1.link, g.a), g1.link, g.a, "prismatic", None, _contact(C, u1, r.m_a, r.nu1), r.N1)
         R2 = Reaction(_name(g2.link, g.b), g2.link, g.b, "prismatic", None, _contact(C, u2, r.m_b, r.nu2), r.N2)
@@ -274,28 +320,18 @@ def _group(mech, m, g: Group, on, known, mu_F, sol):
         plan = _closed_plan([*_vectors(A), *_vectors(B)],
                             (R2.name, r.w2, f"⊥ {g2.label}", r.N2), (R1.name, r.w1, f"⊥ {g1.label}", r.N1),
                             r.sine, mu_F, [R1, R2], RC, A)
-        back = [_Back(g1.link, _name(g.a, g1.link), None, C, -r.N1, r.m_a),
-                _Back(g2.link, _name(g.b, g2.link), None, C, -r.N2, r.m_b)]
-        return GroupForces(g, {g.a: A, g.b: B}, (R1, R2, RC, RCb), (), plan, abs(r.sine)), back
-    # RPP: the block a hinged at P slides in link b, which slides on the guide of link k
-    P = pos[g.P]
-    kP = _partner(mech, g.P, g.a, known)
-    gin, gout = g.s1.guide, g.s2.guide
+        return GroupForces(g, {g.a: A, g.b: B}, (R1, R2, RC, RCb), (), plan, abs(r.sine))
+    P, us, u, B0 = geo["P"], geo["us"], geo["u"], geo["B0"]
+    kP, gin, gout = kp[g.P], g.s1.guide, g.s2.guide
     k = gout.link
-    us = m.links[g.b].rotor * gin.direction
-    u = m.links[k].rotor * gout.direction
-    B0 = m.links[k].pos(gout.point) if k else gout.point
-    r = K.rpp(P, B0, us, u, Fa, K.moment(ta, P), Fb, K.moment(tb, B0))
     _singular(r.sine, g, sol, f"the lines ⊥ {gin.label} and ⊥ {gout.label}")
     RP = Reaction(_name(kP, g.a), kP, g.a, "revolute", g.P, P, r.R_P)
     RN1 = Reaction(_name(g.b, g.a), g.b, g.a, "prismatic", None, _contact(P, us, r.m_a, r.nu1), r.N_ba)
     RN1b = Reaction(_name(g.a, g.b), g.a, g.b, "prismatic", None, RN1.at, -r.N_ba)
-    at2 = None if abs(r.nu2) <= NOISE * max(abs(r.N_ba), abs(Fb), 1.0) else B0 + (r.couple / r.nu2) * u
-    RN2 = Reaction(_name(k, g.b), k, g.b, "prismatic", None, at2, r.N_kb)
+    RN2 = Reaction(_name(k, g.b), k, g.b, "prismatic", None, _contact(B0, u, -r.couple, r.nu2), r.N_kb)
     plan = _yoke_plan(_vectors(B), (RN2.name, r.w, f"⊥ {gout.label}", r.N_kb),
                       (RN1b.name, r.ws, f"⊥ {gin.label}", -r.N_ba), _vectors(A), RP, r.sine, mu_F)
-    back = [_Back(kP, _name(g.a, kP), g.P, P, -r.R_P, 0.0), _Back(k, _name(g.b, k), None, B0, -r.N_kb, -r.couple)]
-    return GroupForces(g, {g.a: A, g.b: B}, (RP, RN1, RN1b, RN2), (), plan, abs(r.sine)), back
+    return GroupForces(g, {g.a: A, g.b: B}, (RP, RN1, RN1b, RN2), (), plan, abs(r.sine))
 
 
 def _singular(sine, g: Group, sol: Solution, lines: str) -> None:

@@ -41,6 +41,7 @@ class Back(NamedTuple):
 
     link: int
     name: str  # the reaction on the known link, e.g. "R21"
+    other: int  # the group's link that puts it there
     at: object
     force: object
     moment: object
