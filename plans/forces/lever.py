@@ -57,9 +57,19 @@ def couple_pair(link, moment: float, pos, a: str, b: str) -> list[tuple[str, com
     return [(b, B, f), (a, A, -f)]
 
 
-def lever(solution, loads: list[Load], pairs: dict[int, tuple[str, str]]) -> Lever:
-    """The lever at the position of ``solution``; ``pairs``: for each link that carries a
-    couple, the two points it is applied at (its joints)."""
+def joints(mech, link: int) -> tuple[str, str] | None:
+    """The two points of ``link`` a couple on it is applied at, as two forces: the ends of
+    its axis, else its first two points; None for a link of one point (a block), whose
+    couple enters the lever as its moment −M·ω/μv."""
+    ln = mech.links[link]
+    if ln.axis:
+        return ln.axis
+    names = list(ln.points)
+    return (names[0], names[1]) if len(names) >= 2 else None
+
+
+def lever(solution, loads: list[Load]) -> Lever:
+    """The lever at the position of ``solution``, under ``loads``."""
     m = solution.scalar
     mu = solution.velocity.mu
     mech = solution.mechanism
@@ -76,8 +86,12 @@ def lever(solution, loads: list[Load], pairs: dict[int, tuple[str, str]]) -> Lev
         if ld.point is not None and ld.force != 0:
             put(ld.name, ld.point, ld.force)
         if ld.moment:
-            a, b = pairs[ld.link]
-            for point, _, force in couple_pair(ld.link, ld.moment, m.position, a, b):
+            ends = joints(mech, ld.link)
+            if ends is None:
+                mo = -ld.moment * m.links[ld.link].omega / mu
+                terms.append(LeverTerm(ld.name, "", 0j, 0j, 0.0, mo))
+                continue
+            for point, _, force in couple_pair(ld.link, ld.moment, m.position, *ends):
                 put(f"{ld.name}({point})", point, force)
     total = sum(t.moment for t in terms)
     tip = m.velocity[d.tip]
@@ -87,6 +101,7 @@ def lever(solution, loads: list[Load], pairs: dict[int, tuple[str, str]]) -> Lev
     # −F_у·pb·sign(ω1) (see the module's docstring), and the lever's sum vanishes
     sense = 1.0 if d.omega > 0 else -1.0
     F_y = total / (pb * sense)
-    rounded = sum(round(t.arm) * (1 if t.moment > 0 else -1) * abs(t.force) for t in terms)
+    rounded = sum(round(t.arm) * (1 if t.moment > 0 else -1) * abs(t.force) if t.force else t.moment
+                  for t in terms)
     measured = rounded / (round(pb) * sense) if round(pb) else F_y
     return Lever(tuple(terms), d.tip, pb, F_y, F_y * l_crank, measured, mu)

@@ -127,6 +127,10 @@ class Drive:
     efficiency: float = 0.9
     digit: int = 0
     catalogue: str = "4A"
+    synchronous: int = 3000  # rpm: the motors' pole count (3000, 1500, 1000, 750)
+    #: the power the motor is chosen for: at the analysed position (seed 001), or the
+    #: cycle's mean (a machine with a flywheel)
+    power: str = "position"
 
 
 def _keyword(value: Any, where: str, allowed: tuple[str, ...], pr: Problems) -> str | None:
@@ -153,9 +157,11 @@ def _point(value: Any, where: str, known: set[str], pr: Problems, what: str) -> 
     return value
 
 
-def read_loads(raw: Any, points: dict[int, set[str]], pr: Problems, where: str = "loads") -> Loads:
+def read_loads(raw: Any, points: dict[int, set[str]], pr: Problems, where: str = "loads",
+               sliding: frozenset[int] | None = None) -> Loads:
     """The ``[loads]`` table of a mechanism file; ``points``: each moving link's point
-    names. Every problem goes to ``pr``, located by its key path."""
+    names; ``sliding``: the links that slide on a guide (a force "along guide" needs one).
+    Every problem goes to ``pr``, located by its key path."""
     if not isinstance(raw, dict):
         pr.add(where, f"must be a table ([loads]), got {quote(raw)}")
         return Loads()
@@ -200,6 +206,10 @@ def read_loads(raw: Any, points: dict[int, set[str]], pr: Problems, where: str =
         if lid is not None and centre is not None and m is not None and J is not None and m >= 0 and J >= 0:
             masses[lid] = Mass(lid, m, J, centre)
     forces = tuple(_forces(raw.get("forces", []), f"{where}.forces", points, everywhere, pr))
+    for i, f in enumerate(forces):
+        if sliding is not None and f.rule in ("along guide", "against guide") and f.link not in sliding:
+            pr.add(f"{where}.forces[{i}].direction", f'"{f.rule}": link {f.link} slides on no guide; '
+                   "give angle_deg, or a direction along or against the point's velocity")
     moments = tuple(_moments(raw.get("moments", []), f"{where}.moments", points, pr))
     resistance = None
     if "resistance" in raw:
@@ -367,12 +377,19 @@ def read_drive(raw: Any, pr: Problems, where: str = "drive") -> Drive:
     if not isinstance(raw, dict):
         pr.add(where, f"must be a table ([drive] efficiency = 0.9), got {quote(raw)}")
         return Drive()
-    check_keys(raw, {"efficiency", "digit", "catalogue"}, where, pr)
+    check_keys(raw, {"efficiency", "digit", "catalogue", "synchronous", "power"}, where, pr)
+    power = _keyword(raw["power"], f"{where}.power", ("position", "mean"), pr) if "power" in raw else None
     eta = read_number(raw.get("efficiency"), f"{where}.efficiency", pr, positive=True, default=0.9, unit="",
                       high=1.0)
     digit = raw.get("digit", 0)
     if isinstance(digit, bool) or not isinstance(digit, int) or not 0 <= digit <= 9:
-        pr.add(f"{where}.digit", f"must be one digit 0…9 (Ш, the last digit of the student's code), got {quote(digit)}")
+        pr.add(f"{where}.digit", "must be one digit 0…9 (Ш, the last digit of the student's code), "
+               f"got {quote(digit)}")
         digit = 0
     catalogue = read_text(raw.get("catalogue"), f"{where}.catalogue", pr, "4A")
-    return Drive(eta if eta is not None else 0.9, digit, catalogue)
+    sync = raw.get("synchronous", 3000)
+    if sync not in (3000, 1500, 1000, 750) or isinstance(sync, bool):
+        pr.add(f"{where}.synchronous", f"must be the motors' synchronous speed in rpm: 3000, 1500, 1000 or 750, "
+               f"got {quote(sync)}")
+        sync = 3000
+    return Drive(eta if eta is not None else 0.9, digit, catalogue, int(sync), power or "position")

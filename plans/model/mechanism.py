@@ -25,6 +25,7 @@ from typing import Any
 
 from plans.errors import InputError
 from plans.geometry import cross
+from plans.model.loads import Drive, Loads, read_drive, read_loads
 from plans.model.fileformat import (
     MAX_ABS,
     MAX_TEXT,
@@ -198,6 +199,10 @@ class Mechanism:
     #: the crank angle (rad from +x) the assembly hints are read at: the file's own, kept
     #: by :meth:`at_file_angle`; None: the driver's
     hints_at: float | None = None
+    #: the loads for the force analysis (``[loads]``), None where the file gives none
+    loads: Loads | None = None
+    #: the drive's data (``[drive]``)
+    drive: Drive | None = None
 
     def name_in(self, lang: str) -> str:
         """The name for a note or sheet in ``lang``: the file's name in that language if
@@ -373,7 +378,7 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
     check_keys(
         data,
         {"name", "frame", "links", "sliders", "driver", "assembly", "scales", "trace",
-         "output", "title"},
+         "output", "title", "loads", "drive"},
         "", pr,
     )
     name, names = _title_names(data.get("name"), pr, Path(source).stem[:MAX_TEXT] or "mechanism")
@@ -605,6 +610,12 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
             pr.add(f"title.{key_text(k)}", f"must be a text, got {quote(v)}")
     title = {str(k)[:MAX_TEXT]: str(v)[:500] for k, v in title.items()
              if isinstance(v, str | int) and not isinstance(v, bool)}
+    loads = drive = None
+    if "loads" in data:
+        loads = read_loads(data["loads"], {lid: set(link.points) for lid, link in links.items()}, pr,
+                           sliding=frozenset(s.link for s in sliders))
+    if "drive" in data:
+        drive = read_drive(data["drive"], pr)
 
     pr.raise_if_any()
     assert driver is not None
@@ -621,6 +632,8 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
         title=title,
         source=source,
         names=names,
+        loads=loads,
+        drive=drive,
     )
     if output is not None:  # a point with no stroke was silently replaced by another
         from plans.cycle.analysis import no_output
