@@ -17,7 +17,15 @@ def run(args) -> int:
 
     mech = mechanism_from(args)
     solver, sol = solved_position(args, mech)
-    write_output(args.output, note(sol, args.lang, analyse_cycle(mech, solver=solver)))
+    cycle = analyse_cycle(mech, solver=solver)
+    text = note(sol, args.lang, cycle)
+    if mech.loads is not None:  # the note goes on with the force analysis, section after section
+        from plans.forces.note import force_note
+        from plans.forces.summary import solve_forces
+
+        section = sum(line.startswith("## ") for line in text.splitlines()) + 1
+        text = text.rstrip("\n") + "\n\n" + force_note(solve_forces(sol, solver, cycle), args.lang, section)
+    write_output(args.output, text)
     for w in sol.warnings:
         warn("report", w)
     return 0

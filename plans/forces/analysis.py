@@ -79,8 +79,8 @@ class Equation(NamedTuple):
     about: str
     terms: tuple[Arm, ...]
     unknown: str  # "R12^τ", "N", …
-    arm: float  # the unknown's arm (m)
-    value: float  # the unknown's signed size along its own direction (N)
+    arm: float  # m: what the terms' sum is divided by (the unknown's arm, signed by its direction)
+    value: float  # the unknown's signed size along its own direction (N): Σ terms / arm
 
 
 class GroupForces(NamedTuple):
@@ -371,10 +371,11 @@ def _equation(loads, link, about, X, unknown, at, direction, value) -> Equation:
 
 
 def _group_equation(A, B, g, Q, P, w, nu) -> Equation:
-    """The slotted link's group about Q: the guide's force on the block N (⊥ the guide,
-    through the block) from ΣM_Q(block and link b) = 0."""
-    terms = tuple(_arm(ld.name, Q, ld.at, ld.force, ld.moment) for ld in (*A, *B))
-    return Equation(g.b, g.Q, terms, "N", abs(cross(P - Q, w)), nu)
+    """The slotted link's group about Q: the guide's force on the block N = ν·w (⊥ the
+    guide, through the block) from ΣM_Q = 0: ν·(QP × w) = ΣM_Q(link b) + ΣM_P(block)."""
+    terms = tuple(_arm(ld.name, Q, ld.at, ld.force, ld.moment) for ld in B)
+    terms += tuple(_arm(ld.name, P, ld.at, ld.force, ld.moment) for ld in A)
+    return Equation(g.b, g.Q, terms, "N", cross(P - Q, w), nu)
 
 
 _LETTERS = "abcdefghijklmnopqrstuvwxyz"
