@@ -18,7 +18,7 @@ and every segment in mm at the plan's μF (N/mm, a standard value).
 >>> loads = Loads(g=9.8, masses={2: Mass(2, 1.575, 0.0, "S2")})
 >>> fa = analyse(sol, loads)
 >>> [g.group.label for g in fa.groups], round(fa.M_y, 4)
-(['group 2–3 (RRR)'], 1.3155)
+(['group 2–3 (RRR)'], 0.6961)
 """
 
 from __future__ import annotations

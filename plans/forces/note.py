@@ -158,6 +158,9 @@ def force_note(F: Forces, lang: str = "en", section: int = 1) -> str:
     def n(x, digits=4):
         return num(float(x), digits, lang).replace("-", "−")
 
+    def c(x):  # a value carried into a substitution: one digit more than a result
+        return n(x, 5)
+
     def item(text):
         if out and out[-1] and not out[-1].startswith("- "):
             out.append("")  # a paragraph, then its list
@@ -169,12 +172,9 @@ def force_note(F: Forces, lang: str = "en", section: int = 1) -> str:
         out.append(text)
 
     out = [f"## {section}. {t['title']}", ""]
-    sub = 0
 
     def heading(text):
-        nonlocal sub
-        sub += 1
-        out.extend(["", f"### {section}.{sub}. {text}", ""])
+        out.extend(["", f"### {text}", ""])
 
     heading(t["masses"])
     by_name = {ld.name: ld for ld in fa.loads}
@@ -184,7 +184,7 @@ def force_note(F: Forces, lang: str = "en", section: int = 1) -> str:
             continue
         item(t["given_m"].format(i=lid, m=n(ms.mass)))
         para(t["weight"].format(i=lid, S=ms.centre))
-        item(f"G{lid} = m{lid}·g = {n(ms.mass)}·{n(loads.g)} = {n(ms.mass * loads.g)} {N}")
+        item(f"G{lid} = m{lid}·g = {c(ms.mass)}·{c(loads.g)} = {n(ms.mass * loads.g)} {N}")
     heading(t["inertia"])
     mu_a = sol.acceleration.mu
     for lid in sorted(loads.masses):
@@ -198,20 +198,20 @@ def force_note(F: Forces, lang: str = "en", section: int = 1) -> str:
             a = abs(m.acceleration[S])
             para(t["phi_force"].format(i=lid, S=S))
             s = S.lower()
-            item(t["a_read"].format(S=S, s=s, mm=n(a / mu_a), mu=n(mu_a), a=n(a)))
-            item(f"Φ{lid} = m{lid}·a_{S} = {n(ms.mass)}·{n(a)} = {n(abs(ld.force))} {N}")
+            item(t["a_read"].format(S=S, s=s, mm=c(a / mu_a), mu=c(mu_a), a=n(a)))
+            item(f"Φ{lid} = m{lid}·a_{S} = {c(ms.mass)}·{c(a)} = {n(abs(ld.force))} {N}")
         ld = by_name.get(f"M_Φ{lid}")
         if ld is not None:
             eps = sol.epsilon[lid]
             para(t["phi_moment"].format(i=lid, sense=t["ccw" if ld.moment > 0 else "cw"]))
             unit = "N·m" if lang == "en" else "Н·м"
-            item(f"M_Φ{lid} = J_S{lid}·ε{lid} = {n(ms.J)}·{n(abs(eps))} = {n(abs(ld.moment))} {unit}")
+            item(f"M_Φ{lid} = J_S{lid}·ε{lid} = {c(ms.J)}·{c(abs(eps))} = {n(abs(ld.moment))} {unit}")
             ends = joints(mech, lid)
             if loads.couples == "pair" and ends is not None:
                 a, b = ends
                 length = abs(m.position[b] - m.position[a])
                 para(t["pair"].format(a=a, b=b))
-                item(f"P_Φ{lid} = M_Φ{lid} / l_{a}{b} = {n(abs(ld.moment))} / {n(length)} = "
+                item(f"P_Φ{lid} = M_Φ{lid} / l_{a}{b} = {c(abs(ld.moment))} / {c(length)} = "
                      f"{n(abs(ld.moment) / length)} {N}")
     if not loads.inertia_moments:
         para(t["no_moments"])
@@ -231,13 +231,13 @@ def force_note(F: Forces, lang: str = "en", section: int = 1) -> str:
         mo = float((complex(ld.at - O).conjugate() * ld.force).imag + ld.moment)
         if mo:
             size = abs(complex(ld.force))
-            what = f"{n(size)}·{n(abs(mo) / size, 3)}" if size else n(abs(mo))
+            what = f"{c(size)}·{c(abs(mo) / size)}" if size else c(abs(mo))
             parts.append(("− " if mo > 0 else "+ ") + what)
     expr = " ".join(parts).removeprefix("+ ") or "0"
     unit = "N·m" if lang == "en" else "Н·м"
     item(f"M_у = −ΣM_{d.pivot}(F) = {expr} = {n(fa.M_y)} {unit}")
     para(t["Fy"].format(t=d.tip, O=d.pivot))
-    item(f"F_у = M_у / l_{d.pivot}{d.tip} = {n(fa.M_y)} / {n(fa.crank_length)} = {n(fa.F_y)} {N}")
+    item(f"F_у = M_у / l_{d.pivot}{d.tip} = {c(fa.M_y)} / {c(fa.crank_length)} = {n(fa.F_y)} {N}")
     item(t["R01"].format(i=d.link, F=n(abs(fa.R01))))
     heading(t["lever"])
     lv = F.lever
@@ -245,12 +245,12 @@ def force_note(F: Forces, lang: str = "en", section: int = 1) -> str:
     parts = []
     for term in lv.terms:
         if term.force and round(term.arm, 3):
-            parts.append(("+ " if term.moment > 0 else "− ") + f"{n(abs(term.force))}·{n(term.arm, 3)}")
+            parts.append(("+ " if term.moment > 0 else "− ") + f"{c(abs(term.force))}·{c(term.arm)}")
         elif term.moment and not term.force:
-            parts.append(("+ " if term.moment > 0 else "− ") + n(abs(term.moment)))
+            parts.append(("+ " if term.moment > 0 else "− ") + c(abs(term.moment)))
     sense = 1.0 if d.omega > 0 else -1.0
     expr = " ".join(parts).removeprefix("+ ")
-    item(t["lever_eq"].format(expr=expr if sense > 0 else f"−({expr})", pb=n(lv.pb), F=n(lv.F_y)))
+    item(t["lever_eq"].format(expr=expr if sense > 0 else f"−({expr})", pb=c(lv.pb), F=n(lv.F_y)))
     item(t["discrepancy"].format(d=n(100 * F.discrepancy, 2)))
     heading(t["power"])
     _drive(out, t, F, lang, item, n)
@@ -272,7 +272,7 @@ def _resistance(out, t, ld, fa, loads, lang, item, n, N):
     rule = t[f.rule].format(p=p) if f.rule else t["angle"].format(a=n(math.degrees(f.angle)))
     if f.weight_of is not None:
         G = loads.masses[f.weight_of].mass * loads.g
-        item(t["times"].format(name=ld.name, k=n(f.times), j=f.weight_of, G=n(G), F=n(abs(ld.force)), p=p,
+        item(t["times"].format(name=ld.name, k=n(f.times, 5), j=f.weight_of, G=n(G, 5), F=n(abs(ld.force)), p=p,
                                rule=rule))
     else:
         item(t["fixed_force"].format(name=ld.name, F=n(abs(ld.force)), p=p, rule=rule))
@@ -291,9 +291,9 @@ def _group(out, t, g, lang, item, n, N, sol):
             if not term.moment:
                 continue
             sign = "+ " if term.moment > 0 else "− "
-            parts.append(sign + (f"{n(term.size)}·{n(term.arm, 3)}" if term.arm else n(abs(term.moment))))
+            parts.append(sign + (f"{n(term.size, 5)}·{n(term.arm, 5)}" if term.arm else n(abs(term.moment), 5)))
         known = " ".join(parts).removeprefix("+ ") or "0"
-        expr = f"({known}) / {n(eq.arm, 4)}"
+        expr = f"({known}) / {n(eq.arm, 5)}"
         name = eq.unknown if eq.unknown != "N" else next(r.name for r in g.reactions if r.pair == "prismatic")
         item(t["unknown"].format(R=name, expr=expr, v=n(eq.value)))
         del total
@@ -305,7 +305,7 @@ def _group(out, t, g, lang, item, n, N, sol):
     for v in known:
         # a load's size as its own line gave it, not as the difference of two plan points
         F = sizes.get(v.label, abs(plan.points[v.end].value - plan.points[v.start].value))
-        item(t["vec"].format(n=v.label, F=n(F), mu=n(plan.mu), mm=n(plan.segments[v.label])))
+        item(t["vec"].format(n=v.label, F=n(F, 5), mu=n(plan.mu), mm=n(plan.segments[v.label])))
     if len(closing) == 2:
         lines = [pt for pt in plan.points.values() if pt.source.kind == "intersection"]
         src = lines[0].source if lines else None
@@ -317,7 +317,7 @@ def _group(out, t, g, lang, item, n, N, sol):
         mm = plan.segments.get(r.name)
         if mm is None:
             continue
-        item(t["read"].format(R=r.name, mm=n(mm), mu=n(plan.mu), F=n(mm * plan.mu)))
+        item(t["read"].format(R=r.name, mm=n(mm, 5), mu=n(plan.mu), F=n(mm * plan.mu)))
 
 
 def _drive(out, t, F, lang, item, n):
@@ -335,10 +335,10 @@ def _drive(out, t, F, lang, item, n):
     dr, gb = F.drive, F.drive.gearbox
     V = abs(fa.solution.scalar.velocity[d.tip])
     if F.drive_note == "position":
-        item(t["P"].format(t=d.tip, F=n(abs(fa.F_y)), V=n(V), P=n(dr.power)))
+        item(t["P"].format(t=d.tip, F=n(abs(fa.F_y), 5), V=n(V, 5), P=n(dr.power)))
     else:
         item(t["P_mean"].format(i=d.link, P=n(dr.power)))
-    item(t["need"].format(P=n(dr.power), eta=n(dr.efficiency), need=n(dr.needed), type=dr.motor.type,
+    item(t["need"].format(P=n(dr.power, 5), eta=n(dr.efficiency), need=n(dr.needed), type=dr.motor.type,
                           kw=n(dr.motor.power_kw), rpm=n(dr.motor.rpm)))
     item(t["u"].format(rpm=n(dr.motor.rpm), n1=n(rpm_of(mech), 5), u=r2(gb.u)))
     dev = ("+" if gb.deviation > 0 else "−" if gb.deviation < 0 else "") + num(abs(gb.deviation), 2, lang)

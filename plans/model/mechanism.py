@@ -365,6 +365,13 @@ def _not_a_link(value: Any, what: str, known: str) -> str:
     return f"{quote(value, 20)} is not {what} ({known})"
 
 
+#: the top-level keys of a mechanism file
+TOP_KEYS = {"name", "frame", "links", "sliders", "driver", "assembly", "scales", "trace", "output", "title",
+            "loads", "drive"}
+#: the keys of [driver]: found in [drive], the crank was meant
+DRIVER_KEYS = {"link", "angle_deg", "omega", "rpm", "sense", "from", "measured"}
+
+
 def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = None) -> Mechanism:
     """Build a :class:`Mechanism` from parsed TOML, reporting every problem at once.
 
@@ -375,12 +382,7 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
         raise InputError(source, "the file must be a TOML table")
     if why := other_kind(data, source, "mechanism"):
         raise InputError(source, why)
-    check_keys(
-        data,
-        {"name", "frame", "links", "sliders", "driver", "assembly", "scales", "trace",
-         "output", "title", "loads", "drive"},
-        "", pr,
-    )
+    check_keys(data, TOP_KEYS, "", pr)
     name, names = _title_names(data.get("name"), pr, Path(source).stem[:MAX_TEXT] or "mechanism")
 
     # frame -------------------------------------------------------------------------
@@ -614,8 +616,12 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
     if "loads" in data:
         loads = read_loads(data["loads"], {lid: set(link.points) for lid, link in links.items()}, pr,
                            sliding=frozenset(s.link for s in sliders))
-    if "drive" in data:
-        drive = read_drive(data["drive"], pr)
+    raw_drive = data.get("drive")
+    if isinstance(raw_drive, dict) and "driver" not in data and raw_drive.keys() & DRIVER_KEYS:
+        # [drive] for [driver]: the crank's keys in the gearbox's table
+        pr.add("drive", f'unknown key — did you mean "driver"? known: {", ".join(sorted(TOP_KEYS))}')
+    elif "drive" in data:
+        drive = read_drive(raw_drive, pr)
 
     pr.raise_if_any()
     assert driver is not None

@@ -153,10 +153,12 @@ def read_table(path: str | Path | None = None) -> Table:
                      {n: p.items for n, p in bad.items() if p}, loose.items,
                      pattern if isinstance(pattern, str) else DESIGNATION, rules)
     pattern = data.get("designation", DESIGNATION)
-    rules = _rules(data.get("loads"), pr) if "loads" in data else None
+    rules = None
     if why := other_kind(data, source, "table"):
         pr.add("", why)
         return done()
+    if "loads" in data:
+        rules = _rules(data["loads"], pr)
     for key in data:
         if key not in TABLE_KEYS:
             pr.add(key_text(key), "unknown key — a table has [[variant]] rows (and title, name, "
