@@ -62,14 +62,20 @@ def sweep(solver, loads: Loads, phi, stroke: Stroke | None = None) -> ForceSweep
         for ld in external:
             on[ld.link].append(ld)
         steps, M_y, R01 = walk(mech, solver.structure.groups, motion, on)
+    shape = phi.shape
+    valid = np.broadcast_to(np.asarray(motion.valid, dtype=bool), shape)
+
+    def kept(values, dtype):
+        """The values where the mechanism closes, NaN where it does not: there they mean
+        nothing (a maximum or a mean over the sweep must not take them)."""
+        return np.where(valid, np.broadcast_to(values, shape), np.nan).astype(dtype)
+
     reactions = {}
     for st in steps:
         for back in st.backs:
-            reactions[_name(back.link, back.other)] = -back.force
+            reactions[_name(back.link, back.other)] = kept(-back.force, complex)
     power = None
     for ld in external:
         if ld.kind == "resistance":
-            power = (np.conj(motion.velocity[ld.point]) * ld.force).real
-    shape = phi.shape
-    return ForceSweep(phi, np.broadcast_to(M_y, shape).astype(float), np.broadcast_to(R01, shape),
-                      reactions, power, mech.driver.omega)
+            power = kept((np.conj(motion.velocity[ld.point]) * ld.force).real, float)
+    return ForceSweep(phi, kept(M_y, float), kept(R01, complex), reactions, power, mech.driver.omega)
