@@ -318,3 +318,79 @@ def test_bad_loads_are_located(raw, where, says):
     pr = Problems("m.toml")
     read_loads(raw, POINTS, pr)
     assert any(w == where and says in what for w, what in pr.items), pr.items
+
+
+# --- the command -----------------------------------------------------------------------------
+
+
+def test_plans_forces_text_and_json_for_the_workbooks_four_bar(capsys):
+    import json
+
+    from support import run
+
+    code, out, err = run(capsys, "forces", "samples/fourbar.toml")
+    assert code == 0, err
+    assert "M_у = 120.3 N·m ccw; F_у = M_у / l_AB = 1925 N at B ⊥ AB" in out
+    assert "motor 4А80В2У3, 2.2 kW, 2850 rpm" in out
+    assert "z1 = z3 = 20 + Ш = 22; z2 = u12·z1 = 105; z4 = u34·z3 = 88" in out
+    assert "n1 = 2850 / 19.08 = 149.37 rpm (+0.1 % from 149.2 rpm)" in out
+    code, out, err = run(capsys, "forces", "samples/fourbar.toml", "--json")
+    assert code == 0, err
+    data = json.loads(out)
+    assert data["crank"]["F_y"] == pytest.approx(1925.0317741823, rel=1e-9)
+    b = data["balancing"]
+    for route in ("lever", "virtual_power", "global"):
+        assert b[route] == pytest.approx(b["groups"], rel=1e-12)
+    g = data["drive"]["gearbox"]
+    assert (g["z2"], g["z4"], g["n1_actual"]) == (105, 88, 149.37)
+    R12 = data["groups"][0]["reactions"]["R12"]
+    assert R12["magnitude"] == pytest.approx(abs(complex(*R12["force"])))
+    assert data["groups"][0]["segments"]["R12"] * data["groups"][0]["mu_F"] == pytest.approx(R12["magnitude"])
+    assert "cycle" not in data  # the crank cannot turn fully: no mean
+
+
+def test_plans_forces_in_russian_writes_decimal_commas(capsys):
+    from support import run
+
+    code, out, _ = run(capsys, "forces", "samples/press.toml", "--lang", "ru")
+    assert code == 0
+    assert "M_у = 226,9 Н·м против часовой стрелки" in out
+    assert "Цикл: средний M_у = 136 Н·м" in out
+    import re
+
+    assert not re.search(r"\d\.\d", out.replace("4А", ""))
+
+
+@pytest.mark.parametrize("n", range(10))
+def test_every_variant_is_the_whole_of_task_1(capsys, n):
+    import json
+
+    from support import run
+
+    code, out, err = run(capsys, "forces", "--variant", str(n), "--json")
+    assert code == 0, err
+    data = json.loads(out)
+    b = data["balancing"]
+    assert b["lever"] == pytest.approx(b["groups"], rel=1e-12)
+    assert b["virtual_power"] == pytest.approx(b["groups"], rel=1e-12)
+    names = {ld["name"] for ld in data["loads"]}
+    assert {"G1", "G2", "G3", "F_пс"} <= names and not any(n.startswith("M_Φ") for n in names)
+    F = next(ld for ld in data["loads"] if ld["name"] == "F_пс")
+    heavy = 3 if n % 2 == 0 else 2
+    G = next(ld for ld in data["loads"] if ld["name"] == f"G{heavy}")
+    assert F["magnitude"] == pytest.approx(100 * G["magnitude"])
+    assert data["g"] == 9.8
+    assert data["drive"]["gearbox"]["z1"] == 20 + n
+
+
+def test_a_mechanism_without_loads_is_told_what_to_add(capsys, tmp_path):
+    from support import run
+
+    path = tmp_path / "rocker.toml"
+    path.write_text(SCENES["crank_rocker"].toml, "utf-8")
+    code, out, err = run(capsys, "forces", path)
+    assert (code, out) == (2, "")
+    assert err.count("\n") == 1 and "loads: missing: the force analysis needs the links' masses" in err
+    # the kinematic commands do not need them
+    code, out, _ = run(capsys, "solve", path)
+    assert code == 0 and "Force" not in out
