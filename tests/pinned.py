@@ -54,6 +54,12 @@ def _jobs(scenes: list[str]) -> list[tuple[str, list[str], str | None]]:
             (f"{name}.report.ru.md", ["report", *src, "--lang", "ru"], None),
         ]
         jobs.append((f"{name}.sheet.svg", ["sheet", *src, "-o", "out.svg"], "out.svg"))
+        if not name.startswith("scene-"):  # the samples and the variants carry loads
+            jobs += [
+                (f"{name}.forces.txt", ["forces", *src], None),
+                (f"{name}.forces.ru.txt", ["forces", *src, "--lang", "ru"], None),
+                (f"{name}.forces.json", ["forces", *src, "--json"], None),
+            ]
     jobs += [
         ("variant3.sheet.A2.ru.plans.svg",
          ["sheet", "--variant", "3", "--format", "A2", "--lang", "ru", "--plans", "2,8",

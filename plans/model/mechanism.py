@@ -25,6 +25,7 @@ from typing import Any
 
 from plans.errors import InputError
 from plans.geometry import cross
+from plans.model.loads import Drive, Loads, read_drive, read_loads
 from plans.model.fileformat import (
     MAX_ABS,
     MAX_TEXT,
@@ -198,6 +199,10 @@ class Mechanism:
     #: the crank angle (rad from +x) the assembly hints are read at: the file's own, kept
     #: by :meth:`at_file_angle`; None: the driver's
     hints_at: float | None = None
+    #: the loads for the force analysis (``[loads]``), None where the file gives none
+    loads: Loads | None = None
+    #: the drive's data (``[drive]``)
+    drive: Drive | None = None
 
     def name_in(self, lang: str) -> str:
         """The name for a note or sheet in ``lang``: the file's name in that language if
@@ -360,6 +365,13 @@ def _not_a_link(value: Any, what: str, known: str) -> str:
     return f"{quote(value, 20)} is not {what} ({known})"
 
 
+#: the top-level keys of a mechanism file
+TOP_KEYS = {"name", "frame", "links", "sliders", "driver", "assembly", "scales", "trace", "output", "title",
+            "loads", "drive"}
+#: the keys of [driver]: found in [drive], the crank was meant
+DRIVER_KEYS = {"link", "angle_deg", "omega", "rpm", "sense", "from", "measured"}
+
+
 def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = None) -> Mechanism:
     """Build a :class:`Mechanism` from parsed TOML, reporting every problem at once.
 
@@ -370,12 +382,7 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
         raise InputError(source, "the file must be a TOML table")
     if why := other_kind(data, source, "mechanism"):
         raise InputError(source, why)
-    check_keys(
-        data,
-        {"name", "frame", "links", "sliders", "driver", "assembly", "scales", "trace",
-         "output", "title"},
-        "", pr,
-    )
+    check_keys(data, TOP_KEYS, "", pr)
     name, names = _title_names(data.get("name"), pr, Path(source).stem[:MAX_TEXT] or "mechanism")
 
     # frame -------------------------------------------------------------------------
@@ -605,6 +612,16 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
             pr.add(f"title.{key_text(k)}", f"must be a text, got {quote(v)}")
     title = {str(k)[:MAX_TEXT]: str(v)[:500] for k, v in title.items()
              if isinstance(v, str | int) and not isinstance(v, bool)}
+    loads = drive = None
+    if "loads" in data:
+        loads = read_loads(data["loads"], {lid: set(link.points) for lid, link in links.items()}, pr,
+                           sliding=frozenset(s.link for s in sliders))
+    raw_drive = data.get("drive")
+    if isinstance(raw_drive, dict) and "driver" not in data and raw_drive.keys() & DRIVER_KEYS:
+        # [drive] for [driver]: the crank's keys in the gearbox's table
+        pr.add("drive", f'unknown key — did you mean "driver"? known: {", ".join(sorted(TOP_KEYS))}')
+    elif "drive" in data:
+        drive = read_drive(raw_drive, pr)
 
     pr.raise_if_any()
     assert driver is not None
@@ -621,6 +638,8 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
         title=title,
         source=source,
         names=names,
+        loads=loads,
+        drive=drive,
     )
     if output is not None:  # a point with no stroke was silently replaced by another
         from plans.cycle.analysis import no_output

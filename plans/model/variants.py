@@ -48,7 +48,9 @@ OPTIONAL = ("omega", "sense", "e")
 KINDS = ("crank-slider", "four-bar")
 MAX_ROWS = 10_000
 #: top-level keys a table may have besides its rows
-TABLE_KEYS = {"variant", "title", "name", "source", "note", "designation"}
+TABLE_KEYS = {"variant", "title", "name", "source", "note", "designation", "loads"}
+#: the keys of a table's ``[loads]``: the rules every row takes for its force analysis
+LOAD_RULES = {"mass_per_metre", "g", "resistance", "inertia", "efficiency"}
 #: the designation of a variant's sheet where its table gives none
 DESIGNATION = "ПМ.01.{n:02d}"
 ROW_KEYS = {"n", "kind", *COLUMNS, *OPTIONAL}
@@ -75,6 +77,7 @@ class Table(NamedTuple):
     rows_problems: dict[int, list]  # the problems (key, message) of a numbered row, by number
     loose: list  # the problems of rows without a number: no variant's own, so none stops
     designation: str = DESIGNATION  # the pattern of a variant's designation, ``{n}`` its number
+    rules: dict | None = None  # the table's [loads] rules, read (:func:`_rules`)
 
     @property
     def numbers(self) -> list[int]:
@@ -109,7 +112,7 @@ class Table(NamedTuple):
         if n not in self.rows:
             raise InputError(self.source, [*self.located(n, every=True).lines(),
                                            f"variant {n} is not in the table ({self.has()})"])
-        mech = from_dict(variant_dict(self.rows[n], self.designation),
+        mech = from_dict(variant_dict(self.rows[n], self.designation, self.rules),
                          f"{self.source}, variant {n}")
         table_ru = BUILTIN_RU if self.path is None else self.source
         return replace(mech, sources={"ru": f"{table_ru}, вариант {n}"})
@@ -148,16 +151,19 @@ def read_table(path: str | Path | None = None) -> Table:
     def done() -> Table:
         return Table(source, text, None if path is None else str(path), pr, table,
                      {n: p.items for n, p in bad.items() if p}, loose.items,
-                     pattern if isinstance(pattern, str) else DESIGNATION)
+                     pattern if isinstance(pattern, str) else DESIGNATION, rules)
     pattern = data.get("designation", DESIGNATION)
+    rules = None
     if why := other_kind(data, source, "table"):
         pr.add("", why)
         return done()
+    if "loads" in data:
+        rules = _rules(data["loads"], pr)
     for key in data:
         if key not in TABLE_KEYS:
             pr.add(key_text(key), "unknown key — a table has [[variant]] rows (and title, name, "
-                                  "source, note, designation)")
-        elif key != "variant" and not isinstance(data[key], str):
+                                  "source, note, designation, loads)")
+        elif key not in ("variant", "loads") and not isinstance(data[key], str):
             pr.add(key, f"must be text in double quotes, got {quote(data[key])}")
         elif key == "designation" and (why := _bad_pattern(data[key])):
             pr.add(key, f"{why}, got {quote(data[key])}")
@@ -236,6 +242,57 @@ def read_table(path: str | Path | None = None) -> Table:
     return done()
 
 
+def _rules(raw, pr: Problems) -> dict | None:
+    """A table's ``[loads]``: the rules of seed 001's task 1 that make each row's loads
+    (:func:`variant_dict`): ``mass_per_metre`` (kg per metre of link), ``g``,
+    ``resistance`` (the useful resistance as so many times a weight), ``inertia``
+    ("forces" or "forces and moments") and the gearbox's ``efficiency``."""
+    if not isinstance(raw, dict):
+        pr.add("loads", f"must be a table ([loads] mass_per_metre = 5, …), got {quote(raw)}")
+        return None
+    out: dict = {}
+    for key in raw:
+        if key not in LOAD_RULES:
+            pr.add(f"loads.{key_text(key)}", f"unknown key — {close_match(key, LOAD_RULES)}known: "
+                   f"{', '.join(sorted(LOAD_RULES))}")
+    for key, unit, hi in (("mass_per_metre", "kg/m", 1e6), ("g", "m/s²", 1000.0), ("resistance", "", 1e6),
+                          ("efficiency", "", 1.0)):
+        if key in raw:
+            v = read_number(raw[key], f"loads.{key}", pr, positive=True, unit=unit, high=hi)
+            if v is not None:
+                out[key] = v
+    if "inertia" in raw:
+        if raw["inertia"] in ("forces", "forces and moments"):
+            out["inertia"] = raw["inertia"]
+        else:
+            pr.add("loads.inertia", f'must be "forces" or "forces and moments", got {quote(raw["inertia"])}')
+    return out
+
+
+def _row_loads(row: dict, rules: dict) -> tuple[dict, dict]:
+    """The ``[loads]`` and ``[drive]`` of one row by the table's rules (seed 001, steps 4–9):
+    each link's mass at so many kg per metre of its length at its middle (the four-bar's
+    coupler BE counts BC + CE, CE = BC/2), a crank-slider's slider as heavy as its rod,
+    the useful resistance so many times the slider's weight on the slider (crank-slider)
+    or the coupler's at E (four-bar), against the point's velocity; Ш is the variant's
+    last digit."""
+    q = rules.get("mass_per_metre", 5.0)
+    ab, bc = row["AB"], row["BC"]
+    loads: dict = {"g": rules.get("g", 9.81), "inertia": rules.get("inertia", "forces and moments")}
+    if row["kind"] == "four-bar":
+        masses = {"1": q * ab, "2": q * 1.5 * bc, "3": q * row["CD"]}
+        heavy, point = 2, "E"
+    else:
+        masses = {"1": q * ab, "2": q * bc, "3": q * bc}
+        heavy, point = 3, "C"
+    loads["links"] = {k: {"mass": m, "centre": f"S{k}"} for k, m in masses.items()}
+    if "resistance" in rules:
+        loads["forces"] = [{"name": "F_пс", "point": point, "link": heavy, "weight_of": heavy,
+                            "times": rules["resistance"], "direction": "against velocity"}]
+    drive = {"efficiency": rules.get("efficiency", 0.9), "digit": row["n"] % 10}
+    return loads, drive
+
+
 def _bad_pattern(pattern: str) -> str | None:
     """What is wrong with a table's designation pattern, None if nothing: it must name the
     variant ``{n}`` (else every sheet would carry one designation) and nothing else."""
@@ -254,9 +311,16 @@ def _bad_pattern(pattern: str) -> str | None:
     return None
 
 
-def variant_dict(row: dict, designation: str = DESIGNATION) -> dict:
+def variant_dict(row: dict, designation: str = DESIGNATION, rules: dict | None = None) -> dict:
     """The mechanism file (as a parsed dict) of one table row; ``designation``, its
-    table's pattern (``{n}`` the variant)."""
+    table's pattern (``{n}`` the variant); ``rules``: its ``[loads]`` (:func:`_rules`)."""
+    out = _variant_dict(row, designation)
+    if rules is not None:
+        out["loads"], out["drive"] = _row_loads(row, rules)
+    return out
+
+
+def _variant_dict(row: dict, designation: str) -> dict:
     ab, bc, phi = row["AB"], row["BC"], row["phi_deg"]
     n = row["n"]
     title = {"designation": designation.format(n=n)}

@@ -1,0 +1,355 @@
+"""The explanatory note's force section, as seeds 000 and 001 write it: masses and weights,
+inertia forces and moments, the useful resistance, each group's equilibrium equations with
+their arms, its force plan's scale and the reactions read off it, the driving link and the
+balancing moment, Zhukovsky's lever with its arms, the power, the motor and the gearbox.
+Every step: formula → substitution → result with its unit, numbers in the language's own
+way (a decimal comma in Russian). Formatting only: every value comes from
+:class:`plans.forces.summary.Forces`.
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+
+from plans.fmt import num
+from plans.forces.lever import joints
+from plans.forces.summary import Forces, rpm_of
+
+T = {
+    "en": {
+        "title": "Force analysis",
+        "masses": "Masses and weights of the links",
+        "weight": "Weight of link {i} (through its centre of mass {S}, downwards):",
+        "given_m": "m{i} = {m} kg (given)",
+        "inertia": "Inertia loads of the links (from the acceleration plan)",
+        "phi_force": "Inertia force of link {i}, through {S}, against a_{S}:",
+        "a_read": "a_{S} = π{s}·μa = {mm}·{mu} = {a} m/s²",
+        "phi_moment": "Inertia moment of link {i}, against ε{i} ({sense}):",
+        "pair": "Replaced by a couple of two forces ⊥ {a}{b} at {a} and {b}:",
+        "zero_phi": "The centre of mass of link {i} is on its fixed pivot {S}: its inertia force is zero.",
+        "no_moments": "As the task asks, only the inertia forces are taken (no inertia moments).",
+        "resistance": "Useful resistance",
+        "graph": "From the graph P(S) at s = {s} m from the start of the working stroke (H = {H} m, {stroke}):",
+        "times": "{name} = {k}·G{j} = {k}·{G} = {F} N, at {p}, {rule}",
+        "fixed_force": "{name} = {F} N at {p}, {rule}",
+        "against velocity": "against V_{p}", "along velocity": "along V_{p}",
+        "along guide": "along the guide", "against guide": "against the guide", "angle": "at {a}° from +x",
+        "working": "working stroke", "idle": "idle stroke",
+        "groups": "Kinetostatics of the groups (the last attached first)",
+        "group": "Group of links {a} and {b} ({kind})",
+        "moments_of": "Moments about {X} of link {i} (arms measured on the drawing, in m):",
+        "unknown": "{R} = {expr} = {v} N",
+        "plan_scale": "Force plan at μF = {mu} N/mm; the vectors of the known forces:",
+        "vec": "[{n}] = {n}/μF = {F}/{mu} = {mm} mm",
+        "closes": "The polygon {eq} closes with lines {l0} and {l1}; read off the plan:",
+        "closes1": "The polygon closes with the vector {R}; read off the plan:",
+        "read": "{R} = [{R}]·μF = {mm}·{mu} = {F} N",
+        "inner": "The inner reaction from the polygon of link {a}: {R} = [{R}]·μF = {mm}·{mu} = {F} N",
+        "rpr": "The whole group about {Q}: the guide's force on the block ⊥ the guide, from ΣM_{Q} = 0:",
+        "crank": "Driving link {i}",
+        "My": "Balancing moment from ΣM_{O}(link {i}) = 0:",
+        "Fy": "Balancing force at {t} ⊥ {O}{t}:",
+        "R01": "Reaction of the frame: R0{i} = −(ΣF on link {i}) = {F} N",
+        "lever": "Zhukovsky's lever",
+        "lever_intro": "The velocity plan turned by 90°, every load applied at the image of its point; "
+                       "the moments about the pole p (arms h in mm of the plan, pb = {pb} mm):",
+        "lever_eq": "F_у = (Σ ±F·h) / pb = ({expr}) / {pb} = {F} N",
+        "discrepancy": "Discrepancy from the force plans: δ = |F_у(lever) − F_у(plans)| / F_у(plans) = {d} %",
+        "power": "Power and drive",
+        "P": "P = F_у·V_{t} = {F}·{V} = {P} W",
+        "P_mean": "The cycle's mean power (the crank takes no power at this position): P = M_у,mean·ω{i} = {P} W",
+        "need": "P_motor ≥ P/η = {P}/{eta} = {need} W: motor {type}, {kw} kW, n = {rpm} rpm",
+        "u": "u = n_motor/n1 = {rpm}/{n1} = {u}",
+        "stages2": "u > 6.3: a two-stage gearbox, u12 = 1.2·u34: u34 = √(u/1.2) = √({u}/1.2) = {u34}, "
+                   "u12 = 1.2·{u34} = {u12}",
+        "stages1": "u ≤ 6.3: a one-stage gearbox",
+        "teeth2": "z1 = z3 = 20 + Ш = {z1}; z2 = u12·z1 = {u12}·{z1} = {z2r} ≈ {z2}; "
+                  "z4 = u34·z3 = {u34}·{z1} = {z4r} ≈ {z4}",
+        "teeth1": "z1 = 20 + Ш = {z1}; z2 = u·z1 = {u}·{z1} = {z2r} ≈ {z2}",
+        "actual2": "u = (z2/z1)·(z4/z3) = {u12a}·{u34a} = {ua}; n1 = {rpm}/{ua} = {n1a} rpm; "
+                   "Δn1 = ({n1a} − {n1})/{n1}·100 % = {dev} %",
+        "actual1": "u = z2/z1 = {ua}; n1 = {rpm}/{ua} = {n1a} rpm; Δn1 = ({n1a} − {n1})/{n1}·100 % = {dev} %",
+        "nodrive": "No drive is chosen: {why}.",
+        "ccw": "counter-clockwise", "cw": "clockwise",
+    },
+    "ru": {
+        "title": "Силовой анализ",
+        "masses": "Массы и силы тяжести звеньев",
+        "weight": "Сила тяжести звена {i} (через центр масс {S}, вниз):",
+        "given_m": "m{i} = {m} кг (задано)",
+        "inertia": "Силы и моменты сил инерции звеньев (по плану ускорений)",
+        "phi_force": "Главный вектор сил инерции звена {i}, через {S}, противоположно a_{S}:",
+        "a_read": "a_{S} = π{s}·μa = {mm}·{mu} = {a} м/с²",
+        "phi_moment": "Главный момент сил инерции звена {i}, противоположно ε{i} ({sense}):",
+        "pair": "Заменяем парой сил, приложенных в точках {a} и {b} ⊥ {a}{b}:",
+        "zero_phi": "Центр масс звена {i} совпадает с неподвижной точкой {S}: главный вектор сил инерции равен нулю.",
+        "no_moments": "По условию учитываются только силы инерции (без моментов сил инерции).",
+        "resistance": "Сила полезного сопротивления",
+        "graph": "По графику P(S) при s = {s} м от начала рабочего хода (H = {H} м, {stroke}):",
+        "times": "{name} = {k}·G{j} = {k}·{G} = {F} Н, в точке {p}, {rule}",
+        "fixed_force": "{name} = {F} Н в точке {p}, {rule}",
+        "against velocity": "против V_{p}", "along velocity": "по V_{p}",
+        "along guide": "вдоль направляющей", "against guide": "против направляющей", "angle": "под углом {a}° к +x",
+        "working": "рабочий ход", "idle": "холостой ход",
+        "groups": "Кинетостатика групп Ассура (начиная с последней присоединённой)",
+        "group": "Группа звеньев {a} и {b} ({kind})",
+        "moments_of": "Моменты относительно точки {X} для звена {i} (плечи — по чертежу, в м):",
+        "unknown": "{R} = {expr} = {v} Н",
+        "plan_scale": "План сил в масштабе μF = {mu} Н/мм; векторы известных сил:",
+        "vec": "[{n}] = {n}/μF = {F}/{mu} = {mm} мм",
+        "closes": "Многоугольник {eq} замыкается прямыми {l0} и {l1}; из плана сил:",
+        "closes1": "Многоугольник замыкается вектором {R}; из плана сил:",
+        "read": "{R} = [{R}]·μF = {mm}·{mu} = {F} Н",
+        "inner": "Внутренняя реакция — из многоугольника сил звена {a}: {R} = [{R}]·μF = {mm}·{mu} = {F} Н",
+        "rpr": "Вся группа относительно точки {Q}: сила направляющей на камень ⊥ направляющей, из ΣM_{Q} = 0:",
+        "crank": "Ведущее звено {i}",
+        "My": "Уравновешивающий момент из ΣM_{O}(звено {i}) = 0:",
+        "Fy": "Уравновешивающая сила в точке {t} ⊥ {O}{t}:",
+        "R01": "Реакция стойки: R0{i} = −(ΣF на звено {i}) = {F} Н",
+        "lever": "Рычаг Н. Е. Жуковского",
+        "lever_intro": "План скоростей, повёрнутый на 90°; силы приложены в одноимённых точках; моменты "
+                       "относительно полюса p (плечи h в мм плана, pb = {pb} мм):",
+        "lever_eq": "F_у = (Σ ±F·h) / pb = ({expr}) / {pb} = {F} Н",
+        "discrepancy": "Расхождение с планами сил: δ = |F_у(рычаг) − F_у(планы)| / F_у(планы) = {d} %",
+        "power": "Мощность и привод",
+        "P": "P = F_у·V_{t} = {F}·{V} = {P} Вт",
+        "P_mean": "Средняя мощность за цикл (в этом положении кривошип мощности не потребляет): "
+                  "P = M_у,ср·ω{i} = {P} Вт",
+        "need": "P_дв ≥ P/η = {P}/{eta} = {need} Вт: электродвигатель {type}, {kw} кВт, n = {rpm} об/мин",
+        "u": "u = n_дв/n1 = {rpm}/{n1} = {u}",
+        "stages2": "u > 6,3: двухступенчатый редуктор, u12 = 1,2·u34: u34 = √(u/1,2) = √({u}/1,2) = {u34}, "
+                   "u12 = 1,2·{u34} = {u12}",
+        "stages1": "u ≤ 6,3: одноступенчатый редуктор",
+        "teeth2": "z1 = z3 = 20 + Ш = {z1}; z2 = u12·z1 = {u12}·{z1} = {z2r} ≈ {z2}; "
+                  "z4 = u34·z3 = {u34}·{z1} = {z4r} ≈ {z4}",
+        "teeth1": "z1 = 20 + Ш = {z1}; z2 = u·z1 = {u}·{z1} = {z2r} ≈ {z2}",
+        "actual2": "u = (z2/z1)·(z4/z3) = {u12a}·{u34a} = {ua}; n1 = {rpm}/{ua} = {n1a} об/мин; "
+                   "Δn1 = ({n1a} − {n1})/{n1}·100 % = {dev} %",
+        "actual1": "u = z2/z1 = {ua}; n1 = {rpm}/{ua} = {n1a} об/мин; Δn1 = ({n1a} − {n1})/{n1}·100 % = {dev} %",
+        "nodrive": "Привод не подобран: {why}.",
+        "ccw": "против часовой стрелки", "cw": "по часовой стрелке",
+    },
+}
+
+
+def _para(out: list[str], text: str) -> None:
+    """A paragraph: a blank line before it, as before each list."""
+    if out and out[-1]:
+        out.append("")
+    out.append(text)
+
+
+def _deg(z) -> float:
+    return math.degrees(cmath.phase(complex(z))) % 360.0
+
+
+def force_note(F: Forces, lang: str = "en", section: int = 1) -> str:
+    """The force section of the note, numbered from ``section`` (Markdown)."""
+    t = T.get(lang, T["en"])
+    fa = F.analysis
+    sol = fa.solution
+    mech = sol.mechanism
+    loads = mech.loads
+    d = mech.driver
+    m = sol.scalar
+    N = "N" if lang == "en" else "Н"
+
+    def n(x, digits=4):
+        return num(float(x), digits, lang).replace("-", "−")
+
+    def c(x):  # a value carried into a substitution: one digit more than a result
+        return n(x, 5)
+
+    def item(text):
+        if out and out[-1] and not out[-1].startswith("- "):
+            out.append("")  # a paragraph, then its list
+        out.append(f"- `{text}`")
+
+    def para(text):
+        if out and out[-1]:
+            out.append("")
+        out.append(text)
+
+    out = [f"## {section}. {t['title']}", ""]
+
+    def heading(text):
+        out.extend(["", f"### {text}", ""])
+
+    heading(t["masses"])
+    by_name = {ld.name: ld for ld in fa.loads}
+    for lid in sorted(loads.masses):
+        ms = loads.masses[lid]
+        if not ms.mass:
+            continue
+        item(t["given_m"].format(i=lid, m=n(ms.mass)))
+        para(t["weight"].format(i=lid, S=ms.centre))
+        item(f"G{lid} = m{lid}·g = {c(ms.mass)}·{c(loads.g)} = {n(ms.mass * loads.g)} {N}")
+    heading(t["inertia"])
+    mu_a = sol.acceleration.mu
+    for lid in sorted(loads.masses):
+        ms = loads.masses[lid]
+        S = ms.centre
+        if ms.mass:
+            ld = by_name.get(f"Φ{lid}")
+            if ld is None:
+                para(t["zero_phi"].format(i=lid, S=S))
+                continue
+            a = abs(m.acceleration[S])
+            para(t["phi_force"].format(i=lid, S=S))
+            s = S.lower()
+            item(t["a_read"].format(S=S, s=s, mm=c(a / mu_a), mu=c(mu_a), a=n(a)))
+            item(f"Φ{lid} = m{lid}·a_{S} = {c(ms.mass)}·{c(a)} = {n(abs(ld.force))} {N}")
+        ld = by_name.get(f"M_Φ{lid}")
+        if ld is not None:
+            eps = sol.epsilon[lid]
+            para(t["phi_moment"].format(i=lid, sense=t["ccw" if ld.moment > 0 else "cw"]))
+            unit = "N·m" if lang == "en" else "Н·м"
+            item(f"M_Φ{lid} = J_S{lid}·ε{lid} = {c(ms.J)}·{c(abs(eps))} = {n(abs(ld.moment))} {unit}")
+            ends = joints(mech, lid)
+            if loads.couples == "pair" and ends is not None:
+                a, b = ends
+                length = abs(m.position[b] - m.position[a])
+                para(t["pair"].format(a=a, b=b))
+                item(f"P_Φ{lid} = M_Φ{lid} / l_{a}{b} = {c(abs(ld.moment))} / {c(length)} = "
+                     f"{n(abs(ld.moment) / length)} {N}")
+    if not loads.inertia_moments:
+        para(t["no_moments"])
+    forces = [ld for ld in fa.loads if ld.kind in ("force", "resistance")]
+    if forces:
+        heading(t["resistance"])
+        for ld in forces:
+            _resistance(out, t, ld, fa, loads, lang, item, n, N)
+    heading(t["groups"])
+    for g in fa.groups:
+        _group(out, t, g, lang, item, n, N, sol)
+    heading(t["crank"].format(i=d.link))
+    O = m.position[d.pivot]
+    para(t["My"].format(O=d.pivot, i=d.link))
+    parts = []
+    for ld in fa.crank_loads:
+        mo = float((complex(ld.at - O).conjugate() * ld.force).imag + ld.moment)
+        if mo:
+            size = abs(complex(ld.force))
+            what = f"{c(size)}·{c(abs(mo) / size)}" if size else c(abs(mo))
+            parts.append(("− " if mo > 0 else "+ ") + what)
+    expr = " ".join(parts).removeprefix("+ ") or "0"
+    unit = "N·m" if lang == "en" else "Н·м"
+    item(f"M_у = −ΣM_{d.pivot}(F) = {expr} = {n(fa.M_y)} {unit}")
+    para(t["Fy"].format(t=d.tip, O=d.pivot))
+    item(f"F_у = M_у / l_{d.pivot}{d.tip} = {c(fa.M_y)} / {c(fa.crank_length)} = {n(fa.F_y)} {N}")
+    item(t["R01"].format(i=d.link, F=n(abs(fa.R01))))
+    heading(t["lever"])
+    lv = F.lever
+    para(t["lever_intro"].format(pb=n(lv.pb)))
+    parts = []
+    for term in lv.terms:
+        if term.force and round(term.arm, 3):
+            parts.append(("+ " if term.moment > 0 else "− ") + f"{c(abs(term.force))}·{c(term.arm)}")
+        elif term.moment and not term.force:
+            parts.append(("+ " if term.moment > 0 else "− ") + c(abs(term.moment)))
+    sense = 1.0 if d.omega > 0 else -1.0
+    expr = " ".join(parts).removeprefix("+ ")
+    item(t["lever_eq"].format(expr=expr if sense > 0 else f"−({expr})", pb=c(lv.pb), F=n(lv.F_y)))
+    item(t["discrepancy"].format(d=n(100 * F.discrepancy, 2)))
+    heading(t["power"])
+    _drive(out, t, F, lang, item, n)
+    return "\n".join(out).replace("\n\n\n", "\n\n") + "\n"
+
+
+def _resistance(out, t, ld, fa, loads, lang, item, n, N):
+    sol = fa.solution
+    p = ld.point
+    if ld.kind == "resistance" and fa.stroke is not None:
+        st = fa.stroke
+        s = abs(((sol.positions[st.point] - st.origin) * st.direction.conjugate()).real - st.start)
+        _para(out, t["graph"].format(s=n(s), H=n(st.H), stroke=t["working" if st.working(sol.phi) else "idle"]))
+        item(f"{ld.name} = {n(abs(ld.force))} {N}")
+        return
+    f = next((x for x in loads.forces if x.name == ld.name), None)
+    if f is None:
+        return
+    rule = t[f.rule].format(p=p) if f.rule else t["angle"].format(a=n(math.degrees(f.angle)))
+    if f.weight_of is not None:
+        G = loads.masses[f.weight_of].mass * loads.g
+        item(t["times"].format(name=ld.name, k=n(f.times, 5), j=f.weight_of, G=n(G, 5), F=n(abs(ld.force)), p=p,
+                               rule=rule))
+    else:
+        item(t["fixed_force"].format(name=ld.name, F=n(abs(ld.force)), p=p, rule=rule))
+
+
+def _group(out, t, g, lang, item, n, N, sol):
+    grp = g.group
+    kind = grp.kind.name if lang == "en" else grp.kind.ru
+    out.extend(["", f"**{t['group'].format(a=grp.links[0], b=grp.links[1], kind=kind)}**"])
+    for eq in g.equations:
+        _para(out, t["moments_of"].format(X=eq.about, i=eq.link) if eq.unknown != "N"
+                   else t["rpr"].format(Q=eq.about))
+        total = sum(term.moment for term in eq.terms)
+        parts = []
+        for term in eq.terms:
+            if not term.moment:
+                continue
+            sign = "+ " if term.moment > 0 else "− "
+            parts.append(sign + (f"{n(term.size, 5)}·{n(term.arm, 5)}" if term.arm else n(abs(term.moment), 5)))
+        known = " ".join(parts).removeprefix("+ ") or "0"
+        expr = f"({known}) / {n(eq.arm, 5)}"
+        name = eq.unknown if eq.unknown != "N" else next(r.name for r in g.reactions if r.pair == "prismatic")
+        item(t["unknown"].format(R=name, expr=expr, v=n(eq.value)))
+        del total
+    plan = g.plan
+    _para(out, t["plan_scale"].format(mu=n(plan.mu)))
+    closing = [v for v in plan.vectors if v.component == "closing"]
+    known = [v for v in plan.vectors if v.component not in ("closing", "reaction")]
+    sizes = {ld.name: abs(complex(ld.force)) for link_loads in g.loads.values() for ld in link_loads}
+    for v in known:
+        # a load's size as its own line gave it, not as the difference of two plan points
+        F = sizes.get(v.label, abs(plan.points[v.end].value - plan.points[v.start].value))
+        item(t["vec"].format(n=v.label, F=n(F, 5), mu=n(plan.mu), mm=n(plan.segments[v.label])))
+    if len(closing) == 2:
+        lines = [pt for pt in plan.points.values() if pt.source.kind == "intersection"]
+        src = lines[0].source if lines else None
+        l0, l1 = (src.lines[0].relation, src.lines[1].relation) if src else ("", "")
+        _para(out, t["closes"].format(eq=f"`{src.equation}`" if src else "", l0=l0, l1=l1))
+    else:
+        _para(out, t["closes1"].format(R=closing[0].label))
+    for r in g.reactions:
+        mm = plan.segments.get(r.name)
+        if mm is None:
+            continue
+        item(t["read"].format(R=r.name, mm=n(mm, 5), mu=n(plan.mu), F=n(mm * plan.mu)))
+
+
+def _drive(out, t, F, lang, item, n):
+    fa = F.analysis
+    mech = fa.mechanism
+    d = mech.driver
+    if F.drive is None:
+        _para(out, t["nodrive"].format(why=F.drive_note))
+        return
+
+    def r2(x):
+        s = f"{x:.2f}"
+        return s.replace(".", ",") if lang == "ru" else s
+
+    dr, gb = F.drive, F.drive.gearbox
+    V = abs(fa.solution.scalar.velocity[d.tip])
+    if F.drive_note == "position":
+        item(t["P"].format(t=d.tip, F=n(abs(fa.F_y), 5), V=n(V, 5), P=n(dr.power)))
+    else:
+        item(t["P_mean"].format(i=d.link, P=n(dr.power)))
+    item(t["need"].format(P=n(dr.power, 5), eta=n(dr.efficiency), need=n(dr.needed), type=dr.motor.type,
+                          kw=n(dr.motor.power_kw), rpm=n(dr.motor.rpm)))
+    item(t["u"].format(rpm=n(dr.motor.rpm), n1=n(rpm_of(mech), 5), u=r2(gb.u)))
+    dev = ("+" if gb.deviation > 0 else "−" if gb.deviation < 0 else "") + num(abs(gb.deviation), 2, lang)
+    if gb.stages == 2:
+        item(t["stages2"].format(u=r2(gb.u), u34=r2(gb.u34), u12=r2(gb.u12)))
+        item(t["teeth2"].format(z1=gb.z1, u12=r2(gb.u12), u34=r2(gb.u34), z2r=r2(gb.u12 * gb.z1), z2=gb.z2,
+                                z4r=r2(gb.u34 * gb.z1), z4=gb.z4))
+        item(t["actual2"].format(u12a=r2(gb.z2 / gb.z1), u34a=r2(gb.z4 / gb.z3), ua=r2(gb.u_actual),
+                                 rpm=n(dr.motor.rpm), n1a=r2(gb.n1_actual), n1=n(dr.n1, 5), dev=dev))
+    else:
+        item(t["stages1"])
+        item(t["teeth1"].format(z1=gb.z1, u=r2(gb.u), z2r=r2(gb.u * gb.z1), z2=gb.z2))
+        item(t["actual1"].format(ua=r2(gb.u_actual), rpm=n(dr.motor.rpm), n1a=r2(gb.n1_actual),
+                                 n1=n(dr.n1, 5), dev=dev))
