@@ -39,11 +39,10 @@ from drawing.scene import (
     Text,
 )
 from drawing.sheet.frame import Sheet
-from drawing.styles import LineType, Style
+from drawing.styles import FONT_FILE, LineType, Style
 
 __all__ = ["FONT_FILE", "fmt", "to_svg"]
 
-FONT_FILE = Path(__file__).with_name("fonts") / "osifont.ttf"
 INKSCAPE_NS = "http://www.inkscape.org/namespaces/inkscape"
 _CHAINS = (LineType.DASH_DOT_THIN, LineType.DASH_DOUBLE_DOT_THIN)
 # characters XML 1.0 cannot carry at all (they would make the file unreadable)

@@ -72,7 +72,7 @@ KEYS = SAMPLES + list(variant_numbers())
 
 @pytest.mark.parametrize("key", KEYS)
 def test_sheet_size_letters_and_texts(key):
-    mech, scene, sheet, info, svg = _sheet(key)
+    _mech, scene, _sheet_obj, info, svg = _sheet(key)
     root, texts = _texts(svg)
     assert root.get("width") == "841mm" and root.get("height") == "594mm"
     letters = set()
@@ -89,7 +89,7 @@ def test_sheet_size_letters_and_texts(key):
 
 @pytest.mark.parametrize("key", KEYS)
 def test_vectors_drawn_at_their_segment_lengths(key):
-    mech, _scene, sheet, info, svg = _sheet(key)
+    _mech, _scene, _sheet_obj, info, svg = _sheet(key)
     root, _ = _texts(svg)
     vecs = _vectors(root)
     checked = 0
@@ -119,7 +119,7 @@ def test_diagrams_only_with_a_stroke():
 def test_two_positions_english_a1():
     from plans.fmt import angle
 
-    mech, scene, sheet, info, svg = _sheet("press", "A1", "en", (1, 4))
+    mech, scene, _sheet_obj, info, svg = _sheet("press", "A1", "en", (1, 4))
     _, texts = _texts(svg)
     # a plan names its position and its crank angle, in the file's convention
     deg = [angle(mech.driver.file_angle(info["cycle"].positions[k])) for k in (1, 4)]
@@ -165,11 +165,12 @@ def test_png_without_cairosvg_is_a_setup_error_and_writes_nothing(tmp_path, monk
 def test_exported_files_get_the_usual_mode(tmp_path):
     import os
 
-    from drawing.export import write_svg
+    from plans.cli.common import write_output
 
     umask = os.umask(0o022)
     os.umask(umask)
-    out = write_svg("<svg/>", tmp_path / "s.svg")
+    out = tmp_path / "s.svg"
+    write_output(str(out), b"<svg/>")  # the command line's writer: drawing writes no file
     assert out.read_text() == "<svg/>"
     assert out.stat().st_mode & 0o777 == 0o666 & ~umask
     assert [p.name for p in tmp_path.iterdir()] == ["s.svg"]  # no temporary file left
@@ -215,7 +216,7 @@ def test_no_text_sits_on_a_vector_arrow(key):
     from drawing.labels import text_box
     from drawing.scene import Arrow, Group, flatten
 
-    mech, scene, sheet, _info, _svg = _sheet(key)
+    _mech, scene, _sheet_obj, _info, _svg = _sheet(key)
     views = [g for g in scene.layer("views").items if isinstance(g, Group)
              and ("velocity" in g.name or "acceleration" in g.name)]
     assert len(views) >= 2
@@ -430,7 +431,7 @@ def test_positions_where_a_slider_runs_off_to_infinity_are_left_off_and_said_so(
     from plans.model.scenes import SCENES
 
     mech = SCENES["tangent"].mechanism()
-    _, sheet, info = build_sheet(mech, "A2", "en")
+    _, _sheet_obj, info = build_sheet(mech, "A2", "en")
     (view,) = [p.view for p in info["placed"] if p.view.name == "positions"]
     texts = [it.text for it in view.items if isinstance(it, Text)]
     (note,) = [t for t in texts if t.startswith("Positions ")]
@@ -602,7 +603,8 @@ def test_the_sheets_note_states_the_sheets_scales_for_each_plan(capsys, tmp_path
     assert [h.split(" (")[0] for h in heads[2:]] == [
         "## 3. План скоростей механизма", "## 4. План ускорений механизма",
         "## 5. План скоростей механизма", "## 6. План ускорений механизма"]
-    assert heads[2].endswith("(положение 1, φ1 = 296,2°)") and heads[4].startswith("## 5. План скоростей механизма (положение 4,")
+    assert heads[2].endswith("(положение 1, φ1 = 296,2°)")
+    assert heads[4].startswith("## 5. План скоростей механизма (положение 4,")
     sheet_mu = _mu_lines(" ".join(t for t in texts if t.startswith("План ")))
     assert len(sheet_mu) == 3 and _mu_lines(note) == sheet_mu
     # the given position, in English: the same rule
@@ -1132,7 +1134,7 @@ def test_a_title_block_entry_is_never_dropped_nor_shrunk_below_1_8_mm(capsys, tm
 
 
 def test_a_long_surname_that_fits_in_1_8_mm_letters_is_kept():
-    scene, sheet, _ = build_sheet(_mech(3), "A1", "ru", 12, None, ["student=Преображенский П.П."])
+    scene, _sheet_obj, _ = build_sheet(_mech(3), "A1", "ru", 12, None, ["student=Преображенский П.П."])
     texts = [it for it in scene.items("title-block") if isinstance(it, Text)]
     (t,) = [it for it in texts if it.text == "Преображенский П.П."]
     assert 1.8 <= t.size < 2.5
@@ -1583,7 +1585,7 @@ def test_without_plans_the_given_position_is_the_heavy_one(key):
 def test_the_heavy_positions_letters_and_numbers_do_not_overlap(key, fmt, lang):
     """Two heavy positions, numbered and lettered: no text meets another, and the numbers
     keep labels.GAP from the letters (the tip's own too, which read '¹B')."""
-    mech, scene, *_ = _sheet(key, fmt, lang, (1, 4))
+    _mech, scene, *_ = _sheet(key, fmt, lang, (1, 4))
     assert overlaps([it for it in scene.items() if isinstance(it, Text)]) == []
     _numbers_keep_clear_of_letters(scene)
 
@@ -1606,7 +1608,7 @@ def test_the_stroke_stands_beside_its_guide_not_across_the_mechanism():
                and abs(s.p1[0] - s.p2[0]) < 1e-9 and abs(s.p2[1] - h.pos[1]) < 6]
         return h, ext
 
-    h, ext = stroke("press", "A2")
+    _h, ext = stroke("press", "A2")
     assert len(ext) == 2
     assert all(s.p2[1] < s.p1[1] for s in ext)  # from the guide upwards
     assert max(math.dist(s.p1, s.p2) for s in ext) < 15
