@@ -12,6 +12,7 @@ with here) draws.
 
 from __future__ import annotations
 
+import dataclasses
 import io
 import xml.etree.ElementTree as ET
 from pathlib import Path
@@ -103,18 +104,21 @@ def test_the_boxes_hold_what_dejavu_sans_draws(layouts):
             assert drawn <= box[2] - box[0] + 0.01, (name, lang, role, text)
 
 
-def test_the_overlay_speaks_the_reports_language_and_notation(tmp_path, capsys):
+def test_the_overlay_speaks_the_reports_language_and_notation(tmp_path, capsys, monkeypatch):
     """--lang ru: the title was English ("plans check: …") and the diagnosis showed the
     raw a^k_A3A; both follow the language now, the components written as on the plans:
-    a with k above and A3A below, μ with its v."""
+    a with k above and A3A below, μ with its v. The file is named as the command was given
+    it: relative here, so that the title is whole wherever the checkout lies (a long
+    absolute path is shortened with "…" at its start)."""
+    monkeypatch.chdir(CASES)
     for lang, title, words in (("en", "Check of a hand-drawn plan: ", "Coriolis"),
                                ("ru", "Проверка плана, построенного вручную: ", "Кориолиса")):
         out = tmp_path / f"{lang}.svg"
-        code, _, err = run(capsys, "check", CASES / "m_cor_pd15.toml", "--lang", lang, "--svg", out)
+        code, _, err = run(capsys, "check", "m_cor_pd15.toml", "--lang", lang, "--svg", out)
         assert code == 1, err
         root = ET.parse(out).getroot()
         texts = ["".join(el.itertext()) for el in root.iter(f"{SVG}text")]
-        assert texts[0] == title + str(CASES / "m_cor_pd15.toml")
+        assert texts[0] == title + "m_cor_pd15.toml"
         diagnosis = next(el for el in root.iter(f"{SVG}text") if words in "".join(el.itertext()))
         assert "^" not in "".join(texts) and "a^k" not in "".join(texts)
         spans = [(sp.text, float(sp.get("font-size") or diagnosis.get("font-size")))
@@ -211,3 +215,17 @@ def test_the_links_images_are_drawn_thin_on_both_panels(tmp_path):
             if e.get("stroke-width") == "0.5" and e.get("stroke") == "#222"]
     want = sum(len(image_sides(p)) for p in (sol.velocity, sol.acceleration))
     assert want >= 2 and len(thin) == want
+
+
+def test_a_long_path_in_the_title_is_shortened_at_its_start(results):
+    """The title names the file; a path too long for the drawing loses its start, not its
+    file name ("Check of a hand-drawn plan: …/deep/m_cor_pd15.toml")."""
+    res = results["m_cor_pd15"]
+    meas = res.measurement
+    long = "/" + "/".join(["a-folder-with-a-long-name"] * 12) + "/m_cor_pd15.toml"
+    res = dataclasses.replace(res, measurement=dataclasses.replace(meas, source=long))
+    ov = overlay(res, "en")
+    (title,) = [t for t, _, role in ov.texts if role == "title"][:1]
+    head = "Check of a hand-drawn plan: "
+    assert title.startswith(head + "…") and long.endswith(title[len(head) + 1:])
+    assert title.endswith("/m_cor_pd15.toml")
