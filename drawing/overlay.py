@@ -40,8 +40,8 @@ from drawing.scene import (
     index_markup,
     parse_markup,
     shared_label,
-    wrap_words,
 )
+from drawing.text import wrap_words
 from plans.check.verdict import MU_KEY, CheckResult, rebuild, recorded_segments
 from plans.fmt import listing, notation_in
 from plans.plan.solution import image_sides

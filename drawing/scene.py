@@ -314,35 +314,6 @@ def shared_label(names: Sequence[str], pole: str | None = None, markup: bool = T
     return ",".join(name_markup(n) if markup else n for n in order)
 
 
-def wrap_words(text: str, width: float, measure, indent: float = 0.0,
-               cut: bool = True) -> list[str]:
-    """``text`` broken at its spaces (not at no-break spaces) into lines ``measure``
-    (str → mm) no wider than ``width``, the continuations ``indent`` narrower. A word
-    wider than a line is cut (``cut``), or stands alone on its line."""
-    lines: list[str] = []
-    cur = ""
-    for word in text.split(" "):
-        room = width - (indent if lines else 0.0)
-        trial = f"{cur} {word}" if cur else word
-        if measure(trial) <= room:
-            cur = trial
-            continue
-        if cur:
-            lines.append(cur)
-            room = width - indent
-        cur = word
-        while cut and measure(cur) > room and len(cur) > 1:
-            k = len(cur)
-            while k > 1 and measure(cur[:k]) > room:
-                k -= 1
-            lines.append(cur[:k])
-            cur = cur[k:]
-            room = width - indent
-    if cur or not lines:
-        lines.append(cur)
-    return lines
-
-
 def parse_markup(s: str) -> tuple[Run, ...]:
     """Split ``"x_{ab}^c"``-style text into runs (see :class:`Text` ``markup``).
 

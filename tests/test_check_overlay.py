@@ -184,14 +184,17 @@ def test_coincident_points_are_lettered_as_on_the_sheet(results, name, shared):
         assert {t for t in points if "," in t} == shared
 
 
-def test_the_overlay_needs_no_shapely():
-    """The check's picture is drawn without the sheets' geometry package: importing it
-    loads no shapely (its lettering rule lives in drawing.scene, not in drawing.views)."""
+def test_the_overlay_loads_no_command_line_and_no_chart_library():
+    """The check's picture is drawn as the sheets are (one text rule, one placer, one SVG
+    writer: so it loads shapely and svgwrite, which it had kept clear of), but importing
+    it loads nothing of the command line and neither matplotlib nor cairosvg (only a PNG
+    asks for that)."""
     import subprocess
     import sys
 
     code = ("import sys\nimport drawing.overlay\n"
-            "print(sorted({m.split('.')[0] for m in sys.modules} & {'shapely', 'svgwrite'}))\n")
+            "print(sorted({m for m in sys.modules if m.split('.')[0] in ('matplotlib', 'cairosvg')"
+            " or m.startswith('plans.cli')}))\n")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True,
                          cwd=HERE.parent, env={"PYTHONPATH": str(HERE.parent), "PATH": ""})
     assert out.stdout.strip() == "[]"

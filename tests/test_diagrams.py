@@ -7,8 +7,9 @@ from functools import cache
 
 import pytest
 
-from drawing.labels import obstacles_of, text_box
+from drawing.labels import obstacles_of
 from drawing.scene import Arrow, Polyline, Segment, Text, flatten
+from drawing.text import text_box
 from drawing.views.views import NUMBER_GAPS, WORDS, diagrams_view
 from plans.cli.sheet import DIAGRAMS, build_sheet
 from plans.cycle.analysis import analyse_cycle

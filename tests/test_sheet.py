@@ -14,10 +14,11 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from drawing.labels import overlaps, text_box
+from drawing.labels import overlaps
 from drawing.scene import Text
 from drawing.sheet.layout import share_covered
 from drawing.svg import to_svg
+from drawing.text import text_box
 from plans.cli.sheet import build_sheet
 from plans.model.mechanism import load
 from plans.model.scenes import SCENES
@@ -213,8 +214,8 @@ def test_russian_fourbar_sheet_explains_the_missing_diagrams_in_russian():
 def test_no_text_sits_on_a_vector_arrow(key):
     from shapely.geometry import LineString
 
-    from drawing.labels import text_box
     from drawing.scene import Arrow, Group, flatten
+    from drawing.text import text_box
 
     _mech, scene, _sheet_obj, _info, _svg = _sheet(key)
     views = [g for g in scene.layer("views").items if isinstance(g, Group)
@@ -263,9 +264,10 @@ def test_the_value_of_the_swing_breaks_the_thin_lines_under_it(scene):
     the given position is never hidden; it touches no heavy line and no other label."""
     from shapely.geometry import box
 
-    from drawing.labels import obstacles_of, text_box
+    from drawing.labels import obstacles_of
     from drawing.scene import Blank, Polyline, Segment, flatten
     from drawing.styles import LineType
+    from drawing.text import text_box
     from plans.model.scenes import SCENES
 
     scene_, *_ = build_sheet(SCENES[scene].mechanism(), "A1", "ru", 12, None)
@@ -629,8 +631,9 @@ def test_position_numbers_keep_clear_of_the_letters(key):
 
 def _numbers_keep_clear_of_letters(scene):
     """The positions' numbers on the plan of positions keep labels.GAP from its letters."""
-    from drawing.labels import GAP, text_box
+    from drawing.labels import GAP
     from drawing.scene import flatten
+    from drawing.text import text_box
 
     view = next(g for g in scene.layer("views").items if g.name == "view positions")
     texts = [t for t in flatten([view]) if isinstance(t, Text)]
@@ -645,9 +648,9 @@ def test_the_stroke_stands_beside_its_extension_lines_when_it_has_no_room_betwee
     which crossed its letters; it now stands on a shelf beyond the right one."""
     from shapely.geometry import LineString
 
-    from drawing.labels import text_box
     from drawing.scene import Segment, flatten
     from drawing.styles import LineType
+    from drawing.text import text_box
     from plans.model.scenes import SCENES
 
     scene, *_ = build_sheet(SCENES["crank_slider_central"].mechanism(), "A3", "ru")
@@ -721,8 +724,8 @@ def test_the_stroke_is_dimensioned_along_its_guide_at_its_true_length(scene):
     its arrows' tips as far apart as the stroke at μl."""
     import shapely
 
-    from drawing.labels import text_box
     from drawing.scene import Arrow, flatten
+    from drawing.text import text_box
     from plans.cycle.analysis import analyse_cycle
     from plans.model.scenes import SCENES
 

@@ -23,15 +23,7 @@ import shapely
 from shapely.geometry import Polygon
 from shapely.geometry import box as shp_box
 
-from drawing.labels import (
-    LINE_PITCH,
-    SLANT,
-    LabelRequest,
-    obstacles_of,
-    place_labels,
-    text_box,
-    text_width,
-)
+from drawing.labels import LabelRequest, obstacles_of, place_labels
 from drawing.scene import (
     Arrow,
     Blank,
@@ -47,9 +39,9 @@ from drawing.scene import (
     name_markup,
     shared_label,
     translate,
-    wrap_words,
 )
 from drawing.styles import LineType, Style
+from drawing.text import LINE_PITCH, SLANT, text_box, text_width, wrap_words
 from plans.cycle.analysis import at_rest
 from plans.cycle.positions import drawn
 from plans.fmt import notation_in, num
