@@ -171,7 +171,7 @@ def test_coincident_points_are_lettered_as_on_the_sheet(results, name, shared):
     «π,o,b», the pole first, and the picture now takes the sheet's rule
     (drawing.scene.shared_label): the same labels on both."""
     from drawing.scene import Text, flatten
-    from drawing.views.views import plan_view
+    from drawing.views import plan_view
 
     res = results[name]
     sol = res.measurement.solution
