@@ -84,6 +84,8 @@ class LabelRequest:
     also: tuple[Point, ...] = ()
     blank: bool = False
     cross: bool = True
+    #: slanted (GOST type B), as a sheet letters; upright in a picture's plain text
+    italic: bool = True
 
     def __post_init__(self) -> None:
         if self.prefer not in _COMPASS:
@@ -120,7 +122,8 @@ def _candidate(req: LabelRequest, direction: str, gap: float, anchor: Point) -> 
     d = gap if ux == 0 or uy == 0 else gap * math.sqrt(0.5)
     kind = "start" if ux > 0 else "end" if ux < 0 else "middle"
     ax, ay = anchor
-    probe = Text((ax, ay), req.text, req.size, anchor=kind, markup=req.markup)
+    probe = Text((ax, ay), req.text, req.size, anchor=kind, markup=req.markup,
+                 italic=req.italic)
     _, top, _, bottom = text_box(probe).bounds  # relative to a baseline at ay
     if uy < 0:
         y = ay - d - (bottom - ay)
@@ -128,7 +131,8 @@ def _candidate(req: LabelRequest, direction: str, gap: float, anchor: Point) -> 
         y = ay + d + (ay - top)
     else:
         y = ay + req.size / 2
-    return Text((ax + ux * d, y), req.text, req.size, anchor=kind, markup=req.markup)  # type: ignore[arg-type]
+    return Text((ax + ux * d, y), req.text, req.size, anchor=kind,  # type: ignore[arg-type]
+                markup=req.markup, italic=req.italic)
 
 
 def _directions(prefer: str) -> list[str]:
@@ -155,6 +159,7 @@ def place_labels(
     soft: Sequence[BaseGeometry] = (),
     near: float = 3.0,
     max_soft: int = 2,
+    leader_from: float | None = None,
 ) -> list[Placement]:
     """Put each label near its anchor where it hits nothing.
 
@@ -183,6 +188,12 @@ def place_labels(
         obstacles: drawn geometry to avoid, already widened; see
             :func:`obstacles_of`.
         taken: boxes of labels placed earlier (e.g. by another view).
+        leader_from: a picture's rule (the check's overlay): each label takes the first
+            spot, nearest first, that meets nothing (no line, no label within
+            :data:`GAP`, nothing out of ``region``), whatever side of a line it is on;
+            one farther than ``leader_from`` from its point hangs on a leader that keeps
+            :data:`GAP` from the labels. Where none is clear, the nearest least covered
+            spot (``clear=False``). None: the sheets' rule above.
 
     Labels are placed in turn, so an early one may take the only room a later one had:
     where a ``cross=False`` label is left with no clear spot, the labels are placed again
@@ -190,7 +201,7 @@ def place_labels(
     """
     hard = [g for g in (*obstacles, *taken) if not g.is_empty]
     tree = shapely.STRtree(hard) if hard else None
-    args = (hard, tree, region, distances, soft, near, max_soft)
+    args = (hard, tree, region, distances, soft, near, max_soft, leader_from)
     order = list(range(len(requests)))
     out = _in_order(requests, *args)
     score = _score(requests, out, hard, tree, region)
@@ -237,6 +248,7 @@ def _in_order(
     soft: Sequence[BaseGeometry],
     near: float,
     max_soft: int,
+    leader_from: float | None = None,
 ) -> list[Placement]:
     """:func:`place_labels`, each label in turn in the order given, against the
     obstacles and labels taken before (``hard``, non-empty, and their STRtree)."""
@@ -295,6 +307,35 @@ def _in_order(
                 out |= np.array([area_outside(b, region, False) > 1e-9 for b in cands], dtype=bool)
         return out
 
+    def picture(req: LabelRequest, spots, boxes, others) -> Placement:
+        """The first spot of ``spots`` at the nearest of ``distances`` that meets nothing
+        (:func:`blocked`), with a leader beyond ``leader_from`` that keeps GAP from the
+        labels; else the least covered spot at the nearest distance."""
+        for gap in distances:
+            texts = [_candidate(req, direction, gap, anchor) for anchor, direction in spots]
+            cands = np.asarray([text_box(t) for t in texts], dtype=object)
+            for i in np.flatnonzero(~blocked(req, cands, boxes, others)):
+                anchor, box = spots[i][0], cands[i]
+                if gap <= leader_from:
+                    return Placement(texts[i], box, clear=True)
+                if _leader_near(anchor, box, placed):
+                    continue  # its leader would run through a letter
+                line = _leader(anchor, box)
+                leaders.append(line.buffer(GAP))
+                return Placement(texts[i], box, clear=True, leader=(anchor, line.coords[1]))
+        best = None  # none clear: in the region, off the labels, on the least of the lines
+        for gap in distances:
+            for anchor, direction in spots:
+                text = _candidate(req, direction, gap, anchor)
+                box = text_box(text)
+                hits, on_labels, outside = meets(req, box, boxes, others)
+                cost = (outside > 1e-9, on_labels > 1e-6,
+                        sum(box.intersection(g).area for g in hits) + outside)
+                if best is None or cost < best[0]:
+                    best = (cost, text, box)
+        assert best is not None  # distances and directions are never empty
+        return Placement(best[1], best[2], clear=False)
+
     for req in requests:
         chosen: tuple[Text, Polygon] | None = None
         fallback: tuple[tuple[bool, float], Text, Polygon] | None = None
@@ -304,6 +345,13 @@ def _in_order(
                  for direction in _directions(req.prefer)]
         boxes = np.asarray(placed, dtype=object)  # the labels before this one, once
         others = np.asarray([a != req.anchor for a in placed_at], dtype=bool)
+        if leader_from is not None:  # a picture's rule: the first clear spot, nearest first
+            got = picture(req, spots, boxes, others)
+            if got.clear or not req.optional:  # an optional label left out takes no room
+                placed.append(got.box)
+                placed_at.append(req.anchor)
+            out.append(got)
+            continue
         for ring in rings:
             # clear of everything wins; else the spot crossing the fewest thin lines
             relaxed: tuple[int, Text, Polygon] | None = None
@@ -425,9 +473,10 @@ def _turn_centres(turns: np.ndarray, gap: float, hw: float, hh: float) -> np.nda
 
 def _at(req: LabelRequest, centre: tuple[float, float]) -> Text:
     """The label with its box centred on ``centre``."""
-    x0, y0, x1, y1 = text_box(Text((0.0, 0.0), req.text, req.size, markup=req.markup)).bounds
+    x0, y0, x1, y1 = text_box(Text((0.0, 0.0), req.text, req.size, markup=req.markup,
+                                   italic=req.italic)).bounds
     return Text((centre[0] - (x0 + x1) / 2, centre[1] - (y0 + y1) / 2), req.text, req.size,
-                markup=req.markup)
+                italic=req.italic, markup=req.markup)
 
 
 def _leader(anchor: Point, box: Polygon) -> LineString:
@@ -478,7 +527,8 @@ def _wider(req: LabelRequest, distances: Sequence[float], hard: list, hard_tree,
     on the fewest. (n thin lines crossed, whether it needs a leader, text, box, anchor),
     or None where every spot meets something."""
     lines = ((hard, hard_tree), (soft, soft_tree))
-    x0, y0, x1, y1 = text_box(Text((0.0, 0.0), req.text, req.size, markup=req.markup)).bounds
+    x0, y0, x1, y1 = text_box(Text((0.0, 0.0), req.text, req.size, markup=req.markup,
+                                   italic=req.italic)).bounds
     hw, hh = (x1 - x0) / 2, (y1 - y0) / 2
     start = math.degrees(math.atan2(_UNIT[req.prefer][1], _UNIT[req.prefer][0]))
     half = round(180 / TURN)  # the preferred direction first, then by turn either way
