@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import functools
 import math
-from collections.abc import Iterable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -24,20 +24,10 @@ import shapely.ops
 from shapely.geometry import LineString, Polygon
 from shapely.geometry.base import BaseGeometry
 
-from drawing.scene import (
-    Arrow,
-    Blank,
-    Circle,
-    Hatch,
-    Item,
-    Point,
-    Polyline,
-    Segment,
-    Text,
-    flatten,
-)
-from drawing.styles import Style
+from drawing.obstacles import area_outside, is_box
+from drawing.scene import Point, Text
 from drawing.text import text_box
+from drawing.ticks import Ticks, on_ticks
 
 __all__ = [
     "ALONG",
@@ -49,9 +39,6 @@ __all__ = [
     "TURN",
     "LabelRequest",
     "Placement",
-    "area_outside",
-    "obstacles_of",
-    "overlaps",
     "place_labels",
 ]
 
@@ -160,6 +147,7 @@ def place_labels(
     near: float = 3.0,
     max_soft: int = 2,
     leader_from: float | None = None,
+    ticks: Ticks | None = None,
 ) -> list[Placement]:
     """Put each label near its anchor where it hits nothing.
 
@@ -194,11 +182,18 @@ def place_labels(
             one farther than ``leader_from`` from its point hangs on a leader that keeps
             :data:`GAP` from the labels. Where none is clear, the nearest least covered
             spot (``clear=False``). None: the sheets' rule above.
+        ticks: the rule of the positions' numbers on a diagram's φ axis
+            (:mod:`drawing.ticks`): each request is a number anchored where its tick
+            meets the axis, ``soft`` are the curves' middle lines, ``region`` the view's
+            box it must not widen. None: the labels' rule.
 
     Labels are placed in turn, so an early one may take the only room a later one had:
     where a ``cross=False`` label is left with no clear spot, the labels are placed again
     with those left so first, and the placing kept where fewer labels cover a line.
     """
+    if ticks is not None:
+        return [Placement(text, box, clear) for text, box, clear in
+                on_ticks(requests, [*obstacles, *taken], soft, region, distances, ticks)]
     hard = [g for g in (*obstacles, *taken) if not g.is_empty]
     tree = shapely.STRtree(hard) if hard else None
     args = (hard, tree, region, distances, soft, near, max_soft, leader_from)
@@ -228,7 +223,7 @@ def _score(requests: Sequence[LabelRequest], placed: list[Placement], hard: list
     """How bad a placing is: the labels out of ``region`` (they would make the view
     larger than it was sized for), those covering a line, those with no clear spot (and
     no leader), the mm² of lines they cover and out of the region."""
-    region_box = region is not None and _is_box(region)
+    region_box = region is not None and is_box(region)
     out = [0.0 if region is None or p.clear or p.leader else area_outside(p.box, region, region_box)
            for p in placed]
     area = [0.0 if tree is None or p.clear or p.leader else
@@ -258,7 +253,7 @@ def _in_order(
     rings = [close, [d for d in distances if d not in close]] if soft else [list(distances)]
     placed: list[Polygon] = []
     placed_at: list[Point] = []  # the anchor of each box placed
-    region_box = region is not None and _is_box(region)
+    region_box = region is not None and is_box(region)
     out: list[Placement] = []
     leaders: list[BaseGeometry] = []  # the leader lines drawn so far, widened: no letter on one
     lines = ((hard, hard_tree), (soft, soft_tree))
@@ -567,83 +562,3 @@ def _beyond(anchor: Point, box: Polygon, hard: list, tree) -> list:
         return []
     return [hard[i] for i in tree.query(sight, predicate="intersects")
             if hard[i].distance(a) > 1e-9]
-
-
-def _is_box(g: BaseGeometry) -> bool:
-    """An axis-parallel rectangle: its area is its bounds'."""
-    x0, y0, x1, y1 = g.bounds
-    return abs(g.area - (x1 - x0) * (y1 - y0)) <= 1e-9 * max(g.area, 1.0)
-
-
-def area_outside(box: Polygon, region: BaseGeometry, region_box: bool) -> float:
-    """The area of ``box`` outside ``region``: by bounds where both are axis-parallel
-    rectangles (a label and a view's frame, some thousand times a sheet)."""
-    if not (region_box and _is_box(box)):
-        return box.difference(region).area
-    a0, b0, a1, b1 = box.bounds
-    r0, s0, r1, s1 = region.bounds
-    inside = max(0.0, min(a1, r1) - max(a0, r0)) * max(0.0, min(b1, s1) - max(b0, s0))
-    return (a1 - a0) * (b1 - b0) - inside
-
-
-def obstacles_of(
-    items: Iterable[Item], style: Style | None = None, clearance: float = 0.3
-) -> list[BaseGeometry]:
-    """Geometry of drawn items, widened by half the line width + ``clearance`` mm.
-
-    Lines become buffered strokes, an arrow its shaft and head, a circle its
-    ring (its disc if filled), a text its box.
-    """
-    style = style or Style()
-    out: list[BaseGeometry] = []
-    for it in flatten(items):
-        if isinstance(it, Text):
-            out.append(text_box(it))
-            continue
-        if isinstance(it, Blank):  # white: nothing to keep clear of
-            continue
-        if isinstance(it, Hatch):
-            lines = [LineString(s) for s in it.strokes()]
-            half = style.width(it.line) / 2 + clearance
-            out += [ln.buffer(half) for ln in lines]
-            if it.base is not None:
-                out.append(
-                    LineString([it.p1, it.p2]).buffer(
-                        style.width(it.base) / 2 + clearance
-                    )
-                )
-            continue
-        half = style.width(it.line) / 2 + clearance
-        if isinstance(it, Segment):
-            out.append(LineString([it.p1, it.p2]).buffer(half))
-        elif isinstance(it, Polyline):
-            pts = [*it.points, it.points[0]] if it.closed else list(it.points)
-            out.append(LineString(pts).buffer(half))
-        elif isinstance(it, Arrow):
-            if (shaft := it.shaft()) is not None:
-                out.append(LineString(shaft).buffer(half))
-            if (head := it.head()) is not None:
-                out.append(Polygon(head).buffer(clearance))
-        elif isinstance(it, Circle):
-            disc = shapely.Point(it.center).buffer(it.r)
-            out.append(disc.buffer(half) if it.fill else disc.exterior.buffer(half))
-    return out
-
-
-def overlaps(texts: Sequence[Text], tolerance: float = 1e-6) -> list[tuple[int, int]]:
-    """Pairs ``(i, j)``, i < j, of texts whose boxes share over ``tolerance`` mm².
-
-    >>> overlaps([Text((0, 0), "AB"), Text((3, 0), "CD"), Text((50, 0), "EF")])
-    [(0, 1)]
-    """
-    boxes = [text_box(t) for t in texts]
-    if not boxes:
-        return []
-    tree = shapely.STRtree(boxes)
-    left, right = tree.query(boxes, predicate="intersects")
-    pairs = sorted(
-        {(int(i), int(j)) for i, j in zip(left, right, strict=True) if i < j}
-    )
-    return [
-        (i, j) for i, j in pairs if boxes[i].intersection(boxes[j]).area > tolerance
-    ]

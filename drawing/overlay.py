@@ -29,7 +29,8 @@ from dataclasses import dataclass, field, replace
 
 import shapely
 
-from drawing.labels import LabelRequest, obstacles_of, place_labels
+from drawing.labels import LabelRequest, place_labels
+from drawing.obstacles import obstacles_of
 from drawing.scene import (
     Blank,
     Circle,

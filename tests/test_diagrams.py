@@ -7,7 +7,7 @@ from functools import cache
 
 import pytest
 
-from drawing.labels import obstacles_of
+from drawing.obstacles import obstacles_of
 from drawing.scene import Arrow, Polyline, Segment, Text, flatten
 from drawing.sheet1 import DIAGRAMS, build_sheet
 from drawing.text import text_box

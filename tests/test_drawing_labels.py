@@ -8,7 +8,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from shapely.geometry import LineString, box
 
-from drawing.labels import LabelRequest, obstacles_of, overlaps, place_labels
+from drawing.labels import LabelRequest, place_labels
+from drawing.obstacles import obstacles_of, overlaps
 from drawing.scene import Arrow, Circle, Rect, Segment, Text
 from drawing.styles import LineType, Style
 from drawing.text import fit_text, text_box, text_width
@@ -271,7 +272,7 @@ def test_a_label_among_more_thin_lines_than_allowed_everywhere_still_gets_a_plac
 def test_the_area_outside_a_region_by_bounds_is_shapelys(b, r):
     """The label placer measures how far a box sticks out of its view by bounds (both are
     axis-parallel rectangles); it must be what shapely's difference gives."""
-    from drawing.labels import area_outside
+    from drawing.obstacles import area_outside
 
     lab = box(b[0], b[1], b[0] + b[2], b[1] + b[3])
     reg = box(r[0], r[1], r[0] + r[2], r[1] + r[3])

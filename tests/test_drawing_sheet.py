@@ -4,7 +4,7 @@ import pytest
 import shapely
 from shapely.geometry import LineString, box
 
-from drawing.labels import overlaps
+from drawing.obstacles import overlaps
 from drawing.scene import Segment, Text
 from drawing.sheet.frame import (
     FORMATS,

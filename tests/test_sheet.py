@@ -14,7 +14,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from drawing.labels import overlaps
+from drawing.obstacles import overlaps
 from drawing.scene import Text
 from drawing.sheet.layout import share_covered
 from drawing.sheet1 import build_sheet
@@ -266,7 +266,7 @@ def test_the_value_of_the_swing_breaks_the_thin_lines_under_it(scene):
     the given position is never hidden; it touches no heavy line and no other label."""
     from shapely.geometry import box
 
-    from drawing.labels import obstacles_of
+    from drawing.obstacles import obstacles_of
     from drawing.scene import Blank, Polyline, Segment, flatten
     from drawing.styles import LineType
     from drawing.text import text_box

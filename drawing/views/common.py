@@ -15,7 +15,8 @@ from dataclasses import dataclass, field, replace
 
 from shapely.geometry import box as shp_box
 
-from drawing.labels import LabelRequest, obstacles_of, place_labels
+from drawing.labels import LabelRequest, place_labels
+from drawing.obstacles import obstacles_of
 from drawing.scene import (
     Blank,
     Circle,

@@ -9,10 +9,12 @@ import numpy as np
 import shapely
 from shapely.geometry import box as shp_box
 
-from drawing.labels import obstacles_of
-from drawing.scene import Arrow, Item, Polyline, Segment, Text, translate
+from drawing.labels import LabelRequest, place_labels
+from drawing.obstacles import obstacles_of
+from drawing.scene import Arrow, Item, Polyline, Segment, Text
 from drawing.styles import LineType, Style
 from drawing.text import text_box
+from drawing.ticks import Ticks
 from drawing.views.common import WORDS, View, bbox, captioned, per_mm, start_anchored
 from plans.cycle.analysis import at_rest
 from plans.fmt import num
@@ -155,13 +157,13 @@ def _numbers(items: list[Item], numbers: list[tuple[float, float, str]]
 
     A number stood under its tick whatever was there, so a curve running below the φ
     axis went through it, and the origin's 0 was written across the vertical axis. Each
-    now stands where it meets no curve, no line and no text: under its tick where that
-    is clear, else over it (on the other side of the axis from the curve), else beside
-    the tick, under the axis, then over it, then a little farther off; the origin's 0
-    right of the vertical axis. The view keeps its box, that of the drawing with every
-    number under its tick, and each number stays in it: the sheets are packed first-fit,
-    and a view 0.75 mm narrower moved them too (variant 5's English sheet on A2 lost a
-    step of its diagrams)."""
+    is now placed by :func:`drawing.labels.place_labels` with the numbers' rule
+    (:mod:`drawing.ticks`): by its tick, where it meets no curve, no line and no text.
+    The view keeps its box, that of the drawing with every number under its tick, and
+    each number stays in it: the sheets are packed first-fit, and a view 0.75 mm narrower
+    moved them too (variant 5's English sheet on A2 lost a step of its diagrams)."""
+    requests = [LabelRequest((x, y_zero), text, 2.5, "s", markup=False)
+                for x, y_zero, text in numbers]
     under = [Text((x, y_zero + NUMBER_GAPS[0]), text, size=2.5, anchor="middle",
                   baseline="hanging", italic=True) for x, y_zero, text in numbers]
     texts = np.array([text_box(t).bounds for t in items if isinstance(t, Text)]).reshape(-1, 4)
@@ -179,53 +181,17 @@ def _numbers(items: list[Item], numbers: list[tuple[float, float, str]]
     def reach(lines, clear):  # how near the middle of one of ``lines`` a number may not come
         return max(style.width(it.line) for it in lines) / 2 + clear
 
-    def grown(boxes, d):  # axis-parallel boxes (x0, y0, x1, y1) widened by d
-        b = np.asarray(boxes).reshape(-1, 4)
-        return shapely.box(b[:, 0] - d, b[:, 1] - d, b[:, 2] + d, b[:, 3] + d)
-
     curves = [it for it in items if isinstance(it, Polyline)]
     segments = [it for it in items if isinstance(it, Segment)]  # the φ axes, the ticks
-    curve_steps = steps(curves)
-    on_curves, curve_reach = shapely.STRtree(curve_steps), reach(curves, NUMBER_CLEAR[0])
-    ink = None  # the curves' ink as one shape, where a number has no clear spot
-    on_lines, line_reach = shapely.STRtree(steps(segments)), reach(segments, NUMBER_CLEAR[1])
-    tree = shapely.STRtree([  # the vertical axes with their heads, the other texts
+    obstacles = [  # the vertical axes with their heads, the other texts
         *obstacles_of([it for it in items if isinstance(it, Arrow)], clearance=NUMBER_CLEAR[1]),
-        *grown(texts, NUMBER_CLEAR[2])])
-    out: list[Text] = []
-    taken = []  # the boxes of the numbers placed
-    for (x, y_zero, _), first, (x0, y0, x1, y1) in zip(numbers, under, spans, strict=True):
-        w, h = x1 - x0, y1 - y0
-        # (side, beside): under or over the tick, then beside it under the axis, then
-        # over it; the origin's 0 right of the vertical axis, never across it
-        spots = (((1, 0), (-1, 0), (1, 1), (1, -1), (-1, 1), (-1, -1)) if x > 0
-                 else ((1, 1), (-1, 1)))
-        moves = np.array([(
-            {0: x0, 1: x + NUMBER_BESIDE, -1: x - NUMBER_BESIDE - w}[beside] - x0,
-            (y_zero + gap if side > 0 else y_zero - gap - h) - y0)
-            for gap in NUMBER_GAPS for side, beside in spots])
-        tried = np.array([x0, y0, x1, y1]) + np.tile(moves, 2)
-        boxes = grown(tried, 0.0)
-        outside = ~shapely.covers(frame, boxes)  # none leaves the view's box
-        hit = np.zeros(len(boxes), dtype=bool)
-        hit[tree.query(boxes, predicate="intersects")[0]] = True
-        hit[on_lines.query(boxes, predicate="dwithin", distance=line_reach)[0]] = True
-        if taken:
-            others = grown(taken, NUMBER_CLEAR[2])
-            hit |= shapely.intersects(boxes[:, None], others[None, :]).any(axis=1)
-        crossed = np.zeros(len(boxes))
-        crossed[on_curves.query(boxes, predicate="dwithin", distance=curve_reach)[0]] = 1.0
-        if (crossed[~hit & ~outside] > 0).all():  # nowhere clear: the least of the curves
-            if ink is None:  # once a view, not once a number
-                ink = shapely.union_all(curve_steps).buffer(curve_reach)
-            crossed[crossed > 0] = shapely.area(shapely.intersection(boxes[crossed > 0], ink))
-        # the first that meets nothing; where none, the one that meets no line and no text
-        # and crosses the least of the curves; in the view's box always (the nearest
-        # under the tick is)
-        k = int(np.lexsort((np.arange(len(boxes)), crossed, hit, outside))[0])
-        out.append(translate(first, *moves[k]))
-        taken.append(tried[k])
-    return out, bounds
+        *shapely.box(texts[:, 0] - NUMBER_CLEAR[2], texts[:, 1] - NUMBER_CLEAR[2],
+                     texts[:, 2] + NUMBER_CLEAR[2], texts[:, 3] + NUMBER_CLEAR[2])]
+    ticks = Ticks(steps(segments), reach(segments, NUMBER_CLEAR[1]),
+                  reach(curves, NUMBER_CLEAR[0]), NUMBER_CLEAR[2], NUMBER_BESIDE)
+    placed = place_labels(requests, obstacles, region=frame, distances=NUMBER_GAPS,
+                          soft=steps(curves), ticks=ticks)
+    return [p.text for p in placed], bounds
 
 
 def _axis_name(name: str, unit: str, flip: float | None, lang: str) -> str:

@@ -11,7 +11,8 @@ import numpy as np
 import shapely
 from shapely.geometry import Polygon
 
-from drawing.labels import LabelRequest, obstacles_of
+from drawing.labels import LabelRequest
+from drawing.obstacles import obstacles_of
 from drawing.scene import Arrow, Circle, Hatch, Item, Polyline, Segment, Text, shared_label
 from drawing.styles import LineType
 from drawing.text import text_width
