@@ -904,12 +904,12 @@ def test_the_orders_of_the_pairs_search_are_those_it_filtered_from_all(case):
     very same orders in the very same sequence, or a sheet would change."""
     from itertools import permutations
 
-    from drawing.sheet.layout import _in_order
+    from drawing.sheet.layout import in_order
 
     n, rank = case
     want = [p for p in permutations(range(n))
             if [p.index(k) for k in rank] == sorted(p.index(k) for k in rank)]
-    assert list(_in_order(n, rank)) == want
+    assert list(in_order(n, rank)) == want
 
 
 def test_pairs_are_packed_together_in_their_order():
