@@ -15,6 +15,12 @@ from pathlib import Path
 from typing import Any
 
 from plans.check.items import MU_KEY, PLANS, Item, Tolerance, parse_tolerance
+from plans.check.reading import (  # noqa: F401  (SENSE_WORDS: the check's public words)
+    SENSE_WORDS,
+    magnitude_sense,
+    normal_unit,
+    number,
+)
 from plans.check.replay import reading_pairs
 from plans.cycle.analysis import outside, reachable_cycle
 from plans.errors import AssemblyError, InputError, PlansError
@@ -22,43 +28,18 @@ from plans.kinematics.solver import Solver
 from plans.model import mechanism as mechmod
 from plans.model import variants
 from plans.model.fileformat import (
-    DECIMAL,
     LOOKALIKES,
     Problems,
     check_keys,
     close_match,
-    decimal,
     key_text,
     other_kind,
     quote,
-    read_number,
     read_toml,
     type_in_latin,
 )
 from plans.model.mechanism import MU_UNIT, Mechanism
 from plans.plan.solution import Plan, Solution, plan_name, solve_position
-
-#: the sense of an ω or ε as a student writes it after the magnitude, +1 ccw, −1 cw
-SENSE_WORDS = {
-    "ccw": 1, "cw": -1, "counterclockwise": 1, "counter-clockwise": 1, "anticlockwise": 1,
-    "anti-clockwise": 1, "clockwise": -1,
-    "против часовой стрелки": 1, "против часовой": 1, "против ч.с.": 1, "против ч. с.": 1,
-    "против чс": 1, "против": 1,
-    "по часовой стрелке": -1, "по часовой": -1, "по ч.с.": -1, "по ч. с.": -1, "по чс": -1,
-    "по": -1,
-}
-#: the senses a hint names
-SENSE_HINT = "ccw, cw, против часовой стрелки, по часовой стрелке, против ч.с., по ч.с."
-#: the units a quoted value may carry, by kind (Item.kind, "value" by its plan)
-VALUE_UNITS = {
-    "velocity": ("m/s", ("m/s", "м/с")),
-    "acceleration": ("m/s²", ("m/s²", "м/с²")),
-    "omega": ("rad/s", ("rad/s", "рад/с", "1/s", "1/с", "s⁻¹", "с⁻¹")),
-    "epsilon": ("rad/s²", ("rad/s²", "рад/с²", "1/s²", "1/с²", "s⁻²", "с⁻²")),
-}
-_WHAT = {"velocity": "a velocity", "acceleration": "an acceleration",
-         "omega": "an angular velocity", "epsilon": "an angular acceleration"}
-
 
 # ---------------------------------------------------------------------------------------
 # what the student measured
@@ -114,17 +95,6 @@ class Solvers:
         return solver
 
 
-def _num(value: Any, where: str, problems: Problems, *, positive=False, nonneg=False,
-         unit: str = "mm", what: str = "a length on the drawing") -> float | None:
-    """A number of the file (``fileformat.read_number``: in quotes too, with a decimal point
-    or comma); ``what`` (a length on the drawing, a magnitude) is not negative."""
-    x = read_number(value, where, problems, positive=positive, unit=unit)
-    if x is not None and nonneg and x < 0:
-        problems.add(where, f"{what} cannot be negative, got {x:g}")
-        return None
-    return x
-
-
 def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = None, *,
               text: str | None = None, solvers: Solvers | None = None) -> Measurement:
     """Build a :class:`Measurement` from parsed TOML (the mechanism is loaded and solved,
@@ -162,7 +132,7 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
                 mech = None  # not the built-in table instead
     angle = None
     if "angle_deg" in data:
-        angle = _num(data["angle_deg"], "angle_deg", problems, unit="°")
+        angle = number(data["angle_deg"], "angle_deg", problems, unit="°")
     tol = None
     if "tolerance" in data:
         try:
@@ -178,7 +148,7 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
     for key, value in scales.items():
         if key not in MU_KEY.values():
             continue
-        x = _num(value, f"scales.{key}", problems, positive=True, unit=MU_UNIT[key])
+        x = number(value, f"scales.{key}", problems, positive=True, unit=MU_UNIT[key])
         if x is not None:
             mu[key] = x
     raw_segments = data.get("segments", {})
@@ -199,12 +169,12 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
                 continue
             for k2, v2 in value.items():
                 where = f"segments.{key}.{key_text(k2)}"
-                x = _num(v2, where, problems, nonneg=True)
+                x = number(v2, where, problems, nonneg=True)
                 if x is not None:
                     segs.append((f"segments.{key}.{k2}", where, key, k2, x))
             continue
         where = f"segments.{key_text(key)}"
-        x = _num(value, where, problems, nonneg=True)
+        x = number(value, where, problems, nonneg=True)
         if x is not None:
             segs.append((f"segments.{key}", where, None, key, x))
     if not raw_segments and not raw_values:
@@ -400,7 +370,7 @@ class _Names:
                 problems.add(where, f"there is no link {link} (links: "
                                 f"{', '.join(map(str, sorted(sol.mechanism.links)))})")
                 return None
-            mag, sense = _magnitude_sense(value, where, problems, allow_sense=True, kind=kind)
+            mag, sense = magnitude_sense(value, where, problems, allow_sense=True, kind=kind)
             if mag is None:
                 return None
             plan = "velocity" if kind == "omega" else "acceleration"
@@ -417,7 +387,7 @@ class _Names:
             problems.add(where, f"unknown value \"{name}\"; known: {', '.join(dict.fromkeys(labels))}")
             return None
         plan, x, y, label = hit
-        mag, _ = _magnitude_sense(value, where, problems, allow_sense=False, kind=plan)
+        mag, _ = magnitude_sense(value, where, problems, allow_sense=False, kind=plan)
         if mag is None:
             return None
         return Item(key, label, "value", plan, mag, x, y,
@@ -454,84 +424,3 @@ class _Names:
 def _cyrillic(name: str) -> str:
     """', with the Cyrillic letters р, а: type them in Latin' where ``name`` has some."""
     return f", with {type_in_latin(name)}" if type_in_latin(name) else ""
-
-
-def normal_unit(text: str) -> str:
-    """A unit as a student types it, in one spelling: lower case, no spaces, powers as
-    superscripts ("m/s^2", "m/s2", "м/с²" → "m/s²", "м/с²"; "s^-1", "с-1" → "s⁻¹", "с⁻¹").
-
-    >>> [normal_unit(u) for u in ("M/S^2", "м/с2", "rad / s", "c^-1", "1/s**2")]
-    ['m/s²', 'м/с²', 'rad/s', 'с⁻¹', '1/s²']
-    """
-    u = "".join(text.lower().split()).replace("**", "^")
-    u = re.sub(r"(?<=[sсc])\^?-1$", "⁻¹", u)
-    u = re.sub(r"(?<=[sсc])\^?-2$", "⁻²", u)
-    u = re.sub(r"(?<=[sсc])\^?2$", "²", u)
-    if re.search(r"[а-я]", u):  # "м/c" typed with a Latin c
-        u = u.replace("c", "с")
-    elif u in ("c⁻¹", "c⁻²"):
-        u = "с" + u[1:]
-    return u
-
-
-def _split_sense(rest: str) -> tuple[str, int]:
-    """The words after a magnitude as (unit, sense): the sense (SENSE_WORDS) before or
-    after the unit, or alone."""
-    r = " ".join(rest.lower().split())
-    for phrase in sorted(SENSE_WORDS, key=len, reverse=True):
-        if r == phrase:
-            return "", SENSE_WORDS[phrase]
-        if r.endswith(" " + phrase):
-            return r[: -len(phrase) - 1], SENSE_WORDS[phrase]
-        if r.startswith(phrase + " "):
-            return r[len(phrase) + 1:], SENSE_WORDS[phrase]
-    return r, 0
-
-
-def _magnitude_sense(value, key, problems, *, allow_sense, kind="velocity"):
-    """The magnitude and sense (+1 ccw, −1 cw, 0 not given) of a value of [values]: a
-    number, or in quotes a number (decimal point or comma) with its unit and, for ω and
-    ε (``allow_sense``), a sense: "4,82 рад/с против часовой стрелки"."""
-    sense = 0
-    main, units = VALUE_UNITS[kind]
-    if isinstance(value, str):
-        if allow_sense:
-            example = (f'e.g. "4.82 ccw" or "4,82 {units[1]} против часовой стрелки" '
-                       f"(senses: {SENSE_HINT})")
-            bad = f"write a magnitude and a sense, {example}, got {quote(value)}"
-        else:
-            example = f'e.g. 2.77, "2,77" or "2.77 {main}"'
-            bad = f"must be a number, got {quote(value)}: write {_WHAT[kind]} in {main}, {example}"
-        m = re.fullmatch(rf"\s*({DECIMAL})\s*(.*?)\s*", value, re.S)
-        if m is None:
-            problems.add(key, bad)
-            return None, 0
-        unit, sense = _split_sense(m.group(2))
-        if sense and not allow_sense:
-            problems.add(key, f"{bad} (a sense is given for ω and ε only)")
-            return None, 0
-        if unit and normal_unit(unit) not in {normal_unit(u) for u in units}:
-            other = next((k for k, (_, us) in VALUE_UNITS.items()
-                          if normal_unit(unit) in {normal_unit(u) for u in us}), None)
-            if other is not None:
-                problems.add(key, f"{quote(value)} is in {unit}, the unit of {_WHAT[other]}: "
-                                  f"{_WHAT[kind]} is in {' or '.join(units[:2])}")
-            elif allow_sense:
-                problems.add(key, f"{bad}: {quote(unit, 20)} is neither a sense nor a unit of "
-                                  f"{_WHAT[kind]} ({', '.join(units)})")
-            else:
-                problems.add(key, f"must be a number, got {quote(value)}: {quote(unit, 20)} is not "
-                                  f"a unit of {_WHAT[kind]}; write it in {' or '.join(units)}, "
-                                  f"{example}")
-            return None, 0
-        mag = decimal(m.group(1))
-        value = mag
-        if allow_sense and mag < 0 and not sense:
-            sense, value = -1, -mag  # "-4.82": clockwise, as a number would be
-    elif allow_sense and isinstance(value, int | float) and not isinstance(value, bool) and value < 0:
-        sense, value = -1, -value  # ω3 = -4.82: clockwise, as the engine signs it
-    x = _num(value, key, problems, nonneg=True, unit=main,
-             what="a magnitude with a sense word" if allow_sense else "a magnitude")
-    if x is None:
-        return None, 0
-    return x, sense
