@@ -3,17 +3,20 @@ names of the segments (pa3, aa3, πa3, n1a3…) matched to the plans' recorded s
 
 :func:`load` and :func:`from_dict` read a measurement file into a :class:`Measurement` of
 :class:`Item` s, each saying which plan and which segment or value it is; every problem in
-the file is reported at once, with its location.
+the file is reported at once, with its location. The force analysis's items (``[forces]``
+and the forces of ``[values]``) are read by :mod:`plans.check.force_items`.
 """
 
 from __future__ import annotations
 
 import os
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
+from plans.check.force_items import ForceNames, read_forces
+from plans.check.forces import ForceContext
 from plans.check.items import MU_KEY, PLANS, Item, Tolerance, parse_tolerance
 from plans.check.reading import (  # noqa: F401  (SENSE_WORDS: the check's public words)
     SENSE_WORDS,
@@ -22,7 +25,7 @@ from plans.check.reading import (  # noqa: F401  (SENSE_WORDS: the check's publi
     number,
 )
 from plans.check.replay import reading_pairs
-from plans.cycle.analysis import outside, reachable_cycle
+from plans.cycle.analysis import analyse_cycle, outside, reachable_cycle
 from plans.errors import AssemblyError, InputError, PlansError
 from plans.kinematics.solver import Solver
 from plans.model import mechanism as mechmod
@@ -60,10 +63,12 @@ class Measurement:
     inputs: tuple[str, ...] = ()
     #: the scale factors the file gives (the others in ``mu`` the tool chose)
     given: frozenset[str] = frozenset()
+    #: the exact force analysis and the student's μF, where the file measures forces
+    forces: ForceContext | None = None
 
 
 TOP_KEYS = {"title", "mechanism", "variant", "table", "angle_deg", "tolerance", "scales",
-            "segments", "values"}
+            "segments", "values", "forces"}
 
 
 def load(path: str | Path, solvers: Solvers | None = None) -> Measurement:
@@ -144,7 +149,9 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
     if not isinstance(scales, dict):
         problems.add("scales", "must be a table, e.g. [scales] mu_v = 0.05")
         scales = {}
-    check_keys(scales, set(MU_KEY.values()), "scales", problems)
+    if "mu_F" in scales:  # the force plans' μF is the [forces] table's
+        problems.add("scales.mu_F", "goes in [forces]: [forces] mu_F = 20 (N/mm)")
+    check_keys({k: v for k, v in scales.items() if k != "mu_F"}, set(MU_KEY.values()), "scales", problems)
     for key, value in scales.items():
         if key not in MU_KEY.values():
             continue
@@ -159,6 +166,10 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
     if not isinstance(raw_values, dict):
         problems.add('values', 'must be a table, e.g. [values] omega3 = "4.82 ccw"')
         raw_values = {}
+    raw_forces = data.get("forces")
+    if raw_forces is not None and not isinstance(raw_forces, dict):
+        problems.add("forces", "must be a table, e.g. [forces] mu_F = 20, \"R12^τ\" = 28.4")
+        raw_forces = {}
     # (key as the report shows it, key path as the file spells it, plan or None, name, mm)
     segs: list[tuple[str, str, str | None, str, float]] = []
     for key, value in raw_segments.items():
@@ -177,9 +188,9 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
         x = number(value, where, problems, nonneg=True)
         if x is not None:
             segs.append((f"segments.{key}", where, None, key, x))
-    if not raw_segments and not raw_values:
+    if not raw_segments and not raw_values and not raw_forces:
         problems.add("segments", "nothing to check: give the measured segments, e.g. "
-                        "[segments] pa3 = 55")
+                        '[segments] pa3 = 55, or a force analysis\'s ([forces] "R12^τ" = 28.4)')
     if isinstance(mech, int):
         rows = _table_of(mech, table, problems)
         if rows is None:
@@ -213,10 +224,31 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
         item = names.segment(key, where, scope, name, x, problems)
         if item is not None:
             items.append(item)
+    # the force analysis, where the file measures forces
+    ctx = fnames = None
+    if raw_forces is not None or (m.loads is not None and not all(map(names.kinematic, raw_values))):
+        ctx = _force_context(sol, raw_forces is not None, problems)
+        fnames = ForceNames(ctx) if ctx is not None else None
+    force_items: list[Item] = []
+    mu_F: dict[str, float] = {}
+    if fnames is not None and raw_forces:
+        force_items, mu_F, given = read_forces(raw_forces, fnames, problems)
+        ctx = replace(ctx, mu_F=mu_F, mu_F_given=given)
     for key, value in raw_values.items():
-        item = names.value(f"values.{key}", f"values.{key_text(key)}", key, value, problems)
+        where = f"values.{key_text(key)}"
+        if fnames is not None and not names.kinematic(key):
+            item = fnames.value(f"values.{key}", where, key, value, problems, mu_F)
+            if item is not False:
+                force_items += [item] if item is not None else []
+                continue
+        item = names.value(f"values.{key}", where, key, value, problems, fnames)
         if item is not None:
             items.append(item)
+    seen: dict[tuple, Item] = {}
+    for it in force_items:  # one force or arm twice, in two spellings
+        was = seen.setdefault((it.plan, it.kind, it.name), it)
+        if was is not it:
+            problems.add(it.key, f"measures what {was.key} does: give each once")
     first: dict[tuple, Item] = {}
     for it in items:  # one thing measured twice with two values ([segments] and [segments.velocity])
         same = (it.kind, it.plan, *sorted((it.start, it.end)), it.link)
@@ -227,6 +259,7 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
     need = {it.plan for it in items if it.kind in ("segment", "value")}
     need |= {"velocity" for it in items if it.kind == "omega"}
     need |= {"acceleration" for it in items if it.kind == "epsilon"}
+    need |= {"velocity" for it in force_items if it.plan == "lever"}  # the velocity plan turned
     for plan in PLANS:
         if plan in need and MU_KEY[plan] not in scales:  # given but bad: said above
             what = {"positions": "the plan of positions", "velocity": "the velocity plan",
@@ -235,8 +268,27 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
                             f"used for {what}")
     problems.raise_if_any()
     read = [source] + [str(p) for p in (mech if not isinstance(mech, int) else table,) if p]
-    return Measurement(source, m, sol, sol.mu,
-                       tuple(items), tol, title, angle, tuple(read), frozenset(mu))
+    return Measurement(source, m, sol, sol.mu, tuple(items + force_items), tol, title, angle,
+                       tuple(read), frozenset(mu), ctx if force_items else None)
+
+
+def _force_context(sol: Solution, asked: bool, problems: Problems) -> ForceContext | None:
+    """The exact force analysis of the measurement's position; None, and a problem of
+    [forces] where the file has that table (``asked``), where there is none: the mechanism
+    gives no loads, or its force plans cannot be drawn here."""
+    mech = sol.mechanism
+    if mech.loads is None:
+        problems.add("forces", f"the mechanism ({mech.source}) gives no loads: the force analysis "
+                     'needs its [loads], e.g. [loads.links.3] mass = 10, J_S = 0.4, centre = "S3" '
+                     "(README: Loads)")
+        return None
+    try:
+        cycle = analyse_cycle(mech, solver=sol.solver) if mech.loads.resistance is not None else None
+        return ForceContext.build(sol, cycle)
+    except PlansError as exc:
+        if asked:
+            problems.add("forces", f"no force analysis at this position: {str(exc).split(': ', 1)[-1]}")
+        return None
 
 
 def _input_file(value: Any, key: str, folder: Path | None, problems: Problems) -> Path | None:
@@ -359,7 +411,14 @@ class _Names:
         (plan, x, y), sp = next(iter(cands.items()))
         return Item(key, sp, "segment", plan, mm, x, y)
 
-    def value(self, key, where, name, value, problems) -> Item | None:
+    def kinematic(self, name: str) -> bool:
+        """Whether [values] ``name`` is an ω, an ε or a value of the plans (V_A3, a^k_A3A)."""
+        return bool(re.fullmatch(r"(omega|ω|w|epsilon|ε|eps|alpha|α)_?(\d+)", name)) or \
+            self._physical(name) is not None
+
+    def value(self, key, where, name, value, problems, forces=None) -> Item | None:
+        """The item of [values] ``name``; ``forces``: the force analysis's names
+        (:class:`plans.check.force_items.ForceNames`) an unknown name is offered too."""
         sol = self.sol
         # α3 (alpha3) is ε3 as Western texts write the angular acceleration
         m = re.fullmatch(r"(omega|ω|w|epsilon|ε|eps|alpha|α)_?(\d+)", name)
@@ -384,7 +443,8 @@ class _Names:
         if hit is None:
             labels = ["ω<link>", "ε<link>", "V_<point>", "a_<point>", "V_<point><point>"]
             labels += [v.label for v in sol.acceleration.vectors if v.component != "absolute"]
-            problems.add(where, f"unknown value \"{name}\"; known: {', '.join(dict.fromkeys(labels))}")
+            more = f"; forces and moments: {forces.known_values()}" if forces is not None else ""
+            problems.add(where, f"unknown value \"{name}\"; known: {', '.join(dict.fromkeys(labels))}{more}")
             return None
         plan, x, y, label = hit
         mag, _ = magnitude_sense(value, where, problems, allow_sense=False, kind=plan)

@@ -26,6 +26,11 @@ as a^t / l with the sense of a^t, which is where a reversed ε comes from. Witho
 reported sense of ωk this mistake draws the same plans as "Coriolis vector reversed";
 both are then named.
 
+The items of a force analysis (:mod:`plans.check.forces`) are compared with the exact force
+analysis at the student's scales, and its mistakes replayed as the plans' are: the loads
+changed and the same group walk, the lever not turned, a plan at another μF. A mistake of
+the plans carries over to the forces drawn on them.
+
 Reading of "ω1 with the wrong sense": the student lays off the crank's V_A the other way
 round. Every velocity is proportional to ω1, so the whole velocity plan is reflected
 through p (no length changes) and every ω read off it turns the other way; the
@@ -40,9 +45,11 @@ import math
 from collections import Counter
 from dataclasses import dataclass, field, replace
 
+from plans.check import forces
 from plans.check.items import (  # noqa: F401  (the public names of the check live here)
     MU_KEY,
     PLANS,
+    SIGNED,
     Item,
     Tolerance,
     parse_tolerance,
@@ -92,7 +99,7 @@ def compare(item: Item, computed: float, tol: Tolerance) -> Deviation:
     limit = tol.limit(mag, item.per_mm)
     pct = dev / mag * 100.0 if mag > 0 else math.nan
     sense_ok = None
-    if item.kind in ("omega", "epsilon") and item.sense and mag > limit:
+    if item.kind in SIGNED and item.sense and mag > limit:
         sense_ok = (item.sense > 0) == (computed > 0)
     ok = abs(dev) <= limit * (1 + 1e-9) + 1e-12 and sense_ok is not False
     return Deviation(item, float(computed), float(dev), float(pct), float(limit), ok, sense_ok)
@@ -160,7 +167,7 @@ class CheckResult:
 def check(meas: Measurement, tol: Tolerance | None = None, *, diagnose_: bool = True) -> CheckResult:
     """Compare every measured item with the exact plans; diagnose what is beyond tolerance."""
     tol = tol or meas.tolerance or Tolerance()
-    st = Replayer(meas.solution).exact()
+    st = redraw(meas)
     devs = tuple(compare(it, expected(it, st, meas.mu), tol) for it in meas.items)
     diag = diagnose(meas, devs, tol, exact=st) if diagnose_ else Diagnosis(None)
     if diagnose_ and not all(d.ok for d in devs):
@@ -349,14 +356,14 @@ def diagnose(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance,
     if not bad:
         return Diagnosis(None)
     items = meas.items
-    plans = {it.plan for it in items}
+    plans = {it.plan for it in items} & set(PLANS)  # the plans measured (not the forces)
     findings: list[Finding] = []
     tried = 0
 
     def judge(mistakes) -> None:
         nonlocal tried
         for mk in mistakes:
-            got = _redrawn(meas, lambda mk=mk: simulate(meas.solution, mk, meas.mu), tol)
+            got = _redrawn(meas, lambda mk=mk: redraw(meas, mk), tol)
             if got is None:
                 continue
             st, sim = got
@@ -368,12 +375,15 @@ def diagnose(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance,
             broken = tuple(items[i].name for i, d in enumerate(devs) if d.ok and not sim[i].ok)
             findings.append(Finding(mk, explained, unexplained, broken, _misfit(sim), st))
 
-    judge([*hypotheses(meas.solution, plans), *_fitted_scales(meas, devs)])
+    if plans:
+        judge([*hypotheses(meas.solution, plans), *_fitted_scales(meas, devs)])
+    if meas.forces is not None:
+        judge([*forces.hypotheses(meas.forces, items), *forces.fitted_scales(meas.forces, devs)])
     # the plans of another crank angle, only where no mistake above explains everything
     # without spoiling a thing, nor do slips of the items on the exact plans (two swapped,
     # one from the wrong point: an ordinary file, checked as fast as before): its search
     # solves some two hundred positions
-    if not any(not f.broken and not f.unexplained for f in findings):
+    if plans and not any(not f.broken and not f.unexplained for f in findings):
         if exact is None:
             exact = Replayer(meas.solution).exact()
         failed = {items[i].name for i in bad}
@@ -396,6 +406,17 @@ def diagnose(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance,
     near = sorted((f for f in findings if not f.broken),
                   key=lambda f: (-len(f.explained), _score(f)))
     return Diagnosis(None, (), near[0] if near else None, tried)
+
+
+def redraw(meas: Measurement, mk: Mistake | None = None, st: State | None = None) -> State:
+    """The plans a student who makes the mistake ``mk`` draws (None: the exact ones; ``st``:
+    drawn already, another crank angle's), and where the file measures forces, the force
+    analysis on them (:mod:`plans.check.forces`): a mistake of the plans carries over."""
+    if st is None:
+        st = simulate(meas.solution, None if mk is not None and mk.kind in forces.KINDS else mk, meas.mu)
+    if meas.forces is not None:
+        st = replace(st, forces=meas.forces.drawn(st, mk))
+    return st
 
 
 def _redrawn(meas: Measurement, drawn, tol: Tolerance) -> tuple[State, list[Deviation]] | None:
@@ -458,6 +479,8 @@ def _fitted_scales(meas: Measurement, devs: tuple[Deviation, ...]) -> list[Mista
     return out
 
 
+#: the plans of another crank angle, as the forces drawn on them take it
+_ANGLE = Mistake("crank-angle")
 #: the grid the crank angle of :func:`fitted_angle` is searched on, and how near the
 #: given angle a fit is drawing scatter, not another position (rad)
 _ANGLE_STEP = math.radians(2.0)
@@ -480,7 +503,7 @@ def fitted_angle(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance)
     mu = meas.mu
 
     def misfit(phi: float) -> float:
-        got = _redrawn(meas, lambda: at_angle(sol, phi, mu), tol)
+        got = _redrawn(meas, lambda: redraw(meas, _ANGLE, at_angle(sol, phi, mu)), tol)
         return math.inf if got is None else _misfit(got[1])
 
     given = sol.phi
