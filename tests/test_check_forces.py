@@ -16,6 +16,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 from support import run
 
 from plans.check import forces as cf
@@ -453,6 +455,7 @@ BAD = [
     ('[values]\nG3 = "98 m/s"\n', ['values.G3: "98 m/s" is in m/s, the unit of a velocity: a force is in N']),
     ('[values]\nG3 = "98 ccw"\n', ["(a sense is given for ω, ε, a moment and F_у only)"]),
     ('[values]\n"M_у" = "227 sideways"\n', ['values."M_у": write a magnitude and a sense']),
+    ('[forces]\nmu_F = 20\n', ["line 2: forces: nothing to check: give the segments of the force plans"]),
     ('[values]\nQ7 = 1\n', ['values.Q7: unknown value "Q7"; known: ω<link>', "; forces and moments: G1, G3"]),
 ]
 
@@ -542,3 +545,102 @@ def test_the_readme_example(tmp_path, capsys):
     text = (SAMPLES.parent / "README.md").read_text("utf-8")
     readme = {line.split("#")[0].strip() for line in text.splitlines()}
     assert all(line in readme for line in README_FILE.splitlines()[1:] if line)  # the file README shows
+
+
+# ---------------------------------------------------------------------------------------
+# hostile force items: exit 0, 1 or 2, never a traceback
+# ---------------------------------------------------------------------------------------
+
+_NAMES = st.sampled_from(["R34^τ", "R34t", "R05", "G4", "Фи4", "Ми3", "P", "Р", "pa", "pvb", "h", "mu_F",
+                          "μF", "F_у", "FУ", "M_у", "R12", "R99", "", " ", "π", "h.G4", "Σ", "R34^n",
+                          "M_Φ3(C)", "\u200b"])
+_VALUES = st.one_of(
+    st.floats(allow_nan=True, allow_infinity=True), st.integers(-10**20, 10**20), st.booleans(),
+    st.sampled_from(["12", "12,5", "-3", "1e999", "4 ccw", "4 Н·м по ч.с.", "98 H", "7 kN", "nan", "",
+                     "ccw"]),
+    st.just([1, 2]), st.just({"G4": 3}), st.just({"4-5": 10, "9": 1}), st.just({"Q": "x"}))
+
+
+def _toml(value) -> str:
+    """A value as TOML writes it (inline), for the hostile files."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float):
+        if math.isnan(value):
+            return "nan"
+        return ("inf" if value > 0 else "-inf") if math.isinf(value) else repr(value)
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, str):
+        return json.dumps(value)
+    if isinstance(value, list):
+        return "[" + ", ".join(map(_toml, value)) + "]"
+    return "{ " + ", ".join(f"{json.dumps(k)} = {_toml(v)}" for k, v in value.items()) + " }"
+
+
+@st.composite
+def hostile(draw) -> str:
+    """A measurement file of the press whose [forces] and [values] hold names and values
+    a file should not: near misses, junk, tables and lists where numbers go."""
+    forces = {draw(_NAMES): draw(_VALUES) for _ in range(draw(st.integers(0, 5)))}
+    values = {draw(_NAMES): draw(_VALUES) for _ in range(draw(st.integers(0, 3)))}
+    lines = [f"mechanism = {json.dumps(str(PRESS))}", "[scales]",
+             f"mu_v = {_toml(draw(st.sampled_from([0.05, 0, 'x', -1])))}"]
+    if forces or draw(st.booleans()):
+        lines += ["[forces]", *(f"{json.dumps(k)} = {_toml(v)}" for k, v in forces.items())]
+    if values:
+        lines += ["[values]", *(f"{json.dumps(k)} = {_toml(v)}" for k, v in values.items())]
+    return "\n".join(lines) + "\n"
+
+
+def test_hostile_force_items_exit_0_1_or_2(tmp_path, capsys):
+    codes = []
+
+    @settings(max_examples=80, deadline=None, derandomize=True, database=None,
+              suppress_health_check=list(HealthCheck))
+    @given(hostile())
+    def check(text):
+        path = tmp_path / "h.toml"
+        path.write_text(text, encoding="utf-8")
+        code, _, err = run(capsys, "check", path)
+        assert code in (0, 1, 2), err
+        assert "Traceback" not in err and "internal error" not in err
+        codes.append(code)
+
+    check()
+    assert 2 in codes
+
+
+def test_an_acceleration_plan_drawn_ten_times_too_large_gives_ten_times_the_inertia_loads(tmp_path):
+    """The carry-over checked by its meaning: a student who reads a_S and ε off an
+    acceleration plan drawn 10 times too large computes every inertia force and moment 10
+    times too large, and the weights as they are."""
+    meas = every_item(tmp_path, PRESS, kinematic=True)
+    mk = next(m for m in ck.hypotheses(meas.solution, {"acceleration"})
+              if m.kind == "scale" and m.plan == "acceleration" and m.factor == 10)
+    drawn, exact = ck.redraw(meas, mk).forces, meas.forces.drawn()
+    kinds = {ld.name: ld.kind for ld in meas.forces.analysis.loads}
+    assert {"inertia", "inertia moment", "weight"} <= set(kinds.values())
+    for name, kind in kinds.items():
+        times = {"inertia": 10, "inertia moment": 10}.get(kind, 1)
+        assert drawn.values[name] == pytest.approx(times * exact.values[name], rel=1e-12), name
+
+
+def test_the_lever_not_turned_by_its_definition(templates):
+    """The four-bar's lever drawn on the velocity plan as it is: each arm the distance from
+    the pole to the force's line through the image v/μv of its point, F_у = Σ (v/μv × F) /
+    (pb·sign ω1), worked out here from the solution's velocities."""
+    meas = templates[FOURBAR]
+    sol = meas.solution
+    mu = sol.velocity.mu
+    fd = meas.forces.drawn(None, find(meas, "lever-unturned", "lever"))
+    total = 0.0
+    for ld in meas.forces.analysis.loads:
+        v = complex(sol.scalar.velocity[ld.point]) / mu
+        F = complex(ld.force)
+        moment = v.real * F.imag - v.imag * F.real
+        total += moment
+        assert fd.arms[ld.name] == pytest.approx(abs(moment) / abs(F), rel=1e-12, abs=1e-12)
+    pb = abs(complex(sol.scalar.velocity["B"])) / mu
+    assert fd.pb == pytest.approx(pb) and fd.F_y == pytest.approx(total / pb, rel=1e-12)
+    assert abs(fd.F_y - meas.forces.drawn().F_y) > 0.05 * abs(meas.forces.drawn().F_y)

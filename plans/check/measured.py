@@ -227,7 +227,7 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
     # the force analysis, where the file measures forces
     ctx = fnames = None
     if raw_forces is not None or (m.loads is not None and not all(map(names.kinematic, raw_values))):
-        ctx = _force_context(sol, raw_forces is not None, problems)
+        ctx = _force_context(sol, problems)
         fnames = ForceNames(ctx) if ctx is not None else None
     force_items: list[Item] = []
     mu_F: dict[str, float] = {}
@@ -266,16 +266,19 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
                     "acceleration": "the acceleration plan"}[plan]
             problems.add(f"scales.{MU_KEY[plan]}", f"missing: the scale factor the student "
                             f"used for {what}")
+    if not items and not force_items and not problems:  # [forces] mu_F = 20 and nothing measured
+        problems.add("forces", 'nothing to check: give the segments of the force plans, e.g. [forces] '
+                     '"R12^τ" = 28.4, the lever\'s arms (h.G1 = 19) or the forces in [values]')
     problems.raise_if_any()
     read = [source] + [str(p) for p in (mech if not isinstance(mech, int) else table,) if p]
     return Measurement(source, m, sol, sol.mu, tuple(items + force_items), tol, title, angle,
                        tuple(read), frozenset(mu), ctx if force_items else None)
 
 
-def _force_context(sol: Solution, asked: bool, problems: Problems) -> ForceContext | None:
+def _force_context(sol: Solution, problems: Problems) -> ForceContext | None:
     """The exact force analysis of the measurement's position; None, and a problem of
-    [forces] where the file has that table (``asked``), where there is none: the mechanism
-    gives no loads, or its force plans cannot be drawn here."""
+    [forces], where there is none: the mechanism gives no loads, or its force plans cannot
+    be drawn here."""
     mech = sol.mechanism
     if mech.loads is None:
         problems.add("forces", f"the mechanism ({mech.source}) gives no loads: the force analysis "
@@ -286,8 +289,7 @@ def _force_context(sol: Solution, asked: bool, problems: Problems) -> ForceConte
         cycle = analyse_cycle(mech, solver=sol.solver) if mech.loads.resistance is not None else None
         return ForceContext.build(sol, cycle)
     except PlansError as exc:
-        if asked:
-            problems.add("forces", f"no force analysis at this position: {str(exc).split(': ', 1)[-1]}")
+        problems.add("forces", f"no force analysis at this position: {str(exc).split(': ', 1)[-1]}")
         return None
 
 
