@@ -1,193 +1,222 @@
-"""The bench's chart: maximum relative error against run time per crank position, log-log,
-one colour per method and one marker shape per scene (``plans bench --chart``).
+"""Charts that are not drawing sheets, drawn with matplotlib: the bench's error against
+run time (``plans bench --chart``) and a mechanism's quantities over the crank's turn
+(``plans cycle --plot``).
 
-Written as SVG text: a chart of a few hundred markers needs no plotting library.
+matplotlib is imported inside the plotting functions, never when this module is imported:
+a sheet, the overlay and the commands that draw no chart never load it. The figures are
+drawn on their own canvas (no pyplot, no global backend: Agg for PNG) and written so that
+the same data give the same bytes: no dates in SVG or PDF metadata, a fixed
+``svg.hashsalt`` for the SVG's ids.
+
+The rows of the bench are read duck-typed: anything with ``scene``, ``method``,
+``positions``, ``seconds_per_position`` and ``max_rel_error`` (None where not measured).
 """
 
 from __future__ import annotations
 
+import io
 import math
+from collections.abc import Iterable, Sequence
+from typing import Any, Protocol
 
-_COLORS = {
+__all__ = [
+    "COLORS",
+    "FLOOR",
+    "FORMATS",
+    "SHAPES",
+    "BenchRow",
+    "bench_chart",
+    "bench_figure",
+    "cycle_chart",
+    "cycle_figure",
+    "method_colors",
+    "scene_shapes",
+]
+
+#: the file formats a chart is written in
+FORMATS = ("png", "svg", "pdf")
+#: errors below this (0 included) are drawn on it: a log axis has no 0
+FLOOR = 1e-17
+#: the relative error the engine is held to (drawn as a dashed line)
+TARGET = 1e-13
+#: one colour per method; finite differences take :data:`FD_COLORS` in turn
+COLORS = {
     "vectorized": "#1f77b4",
     "reused": "#17becf",
     "recorded": "#7f7f7f",
     "plan": "#2ca02c",
     "pylinkage": "#9467bd",
 }
-_FD_COLORS = ("#ff7f0e", "#d62728", "#8c564b", "#e377c2", "#bcbd22")
-#: one per scene: the bench's default scenes each get their own (a test holds it)
-_SHAPES = ("circle", "square", "diamond", "triangle", "cross", "star", "ring", "down", "plus",
-           "box")
+FD_COLORS = ("#ff7f0e", "#d62728", "#8c564b", "#e377c2", "#bcbd22")
+#: one marker per scene, (matplotlib marker, filled): the bench's default scenes each get
+#: their own (a test holds it)
+SHAPES = (("o", True), ("s", True), ("D", True), ("^", True), ("x", True), ("*", True),
+          ("o", False), ("v", True), ("+", True), ("s", False))
+_DPI = 100
+_SALT = "vector-plans"
 
 
-def marker(shape: str, x: float, y: float, color: str, size: float = 5.0) -> str:
-    """One marker of ``shape`` (:data:`_SHAPES`) centred at (x, y), as SVG."""
-    s = size
-    if shape == "circle":
-        return f'<circle cx="{x:.1f}" cy="{y:.1f}" r="{s:.1f}" fill="{color}" fill-opacity="0.75"/>'
-    if shape == "ring":
-        return (
-            f'<circle cx="{x:.1f}" cy="{y:.1f}" r="{s:.1f}" fill="none" stroke="{color}" '
-            'stroke-width="2"/>'
-        )
-    if shape == "box":  # a square's outline
-        return (
-            f'<rect x="{x - s:.1f}" y="{y - s:.1f}" width="{2 * s:.1f}" height="{2 * s:.1f}" '
-            f'fill="none" stroke="{color}" stroke-width="2"/>'
-        )
-    if shape == "plus":
-        return (
-            f'<path d="M{x - s * 1.2},{y}L{x + s * 1.2},{y}M{x},{y - s * 1.2}L{x},{y + s * 1.2}" '
-            f'stroke="{color}" stroke-width="2.4"/>'
-        )
-    if shape == "square":
-        return (
-            f'<rect x="{x - s:.1f}" y="{y - s:.1f}" width="{2 * s:.1f}" height="{2 * s:.1f}" '
-            f'fill="{color}" fill-opacity="0.75"/>'
-        )
-    if shape == "diamond":
-        pts = f"{x},{y - s * 1.3} {x + s * 1.3},{y} {x},{y + s * 1.3} {x - s * 1.3},{y}"
-    elif shape == "triangle":
-        pts = f"{x},{y - s * 1.3} {x + s * 1.2},{y + s} {x - s * 1.2},{y + s}"
-    elif shape == "down":
-        pts = f"{x},{y + s * 1.3} {x + s * 1.2},{y - s} {x - s * 1.2},{y - s}"
-    elif shape == "star":
-        pts = " ".join(
-            f"{x + (s * 1.4 if k % 2 == 0 else s * 0.6) * math.sin(k * math.pi / 5):.1f},"
-            f"{y - (s * 1.4 if k % 2 == 0 else s * 0.6) * math.cos(k * math.pi / 5):.1f}"
-            for k in range(10)
-        )
-    else:  # cross
-        return (
-            f'<path d="M{x - s},{y - s}L{x + s},{y + s}M{x - s},{y + s}L{x + s},{y - s}" '
-            f'stroke="{color}" stroke-width="2.2"/>'
-        )
-    return f'<polygon points="{pts}" fill="{color}" fill-opacity="0.75"/>'
+class BenchRow(Protocol):
+    """What the bench's chart reads of a row."""
+
+    scene: str
+    method: str
+    positions: int
+    seconds_per_position: float
+    max_rel_error: float | None
 
 
-def svg_chart(rows: list, subtitle: str = "") -> str:
-    """Error versus run time per position, log-log, one colour per method, one marker
-    shape per scene; errors below 1e-17 (0 included) are drawn on the floor."""
-    from xml.sax.saxutils import escape
+def method_colors(methods: Iterable[str]) -> dict[str, str]:
+    """Each method's colour: its own, a finite-difference step's in turn, else grey.
+
+    >>> method_colors(["plan", "fd h=1e-04", "fd h=1e-06", "other"])
+    {'plan': '#2ca02c', 'fd h=1e-04': '#ff7f0e', 'fd h=1e-06': '#d62728', 'other': '#7f7f7f'}
+    """
+    out: dict[str, str] = {}
+    fd = 0
+    for m in dict.fromkeys(methods):
+        if m in COLORS:
+            out[m] = COLORS[m]
+        elif m.startswith("fd"):
+            out[m] = FD_COLORS[fd % len(FD_COLORS)]
+            fd += 1
+        else:
+            out[m] = "#7f7f7f"
+    return out
+
+
+def scene_shapes(scenes: Iterable[str]) -> dict[str, tuple[str, bool]]:
+    """Each scene's marker, in the order the scenes first come.
+
+    >>> scene_shapes(["press", "fourbar", "press"])
+    {'press': ('o', True), 'fourbar': ('s', True)}
+    """
+    return {s: SHAPES[i % len(SHAPES)] for i, s in enumerate(dict.fromkeys(scenes))}
+
+
+def _marker(shape: tuple[str, bool], color: str) -> dict[str, Any]:
+    marker, filled = shape
+    if marker in "x+":  # lines only: no face to fill
+        return {"marker": marker, "color": color, "markeredgewidth": 2.0}
+    return {"marker": marker, "markerfacecolor": color if filled else "none",
+            "markeredgecolor": color, "markeredgewidth": 0.8 if filled else 1.6,
+            "alpha": 0.8 if filled else 1.0}
+
+
+def bench_figure(rows: Sequence[BenchRow], title: str = ""):
+    """The bench's chart as a matplotlib Figure: the maximum relative error against the
+    wall time per crank position, log-log, one colour per method and one marker shape per
+    scene; errors below :data:`FLOOR` (0 included) on the floor, rows without an error
+    (None, inf, NaN) or without a time left out. ``title``: a line under the heading (the
+    machine the bench ran on)."""
+    from matplotlib.figure import Figure
+    from matplotlib.lines import Line2D
 
     rows = [r for r in rows if r.seconds_per_position > 0]
-    W, H = 860, 560
-    L, R, T, B = 80, 250, 50, 60
-    floor = 1e-17
-    xs = [r.seconds_per_position for r in rows] or [1e-9, 1e-3]
-    ys = [
-        max(r.max_rel_error, floor)
-        for r in rows
-        if r.max_rel_error is not None and math.isfinite(r.max_rel_error)
-    ] or [floor, 1]
-    x0, x1 = math.floor(math.log10(min(xs))), math.ceil(math.log10(max(xs)))
-    y0, y1 = math.floor(math.log10(min(ys))), math.ceil(math.log10(max(max(ys), 1e-12)))
-    x1 = max(x1, x0 + 1)
-    y1 = max(y1, y0 + 1)
-
-    def px(x):
-        return L + (math.log10(x) - x0) / (x1 - x0) * (W - L - R)
-
-    def py(y):
-        return T + (y1 - math.log10(max(y, floor))) / (y1 - y0) * (H - T - B)
-
-    methods = list(dict.fromkeys(r.method for r in rows))
-    colors = {}
-    fd = 0
-    for m in methods:
-        if m in _COLORS:
-            colors[m] = _COLORS[m]
-        else:
-            colors[m] = (
-                _FD_COLORS[fd % len(_FD_COLORS)] if m.startswith("fd") else "#7f7f7f"
-            )
-            fd += m.startswith("fd")
-    scenes = list(dict.fromkeys(r.scene for r in rows))
-    shapes = {s: _SHAPES[i % len(_SHAPES)] for i, s in enumerate(scenes)}
-
-    out = [
-        f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" '
-        f'viewBox="0 0 {W} {H}" font-family="DejaVu Sans, Arial, sans-serif" font-size="12">',
-        f'<rect width="{W}" height="{H}" fill="white"/>',
-        f'<text x="{L}" y="22" font-size="15" font-weight="bold">Max relative error versus '
-        "run time per crank position</text>",
-        f'<text x="{L}" y="40" fill="#555">{escape(subtitle)}</text>',
-    ]
-    for e in range(x0, x1 + 1):
-        x = px(10.0**e)
-        out.append(
-            f'<line x1="{x:.1f}" y1="{T}" x2="{x:.1f}" y2="{H - B}" stroke="#ddd"/>'
-        )
-        out.append(
-            f'<text x="{x:.1f}" y="{H - B + 18}" text-anchor="middle">1e{e}</text>'
-        )
-    for e in range(y0, y1 + 1):
-        y = py(10.0**e)
-        out.append(
-            f'<line x1="{L}" y1="{y:.1f}" x2="{W - R}" y2="{y:.1f}" stroke="#ddd"/>'
-        )
-        out.append(f'<text x="{L - 6}" y="{y + 4:.1f}" text-anchor="end">1e{e}</text>')
-    if y0 <= -13 <= y1:
-        y = py(1e-13)
-        out.append(
-            f'<line x1="{L}" y1="{y:.1f}" x2="{W - R}" y2="{y:.1f}" stroke="#888" '
-            'stroke-dasharray="6 4"/>'
-        )
-        out.append(
-            f'<text x="{W - R - 4}" y="{y - 4:.1f}" text-anchor="end" fill="#666">'
-            "target 1e-13</text>"
-        )
-    out.append(
-        f'<rect x="{L}" y="{T}" width="{W - L - R}" height="{H - T - B}" fill="none" stroke="#333"/>'
-    )
-    out.append(
-        f'<text x="{(L + W - R) / 2:.1f}" y="{H - 18}" text-anchor="middle">'
-        "wall time per position (s)</text>"
-    )
-    out.append(
-        f'<text transform="translate(20 {(T + H - B) / 2:.1f}) rotate(-90)" '
-        'text-anchor="middle">max relative error (normwise)</text>'
-    )
-    for r in rows:
-        if r.max_rel_error is None or not math.isfinite(r.max_rel_error):
-            continue
-        out.append(
-            marker(
-                shapes[r.scene],
-                px(r.seconds_per_position),
-                py(r.max_rel_error),
-                colors[r.method],
-            )
-        )
-    lx, ly = W - R + 18, T + 6
-    out.append(f'<text x="{lx}" y="{ly}" font-weight="bold">method</text>')
-    for i, m in enumerate(methods):
-        y = ly + 18 * (i + 1)
-        out.append(
-            f'<rect x="{lx}" y="{y - 9}" width="12" height="12" fill="{colors[m]}"/>'
-        )
-        out.append(f'<text x="{lx + 18}" y="{y + 1}">{escape(m)}</text>')
-    ly += 18 * (len(methods) + 2)
-    out.append(f'<text x="{lx}" y="{ly}" font-weight="bold">scene</text>')
-    for i, s in enumerate(scenes):
-        y = ly + 18 * (i + 1)
-        out.append(marker(shapes[s], lx + 6, y - 3, "#444", 4.5))
-        out.append(f'<text x="{lx + 18}" y="{y + 1}">{escape(s)}</text>')
-    out.append(
-        f'<text x="{L}" y="{H - 4}" fill="#777" font-size="10">errors ≤ 1e-17 '
-        "(0 included) drawn at 1e-17; reference: mpmath, 30 digits</text>"
-    )
-    out.append("</svg>")
-    return "\n".join(out) + "\n"
+    drawn = [r for r in rows if r.max_rel_error is not None and math.isfinite(r.max_rel_error)]
+    colors = method_colors(r.method for r in rows)
+    shapes = scene_shapes(r.scene for r in rows)
+    fig = Figure(figsize=(8.6, 5.6), dpi=_DPI, layout="constrained")
+    ax = fig.add_subplot()
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    for r in drawn:
+        ax.plot([r.seconds_per_position], [max(r.max_rel_error, FLOOR)], linestyle="none",
+                markersize=7, **_marker(shapes[r.scene], colors[r.method]))
+    ax.axhline(TARGET, color="#888", linestyle=(0, (6, 4)), linewidth=1.0)
+    ax.annotate(f"target {TARGET:.0e}", (1.0, TARGET), xycoords=("axes fraction", "data"),
+                xytext=(-4, 4), textcoords="offset points", ha="right", color="#666",
+                fontsize=9)
+    ax.set_ylim(bottom=FLOOR / 3)
+    if not drawn:
+        ax.set_xlim(1e-9, 1e-3)
+        ax.set_ylim(FLOOR / 3, 1.0)
+    ax.grid(True, which="major", color="#ddd", linewidth=0.8)
+    ax.set_xlabel("wall time per position (s)")
+    ax.set_ylabel("max relative error (normwise)")
+    ax.set_title("Max relative error versus run time per crank position"
+                 + (f"\n{title}" if title else ""), loc="left", fontsize=11)
+    methods = [Line2D([], [], linestyle="none", marker="s", markersize=8, markerfacecolor=c,
+                      markeredgecolor=c, label=m) for m, c in colors.items()]
+    scenes = [Line2D([], [], linestyle="none", markersize=7, label=s, **_marker(shape, "#444"))
+              for s, shape in shapes.items()]
+    if methods:  # beside the axes, room made for them by the layout
+        fig.legend(handles=methods, title="method", loc="outside right upper", frameon=False,
+                   fontsize=9, alignment="left")
+        fig.legend(handles=scenes, title="scene", loc="outside right lower", frameon=False,
+                   fontsize=9, alignment="left")
+    fig.supxlabel(f"errors ≤ {FLOOR:.0e} (0 included) drawn at {FLOOR:.0e}; "
+                  "reference: mpmath, 30 digits", x=0.01, ha="left", fontsize=8, color="#777")
+    return fig
 
 
-def bench_chart(rows: list, title: str, fmt: str) -> bytes:
-    """The bench's chart as ``fmt`` bytes (``plans bench --chart``); rows are read
-    duck-typed (scene, method, positions, seconds_per_position, max_rel_error).
+def bench_chart(rows: Sequence[BenchRow], title: str, fmt: str) -> bytes:
+    """:func:`bench_figure` as the bytes of a ``fmt`` file (:data:`FORMATS`)."""
+    return _save(bench_figure(rows, title), fmt)
 
-    This SVG-only stand-in keeps ``plans bench --chart`` working until the matplotlib
-    chart of the same signature takes its place."""
-    if fmt != "svg":
-        raise ValueError(f"the bench's chart is written as SVG only, not {fmt!r}")
-    return svg_chart(rows, title).encode("utf-8")
+
+#: the colours of the series of one panel, in turn
+SERIES = ("#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2",
+          "#17becf", "#bcbd22", "#7f7f7f")
+
+
+def cycle_figure(angle_deg: Sequence[float],
+                 panels: Sequence[tuple[str, Sequence[tuple[str, Sequence[float]]]]], *,
+                 title: str = "", x_label: str = "φ1, °"):
+    """Quantities over the crank's turn as a matplotlib Figure: one panel per entry of
+    ``panels`` ((y label, [(series label, values), …])), one under another over the
+    shared axis of ``angle_deg``; a panel with several series, or a named one, has a
+    legend. Values that are None or not finite (a position that does not assemble) leave
+    a gap in their line."""
+    from matplotlib.figure import Figure
+    from matplotlib.ticker import MultipleLocator
+
+    if not panels:
+        raise ValueError("a cycle chart needs at least one panel")
+    x = [float(a) for a in angle_deg]
+    fig = Figure(figsize=(8.6, 1.2 + 2.1 * len(panels)), dpi=_DPI, layout="constrained")
+    axes = fig.subplots(len(panels), 1, sharex=True, squeeze=False)[:, 0]
+    for ax, (y_label, series) in zip(axes, panels, strict=True):
+        for k, (label, values) in enumerate(series):
+            y = [math.nan if v is None or not math.isfinite(v) else float(v) for v in values]
+            if len(y) != len(x):
+                raise ValueError(f"{label or y_label}: {len(y)} values for {len(x)} angles")
+            ax.plot(x, y, color=SERIES[k % len(SERIES)], linewidth=1.4, label=label or None)
+        ax.axhline(0.0, color="#999", linewidth=0.6)
+        ax.set_ylabel(y_label)
+        ax.grid(True, color="#e4e4e4", linewidth=0.7)
+        if len(series) > 1 or any(label for label, _ in series):
+            ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False, fontsize=9)
+    if x:
+        lo, hi = min(x), max(x)
+        axes[-1].set_xlim(lo, hi if hi > lo else lo + 1.0)
+        if hi - lo >= 90:
+            axes[-1].xaxis.set_major_locator(MultipleLocator(30 if hi - lo <= 400 else 90))
+    axes[-1].set_xlabel(x_label)
+    if title:
+        fig.suptitle(title, x=0.01, ha="left", fontsize=11)
+    return fig
+
+
+def cycle_chart(angle_deg: Sequence[float],
+                panels: Sequence[tuple[str, Sequence[tuple[str, Sequence[float]]]]], *,
+                title: str = "", x_label: str = "φ1, °", fmt: str = "png") -> bytes:
+    """:func:`cycle_figure` as the bytes of a ``fmt`` file (:data:`FORMATS`)."""
+    return _save(cycle_figure(angle_deg, panels, title=title, x_label=x_label), fmt)
+
+
+def _save(fig, fmt: str) -> bytes:
+    """The figure's file in ``fmt``, the same bytes for the same figure: no dates, the
+    SVG's ids from a fixed salt, the PNG drawn by Agg."""
+    from matplotlib import rc_context
+
+    if fmt not in FORMATS:
+        raise ValueError(f"a chart is written as {', '.join(FORMATS)}, not {fmt!r}")
+    metadata = {"png": {"Software": None}, "svg": {"Date": None, "Creator": None},
+                "pdf": {"CreationDate": None, "ModDate": None, "Creator": None,
+                        "Producer": None}}[fmt]
+    out = io.BytesIO()
+    with rc_context({"svg.hashsalt": _SALT, "svg.fonttype": "path", "pdf.fonttype": 42}):
+        fig.savefig(out, format=fmt, dpi=_DPI * 1.5 if fmt == "png" else _DPI,
+                    metadata=metadata, facecolor="white")
+    return out.getvalue()

@@ -1,8 +1,7 @@
-"""Write a sheet to disk: SVG as is, PNG and PDF through cairosvg (optional).
+"""A drawing's SVG text rendered to PNG or PDF bytes through cairosvg (optional).
 
-Every writer is atomic: the bytes go to a temporary file in the target's own
-directory, which then replaces the target (``os.replace``), so a reader never
-sees half a sheet and a failed export leaves the old file in place.
+Bytes only: the command line writes them with its one atomic writer, so a reader
+never sees half a sheet and a failed export leaves the old file in place.
 
 cairosvg is an optional dependency (``pip install 'vector-plans[export]'``),
 imported only when a PNG or PDF is asked for.  It does not read the embedded
@@ -12,20 +11,22 @@ imported only when a PNG or PDF is asked for.  It does not read the embedded
 
 from __future__ import annotations
 
+import atexit
 import os
+import shutil
+import tempfile
 from pathlib import Path
 from types import ModuleType
 
+from drawing.styles import FONT_FILE
 from plans.errors import PlansError
 
 __all__ = [
+    "PAPER",
     "ExportUnavailableError",
     "pdf_bytes",
     "png_bytes",
-    "write_bytes_atomic",
-    "write_pdf",
-    "write_png",
-    "write_svg",
+    "require",
 ]
 
 _HINT = "PNG and PDF export needs cairosvg: pip install 'vector-plans[export]'"
@@ -83,12 +84,6 @@ def _render(call, svg: str, **options) -> bytes:
     global _fonts_ready
     if _fonts_ready or "FONTCONFIG_FILE" in os.environ:
         return call(bytestring=svg.encode("utf-8"), **options)
-    import atexit
-    import shutil
-    import tempfile
-
-    from drawing.svg import FONT_FILE
-
     folder = tempfile.mkdtemp(prefix="vector-plans-fonts-")  # private: mode 0700
     atexit.register(shutil.rmtree, folder, ignore_errors=True)
     conf = Path(folder) / "fonts.conf"
@@ -99,21 +94,6 @@ def _render(call, svg: str, **options) -> bytes:
     finally:
         del os.environ["FONTCONFIG_FILE"]
         _fonts_ready = True
-
-
-def write_bytes_atomic(data: bytes, path: str | os.PathLike[str]) -> Path:
-    """Write ``data`` to ``path`` with the command line's one atomic writer (a temporary
-    file in the same folder, renamed when complete; the usual file mode; never over an
-    input file)."""
-    from plans.cli.common import write_output
-
-    write_output(str(path), data)
-    return Path(path)
-
-
-def write_svg(svg: str, path: str | os.PathLike[str]) -> Path:
-    """Save the SVG text (UTF-8)."""
-    return write_bytes_atomic(svg.encode("utf-8"), path)
 
 
 #: a PNG's background: a sheet is paper, and black lines on a transparent PNG are black
@@ -131,13 +111,3 @@ def png_bytes(svg: str, dpi: float = 150, scale: float = 1.0) -> bytes:
 def pdf_bytes(svg: str) -> bytes:
     """The SVG rendered to a one-page PDF of the sheet's real size."""
     return _render(_cairosvg().svg2pdf, svg)
-
-
-def write_png(svg: str, path: str | os.PathLike[str], dpi: float = 150) -> Path:
-    """Render the SVG to a PNG file at ``dpi``."""
-    return write_bytes_atomic(png_bytes(svg, dpi), path)
-
-
-def write_pdf(svg: str, path: str | os.PathLike[str]) -> Path:
-    """Render the SVG to a one-page PDF file of the sheet's real size."""
-    return write_bytes_atomic(pdf_bytes(svg), path)

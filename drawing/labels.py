@@ -1,33 +1,22 @@
-"""Text extents by a fixed rule, fitting text into cells, and label placement.
+"""Label placement: each label near its point where it meets nothing drawn.
 
-Text widths come from a **fixed rule, not from the fonts installed on the
-machine**, so that a layout (and its tests) is the same everywhere.  The rule
-is GOST 2.304 type B, with *h* the capital height:
+Text extents come from :mod:`drawing.text` (the one fixed rule); :func:`place_labels`
+puts a view's letters, a dimension's value and a position's number where they keep
+clear of the lines, of each other and of the view's edge, on a leader where a point has
+no room beside it.
 
-* capitals and digits 0.6 h wide, lowercase 0.5 h, punctuation and spaces 0.3 h;
-* Latin and Greek letters 0.1 h wider, the widest letters (Ж, Ш, Щ, Ы, Ю, №, M,
-  W; ж, ш, щ, ы, ю, м, и, й, m, w, ω) 0.9 h and 0.65 h, I, i, l, 1 0.3 h,
-  dashes 0.45 h: the classes as osifont draws them;
-* 0.2 h of letter spacing between characters;
-* height h above the baseline, descent 0.3 h below it.
-
-Against osifont's real advances the rule is within about ±10 % on words.
-
->>> text_width("Изм.", 2.5)
-6.625
->>> text_box(Text((0, 0), "AB", size=10)).bounds
-(0.0, -10.0, 18.68, 3.0)
+>>> req = LabelRequest((0, 0), "A", prefer="e")
+>>> (p,) = place_labels([req])
+>>> p.clear, p.text.anchor
+(True, 'start')
 """
 
 from __future__ import annotations
 
 import functools
-import itertools
 import math
-import unicodedata
-from collections.abc import Iterable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Literal
 
 import numpy as np
 import shapely
@@ -35,228 +24,23 @@ import shapely.ops
 from shapely.geometry import LineString, Polygon
 from shapely.geometry.base import BaseGeometry
 
-from drawing.scene import (
-    INDEX_SIZE,
-    SUB_SHIFT,
-    SUP_SHIFT,
-    Arrow,
-    Blank,
-    Circle,
-    Hatch,
-    Item,
-    Point,
-    Polyline,
-    Rect,
-    Run,
-    Segment,
-    Text,
-    flatten,
-)
-from drawing.styles import Style
+from drawing.obstacles import area_outside, is_box
+from drawing.scene import Point, Text
+from drawing.text import text_box
+from drawing.ticks import Ticks, on_ticks
 
 __all__ = [
-    "DESCENT",
-    "LINE_PITCH",
-    "SPACING",
+    "ALONG",
+    "FAR",
+    "GAP",
+    "LEADER",
+    "LEADER_END",
+    "RETRIES",
+    "TURN",
     "LabelRequest",
     "Placement",
-    "char_width",
-    "fit_text",
-    "obstacles_of",
-    "overlaps",
     "place_labels",
-    "runs_width",
-    "text_box",
-    "text_width",
 ]
-
-SPACING = 0.2  # letter spacing, in h
-DESCENT = 0.3  # below the baseline, in h
-LINE_PITCH = 1.7  # baseline to baseline, in h (GOST 2.304 type B minimum)
-SLANT = math.tan(math.radians(15))  # lean of 75° letters per unit of height
-_WIDE = {  # letters much wider than their class in osifont: width in h
-    **dict.fromkeys("ЖШЩЫЮ№MW", 0.9),
-    **dict.fromkeys("жшщыюмийmwω", 0.65),
-}
-_NARROW = {**dict.fromkeys("Iil1|", 0.3), **dict.fromkeys("-–—", 0.45)}
-
-
-def char_width(c: str) -> float:
-    """Width of one character in units of h, without the letter spacing.
-
-    The GOST type B classes, with Latin and Greek letters one step wider
-    than Cyrillic ones because osifont draws them so (measured: Latin
-    lowercase 0.58 h, Cyrillic 0.46 h, before spacing).
-
-    >>> [char_width(c) for c in "ДдAa."]
-    [0.6, 0.5, 0.7, 0.6, 0.3]
-    """
-    if c in _WIDE:
-        return _WIDE[c]
-    if c in _NARROW:
-        return _NARROW[c]
-    if c.isspace() or unicodedata.category(c).startswith("P"):
-        return 0.3
-    wider = 0.1 if unicodedata.name(c, "").startswith(("LATIN", "GREEK")) else 0.0
-    if c.islower():
-        return 0.5 + wider
-    if c.isalpha():
-        return 0.6 + wider
-    return 0.6  # digits and symbols
-
-
-def text_width(text: str, size: float) -> float:
-    """Estimated advance of ``text`` at capital height ``size`` (mm)."""
-    if not text:
-        return 0.0
-    return size * (sum(char_width(c) for c in text) + SPACING * (len(text) - 1))
-
-
-def runs_width(runs: Sequence[Run], size: float) -> float:
-    """Advance of marked-up runs: indices at 0.7 h, in turn after their base."""
-    total, count = 0.0, 0
-    for r in runs:
-        h = size if r.level == 0 else size * INDEX_SIZE
-        total += text_width(r.text, h) + (SPACING * h if count else 0.0)
-        count += 1
-    return total
-
-
-def text_box(t: Text) -> Polygon:
-    """The box of ``t`` on the sheet: advance × (h + descent).
-
-    Anchor, baseline, rotation, horizontal stretch and the lean of slanted letters at
-    the top of the box are honoured.
-    """
-    runs = t.runs()
-    w = runs_width(runs, t.size) * t.stretch
-    x0 = {"start": 0.0, "middle": -w / 2, "end": -w}[t.anchor]
-    base, h = t.baseline_shift, t.size
-    levels = {r.level for r in runs}
-    up = SUP_SHIFT + INDEX_SIZE if 1 in levels else 1.0
-    down = SUB_SHIFT + DESCENT * INDEX_SIZE if -1 in levels else DESCENT
-    top, bottom = base - h * max(1.0, up), base + h * max(DESCENT, down)
-    a = math.radians(t.rotate_deg)
-    ca, sa = math.cos(a), math.sin(a)
-    px, py = t.pos
-    lean = SLANT * (base - top) if t.italic else 0.0
-    local = ((x0, top), (x0 + w + lean, top), (x0 + w + lean, bottom), (x0, bottom))
-    return Polygon([(px + x * ca - y * sa, py + x * sa + y * ca) for x, y in local])
-
-
-# ---------------------------------------------------------------- fitting into cells
-
-
-def _wrap(text: str, size: float, lines: int) -> tuple[str, ...] | None:
-    """``text`` broken at spaces into ``lines`` lines of the least widest width."""
-    words = text.split()
-    if len(words) < lines:
-        return None
-    best: tuple[str, ...] | None = None
-    best_w = math.inf
-    for cuts in itertools.combinations(range(1, len(words)), lines - 1):
-        bounds = (0, *cuts, len(words))
-        parts = tuple(" ".join(words[a:b]) for a, b in itertools.pairwise(bounds))
-        w = max(text_width(p, size) for p in parts)
-        if w < best_w:
-            best, best_w = parts, w
-    return best
-
-
-def _need(lines: Sequence[str], size: float) -> tuple[float, float]:
-    """Advance of the widest line, and the height a block needs with its
-    capitals centred in a cell (room for the descent above and below)."""
-    width = max(text_width(s, size) for s in lines)
-    block = size * (1 + LINE_PITCH * (len(lines) - 1))
-    return width, block + 2 * DESCENT * size
-
-
-def fit_text(
-    text: str,
-    cell: Rect,
-    *,
-    sizes: Sequence[float] = (3.5, 2.5),
-    max_lines: int = 1,
-    align: Literal["start", "middle"] = "middle",
-    pad: float = 0.3,
-    inset: float = 0.7,
-    slant: float = SLANT,
-    min_stretch: float = 0.8,
-) -> tuple[Text, ...]:
-    """Lines of ``text`` set inside ``cell``, as large as they fit.
-
-    1. Sizes are tried largest first; at each size one line, then two and
-       more up to ``max_lines``, broken at spaces into lines of even width.
-    2. If nothing fits, the smallest size is condensed horizontally, down to
-       ``min_stretch`` (KiCad's GOST sheet writes "Изм." at 80 % width).
-    3. If that is not enough either, it is shrunk below the smallest size, so
-       that text never leaves its cell.
-
-    The capitals of the block are centred vertically; horizontally the lines
-    are centred, or start ``inset`` mm from the left edge.  ``pad`` mm stays
-    free on every side (make it half the cell's line width plus a little), and
-    the lean of slanted letters (``slant`` × h, tan 15°) is counted in.
-
-    >>> [(t.text, t.size) for t in fit_text("Масштаб", Rect(0, 0, 18, 5), sizes=(2.5,))]
-    [('Масштаб', 2.5)]
-    >>> [t.text for t in fit_text("Кинематический анализ", Rect(0, 0, 60, 20),
-    ...                              sizes=(5.0,), max_lines=2)]
-    ['Кинематический', 'анализ']
-    >>> cell = Rect(0, 0, 7, 5)
-    >>> [(t.size, t.stretch) for t in fit_text("Изм.", cell, sizes=(2.5,), pad=0.45)]
-    [(2.5, 0.81)]
-    """
-    if not text:
-        return ()
-    sizes = sorted(sizes, reverse=True)
-    avail_w = cell.w - 2 * pad - (inset - pad if align == "start" else 0.0)
-    avail_h = cell.h - 2 * pad
-
-    def layouts(size: float) -> list[tuple[str, ...]]:
-        out = [(text,)]
-        for n in range(2, max_lines + 1):
-            if wrapped := _wrap(text, size, n):
-                out.append(wrapped)
-        return out
-
-    def stretch_needed(lines: tuple[str, ...], size: float) -> float:
-        """Horizontal scale making the block fit (>1: room to spare; 0: too tall)."""
-        w, h = _need(lines, size)
-        if h > avail_h + 1e-9:
-            return 0.0
-        return (avail_w - slant * size) / w if w > 0 else math.inf
-
-    chosen: tuple[float, float, tuple[str, ...]] | None = None
-    for size in sizes:
-        for lines in layouts(size):
-            if stretch_needed(lines, size) >= 1 - 1e-9:
-                chosen = (size, 1.0, lines)
-                break
-        if chosen:
-            break
-    if chosen is None:
-        size = sizes[-1]
-        lines = max(layouts(size), key=lambda ls: stretch_needed(ls, size))
-        k = stretch_needed(lines, size)
-        if k >= min_stretch:
-            chosen = (size, math.floor(k * 100) / 100, lines)
-        else:  # shrink at the narrowest stretch until both width and height fit
-            w, h = _need(lines, size)
-            scale = min(avail_w / (w * min_stretch + slant * size), avail_h / h)
-            chosen = (math.floor(size * scale * 100) / 100, min_stretch, lines)
-
-    size, stretch, lines = chosen
-    pitch = LINE_PITCH * size
-    cx, cy = cell.center
-    first = cy + size / 2 - pitch * (len(lines) - 1) / 2  # baseline of line 1
-    x = cx if align == "middle" else cell.x + inset
-    return tuple(
-        Text((x, first + i * pitch), line, size=size, anchor=align, stretch=stretch)
-        for i, line in enumerate(lines)
-    )
-
-
-# ---------------------------------------------------------------- placing labels
 
 _COMPASS = ("n", "ne", "e", "se", "s", "sw", "w", "nw")
 
@@ -287,6 +71,8 @@ class LabelRequest:
     also: tuple[Point, ...] = ()
     blank: bool = False
     cross: bool = True
+    #: slanted (GOST type B), as a sheet letters; upright in a picture's plain text
+    italic: bool = True
 
     def __post_init__(self) -> None:
         if self.prefer not in _COMPASS:
@@ -323,7 +109,8 @@ def _candidate(req: LabelRequest, direction: str, gap: float, anchor: Point) -> 
     d = gap if ux == 0 or uy == 0 else gap * math.sqrt(0.5)
     kind = "start" if ux > 0 else "end" if ux < 0 else "middle"
     ax, ay = anchor
-    probe = Text((ax, ay), req.text, req.size, anchor=kind, markup=req.markup)
+    probe = Text((ax, ay), req.text, req.size, anchor=kind, markup=req.markup,
+                 italic=req.italic)
     _, top, _, bottom = text_box(probe).bounds  # relative to a baseline at ay
     if uy < 0:
         y = ay - d - (bottom - ay)
@@ -331,7 +118,8 @@ def _candidate(req: LabelRequest, direction: str, gap: float, anchor: Point) -> 
         y = ay + d + (ay - top)
     else:
         y = ay + req.size / 2
-    return Text((ax + ux * d, y), req.text, req.size, anchor=kind, markup=req.markup)  # type: ignore[arg-type]
+    return Text((ax + ux * d, y), req.text, req.size, anchor=kind,  # type: ignore[arg-type]
+                markup=req.markup, italic=req.italic)
 
 
 def _directions(prefer: str) -> list[str]:
@@ -358,6 +146,8 @@ def place_labels(
     soft: Sequence[BaseGeometry] = (),
     near: float = 3.0,
     max_soft: int = 2,
+    leader_from: float | None = None,
+    ticks: Ticks | None = None,
 ) -> list[Placement]:
     """Put each label near its anchor where it hits nothing.
 
@@ -375,10 +165,10 @@ def place_labels(
     has no such spot, it takes the nearest clear one beyond a line with a ``leader``
     line to its point (GOST 2.316), one that ends :data:`LEADER_END` mm clear of every
     line and crosses lines rather than runs along them (else the finer search of
-    :func:`_wider`; a leader ending on a line only where all else covers one).  A label keeps :data:`GAP` mm from the labels of other points
-    (an ``optional`` one from every label: a position's number beside the letter of its
-    own point read as one word, "¹B").  If
-    none is free, the candidate with the least overlap area is taken and reported with
+    :func:`_wider`; a leader ending on a line only where all else covers one). A label
+    keeps :data:`GAP` mm from the labels of other points (an ``optional`` one from every
+    label: a position's number beside the letter of its own point read as one word,
+    "¹B"). If none is free, the candidate with the least overlap area is taken and reported with
     ``clear=False`` (an ``optional`` one is then meant to be left out, and later labels
     may take its place).
 
@@ -386,14 +176,27 @@ def place_labels(
         obstacles: drawn geometry to avoid, already widened; see
             :func:`obstacles_of`.
         taken: boxes of labels placed earlier (e.g. by another view).
+        leader_from: a picture's rule (the check's overlay): each label takes the first
+            spot, nearest first, that meets nothing (no line, no label within
+            :data:`GAP`, nothing out of ``region``), whatever side of a line it is on;
+            one farther than ``leader_from`` from its point hangs on a leader that keeps
+            :data:`GAP` from the labels. Where none is clear, the nearest least covered
+            spot (``clear=False``). None: the sheets' rule above.
+        ticks: the rule of the positions' numbers on a diagram's φ axis
+            (:mod:`drawing.ticks`): each request is a number anchored where its tick
+            meets the axis, ``soft`` are the curves' middle lines, ``region`` the view's
+            box it must not widen. None: the labels' rule.
 
     Labels are placed in turn, so an early one may take the only room a later one had:
     where a ``cross=False`` label is left with no clear spot, the labels are placed again
     with those left so first, and the placing kept where fewer labels cover a line.
     """
+    if ticks is not None:
+        return [Placement(text, box, clear) for text, box, clear in
+                on_ticks(requests, [*obstacles, *taken], soft, region, distances, ticks)]
     hard = [g for g in (*obstacles, *taken) if not g.is_empty]
     tree = shapely.STRtree(hard) if hard else None
-    args = (hard, tree, region, distances, soft, near, max_soft)
+    args = (hard, tree, region, distances, soft, near, max_soft, leader_from)
     order = list(range(len(requests)))
     out = _in_order(requests, *args)
     score = _score(requests, out, hard, tree, region)
@@ -420,8 +223,8 @@ def _score(requests: Sequence[LabelRequest], placed: list[Placement], hard: list
     """How bad a placing is: the labels out of ``region`` (they would make the view
     larger than it was sized for), those covering a line, those with no clear spot (and
     no leader), the mm² of lines they cover and out of the region."""
-    region_box = region is not None and _is_box(region)
-    out = [0.0 if region is None or p.clear or p.leader else _outside(p.box, region, region_box)
+    region_box = region is not None and is_box(region)
+    out = [0.0 if region is None or p.clear or p.leader else area_outside(p.box, region, region_box)
            for p in placed]
     area = [0.0 if tree is None or p.clear or p.leader else
             sum(p.box.intersection(hard[i]).area for i in tree.query(p.box, predicate="intersects"))
@@ -440,6 +243,7 @@ def _in_order(
     soft: Sequence[BaseGeometry],
     near: float,
     max_soft: int,
+    leader_from: float | None = None,
 ) -> list[Placement]:
     """:func:`place_labels`, each label in turn in the order given, against the
     obstacles and labels taken before (``hard``, non-empty, and their STRtree)."""
@@ -449,7 +253,7 @@ def _in_order(
     rings = [close, [d for d in distances if d not in close]] if soft else [list(distances)]
     placed: list[Polygon] = []
     placed_at: list[Point] = []  # the anchor of each box placed
-    region_box = region is not None and _is_box(region)
+    region_box = region is not None and is_box(region)
     out: list[Placement] = []
     leaders: list[BaseGeometry] = []  # the leader lines drawn so far, widened: no letter on one
     lines = ((hard, hard_tree), (soft, soft_tree))
@@ -472,7 +276,7 @@ def _in_order(
             near_labels = [p for p, m in zip(placed, mask, strict=True) if m]
             on_labels = sum(box.intersection(p).area for p in near_labels)
             hits += near_labels
-        outside = 0.0 if region is None else _outside(box, region, region_box)
+        outside = 0.0 if region is None else area_outside(box, region, region_box)
         return hits, on_labels, outside
 
     def blocked(req: LabelRequest, cands: np.ndarray, boxes, others) -> np.ndarray:
@@ -495,8 +299,37 @@ def _in_order(
                 r0, s0, r1, s1 = region.bounds
                 out |= (x0 < r0 - 1e-9) | (y0 < s0 - 1e-9) | (x1 > r1 + 1e-9) | (y1 > s1 + 1e-9)
             else:
-                out |= np.array([_outside(b, region, False) > 1e-9 for b in cands], dtype=bool)
+                out |= np.array([area_outside(b, region, False) > 1e-9 for b in cands], dtype=bool)
         return out
+
+    def picture(req: LabelRequest, spots, boxes, others) -> Placement:
+        """The first spot of ``spots`` at the nearest of ``distances`` that meets nothing
+        (:func:`blocked`), with a leader beyond ``leader_from`` that keeps GAP from the
+        labels; else the least covered spot at the nearest distance."""
+        for gap in distances:
+            texts = [_candidate(req, direction, gap, anchor) for anchor, direction in spots]
+            cands = np.asarray([text_box(t) for t in texts], dtype=object)
+            for i in np.flatnonzero(~blocked(req, cands, boxes, others)):
+                anchor, box = spots[i][0], cands[i]
+                if gap <= leader_from:
+                    return Placement(texts[i], box, clear=True)
+                if _leader_near(anchor, box, placed):
+                    continue  # its leader would run through a letter
+                line = _leader(anchor, box)
+                leaders.append(line.buffer(GAP))
+                return Placement(texts[i], box, clear=True, leader=(anchor, line.coords[1]))
+        best = None  # none clear: in the region, off the labels, on the least of the lines
+        for gap in distances:
+            for anchor, direction in spots:
+                text = _candidate(req, direction, gap, anchor)
+                box = text_box(text)
+                hits, on_labels, outside = meets(req, box, boxes, others)
+                cost = (outside > 1e-9, on_labels > 1e-6,
+                        sum(box.intersection(g).area for g in hits) + outside)
+                if best is None or cost < best[0]:
+                    best = (cost, text, box)
+        assert best is not None  # distances and directions are never empty
+        return Placement(best[1], best[2], clear=False)
 
     for req in requests:
         chosen: tuple[Text, Polygon] | None = None
@@ -507,6 +340,13 @@ def _in_order(
                  for direction in _directions(req.prefer)]
         boxes = np.asarray(placed, dtype=object)  # the labels before this one, once
         others = np.asarray([a != req.anchor for a in placed_at], dtype=bool)
+        if leader_from is not None:  # a picture's rule: the first clear spot, nearest first
+            got = picture(req, spots, boxes, others)
+            if got.clear or not req.optional:  # an optional label left out takes no room
+                placed.append(got.box)
+                placed_at.append(req.anchor)
+            out.append(got)
+            continue
         for ring in rings:
             # clear of everything wins; else the spot crossing the fewest thin lines
             relaxed: tuple[int, Text, Polygon] | None = None
@@ -628,9 +468,10 @@ def _turn_centres(turns: np.ndarray, gap: float, hw: float, hh: float) -> np.nda
 
 def _at(req: LabelRequest, centre: tuple[float, float]) -> Text:
     """The label with its box centred on ``centre``."""
-    x0, y0, x1, y1 = text_box(Text((0.0, 0.0), req.text, req.size, markup=req.markup)).bounds
+    x0, y0, x1, y1 = text_box(Text((0.0, 0.0), req.text, req.size, markup=req.markup,
+                                   italic=req.italic)).bounds
     return Text((centre[0] - (x0 + x1) / 2, centre[1] - (y0 + y1) / 2), req.text, req.size,
-                markup=req.markup)
+                italic=req.italic, markup=req.markup)
 
 
 def _leader(anchor: Point, box: Polygon) -> LineString:
@@ -681,7 +522,8 @@ def _wider(req: LabelRequest, distances: Sequence[float], hard: list, hard_tree,
     on the fewest. (n thin lines crossed, whether it needs a leader, text, box, anchor),
     or None where every spot meets something."""
     lines = ((hard, hard_tree), (soft, soft_tree))
-    x0, y0, x1, y1 = text_box(Text((0.0, 0.0), req.text, req.size, markup=req.markup)).bounds
+    x0, y0, x1, y1 = text_box(Text((0.0, 0.0), req.text, req.size, markup=req.markup,
+                                   italic=req.italic)).bounds
     hw, hh = (x1 - x0) / 2, (y1 - y0) / 2
     start = math.degrees(math.atan2(_UNIT[req.prefer][1], _UNIT[req.prefer][0]))
     half = round(180 / TURN)  # the preferred direction first, then by turn either way
@@ -720,83 +562,3 @@ def _beyond(anchor: Point, box: Polygon, hard: list, tree) -> list:
         return []
     return [hard[i] for i in tree.query(sight, predicate="intersects")
             if hard[i].distance(a) > 1e-9]
-
-
-def _is_box(g: BaseGeometry) -> bool:
-    """An axis-parallel rectangle: its area is its bounds'."""
-    x0, y0, x1, y1 = g.bounds
-    return abs(g.area - (x1 - x0) * (y1 - y0)) <= 1e-9 * max(g.area, 1.0)
-
-
-def _outside(box: Polygon, region: BaseGeometry, region_box: bool) -> float:
-    """The area of ``box`` outside ``region``: by bounds where both are axis-parallel
-    rectangles (a label and a view's frame, some thousand times a sheet)."""
-    if not (region_box and _is_box(box)):
-        return box.difference(region).area
-    a0, b0, a1, b1 = box.bounds
-    r0, s0, r1, s1 = region.bounds
-    inside = max(0.0, min(a1, r1) - max(a0, r0)) * max(0.0, min(b1, s1) - max(b0, s0))
-    return (a1 - a0) * (b1 - b0) - inside
-
-
-def obstacles_of(
-    items: Iterable[Item], style: Style | None = None, clearance: float = 0.3
-) -> list[BaseGeometry]:
-    """Geometry of drawn items, widened by half the line width + ``clearance`` mm.
-
-    Lines become buffered strokes, an arrow its shaft and head, a circle its
-    ring (its disc if filled), a text its box.
-    """
-    style = style or Style()
-    out: list[BaseGeometry] = []
-    for it in flatten(items):
-        if isinstance(it, Text):
-            out.append(text_box(it))
-            continue
-        if isinstance(it, Blank):  # white: nothing to keep clear of
-            continue
-        if isinstance(it, Hatch):
-            lines = [LineString(s) for s in it.strokes()]
-            half = style.width(it.line) / 2 + clearance
-            out += [ln.buffer(half) for ln in lines]
-            if it.base is not None:
-                out.append(
-                    LineString([it.p1, it.p2]).buffer(
-                        style.width(it.base) / 2 + clearance
-                    )
-                )
-            continue
-        half = style.width(it.line) / 2 + clearance
-        if isinstance(it, Segment):
-            out.append(LineString([it.p1, it.p2]).buffer(half))
-        elif isinstance(it, Polyline):
-            pts = [*it.points, it.points[0]] if it.closed else list(it.points)
-            out.append(LineString(pts).buffer(half))
-        elif isinstance(it, Arrow):
-            if (shaft := it.shaft()) is not None:
-                out.append(LineString(shaft).buffer(half))
-            if (head := it.head()) is not None:
-                out.append(Polygon(head).buffer(clearance))
-        elif isinstance(it, Circle):
-            disc = shapely.Point(it.center).buffer(it.r)
-            out.append(disc.buffer(half) if it.fill else disc.exterior.buffer(half))
-    return out
-
-
-def overlaps(texts: Sequence[Text], tolerance: float = 1e-6) -> list[tuple[int, int]]:
-    """Pairs ``(i, j)``, i < j, of texts whose boxes share over ``tolerance`` mm².
-
-    >>> overlaps([Text((0, 0), "AB"), Text((3, 0), "CD"), Text((50, 0), "EF")])
-    [(0, 1)]
-    """
-    boxes = [text_box(t) for t in texts]
-    if not boxes:
-        return []
-    tree = shapely.STRtree(boxes)
-    left, right = tree.query(boxes, predicate="intersects")
-    pairs = sorted(
-        {(int(i), int(j)) for i, j in zip(left, right, strict=True) if i < j}
-    )
-    return [
-        (i, j) for i, j in pairs if boxes[i].intersection(boxes[j]).area > tolerance
-    ]

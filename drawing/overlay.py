@@ -7,47 +7,59 @@ numbers on it are millimetres at the student's scale factors):
 * red dashed: the student's plan rebuilt from the measured lengths
   (:func:`plans.check.rebuild`), a red ring at each point placed;
 * red text: the segments beyond tolerance, with the deviation in mm, at the segment or,
-  where it is crowded, farther out on a thin leader; a thin red line joins a computed
+  where it is crowded, farther out on a dotted leader; a thin red line joins a computed
   point to where the student's drawing puts it when they differ;
 * under each panel, every deviation beyond tolerance of that plan; below: the legend,
   the verdict and the diagnosis, in the language of the report, the method's notation
   with its indices (a^k_A3A as a with k above and A3A below, as the sheet writes it).
 
-A small standalone SVG written with xml.etree (which escapes every text): the sheet
-renderer (drawing.svg) draws GOST sheets in one colour, and this picture needs two.
-
-Text is laid out by a fixed rule, not by the fonts of the machine: the advance of each
-character in DejaVu Sans (what "sans-serif" is on Linux, and wider than Arial or
-Helvetica), rounded up. Every text's box is kept (:class:`Overlay`), lines are wrapped
-to the drawing, labels are placed greedily so that no two texts overlap and none sits on
-a point, and the picture's height is what its texts need.
+It is drawn as the sheets are: one :class:`~drawing.scene.Scene` (a layer per colour and
+line, each with its own :class:`~drawing.styles.Style`) written by :mod:`drawing.svg` on a
+page measured in px, its text in the project's osifont, laid out by the one fixed rule of
+:mod:`drawing.text`, and its letters placed by :func:`drawing.labels.place_labels`. Every
+text's box is kept (:class:`Overlay`), lines are wrapped to the drawing, no two texts
+overlap and none sits on a point, and the picture's height is what its texts need.
 """
 
 from __future__ import annotations
 
 import math
 import re
-import xml.etree.ElementTree as ET
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
-import numpy as np
+import shapely
 
+from drawing.labels import LabelRequest, place_labels
+from drawing.obstacles import obstacles_of
 from drawing.scene import (
-    INDEX_SIZE,
-    SUB_SHIFT,
-    SUP_SHIFT,
+    Blank,
+    Circle,
+    Item,
+    Layer,
+    Page,
+    Polyline,
     Run,
+    Scene,
+    Segment,
+    Text,
     index_markup,
     parse_markup,
     shared_label,
-    wrap_words,
 )
+from drawing.styles import LineType, Style
+from drawing.svg import to_svg
+from drawing.text import runs_width, text_box, wrap_words
+from drawing.text import text_width as rule_width
+from plans.check.describe import lookalike_lines
 from plans.check.verdict import MU_KEY, CheckResult, rebuild, recorded_segments
-from plans.fmt import listing, notation_in
+from plans.fmt import listing, notation_in, num, signed
 from plans.plan.solution import image_sides
 
-PANEL = 340.0  # user units (px) of one plan's square
+__all__ = ["WORDS", "Overlay", "mark", "notation", "overlay", "overlay_svg", "text_width"]
+
+PANEL = 340.0  # px of one plan's square
 MARGIN = 24.0
+#: font sizes (px, the em); the rule and the scene take the capitals' height
 TITLE = 13.0
 FONT = 11.0
 SMALL = 9.5
@@ -55,6 +67,9 @@ INDENT = 12.0  # of a wrapped line's continuation
 RED = "#c62828"
 BLACK = "#222"
 GREY = "#999"
+#: red at 70 % on white: the thin line from a computed point to the student's
+PALE_RED = "#d86868"
+CAP = Style().cap_height  # capitals' height per em, of osifont
 
 WORDS = {
     "en": {
@@ -67,7 +82,8 @@ WORDS = {
         "ok": "All measured segments within tolerance ({tol}).",
         "bad": "Beyond tolerance ({tol}): {names}.",
         "none": "Diagnosis: no single mistake explains this.",
-        "slips": "Diagnosis: the plans are right; the items beyond tolerance are slips in measuring or writing down:",
+        "slips": "Diagnosis: the plans are right; the items beyond tolerance are slips in "
+                 "measuring or writing down:",
         "diag": "Diagnosis: {what}.",
         "fix": "Correction: {fix}.",
         "title": "Check of a hand-drawn plan: {src}",
@@ -83,7 +99,8 @@ WORDS = {
         "ok": "Все измеренные отрезки в допуске ({tol}).",
         "bad": "Вне допуска ({tol}): {names}.",
         "none": "Диагноз: ни одна отдельная ошибка этого не объясняет.",
-        "slips": "Диагноз: планы построены верно; отклонения — ошибки измерения или записи отдельных величин:",
+        "slips": "Диагноз: планы построены верно; отклонения — ошибки измерения или записи "
+                 "отдельных величин:",
         "diag": "Диагноз: {what}.",
         "fix": "Исправление: {fix}.",
         "title": "Проверка плана, построенного вручную: {src}",
@@ -91,45 +108,48 @@ WORDS = {
     },
 }
 
+#: the picture's layers, bottom first, each with its colour, widths and dashes
+STYLES = {
+    "paper": Style(),
+    "panels": Style(thin=1.0, color="#ddd"),
+    "computed": Style(s=1.1, thin=0.5, color=BLACK),  # the plan's segments, the images thin
+    "student": Style(s=1.0, thin=1.2, dash=5.0, dash_gap=3.0, color=RED),  # rings: s
+    "beyond": Style(thin=1.8, dash=5.0, dash_gap=3.0, color=RED),
+    "moved": Style(thin=0.6, color=PALE_RED),
+    "text": Style(color=BLACK),  # the title first
+    "red-text": Style(color=RED),
+    "grey-text": Style(color=GREY),
+    "letters": Style(thin=0.6, color=BLACK),  # the points' letters and their leaders
+    "moved-letters": Style(thin=0.6, color=RED),
+    "deviations": Style(thin=0.6, dash=1.5, dash_gap=1.5, color=RED),  # leaders dotted
+}
+#: what a line may be drawn wider than the rule says (its stated ±10 %): lines are wrapped
+#: and cut to the drawing at the rule's width times this, so that none runs out of it
+SPARE = 1.1
+#: px from a point to its letter's box, nearest first; beyond them, on a leader
+NEAR = (4.0, 8.0, 13.0)
+FAR = (20.0, 28.0, 38.0, 50.0, 64.0, 80.0, 100.0, 125.0, 150.0)
+#: px a line's ink is widened by for the letters to keep clear of, and a point's round
+CLEAR = 1.5
+POINT_R = 3.5
 
-# ---------------------------------------------------------------------------------------
-# text extents
-# ---------------------------------------------------------------------------------------
+Box = tuple[float, float, float, float]
+
+#: what the picture writes for the characters osifont has no glyph for (the PNG would
+#: print a box): the sheets write ∥ as "||" too
+STAND_INS = {"∥": "||", "⊥": "_|_", "…": "...", "→": "->"}
+_PLAIN = str.maketrans(STAND_INS)
+_RICH = str.maketrans({c: s.replace("_", "\\_") for c, s in STAND_INS.items()})
 
 
-def _advances(groups: dict[float, str]) -> dict[str, float]:
-    return {c: w for w, chars in groups.items() for c in chars}
+def text_width(text: str, size: float) -> float:
+    """The advance of ``text`` at font size ``size`` (px, the em) by the one fixed rule
+    (:func:`drawing.text.text_width`), its capitals :data:`CAP` of the em high.
 
-
-#: advance in em of DejaVu Sans Book, rounded up to 0.05 em
-_ADVANCE = _advances({
-    0.25: "′", 0.30: "'IJijl", 0.35: " \u00a0,./:;\\|ι·", 0.40: "()-[]ft″", 0.45: "!r²³¹",
-    0.50: '"*_`∥°–', 0.55: "?cszεζгзсэ⁻", 0.60: "FLkvxyγκλνξυχвтухчь",
-    0.65: "$0123456789EPSTYabdeghnopqu{}βδηθμοπρστΣабеёийклоряГЕЁЗРТУ«»",
-    0.70: "ABCKRVXZαφψΔднпцАБВСХЧЬЭЯ∆", 0.75: "NUъИЙК", 0.80: "&DGHOQΦΩмыДЛНОПЦ",
-    0.85: "#+<=>^w~ωюЪ−≡×±≈≤≥→←", 0.90: "MфМФЫ⊥∠", 0.95: "жшщ", 1.00: "%@Wm…—",
-    1.10: "ЖШЩЮ",
-})
-#: the same for DejaVu Sans Bold
-_ADVANCE_BOLD = _advances({
-    0.30: "′", 0.35: " \u00a0'ijl", 0.40: ",./:;IJ\\|ι·", 0.45: "-f″²³¹", 0.50: "!()[]_`rt∥°–",
-    0.55: '"*г⁻', 0.60: "?cszεζξзстэ", 0.65: "LxλτχвхьяГ«»",
-    0.70: "$0123456789EFTaekovyαγδθνουΣабеёкнопучЕЁТ∆",
-    0.75: "CPSYZbdghnpqu{}βηκμρийлрцЗРСЭ", 0.80: "ABKRVXπσφψΔъАБВУХЬЯ",
-    0.85: "#+<=>DGHNU^~дмИЙКЛНПЧ−≡×±≈≤≥→←", 0.90: "&OQωΦΩДО∠", 0.95: "wыЦЪ⊥",
-    1.00: "@MжфюМФ…—", 1.05: "%mЫ", 1.10: "ш", 1.15: "Wщ", 1.20: "Ю", 1.25: "ЖШ", 1.35: "Щ",
-})
-
-
-def text_width(text: str, size: float, bold: bool = False) -> float:
-    """The advance of ``text`` at font size ``size`` (px): DejaVu Sans's, rounded up per
-    character; a character it does not list counts as 1 em (1.4 bold).
-
-    >>> text_width("pd −4.2", 10)
-    41.5
+    >>> round(text_width("pd −4.2", 10), 2)
+    35.52
     """
-    table, other = (_ADVANCE_BOLD, 1.4) if bold else (_ADVANCE, 1.0)
-    return size * sum(table.get(c, other) for c in text)
+    return rule_width(text, size * CAP)
 
 
 def notation(text: str) -> tuple[Run, ...]:
@@ -137,233 +157,89 @@ def notation(text: str) -> tuple[Run, ...]:
     their indices (:func:`drawing.scene.parse_markup`).
 
     >>> [(r.text, r.level) for r in notation("a^k_A3A = 2·ω3·V_A3A; pa = V_A/μv")]
-    [('a', 0), ('k', 1), ('A3A', -1), (' = 2·ω3·V', 0), ('A3A', -1), ('; pa = V', 0), ('A', -1), ('/μ', 0), ('v', -1)]
+    [('a', 0), ('k', 1), ('A3A', -1), (' = 2·ω3·V', 0), ('A3A', -1), ('; pa = V', 0),
+     ('A', -1), ('/μ', 0), ('v', -1)]
     """
-    s = index_markup(text.replace("\\", "\\\\"))
-    s = re.sub(r"μ([vla])(?![A-Za-z0-9])", r"μ_\1", s)
-    return parse_markup(s)
+    return parse_markup(_markup(text))
 
 
-def runs_width(runs, size: float, bold: bool = False) -> float:
-    return sum(text_width(r.text, size * (INDEX_SIZE if r.level else 1.0), bold) for r in runs)
+def _markup(text: str) -> str:
+    s = index_markup(text.replace("\\", "\\\\")).translate(_RICH)
+    return re.sub(r"μ([vla])(?![A-Za-z0-9])", r"μ_\1", s)
 
 
-def _extent(runs, size: float) -> tuple[float, float]:
-    """How far a line of ``runs`` reaches above and below its baseline."""
-    levels = {r.level for r in runs}
-    up = max(0.95, SUP_SHIFT + 0.95 * INDEX_SIZE) if 1 in levels else 0.95
-    down = max(0.25, SUB_SHIFT + 0.25 * INDEX_SIZE) if -1 in levels else 0.25
-    return up * size, down * size
+def _text(text: str, x: float, y: float, size: float, rich: bool = False) -> Text:
+    """A line at font size ``size`` with its baseline's start at (x, y), upright."""
+    return Text((x, y), _markup(text) if rich else text.translate(_PLAIN), size=size * CAP,
+                italic=False, markup=rich)
 
 
-def _wrap(text: str, size: float, width: float, rich: bool, bold: bool = False,
-          indent: float = INDENT) -> list[str]:
+def _wide(text: str, size: float, rich: bool) -> float:
+    """The advance of ``text`` at font size ``size``, indices at their size if ``rich``."""
+    return runs_width(notation(text) if rich else (Run(text.translate(_PLAIN)),), size * CAP)
+
+
+def _wrap(text: str, size: float, width: float, rich: bool, indent: float = INDENT) -> list[str]:
     """``text`` broken at spaces into lines no wider than ``width`` (the continuations
     ``indent`` narrower); a word wider than a line is cut."""
-    def wide(s: str) -> float:
-        return runs_width(notation(s) if rich else (Run(s),), size, bold)
-
-    return wrap_words(text, width, wide, indent)
+    return wrap_words(text, width, lambda s: SPARE * _wide(s, size, rich), indent)
 
 
 def _fit_left(text: str, size: float, width: float) -> str:
-    """``text`` cut at its start with "…" until it fits ``width`` (a long path)."""
-    if text_width(text, size) <= width:
+    """``text`` cut at its start with "..." until it fits ``width`` (a long path)."""
+    if SPARE * text_width(text, size) <= width:
         return text
     k = 1
-    while k < len(text) and text_width("…" + text[k:], size) > width:
+    while k < len(text) and SPARE * text_width("..." + text[k:], size) > width:
         k += 1
-    return "…" + text[k:]
-
-
-# ---------------------------------------------------------------------------------------
-# the document
-# ---------------------------------------------------------------------------------------
-
-
-def _f(x) -> str:
-    if isinstance(x, float | np.floating):
-        return f"{float(x):.2f}".rstrip("0").rstrip(".")
-    return str(x)
-
-
-class _El:
-    """An SVG element with the few calls this picture needs (attribute names with
-    underscores become hyphens: font_size → font-size)."""
-
-    def __init__(self, tag: str, text: str | None = None, **attrs):
-        self.el = ET.Element(tag, {k.replace("_", "-"): _f(v) for k, v in attrs.items()})
-        if text is not None:
-            self.el.text = text
-
-    def add(self, child: _El) -> _El:
-        self.el.append(child.el)
-        return child
-
-
-def _line(p, q, **kw) -> _El:
-    return _El("line", x1=float(p[0]), y1=float(p[1]), x2=float(q[0]), y2=float(q[1]), **kw)
-
-
-def _circle(c, r, **kw) -> _El:
-    return _El("circle", cx=float(c[0]), cy=float(c[1]), r=float(r), **kw)
-
-
-Box = tuple[float, float, float, float]
+    return "..." + text[k:]
 
 
 @dataclass
 class Overlay:
     """The drawing and where its texts are: ``texts`` holds (text, box, role) for every
     text drawn, the box (x0, y0, x1, y1) in px as laid out; role: title, caption, point,
-    deviation, list, legend or footer."""
+    deviation, list, legend or footer. ``layers``: what each layer of :data:`STYLES`
+    draws."""
 
     width: float
     height: float
-    body: _El = field(repr=False)
+    layers: dict[str, list[Item]] = field(default_factory=lambda: {k: [] for k in STYLES},
+                                          repr=False)
     texts: list[tuple[str, Box, str]] = field(default_factory=list)
+    #: the layer of each of ``texts``
+    text_layers: list[str] = field(default_factory=list, repr=False)
 
-    def text(self, parent: _El, text: str, x: float, y: float, size: float, fill: str,
-             role: str, *, bold: bool = False, rich: bool = False) -> Box:
-        """A line of text with its baseline's start at (x, y); ``rich``: in the method's
-        notation, indices as tspans (shifted by dy, as the sheet writes them)."""
-        runs = notation(text) if rich else (Run(text),)
-        attrs = {"x": float(x), "y": float(y), "font_size": size, "fill": fill}
-        if bold:
-            attrs["font_weight"] = "bold"
-        el = parent.add(_El("text", **attrs))
-        if all(r.level == 0 for r in runs):
-            el.el.text = "".join(r.text for r in runs)
-        else:
-            shift = {0: 0.0, -1: SUB_SHIFT * size, 1: -SUP_SHIFT * size}
-            now = 0.0
-            if runs[0].level == 0:  # the text's start as the element's own text
-                el.el.text = runs[0].text
-                runs_after = runs[1:]
-            else:
-                runs_after = runs
-            for r in runs_after:
-                span = {"font_size": size * INDEX_SIZE} if r.level else {}
-                if (dy := shift[r.level] - now) != 0:
-                    span["dy"] = float(dy)
-                el.add(_El("tspan", r.text, **span))
-                now = shift[r.level]
-        up, down = _extent(runs, size)
-        box = (x, y - up, x + runs_width(runs, size, bold), y + down)
-        self.texts.append(("".join(r.text for r in runs), box, role))
+    def text(self, layer: str, text: str, x: float, y: float, size: float, role: str, *,
+             rich: bool = False) -> Box:
+        """A line of text with its baseline's start at (x, y) in ``layer`` (its colour);
+        ``rich``: in the method's notation, indices as the sheet writes them."""
+        t = _text(text, x, y, size, rich)
+        self.layers[layer].append(t)
+        box = tuple(float(b) for b in text_box(t).bounds)
+        self.texts.append(("".join(r.text for r in t.runs()), box, role))
+        self.text_layers.append(layer)
         return box
 
+    def drawing_order(self) -> None:
+        """``texts`` in the order the SVG draws them: layer by layer, as
+        :data:`STYLES` lists them, each in the order it was laid out."""
+        order = list(STYLES)
+        pairs = sorted(zip(self.text_layers, self.texts, strict=True),
+                       key=lambda lt: order.index(lt[0]))
+        self.text_layers = [layer for layer, _ in pairs]
+        self.texts = [t for _, t in pairs]
+
+    def scene(self) -> Scene:
+        """The drawing as one scene, a layer per entry of :data:`STYLES`, on white."""
+        self.layers["paper"] = [Blank((0.0, 0.0), (self.width, self.height))]
+        return Scene(tuple(Layer(name, tuple(items), STYLES[name])
+                           for name, items in self.layers.items() if items))
+
     def tostring(self) -> str:
-        root = _El("svg", xmlns="http://www.w3.org/2000/svg", width=f"{self.width:.0f}px",
-                   height=f"{self.height:.0f}px",
-                   viewBox=f"0 0 {self.width:.0f} {self.height:.0f}",
-                   font_family="sans-serif")
-        root.add(_El("rect", x=0, y=0, width=f"{self.width:.0f}", height=f"{self.height:.0f}",
-                     fill="white"))
-        root.el.extend(list(self.body.el))
-        return '<?xml version="1.0" encoding="utf-8"?>\n' + ET.tostring(root.el, encoding="unicode")
-
-
-def _num(x: float, lang: str, digits: int = 4) -> str:
-    from plans.fmt import num
-
-    return num(x, digits, lang)
-
-
-# ---------------------------------------------------------------------------------------
-# labels on a panel
-# ---------------------------------------------------------------------------------------
-
-_NEAR = (4.0, 8.0, 13.0)  # ring distances (px) of a label next to its point
-_FAR = (20.0, 28.0, 38.0, 50.0, 64.0, 80.0, 100.0, 125.0, 150.0)  # on a leader
-
-
-class _Labels:
-    """Greedy label placement in a panel: the first candidate around a point that stays
-    in the panel and overlaps no text and no mark (a point, a line); farther out than
-    :data:`_NEAR` a label hangs on a leader that crosses no text."""
-
-    def __init__(self, box: Box, texts: list[Box]):
-        self.box = box
-        self.texts = texts  # boxes of texts: no label may overlap one
-        self.marks: list[Box] = []  # points and lines: labels keep off them
-
-    def block(self, x: float, y: float, r: float = 3.0) -> None:
-        self.marks.append((x - r, y - r, x + r, y + r))
-
-    def block_line(self, p, q, step: float = 6.0) -> None:
-        n = max(int(math.hypot(q[0] - p[0], q[1] - p[1]) / step), 1)
-        for i in range(n + 1):
-            t = i / n
-            self.block(p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]), 1.2)
-
-    @staticmethod
-    def _overlap(cands: np.ndarray, taken: list[Box]) -> np.ndarray:
-        """Area of overlap of each candidate box with all of ``taken``."""
-        if not taken:
-            return np.zeros(len(cands))
-        t = np.asarray(taken)
-        w = np.minimum(cands[:, None, 2], t[None, :, 2]) - np.maximum(cands[:, None, 0], t[None, :, 0])
-        h = np.minimum(cands[:, None, 3], t[None, :, 3]) - np.maximum(cands[:, None, 1], t[None, :, 1])
-        return (np.clip(w, 0, None) * np.clip(h, 0, None)).sum(axis=1)
-
-    def _leader_hits(self, x: float, y: float, b: Box) -> bool:
-        """Does the leader from (x, y) to box ``b`` cross a text?"""
-        tx, ty = min(max(x, b[0]), b[2]), min(max(y, b[1]), b[3])
-        n = max(int(math.hypot(tx - x, ty - y) / 2.0), 1)
-        s = np.linspace(0.0, 1.0, n + 1)
-        pts = np.stack([x + s * (tx - x), y + s * (ty - y)], axis=1)
-        if not self.texts:
-            return False
-        t = np.asarray(self.texts)
-        inside = ((pts[:, None, 0] > t[None, :, 0]) & (pts[:, None, 0] < t[None, :, 2])
-                  & (pts[:, None, 1] > t[None, :, 1]) & (pts[:, None, 1] < t[None, :, 3]))
-        return bool(inside.any())
-
-    def place(self, x: float, y: float, w: float, h: float, prefer: float = 0.0,
-              must: bool = True, rings=_NEAR + _FAR) -> tuple[Box, bool] | None:
-        """The box (w × h) of a label for the point (x, y), and whether it needs a leader.
-        ``prefer``: the angle (rad, y up) tried first. A label that must be placed takes
-        the least crowded spot where nothing is free; one that need not, None."""
-        x0, y0, x1, y1 = self.box
-        best, best_cost = None, math.inf
-        for ring in rings:
-            n = 16 if ring < 30 else 32
-            steps = [0, *[s for k in range(1, n // 2 + 1) for s in (k, -k)][:n - 1]]
-            ang = prefer + np.array(steps) * (2 * math.pi / n)
-            cx = x + (ring + w / 2) * np.cos(ang)
-            cy = y - (ring + h / 2) * np.sin(ang)
-            cands = np.stack([cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2], axis=1)
-            out = (np.clip(x0 - cands[:, 0], 0, None) + np.clip(cands[:, 2] - x1, 0, None)
-                   + np.clip(y0 - cands[:, 1], 0, None) + np.clip(cands[:, 3] - y1, 0, None))
-            on_text = self._overlap(cands, self.texts)
-            on_mark = self._overlap(cands, self.marks)
-            leader = ring > _NEAR[-1]
-            for i in np.argsort((out > 0) * 1e9 + on_text * 1e3 + on_mark, kind="stable"):
-                b = tuple(float(v) for v in cands[i])
-                free = out[i] == 0 and on_text[i] == 0 and on_mark[i] == 0
-                if free and not (leader and self._leader_hits(x, y, b)):
-                    return self._take(x, y, b, leader)
-                cost = 1e6 * out[i] + 1e3 * on_text[i] + on_mark[i]
-                if cost < best_cost:
-                    best, best_cost = (b, leader), cost
-                if not free:
-                    break  # sorted: the rest of this ring is no better
-        if not must or best is None:
-            return None
-        return self._take(x, y, *best)
-
-    def _take(self, x: float, y: float, b: Box, leader: bool) -> tuple[Box, bool]:
-        self.texts.append(b)
-        if leader:
-            tx, ty = min(max(x, b[0]), b[2]), min(max(y, b[1]), b[3])
-            self.block_line((x, y), (tx, ty), step=4.0)
-        return b, leader
-
-
-# ---------------------------------------------------------------------------------------
-# the picture
-# ---------------------------------------------------------------------------------------
+        """The SVG document, written by :func:`drawing.svg.to_svg` (osifont embedded)."""
+        return to_svg(self.scene(), Page(float(self.width), float(self.height)),
+                      style=STYLES["text"])
 
 
 def overlay_svg(result: CheckResult, lang: str = "en") -> str:
@@ -379,25 +255,24 @@ def overlay(result: CheckResult, lang: str = "en") -> Overlay:
     student = rebuild(result)
     width = 2 * PANEL + 3 * MARGIN
     inner = width - 2 * MARGIN  # the width of a line of text
-    doc = Overlay(width, 0.0, _El("g"))
-    body = doc.body
+    doc = Overlay(width, 0.0)
     # the title (and the file's own), cut or wrapped to the drawing
     y = MARGIN
     title = w["title"].format(src="")
-    src = _fit_left(meas.source, TITLE, inner - text_width(title, TITLE))
-    doc.text(body, title + src, MARGIN, y, TITLE, BLACK, "title")
+    src = _fit_left(meas.source, TITLE, inner - SPARE * text_width(title, TITLE))
+    doc.text("text", title + src, MARGIN, y, TITLE, "title")
     for line in (_wrap(meas.title, SMALL, inner, rich=False) if meas.title else []):
         y += SMALL * 1.5
-        doc.text(body, line, MARGIN, y, SMALL, BLACK, "title")
+        doc.text("text", line, MARGIN, y, SMALL, "title")
     # the panels' captions, each wrapped to its panel
-    caps = {kind: _wrap(w[kind].format(mu=_num(meas.mu[MU_KEY[kind]], lang)), FONT, PANEL,
+    caps = {kind: _wrap(w[kind].format(mu=num(meas.mu[MU_KEY[kind]], 4, lang)), FONT, PANEL,
                         rich=True) for kind in ("velocity", "acceleration")}
     y += 10.0
     for i, kind in enumerate(("velocity", "acceleration")):
         x0 = MARGIN + i * (PANEL + MARGIN)
         for j, line in enumerate(caps[kind]):
-            doc.text(body, line, x0 + (INDENT if j else 0.0), y + FONT + FONT * 1.5 * j, FONT,
-                     BLACK, "caption", rich=True)
+            doc.text("text", line, x0 + (INDENT if j else 0.0), y + FONT + FONT * 1.5 * j, FONT,
+                     "caption", rich=True)
     top = y + FONT + FONT * 1.5 * (max(len(c) for c in caps.values()) - 1) + 8.0
     failed = {id(d.item) for d in result.failed}
     lists = {kind: _deviation_list(result, kind, lang) for kind in ("velocity", "acceleration")}
@@ -405,31 +280,33 @@ def overlay(result: CheckResult, lang: str = "en") -> Overlay:
         x0 = MARGIN + i * (PANEL + MARGIN)
         plan = sol.velocity if kind == "velocity" else sol.acceleration
         mu = meas.mu[MU_KEY[kind]]
-        body.add(_El("rect", x=x0, y=top, width=PANEL, height=PANEL, fill="none", stroke="#ddd"))
+        doc.layers["panels"].append(Polyline([(x0, top), (x0 + PANEL, top),
+                                              (x0 + PANEL, top + PANEL), (x0, top + PANEL)],
+                                             LineType.THIN, closed=True))
         items = [(d, d.item) for d in result.deviations
                  if d.item.kind == "segment" and d.item.plan == kind]
         _panel(doc, (x0, top), plan, mu, student.get(kind, {}), items, failed, lang, w)
         for j, line in enumerate(lists[kind]):
-            doc.text(body, line, x0 + (INDENT if j else 0.0), top + PANEL + 16 + 14 * j, SMALL,
-                     RED, "list")
+            doc.text("red-text", line, x0 + (INDENT if j else 0.0), top + PANEL + 16 + 14 * j,
+                     SMALL, "list")
     below = max(len(v) for v in lists.values())
     y = top + PANEL + 14 * below + 32
     first = next((d for d in result.failed if d.item.kind == "segment"), None)
-    mark = _mark(first.item.name, first.deviation, lang) if first else _mark("ab", -4.2, lang)
-    y = _legend(doc, MARGIN, y, inner, w, mark) + 24
-    for lines, color in _footer(result, lang, inner):
+    sample = mark(first.item.name, first.deviation, lang) if first else mark("ab", -4.2, lang)
+    y = _legend(doc, MARGIN, y, inner, w, sample) + 24
+    for lines, layer in _footer(result, lang, inner):
         for j, line in enumerate(lines):
-            doc.text(body, line, MARGIN + (INDENT if j else 0.0), y, FONT, color, "footer",
-                     rich=True)
+            doc.text(layer, line, MARGIN + (INDENT if j else 0.0), y, FONT, "footer", rich=True)
             y += FONT * 1.65
     doc.height = math.ceil(y - FONT * 1.65 + FONT * 0.5 + MARGIN)
+    doc.drawing_order()
     return doc
 
 
 def _deviation_list(result: CheckResult, kind: str, lang: str) -> list[str]:
     """"beyond tolerance, mm: πa3 +18.6, …" wrapped to the panel's width: every deviation
     beyond tolerance of the plan, those labelled on it too."""
-    parts = [_mark(d.item.name, d.deviation, lang) for d in result.failed
+    parts = [mark(d.item.name, d.deviation, lang) for d in result.failed
              if d.item.kind == "segment" and d.item.plan == kind]
     if not parts:
         return []
@@ -442,61 +319,62 @@ def _deviation_list(result: CheckResult, kind: str, lang: str) -> list[str]:
 def _footer(result: CheckResult, lang: str, width: float) -> list[tuple[list[str], str]]:
     """The verdict, the diagnosis and the correction, then what each item beyond
     tolerance that no mistake explains looks like ("are πc and πa3 swapped?", as the
-    text says it), each wrapped to ``width``."""
-    from plans.check.describe import lookalike_lines
+    text says it), each wrapped to ``width``, with the layer (colour) it is drawn in."""
 
     w = WORDS[lang]
     tol = result.tolerance.describe(lang)
     if result.ok:
-        texts = [(w["ok"].format(tol=tol), BLACK)]
+        texts = [(w["ok"].format(tol=tol), "text")]
     else:
         texts = [(w["bad"].format(tol=tol, names=", ".join(notation_in(d.item.name, lang)
                                                              for d in result.failed)),
-                  RED)]
+                  "red-text")]
         diag = result.diagnosis
         if result.slips_only:
-            texts.append((w["slips"], BLACK))
+            texts.append((w["slips"], "text"))
         elif diag.best is None:
-            texts.append((w["none"], BLACK))
+            texts.append((w["none"], "text"))
         else:
-            texts.append((w["diag"].format(what=diag.best.mistake.describe(lang)), BLACK))
-            texts.append((w["fix"].format(fix=diag.best.mistake.correction(lang)), BLACK))
-        texts += [(line.strip(), BLACK) for line in lookalike_lines(result, lang)]
-    return [(_wrap(t, FONT, width, rich=True), color) for t, color in texts]
+            texts.append((w["diag"].format(what=diag.best.mistake.describe(lang)), "text"))
+            texts.append((w["fix"].format(fix=diag.best.mistake.correction(lang)), "text"))
+        texts += [(line.strip(), "text") for line in lookalike_lines(result, lang)]
+    return [(_wrap(t, FONT, width, rich=True), layer) for t, layer in texts]
 
 
-def _mark(name: str, deviation: float, lang: str) -> str:
+def mark(name: str, deviation: float, lang: str) -> str:
     """A segment's deviation as the sheet marks it: "πa3 +18,6" (mm)."""
-    from plans.fmt import signed
-
     return f"{notation_in(name, lang)} {signed(deviation, lang, 1)}"
 
 
-def _legend(doc: Overlay, x: float, y: float, width: float, w, mark: str) -> float:
+def _legend(doc: Overlay, x: float, y: float, width: float, w, sample: str) -> float:
     """The legend from (x, y), wrapped to ``width``; returns the y of its last line.
-    ``mark`` is the deviation shown as its sample: the first one beyond tolerance, so the
-    legend names a segment of this sheet."""
-    g = doc.body.add(_El("g"))
+    ``sample`` is the deviation shown as its sample: the first one beyond tolerance, so
+    the legend names a segment of this sheet."""
     right = x + width
     entries = [("computed", w["legend_c"]), ("student", w["legend_s"]), ("deviation", w["legend_d"])]
     at = x
     for kind, label in entries:
-        sample = 24.0 if kind != "deviation" else text_width(mark, SMALL, bold=True)
-        need = sample + 6 + text_width(label, SMALL)
+        drawn = 24.0 if kind != "deviation" else SPARE * text_width(sample, SMALL)
+        need = drawn + 6 + SPARE * text_width(label, SMALL)
         if at > x and at + need > right:
             at, y = x, y + 16
         if kind == "computed":
-            g.add(_line((at, y - 3), (at + 24, y - 3), stroke=BLACK, stroke_width=1.2))
+            doc.layers["computed"].append(Segment((at, y - 3), (at + 24, y - 3), LineType.MAIN))
         elif kind == "student":
-            g.add(_line((at, y - 3), (at + 24, y - 3), stroke=RED, stroke_width=1.4,
-                        stroke_dasharray="5,3"))
-            g.add(_circle((at + 12, y - 3), 2.6, fill="none", stroke=RED, stroke_width=1))
+            doc.layers["student"] += [Segment((at, y - 3), (at + 24, y - 3), LineType.DASHED),
+                                      Circle((at + 12, y - 3), 2.6, LineType.MAIN)]
         else:
-            doc.text(g, mark, at, y, SMALL, RED, "legend", bold=True)
-        doc.text(g, label, at + sample + 6, y, SMALL, BLACK if kind == "computed" else RED,
+            doc.text("red-text", sample, at, y, SMALL, "legend")
+        doc.text("text" if kind == "computed" else "red-text", label, at + drawn + 6, y, SMALL,
                  "legend")
         at += need + 16
     return y
+
+
+def _compass(angle: float) -> str:
+    """The compass direction on the sheet nearest ``angle`` (rad, y up, from east)."""
+    k = round(math.degrees(angle) / 45.0) % 8
+    return ("e", "ne", "n", "nw", "w", "sw", "s", "se")[k]
 
 
 def _panel(doc: Overlay, origin, plan, mu, student, items, failed, lang, w):
@@ -514,93 +392,95 @@ def _panel(doc: Overlay, origin, plan, mu, student, items, failed, lang, w):
     def sc(z: complex) -> tuple[float, float]:
         return (ox + PANEL / 2 + zoom * (z.real - cx), oy + PANEL / 2 - zoom * (z.imag - cy))
 
-    labels = _Labels((ox + 2, oy + 2, ox + PANEL - 2, oy + PANEL - 2), [])
-    g = doc.body.add(_El("g"))
+    drawn: dict[str, list[Item]] = {k: [] for k in ("computed", "student", "beyond", "moved")}
     # the computed plan, with the links' images its similarity points are found on, thin
     for a, b in segs.values():
-        p, q = sc(comp[a]), sc(comp[b])
-        g.add(_line(p, q, stroke=BLACK, stroke_width=1.1))
-        labels.block_line(p, q)
-    for a, b in image_sides(plan):
-        p, q = sc(a / mu), sc(b / mu)
-        g.add(_line(p, q, stroke=BLACK, stroke_width=0.5))
-        labels.block_line(p, q)
-    names = {}
+        drawn["computed"].append(Segment(sc(comp[a]), sc(comp[b]), LineType.MAIN))
+    drawn["computed"] += [Segment(sc(a / mu), sc(b / mu), LineType.THIN)
+                          for a, b in image_sides(plan)]
+    names: dict[complex, list[str]] = {}
     for n, z in comp.items():
         names.setdefault(z, []).append(n)
-    for z in names:
-        labels.block(*sc(z), 3.5)
+    spots = [sc(z) for z in names]
     # the student's plan
     for _, it in items:
         if it.start in student and it.end in student:
-            p, q = sc(student[it.start]), sc(student[it.end])
-            bad = id(it) in failed
-            g.add(_line(p, q, stroke=RED, stroke_width=1.8 if bad else 1.2,
-                        stroke_dasharray="5,3", fill="none"))
-            labels.block_line(p, q)
+            layer = "beyond" if id(it) in failed else "student"
+            drawn[layer].append(Segment(sc(student[it.start]), sc(student[it.end]),
+                                        LineType.DASHED))
     moved = []
     for n, z in student.items():
         s = sc(z)
-        g.add(_circle(s, 2.8, fill="none", stroke=RED, stroke_width=1))
-        labels.block(*s, 3.5)
+        drawn["student"].append(Circle(s, 2.8, LineType.MAIN))
+        spots.append(s)
         c = sc(comp[n]) if n in comp else s
         if math.hypot(s[0] - c[0], s[1] - c[1]) > 6:
-            g.add(_line(c, s, stroke=RED, stroke_width=0.6, stroke_opacity=0.7))
-            labels.block_line(c, s)
+            drawn["moved"].append(Segment(c, s, LineType.THIN))
             moved.append((n, s))
-
-    def label(anchors, text, size, color, role, must, bold=False, dotted=False) -> bool:
-        """``text`` at the first of ``anchors`` ((x, y, preferred angle)) with room next
-        to it, else on a leader from the first with room farther out."""
-        up, down = _extent((Run(text),), size)
-        wide = text_width(text, size, bold)
-        for rings in (_NEAR, _FAR):
-            for x, y, prefer in anchors:
-                spot = labels.place(x, y, wide + 2.0, up + down + 2.0, prefer=prefer,
-                                    must=must and rings is _FAR, rings=rings)
-                if spot is not None:
-                    break
-            if spot is not None:
-                break
-        if spot is None:
-            return False
-        b, leader = spot
-        if leader:  # from the point to the label's box
-            tx, ty = min(max(x, b[0]), b[2]), min(max(y, b[1]), b[3])
-            g.add(_line((x, y), (tx, ty), stroke=color, stroke_width=0.6, stroke_opacity=0.8,
-                        **({"stroke_dasharray": "1.5,1.5"} if dotted else {})))
-        doc.text(g, text, b[0] + 1.0, b[1] + 1.0 + up, size, color, role, bold=bold)
-        return True
-
+    for layer, its in drawn.items():
+        doc.layers[layer] += its
+    # what the letters keep clear of: every line as drawn, every point's round
+    obstacles = [g for layer, its in drawn.items()
+                 for g in obstacles_of(its, STYLES[layer], clearance=CLEAR)]
+    obstacles += [shapely.Point(p).buffer(POINT_R) for p in spots]
+    taken = []
     if not items:  # said before the labels are placed, so that none sits on it
-        labels.texts.append(doc.text(g, w["nothing"], ox + 8, oy + PANEL - 8, SMALL, GREY,
-                                     "caption"))
+        taken.append(shapely.box(*doc.text("grey-text", w["nothing"], ox + 8, oy + PANEL - 8,
+                                           SMALL, "caption")))
 
-    def outward(x, y) -> float:
-        return math.atan2(-(y - (oy + PANEL / 2)), x - (ox + PANEL / 2))
+    def outward(x, y) -> str:
+        return _compass(math.atan2(-(y - (oy + PANEL / 2)), x - (ox + PANEL / 2)))
 
-    # point labels: the computed points, then the student's where they differ
+    # point labels: the computed points, then the student's where they differ; then the
+    # deviations beyond tolerance, at the student's segment, else at the computed one
+    # (a student's plan drawn tiny leaves no room at its own); one that finds no room at
+    # all is in the list under the panel all the same
+    reqs: list[LabelRequest] = []
+    kinds: list[tuple[str, str]] = []  # (layer, role) of each request
     for z, ns in names.items():
         x, y = sc(z)
         text = shared_label(ns, plan.pole, markup=False)  # "p,o,b", as on the sheet
         if len(ns) > 3:  # no room for them all: the first stands for them
-            text = text.split(",")[0] + "…"
-        label([(x, y, outward(x, y))], text, FONT, BLACK, "point", True)
+            text = text.split(",")[0] + "..."
+        reqs.append(LabelRequest((x, y), text, FONT * CAP, outward(x, y), markup=False,
+                                 italic=False))
+        kinds.append(("letters", "point"))
     for n, (x, y) in moved:
-        label([(x, y, outward(x, y))], n + "′", FONT, RED, "point", True)
-    # the deviations beyond tolerance, at the student's segment, else at the computed one
-    # (a student's plan drawn tiny leaves no room at its own); one that finds no room at
-    # all is in the list under the panel all the same
+        reqs.append(LabelRequest((x, y), n + "′", FONT * CAP, outward(x, y), markup=False,
+                                 italic=False))
+        kinds.append(("moved-letters", "point"))
     for d, it in items:
         if id(it) not in failed:
             continue
-        anchors = []
+        anchors: list[tuple[float, float]] = []
+        prefer = None
         for src in (student, comp):
             if it.start not in src or it.end not in src:
                 continue
             p, q = sc(src[it.start]), sc(src[it.end])
-            normal = math.atan2(-(q[0] - p[0]), -(q[1] - p[1]))  # perpendicular to it
-            anchors += [(p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]), normal)
+            if prefer is None:  # perpendicular to the segment
+                prefer = _compass(math.atan2(-(q[0] - p[0]), -(q[1] - p[1])))
+            anchors += [(p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]))
                         for t in (0.5, 0.3, 0.7)]
-        label(anchors, _mark(it.name, d.deviation, lang), SMALL, RED, "deviation", False,
-              bold=True, dotted=True)
+        if not anchors:
+            continue
+        reqs.append(LabelRequest(anchors[0], mark(it.name, d.deviation, lang).translate(_PLAIN),
+                                 SMALL * CAP,
+                                 prefer, markup=False, optional=True, also=tuple(anchors[1:]),
+                                 italic=False))
+        kinds.append(("deviations", "deviation"))
+    region = shapely.box(ox + 2, oy + 2, ox + PANEL - 2, oy + PANEL - 2)
+    placed = place_labels(reqs, obstacles, taken, region, distances=NEAR + FAR,
+                          leader_from=NEAR[-1])
+    for req, p, (layer, role) in zip(reqs, placed, kinds, strict=True):
+        if req.optional and not (p.clear or p.leader):
+            continue  # no room: the list under the panel names it
+        if p.leader is not None:  # from the point to the label's box
+            doc.layers[layer].append(Segment(*p.leader, LineType.DASHED if role == "deviation"
+                                             else LineType.THIN))
+        box = tuple(float(b) for b in p.box.bounds)
+        text = replace(p.text, pos=(box[0], p.text.pos[1]), anchor="start")  # x: its start
+        doc.layers[layer].append(text)
+        doc.texts.append((text.text, box, role))
+        doc.text_layers.append(layer)
+

@@ -25,7 +25,7 @@ from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass, replace
 from typing import Any, Literal, TypeAlias
 
-from drawing.styles import LineType
+from drawing.styles import LineType, Style
 
 __all__ = [
     "Arrow",
@@ -35,6 +35,7 @@ __all__ = [
     "Hatch",
     "Item",
     "Layer",
+    "Page",
     "Point",
     "Polyline",
     "Rect",
@@ -314,35 +315,6 @@ def shared_label(names: Sequence[str], pole: str | None = None, markup: bool = T
     return ",".join(name_markup(n) if markup else n for n in order)
 
 
-def wrap_words(text: str, width: float, measure, indent: float = 0.0,
-               cut: bool = True) -> list[str]:
-    """``text`` broken at its spaces (not at no-break spaces) into lines ``measure``
-    (str → mm) no wider than ``width``, the continuations ``indent`` narrower. A word
-    wider than a line is cut (``cut``), or stands alone on its line."""
-    lines: list[str] = []
-    cur = ""
-    for word in text.split(" "):
-        room = width - (indent if lines else 0.0)
-        trial = f"{cur} {word}" if cur else word
-        if measure(trial) <= room:
-            cur = trial
-            continue
-        if cur:
-            lines.append(cur)
-            room = width - indent
-        cur = word
-        while cut and measure(cur) > room and len(cur) > 1:
-            k = len(cur)
-            while k > 1 and measure(cur[:k]) > room:
-                k -= 1
-            lines.append(cur[:k])
-            cur = cur[k:]
-            room = width - indent
-    if cur or not lines:
-        lines.append(cur)
-    return lines
-
-
 def parse_markup(s: str) -> tuple[Run, ...]:
     """Split ``"x_{ab}^c"``-style text into runs (see :class:`Text` ``markup``).
 
@@ -477,10 +449,16 @@ Item: TypeAlias = Segment | Polyline | Circle | Arrow | Text | Hatch | Blank | G
 
 @dataclass(frozen=True, slots=True)
 class Layer:
-    """A named layer; the name becomes the SVG id ``layer-NAME`` and class ``NAME``."""
+    """A named layer; the name becomes the SVG id ``layer-NAME`` and class ``NAME``.
+
+    ``style``: the layer's own :class:`~drawing.styles.Style` (its colour, widths and
+    dashes), where it is not the drawing's: a picture in two colours draws each in its
+    layers; a sheet's layers have none.
+    """
 
     name: str
     items: tuple[Item, ...] = ()
+    style: Style | None = None
 
     def __post_init__(self) -> None:
         if not _LAYER_NAME.match(self.name):
@@ -488,6 +466,20 @@ class Layer:
                 f"layer name must match [A-Za-z][A-Za-z0-9_-]*, got {self.name!r}"
             )
         _set(self, "items", tuple(self.items))
+
+
+@dataclass(frozen=True, slots=True)
+class Page:
+    """A drawing's page that is not a GOST sheet: ``width`` × ``height`` in ``unit`` ("px"
+    for a picture on screen, "mm"), the origin at its top-left corner.
+
+    >>> Page(748, 1000).unit
+    'px'
+    """
+
+    width: float
+    height: float
+    unit: str = "px"
 
 
 @dataclass(frozen=True, slots=True)
@@ -514,7 +506,11 @@ class Scene:
                     names.append(layer.name)
                     items[layer.name] = []
                 items[layer.name].extend(layer.items)
-        return Scene(tuple(Layer(n, tuple(items[n])) for n in names))
+        styles = {}
+        for scene in scenes:
+            for layer in scene.layers:
+                styles.setdefault(layer.name, layer.style)
+        return Scene(tuple(Layer(n, tuple(items[n]), styles[n]) for n in names))
 
     def __add__(self, other: Scene) -> Scene:
         return Scene.concat(self, other)

@@ -19,8 +19,13 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from enum import Enum
+from pathlib import Path
 
-__all__ = ["FONT_SIZES", "LineType", "Style"]
+__all__ = ["FONT_FILE", "FONT_SIZES", "LineType", "Style"]
+
+#: the project's own copy of osifont (GOST type B), which the SVG embeds and the PNG
+#: and PDF export draws with
+FONT_FILE = Path(__file__).with_name("fonts") / "osifont.ttf"
 
 #: Standard font sizes of GOST 2.304 (capital height h, mm) used on a sheet.
 #: 1.8 is allowed for type B only and "not recommended"; 14 and up are for posters.

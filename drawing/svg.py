@@ -32,6 +32,7 @@ from drawing.scene import (
     Group,
     Hatch,
     Item,
+    Page,
     Point,
     Polyline,
     Scene,
@@ -39,11 +40,10 @@ from drawing.scene import (
     Text,
 )
 from drawing.sheet.frame import Sheet
-from drawing.styles import LineType, Style
+from drawing.styles import FONT_FILE, LineType, Style
 
 __all__ = ["FONT_FILE", "fmt", "to_svg"]
 
-FONT_FILE = Path(__file__).with_name("fonts") / "osifont.ttf"
 INKSCAPE_NS = "http://www.inkscape.org/namespaces/inkscape"
 _CHAINS = (LineType.DASH_DOT_THIN, LineType.DASH_DOUBLE_DOT_THIN)
 # characters XML 1.0 cannot carry at all (they would make the file unreadable)
@@ -232,12 +232,14 @@ class _Writer:
 
 def to_svg(
     scene: Scene,
-    sheet: Sheet,
+    sheet: Sheet | Page,
     style: Style | None = None,
     title: str | None = None,
     embed_font: bool = True,
 ) -> str:
-    """The SVG document of ``scene`` drawn on ``sheet``.
+    """The SVG document of ``scene`` drawn on ``sheet`` (in mm), or on a :class:`Page`
+    in its own unit (a picture measured in px). A layer with a style of its own is drawn
+    in it, the others in ``style``.
 
     Args:
         title: the document's ``<title>`` (shown by viewers; escaped).
@@ -246,15 +248,17 @@ def to_svg(
     """
     style = style or Style()
     w, h = fmt(sheet.width), fmt(sheet.height)
-    dwg = svgwrite.Drawing(size=(f"{w}mm", f"{h}mm"), profile="full", debug=False)
+    unit = sheet.unit if isinstance(sheet, Page) else "mm"
+    dwg = svgwrite.Drawing(size=(f"{w}{unit}", f"{h}{unit}"), profile="full", debug=False)
     dwg["viewBox"] = f"0 0 {w} {h}"
     dwg["xmlns:inkscape"] = INKSCAPE_NS
     if title is not None:
         dwg.set_desc(title=_clean(title))
     if embed_font:
         dwg.defs.add(dwg.style(_font_css(FONT_FILE)))
-    writer = _Writer(dwg, style)
     for layer in scene.layers:
+        own = layer.style or style
+        writer = _Writer(dwg, own)
         g = dwg.g(id=f"layer-{layer.name}")
         g.attribs.update(
             {
@@ -262,10 +266,10 @@ def to_svg(
                 "inkscape:groupmode": "layer",
                 "inkscape:label": layer.name,
                 "fill": "none",
-                "stroke": style.color,
+                "stroke": own.color,
                 "stroke-linecap": "round",
                 "stroke-linejoin": "round",
-                "font-family": style.font_css,
+                "font-family": own.font_css,
             }
         )
         for item in layer.items:

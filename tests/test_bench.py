@@ -184,9 +184,11 @@ def test_svg_chart_handles_zero_and_missing_errors():
         bench.Row("a", "fd h=1e-04", 12, 1e-5, None),
         bench.Row("b", "plan", 12, 1e-3, math.inf),
     ]
-    from drawing.chart import svg_chart
+    from drawing.chart import bench_chart
 
-    ET.fromstring(svg_chart(rows, "test"))
+    ET.fromstring(bench_chart(rows, "test", "svg"))
+    assert bench_chart(rows, "test", "png")[:8] == b"\x89PNG\r\n\x1a\n"
+    assert bench_chart(rows, "test", "pdf")[:5] == b"%PDF-"
 
 
 def test_joints_only_four_bar_is_the_crank_rocker_without_its_extra_points():
@@ -252,12 +254,14 @@ def test_every_default_scene_has_its_own_marker_on_the_chart():
     and drew the press and the Scotch yoke both as filled circles."""
     from drawing import chart as bench_chart
 
-    drawn = {bench_chart.marker(s, 0.0, 0.0, "#444") for s in bench_chart._SHAPES}
-    assert len(drawn) == len(bench_chart._SHAPES) >= len(bench.BENCH_SCENES)
+    drawn = set(bench_chart.SHAPES)
+    assert len(drawn) == len(bench_chart.SHAPES) >= len(bench.BENCH_SCENES)
     rows = [bench.Row(name, "vectorized", 12, 1e-6 * (i + 1), 1e-15)
             for i, name in enumerate(bench.BENCH_SCENES)]
-    svg = bench_chart.svg_chart(rows, "test")
-    legend = svg[svg.index(">scene</text>"):]
-    for i, _ in enumerate(bench.BENCH_SCENES):  # the legend draws each scene's own shape
-        want = bench_chart.marker(bench_chart._SHAPES[i], 0.0, 0.0, "#444", 4.5)
-        assert want.split(" ")[0] in legend
+    fig = bench_chart.bench_figure(rows, "test")
+    (legend,) = [lg for lg in fig.legends if lg.get_title().get_text() == "scene"]
+    shown = {t.get_text(): (h.get_marker(), h.get_markerfacecolor() != "none")
+             for t, h in zip(legend.get_texts(), legend.legend_handles, strict=True)}
+    for i, name in enumerate(bench.BENCH_SCENES):  # the legend draws each scene's own shape
+        assert shown[name] == bench_chart.SHAPES[i]
+    assert len(set(shown.values())) == len(bench.BENCH_SCENES)

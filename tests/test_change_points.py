@@ -365,7 +365,7 @@ def test_an_extreme_on_a_grid_sample_is_found_exactly():
 
 def test_the_diagrams_draw_rounding_as_zero_and_run_over_change_points():
     from drawing.scene import Polyline, Text
-    from drawing.views.views import diagrams_view
+    from drawing.views import diagrams_view
 
     mech = parallelogram()
     sv = Solver(mech)
@@ -697,7 +697,7 @@ def test_the_diagrams_run_over_a_block_passing_the_rockers_pivot():
     had trusted that sample (they read only the sine) and drew ε up to 4e16 rad/s², at
     μ_ε = 4e15. They skip what Solver.trusted refuses, as solve and cycle do."""
     from drawing.scene import Polyline, Text
-    from drawing.views.views import diagrams_view
+    from drawing.views import diagrams_view
 
     mech = mech_of(slotted(0.1, 0.1, angle=300.0))
     sv = Solver(mech)

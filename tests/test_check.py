@@ -697,8 +697,9 @@ def _boxes(svg: str):
     for el in root.iter("{http://www.w3.org/2000/svg}text"):
         size = float(el.get("font-size") or el.get("font_size") or 11)
         x, y = float(el.get("x")), float(el.get("y"))
-        w = text_width(el.text or "", size) * (1.15 if el.get("font-weight") == "bold" else 1)
-        out.append((el.text, (x, y - size * 0.8, x + w, y + size * 0.2)))
+        text = "".join(el.itertext())  # a text with indices is written in tspans
+        w = text_width(text, size) * (1.15 if el.get("font-weight") == "bold" else 1)
+        out.append((text, (x, y - size * 0.8, x + w, y + size * 0.2)))
     return out
 
 

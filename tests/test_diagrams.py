@@ -7,10 +7,11 @@ from functools import cache
 
 import pytest
 
-from drawing.labels import obstacles_of, text_box
+from drawing.obstacles import obstacles_of
 from drawing.scene import Arrow, Polyline, Segment, Text, flatten
-from drawing.views.views import NUMBER_GAPS, WORDS, diagrams_view
-from plans.cli.sheet import DIAGRAMS, build_sheet
+from drawing.sheet1 import DIAGRAMS, build_sheet
+from drawing.text import text_box
+from drawing.views import NUMBER_GAPS, WORDS, diagrams_view
 from plans.cycle.analysis import analyse_cycle
 from plans.model.scenes import SCENES
 from plans.model.variants import variant

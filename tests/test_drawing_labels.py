@@ -1,4 +1,4 @@
-"""Text extents, fitting into cells and label placement (drawing.labels)."""
+"""Text extents, fitting into cells (drawing.text) and label placement (drawing.labels)."""
 
 import math
 
@@ -8,17 +8,11 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from shapely.geometry import LineString, box
 
-from drawing.labels import (
-    LabelRequest,
-    fit_text,
-    obstacles_of,
-    overlaps,
-    place_labels,
-    text_box,
-    text_width,
-)
+from drawing.labels import LabelRequest, place_labels
+from drawing.obstacles import obstacles_of, overlaps
 from drawing.scene import Arrow, Circle, Rect, Segment, Text
 from drawing.styles import LineType, Style
+from drawing.text import fit_text, text_box, text_width
 
 
 def test_text_width_follows_the_fixed_rule():
@@ -278,11 +272,11 @@ def test_a_label_among_more_thin_lines_than_allowed_everywhere_still_gets_a_plac
 def test_the_area_outside_a_region_by_bounds_is_shapelys(b, r):
     """The label placer measures how far a box sticks out of its view by bounds (both are
     axis-parallel rectangles); it must be what shapely's difference gives."""
-    from drawing.labels import _outside
+    from drawing.obstacles import area_outside
 
     lab = box(b[0], b[1], b[0] + b[2], b[1] + b[3])
     reg = box(r[0], r[1], r[0] + r[2], r[1] + r[3])
-    assert _outside(lab, reg, True) == pytest.approx(lab.difference(reg).area, abs=1e-9)
+    assert area_outside(lab, reg, True) == pytest.approx(lab.difference(reg).area, abs=1e-9)
 
 
 def _star(anchor, rays, length=20.0, ring=None):

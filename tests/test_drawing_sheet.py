@@ -4,7 +4,7 @@ import pytest
 import shapely
 from shapely.geometry import LineString, box
 
-from drawing.labels import overlaps, text_box
+from drawing.obstacles import overlaps
 from drawing.scene import Segment, Text
 from drawing.sheet.frame import (
     FORMATS,
@@ -14,6 +14,7 @@ from drawing.sheet.frame import (
     title_block_texts,
 )
 from drawing.styles import LineType
+from drawing.text import text_box
 
 FULL = TitleBlock(
     name="Структурный и кинематический анализ рычажного механизма",

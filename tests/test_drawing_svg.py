@@ -1,6 +1,7 @@
 """SVG output and export (drawing.svg, drawing.export)."""
 
 import base64
+import io
 import re
 import sys
 import xml.etree.ElementTree as ET
@@ -8,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from drawing.export import ExportUnavailableError, write_pdf, write_png, write_svg
+from drawing.export import ExportUnavailableError, pdf_bytes, png_bytes
 from drawing.scene import (
     Arrow,
     Blank,
@@ -24,6 +25,7 @@ from drawing.scene import (
 from drawing.sheet.frame import Sheet, TitleBlock, frame_scene
 from drawing.styles import LineType, Style
 from drawing.svg import FONT_FILE, fmt, to_svg
+from plans.cli.common import write_output
 
 NS = {"svg": "http://www.w3.org/2000/svg"}
 INK = "{http://www.inkscape.org/namespaces/inkscape}"
@@ -380,17 +382,19 @@ def test_style_changes_reach_the_output():
 
 
 def test_write_svg_is_atomic_and_leaves_no_temp_files(tmp_path):
+    """drawing writes no file: the command line's one atomic writer does."""
     target = tmp_path / "sheet.svg"
     target.write_text("old")
-    write_svg(sheet_svg("A4"), target)
+    write_output(str(target), sheet_svg("A4").encode("utf-8"))
     assert target.read_text(encoding="utf-8").startswith("<?xml")
     assert [p.name for p in tmp_path.iterdir()] == ["sheet.svg"]
 
 
 def test_png_and_pdf_export(tmp_path):
     svg = sheet_svg("A4")
+    png = tmp_path / "s.png"
     try:
-        png = write_png(svg, tmp_path / "s.png", dpi=25.4)  # 1 px per mm
+        write_output(str(png), png_bytes(svg, dpi=25.4))  # 1 px per mm
     except ExportUnavailableError as exc:  # cairosvg or libcairo absent here
         pytest.skip(str(exc))
     data = png.read_bytes()
@@ -399,7 +403,8 @@ def test_png_and_pdf_export(tmp_path):
         int.from_bytes(data[16:20], "big") == 210
         and int.from_bytes(data[20:24], "big") == 297
     )
-    pdf = write_pdf(svg, tmp_path / "s.pdf")
+    pdf = tmp_path / "s.pdf"
+    write_output(str(pdf), pdf_bytes(svg))
     assert pdf.read_bytes()[:5] == b"%PDF-"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["s.pdf", "s.png"]
 
@@ -409,7 +414,7 @@ def test_export_without_cairosvg_says_what_to_install(tmp_path, monkeypatch):
     with pytest.raises(
         ExportUnavailableError, match=r"pip install 'vector-plans\[export\]'"
     ):
-        write_png("<svg/>", tmp_path / "x.png")
+        write_output(str(tmp_path / "x.png"), png_bytes("<svg/>"))
     assert list(tmp_path.iterdir()) == []
 
 
@@ -446,7 +451,8 @@ def test_png_export_draws_yo_and_e_with_the_projects_font(tmp_path):
         "def dark(ch):\n"
         "    svg = ('<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"60mm\" height=\"60mm\" '\n"
         "           'viewBox=\"0 0 60 60\"><rect width=\"60\" height=\"60\" fill=\"white\"/>'\n"
-        "           '<text x=\"5\" y=\"45\" font-family=\"osifont\" font-size=\"40\">' + ch + '</text></svg>')\n"
+        "           '<text x=\"5\" y=\"45\" font-family=\"osifont\" font-size=\"40\">' + ch\n"
+        "           + '</text></svg>')\n"
         "    im = Image.open(io.BytesIO(export.png_bytes(svg, dpi=72))).convert('L')\n"
         "    return sum(1 for v in im.getdata() if v < 128)\n"
         "import os\n"
@@ -500,7 +506,7 @@ def test_a_png_is_drawn_on_white_paper(tmp_path):
     from PIL import Image
 
     try:
-        png = write_png(sheet_svg("A4"), tmp_path / "s.png", dpi=25.4)
+        png = io.BytesIO(png_bytes(sheet_svg("A4"), dpi=25.4))
     except ExportUnavailableError as exc:
         pytest.skip(str(exc))
     im = Image.open(png).convert("RGBA")

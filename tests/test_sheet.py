@@ -14,11 +14,14 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from drawing.labels import overlaps, text_box
+from drawing.obstacles import overlaps
 from drawing.scene import Text
 from drawing.sheet.layout import share_covered
+from drawing.sheet1 import build_sheet
+from drawing.styles import LineType
 from drawing.svg import to_svg
-from plans.cli.sheet import build_sheet
+from drawing.text import text_box
+from drawing.views import JOINT_R
 from plans.model.mechanism import load
 from plans.model.scenes import SCENES
 from plans.model.variants import variant, variant_numbers
@@ -72,7 +75,7 @@ KEYS = SAMPLES + list(variant_numbers())
 
 @pytest.mark.parametrize("key", KEYS)
 def test_sheet_size_letters_and_texts(key):
-    mech, scene, sheet, info, svg = _sheet(key)
+    _mech, scene, _sheet_obj, info, svg = _sheet(key)
     root, texts = _texts(svg)
     assert root.get("width") == "841mm" and root.get("height") == "594mm"
     letters = set()
@@ -89,7 +92,7 @@ def test_sheet_size_letters_and_texts(key):
 
 @pytest.mark.parametrize("key", KEYS)
 def test_vectors_drawn_at_their_segment_lengths(key):
-    mech, _scene, sheet, info, svg = _sheet(key)
+    _mech, _scene, _sheet_obj, info, svg = _sheet(key)
     root, _ = _texts(svg)
     vecs = _vectors(root)
     checked = 0
@@ -119,7 +122,7 @@ def test_diagrams_only_with_a_stroke():
 def test_two_positions_english_a1():
     from plans.fmt import angle
 
-    mech, scene, sheet, info, svg = _sheet("press", "A1", "en", (1, 4))
+    mech, scene, _sheet_obj, info, svg = _sheet("press", "A1", "en", (1, 4))
     _, texts = _texts(svg)
     # a plan names its position and its crank angle, in the file's convention
     deg = [angle(mech.driver.file_angle(info["cycle"].positions[k])) for k in (1, 4)]
@@ -165,11 +168,12 @@ def test_png_without_cairosvg_is_a_setup_error_and_writes_nothing(tmp_path, monk
 def test_exported_files_get_the_usual_mode(tmp_path):
     import os
 
-    from drawing.export import write_svg
+    from plans.cli.common import write_output
 
     umask = os.umask(0o022)
     os.umask(umask)
-    out = write_svg("<svg/>", tmp_path / "s.svg")
+    out = tmp_path / "s.svg"
+    write_output(str(out), b"<svg/>")  # the command line's writer: drawing writes no file
     assert out.read_text() == "<svg/>"
     assert out.stat().st_mode & 0o777 == 0o666 & ~umask
     assert [p.name for p in tmp_path.iterdir()] == ["s.svg"]  # no temporary file left
@@ -188,7 +192,7 @@ def test_only_a_sheet_left_empty_by_the_files_own_scales_gets_a_note():
     """The press at its fixed scales fills a fifth of A1 (noted) and half of A2 (not);
     sheets whose scales the tool chose are not noted, however they fill the field."""
     from drawing.sheet.layout import share_used
-    from plans.cli.sheet import SPARSE, sparse_note
+    from drawing.sheet1 import SPARSE, sparse_note
 
     mech, _, sheet, info, _ = _sheet("press")
     assert 0.15 < share_used(sheet, info["placed"]) < SPARSE
@@ -212,10 +216,10 @@ def test_russian_fourbar_sheet_explains_the_missing_diagrams_in_russian():
 def test_no_text_sits_on_a_vector_arrow(key):
     from shapely.geometry import LineString
 
-    from drawing.labels import text_box
     from drawing.scene import Arrow, Group, flatten
+    from drawing.text import text_box
 
-    mech, scene, sheet, _info, _svg = _sheet(key)
+    _mech, scene, _sheet_obj, _info, _svg = _sheet(key)
     views = [g for g in scene.layer("views").items if isinstance(g, Group)
              and ("velocity" in g.name or "acceleration" in g.name)]
     assert len(views) >= 2
@@ -262,9 +266,10 @@ def test_the_value_of_the_swing_breaks_the_thin_lines_under_it(scene):
     the given position is never hidden; it touches no heavy line and no other label."""
     from shapely.geometry import box
 
-    from drawing.labels import obstacles_of, text_box
+    from drawing.obstacles import obstacles_of
     from drawing.scene import Blank, Polyline, Segment, flatten
     from drawing.styles import LineType
+    from drawing.text import text_box
     from plans.model.scenes import SCENES
 
     scene_, *_ = build_sheet(SCENES[scene].mechanism(), "A1", "ru", 12, None)
@@ -301,19 +306,19 @@ def test_swing_arc_runs_from_one_extreme_arm_to_the_other():
     import cmath
 
     from drawing.scene import Arrow, Polyline
-    from drawing.views.views import _SWING_R, _swing_arc
+    from drawing.views.positions import SWING_R, swing_arc
 
     pivot, a, b = 0.1 + 0.2j, 0.1 + 0.2j + 0.3 * cmath.exp(0.4j), 0.1 + 0.2j + 0.25 * cmath.exp(1.9j)
     mu = 0.002
-    items = _swing_arc(pivot, a, b, mu)
+    items = swing_arc(pivot, a, b, mu)
     arc = next(it for it in items if isinstance(it, Polyline))
     to_world = lambda p: complex(p[0] * mu, -p[1] * mu)  # noqa: E731  (the sheet flips y)
     start, end = to_world(arc.points[0]), to_world(arc.points[-1])
-    assert abs(start - pivot) == pytest.approx(_SWING_R * 0.25)
+    assert abs(start - pivot) == pytest.approx(SWING_R * 0.25)
     assert cmath.phase(start - pivot) == pytest.approx(0.4)
     assert cmath.phase(end - pivot) == pytest.approx(1.9)
     for p in arc.points:  # on the circle all the way
-        assert abs(to_world(p) - pivot) == pytest.approx(_SWING_R * 0.25)
+        assert abs(to_world(p) - pivot) == pytest.approx(SWING_R * 0.25)
     heads = [it for it in items if isinstance(it, Arrow)]
     assert len(heads) == 2 and {heads[0].p2, heads[1].p2} == {arc.points[0], arc.points[-1]}
 
@@ -376,7 +381,7 @@ def test_a_scotch_yokes_slot_is_drawn_across_its_axis_and_its_block_slides_along
     a dot, not a bar."""
     import numpy as np
 
-    from drawing.views import views as V
+    from drawing.views import positions as V
     from plans.cycle.analysis import analyse_cycle
     from plans.kinematics.solver import Solver
     from plans.model.scenes import SCENES
@@ -388,20 +393,20 @@ def test_a_scotch_yokes_slot_is_drawn_across_its_axis_and_its_block_slides_along
     pos, mu_l = sol.positions, sol.mu_l
     slot = next(s for s in mech.sliders if s.guide.link == 3)
     de = pos["E"] - pos["D"]
-    across = V._guide_dir(mech, slot, pos)
+    across = V.guide_dir(mech, slot, pos)
     assert abs((across * np.conj(de / abs(de))) - 1j) < 1e-12  # ⊥ DE, turned +90°
     cycle = analyse_cycle(mech, 12, solver=solver)
     m = solver.solve(np.array(cycle.positions))
     drawn = [{n: complex(v[k]) for n, v in m.position.items()} for k in range(len(cycle.positions))]
-    slots = V._slots(mech, drawn)
-    (seg,) = V._slot_segments(mech, slots, pos, mu_l, V.LineType.MAIN)
-    (ax, ay), (bx, by), (px, py) = seg.p1, seg.p2, V._sheet(pos["A"], mu_l)
+    slots = V.guide_slots(mech, drawn)
+    (seg,) = V.slot_segments(mech, slots, pos, mu_l, LineType.MAIN)
+    (ax, ay), (bx, by), (px, py) = seg.p1, seg.p2, V.to_sheet(pos["A"], mu_l)
     assert abs(ax - bx) < 1e-9 and abs(ax - px) < 1e-9  # vertical, through the block's pin
     assert min(ay, by) < py < max(ay, by)
     # it spans the block's whole travel in the slot (the crank's ±0.1 m) and a little more
     assert abs(ay - by) * mu_l == pytest.approx(0.2 + 2 * 0.1 * (0.2 + 0.05), rel=1e-6)
-    ends = {p for s in V._link_segments(mech, pos, mu_l, V.LineType.MAIN) for p in (s.p1, s.p2)}
-    assert V._sheet(pos["S3"], mu_l) not in ends and V._sheet(pos["E"], mu_l) in ends
+    ends = {p for s in V.link_segments(mech, pos, mu_l, LineType.MAIN) for p in (s.p1, s.p2)}
+    assert V.to_sheet(pos["S3"], mu_l) not in ends and V.to_sheet(pos["E"], mu_l) in ends
 
 
 def test_a_view_no_sheet_can_hold_is_blamed_on_the_mechanism_not_the_format(capsys, tmp_path):
@@ -426,11 +431,10 @@ def test_positions_where_a_slider_runs_off_to_infinity_are_left_off_and_said_so(
     """The tangent mechanism's crank range ends where its slider runs off to infinity
     (C at 114 m at φ1 = ±89.9°): those positions are not drawn, the view says which, and
     the sheet's μl is chosen for the rest (not 1 m/mm for a speck)."""
-    from plans.cli.sheet import build_sheet
     from plans.model.scenes import SCENES
 
     mech = SCENES["tangent"].mechanism()
-    _, sheet, info = build_sheet(mech, "A2", "en")
+    _, _sheet_obj, info = build_sheet(mech, "A2", "en")
     (view,) = [p.view for p in info["placed"] if p.view.name == "positions"]
     texts = [it.text for it in view.items if isinstance(it, Text)]
     (note,) = [t for t in texts if t.startswith("Positions ")]
@@ -500,19 +504,19 @@ def test_a_block_past_the_end_of_its_links_bar_is_joined_to_it():
     """The tangent mechanism's block C slides on the crank's line beyond A: the guide is
     drawn from the bar's end A out past C, at every position; where the block is on the
     bar (the press's A3 on BC) nothing is added."""
-    from drawing.views import views as V
+    from drawing.views import positions as V
 
     mech, drawn = _drawn_at("tangent")
-    slots = V._slots(mech, drawn)
+    slots = V.guide_slots(mech, drawn)
     for pos in drawn:
-        (seg,) = V._slot_segments(mech, slots, pos, 1e-3, V.LineType.MAIN)
-        a, c, o = (complex(*V._sheet(pos[n], 1e-3)) for n in ("A", "C", "O"))
+        (seg,) = V.slot_segments(mech, slots, pos, 1e-3, LineType.MAIN)
+        a, c, o = (complex(*V.to_sheet(pos[n], 1e-3)) for n in ("A", "C", "O"))
         p1, p2 = complex(*seg.p1), complex(*seg.p2)
         assert abs(p1 - a) < 1e-6  # from the bar's end …
         assert abs(p2 - o) > abs(c - o) and abs(((p2 - o) / (c - o)).imag) < 1e-9  # … past C
     mech, drawn = _drawn_at("press")
-    slots = V._slots(mech, drawn)
-    assert all(V._slot_segments(mech, slots, pos, 1e-3, V.LineType.MAIN) == [] for pos in drawn)
+    slots = V.guide_slots(mech, drawn)
+    assert all(V.slot_segments(mech, slots, pos, 1e-3, LineType.MAIN) == [] for pos in drawn)
 
 
 def test_a_point_named_like_a_centre_of_mass_but_carrying_a_pair_stays_on_the_bar():
@@ -520,23 +524,23 @@ def test_a_point_named_like_a_centre_of_mass_but_carrying_a_pair_stays_on_the_ba
     bar S4–E is drawn; S3 off the axis is only a dot."""
     import tomllib
 
-    from drawing.views import views as V
+    from drawing.views import positions as V
     from plans.model.mechanism import from_dict
     from plans.model.scenes import SCENES
 
     text = SCENES["scotch_yoke"].toml.replace('"D"', '"S4"')
     mech = from_dict(tomllib.loads(text), "yoke_S4")
-    assert not V._centre_of_mass(mech, "S4") and V._centre_of_mass(mech, "S3")
+    assert not V.centre_of_mass(mech, "S4") and V.centre_of_mass(mech, "S3")
     _, (pos, *_) = _drawn_at(mech, [mech.driver.phi])
-    ends = {p for s in V._link_segments(mech, pos, 1e-3, V.LineType.MAIN) for p in (s.p1, s.p2)}
-    assert {V._sheet(pos["S4"], 1e-3), V._sheet(pos["E"], 1e-3)} <= ends
-    assert V._sheet(pos["S3"], 1e-3) not in ends
+    ends = {p for s in V.link_segments(mech, pos, 1e-3, LineType.MAIN) for p in (s.p1, s.p2)}
+    assert {V.to_sheet(pos["S4"], 1e-3), V.to_sheet(pos["E"], 1e-3)} <= ends
+    assert V.to_sheet(pos["S3"], 1e-3) not in ends
 
 
 def test_a_plan_no_sheet_can_hold_points_to_the_plans_option():
     from drawing.sheet.frame import Sheet
     from drawing.sheet.layout import LayoutError, place_views
-    from drawing.views.views import View
+    from drawing.views import View
 
     for name, option in (("positions", ""), ("acceleration-1", "--plans")):
         with pytest.raises(LayoutError) as info:
@@ -602,7 +606,8 @@ def test_the_sheets_note_states_the_sheets_scales_for_each_plan(capsys, tmp_path
     assert [h.split(" (")[0] for h in heads[2:]] == [
         "## 3. План скоростей механизма", "## 4. План ускорений механизма",
         "## 5. План скоростей механизма", "## 6. План ускорений механизма"]
-    assert heads[2].endswith("(положение 1, φ1 = 296,2°)") and heads[4].startswith("## 5. План скоростей механизма (положение 4,")
+    assert heads[2].endswith("(положение 1, φ1 = 296,2°)")
+    assert heads[4].startswith("## 5. План скоростей механизма (положение 4,")
     sheet_mu = _mu_lines(" ".join(t for t in texts if t.startswith("План ")))
     assert len(sheet_mu) == 3 and _mu_lines(note) == sheet_mu
     # the given position, in English: the same rule
@@ -627,8 +632,9 @@ def test_position_numbers_keep_clear_of_the_letters(key):
 
 def _numbers_keep_clear_of_letters(scene):
     """The positions' numbers on the plan of positions keep labels.GAP from its letters."""
-    from drawing.labels import GAP, text_box
+    from drawing.labels import GAP
     from drawing.scene import flatten
+    from drawing.text import text_box
 
     view = next(g for g in scene.layer("views").items if g.name == "view positions")
     texts = [t for t in flatten([view]) if isinstance(t, Text)]
@@ -643,9 +649,9 @@ def test_the_stroke_stands_beside_its_extension_lines_when_it_has_no_room_betwee
     which crossed its letters; it now stands on a shelf beyond the right one."""
     from shapely.geometry import LineString
 
-    from drawing.labels import text_box
     from drawing.scene import Segment, flatten
     from drawing.styles import LineType
+    from drawing.text import text_box
     from plans.model.scenes import SCENES
 
     scene, *_ = build_sheet(SCENES["crank_slider_central"].mechanism(), "A3", "ru")
@@ -719,8 +725,8 @@ def test_the_stroke_is_dimensioned_along_its_guide_at_its_true_length(scene):
     its arrows' tips as far apart as the stroke at μl."""
     import shapely
 
-    from drawing.labels import text_box
     from drawing.scene import Arrow, flatten
+    from drawing.text import text_box
     from plans.cycle.analysis import analyse_cycle
     from plans.model.scenes import SCENES
 
@@ -756,7 +762,7 @@ def test_an_output_link_that_turns_all_the_way_gets_its_diagrams():
     """The rotating slotted link has no stroke, and its sheet said «Диаграммы не строятся:
     нет хода выходного звена». ψ(φ), ω(φ), ε(φ) are drawn; ψ grows by one full turn."""
     from drawing.scene import Polyline, Segment
-    from drawing.views.views import diagrams_view
+    from drawing.views import diagrams_view
     from plans.cycle.analysis import analyse_cycle
     from plans.model.scenes import SCENES
 
@@ -898,12 +904,12 @@ def test_the_orders_of_the_pairs_search_are_those_it_filtered_from_all(case):
     very same orders in the very same sequence, or a sheet would change."""
     from itertools import permutations
 
-    from drawing.sheet.layout import _in_order
+    from drawing.sheet.layout import in_order
 
     n, rank = case
     want = [p for p in permutations(range(n))
             if [p.index(k) for k in rank] == sorted(p.index(k) for k in rank)]
-    assert list(_in_order(n, rank)) == want
+    assert list(in_order(n, rank)) == want
 
 
 def test_pairs_are_packed_together_in_their_order():
@@ -951,7 +957,8 @@ def test_every_title_on_a_sheet_is_one_size(key, fmt, lang, plans, size, broken,
     sheet. A sheet's titles now have one size: 5 mm, a long one broken before its scale
     factor, where the views so titled still fit at the scales chosen; else 3.5 mm. The
     second line stands under the first, over everything else of its view."""
-    from drawing.views.views import WORDS, _bbox
+    from drawing.views import WORDS
+    from drawing.views.common import bbox
 
     _, scene, sheet, info, _ = _sheet(key, fmt, lang, plans)
     w = WORDS[lang]
@@ -968,7 +975,7 @@ def test_every_title_on_a_sheet_is_one_size(key, fmt, lang, plans, size, broken,
             upper, lower = (text_box(t).bounds for t in lines)
             assert 0.5 < lower[1] - upper[3] < 3  # the next line, its own pitch apart
         # the title over everything else of its view: the drawing, its letters
-        rest = _bbox([it for it in p.view.items if not any(it is t for t in lines)])
+        rest = bbox([it for it in p.view.items if not any(it is t for t in lines)])
         assert text_box(lines[-1]).bounds[3] < rest[1]
     assert two == broken
     assert {sol.acceleration.mu for _, _, sol in info["solutions"]} == {mu_a}
@@ -1119,12 +1126,12 @@ def test_a_title_block_entry_is_never_dropped_nor_shrunk_below_1_8_mm(capsys, tm
     fitted (1.5 s of a sheet, paid for every variant of --variant all)."""
     from support import run
 
-    from plans.cli import sheet as cli_sheet
+    from drawing import sheet1
 
     def no_fit(self, suggest=True):
         raise AssertionError("the views were fitted before the title block was checked")
 
-    monkeypatch.setattr(cli_sheet._Sheet1, "fill", no_fit)
+    monkeypatch.setattr(sheet1.Sheet1, "fill", no_fit)
     out = tmp_path / "s.svg"
     code, _, err = run(capsys, "sheet", "--variant", "3", "-o", out, "--title-block", *pairs)
     assert code == 2 and not out.exists()
@@ -1132,7 +1139,7 @@ def test_a_title_block_entry_is_never_dropped_nor_shrunk_below_1_8_mm(capsys, tm
 
 
 def test_a_long_surname_that_fits_in_1_8_mm_letters_is_kept():
-    scene, sheet, _ = build_sheet(_mech(3), "A1", "ru", 12, None, ["student=Преображенский П.П."])
+    scene, _sheet_obj, _ = build_sheet(_mech(3), "A1", "ru", 12, None, ["student=Преображенский П.П."])
     texts = [it for it in scene.items("title-block") if isinstance(it, Text)]
     (t,) = [it for it in texts if it.text == "Преображенский П.П."]
     assert 1.8 <= t.size < 2.5
@@ -1143,14 +1150,14 @@ def test_a_link_of_three_points_not_in_line_is_drawn_as_a_triangle():
     """The coupler AB with its point E was drawn as the bars AB and AE, the rocker DB with
     its point F as DB and DF: the closing sides BE and BF were missing. A point on the
     link's axis still makes no triangle."""
-    from drawing.views import views as V
+    from drawing.views import positions as V
 
     mech, (*_, pos) = _drawn_at("crank_rocker")
 
     def sides(mech, pos):
         out = set()
-        for s in V._link_segments(mech, pos, 1e-3, V.LineType.MAIN):
-            out.add(frozenset(n for n in pos if V._sheet(pos[n], 1e-3) in (s.p1, s.p2)))
+        for s in V.link_segments(mech, pos, 1e-3, LineType.MAIN):
+            out.add(frozenset(n for n in pos if V.to_sheet(pos[n], 1e-3) in (s.p1, s.p2)))
         return out
 
     got = sides(mech, pos)
@@ -1201,7 +1208,7 @@ F = "below E"
 def _plan_letters(monkeypatch, build) -> list[tuple]:
     """(requests, obstacles, soft lines, placements) of each call of ``place_labels`` that
     places a plan's letters, while ``build()`` draws a sheet."""
-    from drawing.views import views as V
+    from drawing.views import common as V  # where each view's letters are placed
 
     calls = []
     real = V.place_labels
@@ -1331,7 +1338,7 @@ def test_the_angular_diagrams_say_which_sense_is_positive(name, tmp_path):
     and ω read off the diagram with it has the sign of ω in the table."""
     import numpy as np
 
-    from drawing.views.views import WORDS, diagram_curves, diagrams_view
+    from drawing.views import WORDS, diagram_curves, diagrams_view
     from plans.cycle.analysis import analyse_cycle
     from plans.kinematics.solver import Solver
     from plans.model.scenes import SCENES
@@ -1370,7 +1377,7 @@ def test_the_three_angular_axes_set_their_sense_one_space_after_the_unit(lang):
     """The ε axis read «ε, рад/с²  (+ против ч.с.)», two spaces where ψ and ω had one: the
     sense was a text of its own, set after an estimate of the name's width, which "²"
     overstated. Each axis is now one text, built by one formula."""
-    from drawing.views.views import WORDS
+    from drawing.views import WORDS
 
     _, texts = _texts(_sheet(3, "A2", lang)[4])
     w = WORDS[lang]
@@ -1461,7 +1468,7 @@ def test_points_found_by_similarity_lie_on_the_links_image_drawn(kind):
 
     from drawing.scene import Circle, Segment, flatten
     from drawing.styles import LineType
-    from drawing.views.views import plan_view
+    from drawing.views import plan_view
     from plans.plan.solution import solve_position
 
     sol = solve_position(variant(1))
@@ -1499,7 +1506,7 @@ def _positions_drawn(key, plans=None, fmt="A1", lang="ru"):
     sheet's μl): the view's own offset is read off the first fixed pivot's support."""
     from drawing.scene import Circle, Polyline, Segment, flatten
     from drawing.styles import LineType
-    from drawing.views import views as V
+    from drawing.views import positions as V
 
     mech, _, _, info, _ = _sheet(key, fmt, lang, plans)
     view = next(p.view for p in info["placed"] if p.view.name == "positions")
@@ -1507,7 +1514,7 @@ def _positions_drawn(key, plans=None, fmt="A1", lang="ru"):
     mu_l = info["given"].mu_l
     apex = next(it.points[0] for it in items if isinstance(it, Polyline) and it.closed
                 and len(it.points) == 3 and it.line is LineType.MAIN)
-    pivot = V._sheet(next(iter(mech.frame.values())), mu_l)
+    pivot = V.to_sheet(next(iter(mech.frame.values())), mu_l)
     dx, dy = apex[0] - pivot[0], apex[1] - pivot[1]
 
     def back(p):
@@ -1515,7 +1522,7 @@ def _positions_drawn(key, plans=None, fmt="A1", lang="ru"):
 
     ends = [back(p) for it in items if isinstance(it, Segment) and it.line is LineType.MAIN
             for p in (it.p1, it.p2)]
-    joints = [back(it.center) for it in items if isinstance(it, Circle) and it.r == V.JOINT_R]
+    joints = [back(it.center) for it in items if isinstance(it, Circle) and it.r == JOINT_R]
     blocks = [back((sum(x for x, _ in it.points) / 4, sum(y for _, y in it.points) / 4))
               for it in items if isinstance(it, Polyline) and it.closed and len(it.points) == 4
               and it.line is LineType.MAIN]
@@ -1526,9 +1533,9 @@ def _positions_drawn(key, plans=None, fmt="A1", lang="ru"):
 
 def _at(xy, pos, mu_l, names=None, tol=1e-6) -> bool:
     """``xy`` (sheet mm) is a point of the position ``pos``."""
-    from drawing.views import views as V
+    from drawing.views import positions as V
 
-    return any(math.dist(xy, V._sheet(pos[n], mu_l)) < tol for n in (names or pos))
+    return any(math.dist(xy, V.to_sheet(pos[n], mu_l)) < tol for n in (names or pos))
 
 
 @pytest.mark.parametrize("key", [3, 2])
@@ -1558,11 +1565,11 @@ def test_the_positions_of_the_plans_are_drawn_heavy_not_the_given_one(key):
         assert len(blocks) == 2
         assert all(any(_at(b, at[k], mu_l, [s.point]) for b in blocks) for k in ("1", "4"))
     # the points are lettered once, on position 1: the tip's letter by its tip there
-    from drawing.views import views as V
+    from drawing.views import positions as V
 
     (centre,) = (c for t, c in texts if t == tip)
-    assert math.dist(centre, V._sheet(at["1"][tip], mu_l)) < 10.0
-    assert math.dist(centre, V._sheet(given[tip], mu_l)) > 10.0
+    assert math.dist(centre, V.to_sheet(at["1"][tip], mu_l)) < 10.0
+    assert math.dist(centre, V.to_sheet(given[tip], mu_l)) > 10.0
     assert {"1", "4"} <= {t for t, _ in texts if re.fullmatch(r"\d+", t)}
 
 
@@ -1583,7 +1590,7 @@ def test_without_plans_the_given_position_is_the_heavy_one(key):
 def test_the_heavy_positions_letters_and_numbers_do_not_overlap(key, fmt, lang):
     """Two heavy positions, numbered and lettered: no text meets another, and the numbers
     keep labels.GAP from the letters (the tip's own too, which read '¹B')."""
-    mech, scene, *_ = _sheet(key, fmt, lang, (1, 4))
+    _mech, scene, *_ = _sheet(key, fmt, lang, (1, 4))
     assert overlaps([it for it in scene.items() if isinstance(it, Text)]) == []
     _numbers_keep_clear_of_letters(scene)
 
@@ -1606,7 +1613,7 @@ def test_the_stroke_stands_beside_its_guide_not_across_the_mechanism():
                and abs(s.p1[0] - s.p2[0]) < 1e-9 and abs(s.p2[1] - h.pos[1]) < 6]
         return h, ext
 
-    h, ext = stroke("press", "A2")
+    _h, ext = stroke("press", "A2")
     assert len(ext) == 2
     assert all(s.p2[1] < s.p1[1] for s in ext)  # from the guide upwards
     assert max(math.dist(s.p1, s.p2) for s in ext) < 15
@@ -1619,7 +1626,7 @@ def test_the_sheets_equations_write_the_tangential_component_as_its_language_doe
     """On a Russian sheet the acceleration plan's equation and the segments' table read
     a^τ_CB, as Russian textbooks write it; on an English one a^t_CB."""
     from drawing.scene import flatten
-    from drawing.views.views import plan_view
+    from drawing.views import plan_view
     from plans.plan.solution import solve_position
 
     sol = solve_position(variant(1))
@@ -1634,7 +1641,7 @@ def test_the_diagrams_axes_name_the_output_point_or_link():
     """The axes read «s, м», «ω, рад/с»: whose? The note and the tables say ω3 and V_D,
     and a sheet has ω of several links. They now read s_D, v_D, a_D of the slider's
     point, ψ3, ω3, ε3 of the rocker."""
-    from drawing.views.views import diagrams_view
+    from drawing.views import diagrams_view
     from plans.cycle.analysis import analyse_cycle
 
     for mech, names in ((load("samples/press.toml"), ("s_{D}, м", "v_{D}, м/с", "a_{D}, м/с²")),

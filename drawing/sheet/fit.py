@@ -18,13 +18,13 @@ the one whose smallest view (as a multiple of its default size) is largest, then
 next smallest, and so on, so that no view is shrunk for another to grow; then by the
 area the views cover. The kinematic diagrams are one more factor (their width), sized
 with the room the plans leave beyond their default 180 mm (up to it, they count as a
-plan does), never larger than the largest plan. Each combination is
-packed as foreseen (:func:`drawing.sheet.layout.pack`): a view's size at each candidate is that of the view drawn
-without its letters, with the room they may take around the drawing (placing them is
-what takes the time), at the factor's largest and smallest candidates, and between
-them on the straight line, which is never under it. The first combination that packs is drawn and packed for real;
-a combination whose views are none smaller than those of one that did not pack is not
-tried.
+plan does), never larger than the largest plan. Each combination is packed as foreseen
+(:func:`drawing.sheet.layout.pack`): a view's size at each candidate is that of the view
+drawn without its letters, with the room they may take around the drawing (placing them
+is what takes the time), at the factor's largest and smallest candidates, and between
+them on the straight line, which is never under it. The first combination that packs is
+drawn and packed for real; a combination whose views are none smaller than those of one
+that did not pack is not tried.
 """
 
 from __future__ import annotations
@@ -32,7 +32,7 @@ from __future__ import annotations
 import itertools
 
 from drawing.sheet.layout import LayoutError, pack, place_views
-from drawing.views.views import captioned_width
+from drawing.views.common import captioned_width
 
 __all__ = ["SIZES", "Fit", "readable"]
 
@@ -63,7 +63,8 @@ class Fit:
     """The views of one sheet at the scale factors that fill it (see the module).
 
     ``draw(key, value, sizing=False)`` draws the views the factor ``key`` sizes at
-    ``value`` (``sizing``: without their letters, as large as those could make them); ``fixed`` are the views no free factor sizes; ``factors`` gives
+    ``value`` (``sizing``: without their letters, as large as those could make them);
+    ``fixed`` are the views no free factor sizes; ``factors`` gives
     each free factor's candidates, largest views first, with the size of its views at
     each (as a multiple of the engine's default size); ``order``, the views' names in
     the order they are packed (the plan of positions first: top left where it fits).

@@ -27,9 +27,9 @@ from typing import Literal
 
 from shapely.geometry import Polygon, box
 
-from drawing.labels import fit_text
 from drawing.scene import Layer, Polyline, Rect, Scene, Segment, Text
 from drawing.styles import LineType, Style
+from drawing.text import fit_text
 
 __all__ = [
     "FORMATS",

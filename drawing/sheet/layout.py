@@ -28,8 +28,9 @@ from shapely.geometry import box
 from drawing.scene import Group, Rect
 from drawing.sheet.frame import Sheet
 
-__all__ = ["LayoutError", "Placed", "describe", "kept_together", "pack", "pairs_of",
-           "place_views", "reads_before", "share_covered", "share_used", "spread"]
+__all__ = ["LayoutError", "Placed", "describe", "field", "in_order", "kept_together", "pack",
+           "pairs_of", "place_views", "reads_before", "room", "share_covered", "share_used",
+           "spread"]
 
 GAP = 6.0
 MARGIN = 4.0
@@ -223,12 +224,12 @@ def _orders(units: list[list[int]], sizes: Sequence[tuple[float, float]]):
 TRIES = 5040
 
 
-def _in_order(n: int, rank: Sequence[int]):
+def in_order(n: int, rank: Sequence[int]):
     """The permutations of ``range(n)`` in which the items ``rank`` come in that order,
     in the order ``itertools.permutations`` gives them: built so, not filtered out of
     all n! (362 880 for a sheet of five positions' plans, of which 3 024 are wanted).
 
-    >>> list(_in_order(3, [2, 0]))
+    >>> list(in_order(3, [2, 0]))
     [(1, 2, 0), (2, 0, 1), (2, 1, 0)]
     """
     nth = {u: i for i, u in enumerate(rank)}
@@ -264,7 +265,7 @@ def _pack_pairs(inner: Box, blocked: list[Box], sizes: Sequence[tuple[float, flo
     partner = dict(pairs)
 
     def every():
-        for perm in _in_order(len(units), rank):
+        for perm in in_order(len(units), rank):
             for rows in (True, False):
                 yield tuple(i for k in perm for i in units[k]), rows
 

@@ -1,6 +1,9 @@
-"""The views of a sheet, each built in its own box of sheet millimetres."""
+"""The views of a sheet, each built in its own box of sheet millimetres: the plan of
+positions (:mod:`.positions`), the vector plans (:mod:`.plans`), the kinematic diagrams
+(:mod:`.diagrams`), the tables and the note (:mod:`.tables`), on what they share
+(:mod:`.common`)."""
 
-from .views import (
+from .common import (
     BLANK_PAD,
     CAPTION,
     CAPTION_OVER,
@@ -8,12 +11,7 @@ from .views import (
     HEAD,
     JOINT_R,
     LETTER,
-    NUMBER_BESIDE,
-    NUMBER_CLEAR,
-    NUMBER_GAPS,
-    NUMBERS_APART,
     PAD,
-    PART_GAP,
     SHARED,
     SMALL_CAPTION,
     WORDS,
@@ -22,16 +20,20 @@ from .views import (
     caption_texts,
     captioned_width,
     centred,
+    notation,
+    retitled,
+)
+from .diagrams import (
+    NUMBER_BESIDE,
+    NUMBER_CLEAR,
+    NUMBER_GAPS,
+    NUMBERS_APART,
     diagram_curves,
     diagrams_view,
-    notation,
-    note_view,
-    omega_table_view,
-    plan_view,
-    positions_view,
-    retitled,
-    segments_table_view,
 )
+from .plans import plan_view, vector_plan_view
+from .positions import positions_view
+from .tables import PART_GAP, note_view, omega_table_view, segments_table_view
 
 __all__ = [
     "BLANK_PAD",
@@ -64,4 +66,5 @@ __all__ = [
     "positions_view",
     "retitled",
     "segments_table_view",
+    "vector_plan_view",
 ]

@@ -24,6 +24,7 @@ from drawing import chart as charts
 from plans.cli.common import EXIT_OK, number
 from plans.cli.output import picture_format
 from plans.errors import InputError
+from plans.forces.bench import force_bench
 from plans.verify.bench import (
     BENCH_SCENES,
     FD_STEPS,
@@ -45,6 +46,8 @@ TARGETS = (
     ("four-bar with 3–4 more points", ("crank_rocker", "fourbar"), 5e6),
     ("press", ("press",), 2e6),
 )
+#: the force analysis's rate: the loaded press over the cycle (issue 21)
+FORCE_TARGET = ("loaded press, forces", ("press",), 1e6)
 
 
 def configure(p) -> None:
@@ -155,6 +158,14 @@ def run(args) -> int:
     rows: list[Row] = []
     for name in names:
         rows += bench.scene(name, scenes[name], sizes)
+        mech = scenes[name].mechanism()
+        if "forces" in methods and mech.loads is not None and scenes[name].full_turn:
+            for n in sizes:
+                if n >= 100:  # the loaded sweep over the cycle, and its error against one linear solve
+                    log(f"bench {name}: forces, N = {n}")
+                    got = force_bench(mech, name, n, repeats=1 if args.quick else 3,
+                                      checks=4 if args.quick else 24)
+                    rows.append(Row(name, "forces", n, got.seconds_per_position, float(got.max_rel_error)))
     if args.json:
         text = json.dumps([r.as_json() for r in rows], indent=1) + "\n"
         for n in notes:
@@ -245,6 +256,13 @@ def targets(rows: list[Row]) -> list[str]:
             verdict = ("met" if worst >= goal
                        else "met at some N only" if max(got.values()) >= goal else "NOT met")
             out.append(f"{head} {figures} — {verdict}")
+    label, scenes, goal = FORCE_TARGET
+    got = {r.positions: 1 / r.seconds_per_position for r in rows
+           if r.method == "forces" and r.scene in scenes and r.positions >= 100_000 and r.seconds_per_position > 0}
+    if got:
+        figures = ", ".join(f"{v:.3g} at N = {n:.0e}" for n, v in sorted(got.items()))
+        verdict = "met" if min(got.values()) >= goal else "NOT met"
+        out.append(f"  {label} ≥ {goal:.0e} positions/s, N ≥ 1e5: {figures} — {verdict}")
     plan = [
         r.seconds_per_position
         for r in rows

@@ -67,7 +67,8 @@ BENCH_SCENES = {
     "tangent": "PRP",
     "scotch_yoke": "RPP",
 }
-METHODS = ("vectorized", "reused", "recorded", "plan", "fd", "peers")
+#: "forces": the loaded sweep of the force analysis, benched by the command (plans.forces.bench)
+METHODS = ("vectorized", "reused", "recorded", "plan", "fd", "peers", "forces")
 PEER_HINTS = {
     "pylinkage": "pip install pylinkage",
     "pyslvs": "it ships no wheel for recent Pythons and its source build fails on 3.11",

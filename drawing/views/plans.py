@@ -1,0 +1,113 @@
+"""A vector plan: any polygon of vectors from a pole, with its points' recorded sources.
+
+The velocity and acceleration plans of sheet 1 are drawn by :func:`vector_plan_view`, and
+so is any other plan that keeps to this protocol (a force plan: the forces laid end to
+end and closed by two lines of known direction):
+
+* ``plan.pole``: the pole's name ("p", "π");
+* ``plan.points``: name → point, each with ``value`` (a complex number, in the plan's
+  unit, from the pole) and ``source``, whose ``kind`` is "intersection" for a point found
+  where two lines cross: then ``source.lines`` holds those lines (each with ``through``,
+  the name of a point of the plan, and ``direction``, a complex number) and
+  ``source.equation`` the vector equation it solves (written under the plan); any other
+  kind draws no construction;
+* ``plan.vectors``: the vectors drawn, each from ``start`` to ``end`` (names of points or
+  the pole); its ``component`` kind and ``label`` travel with it (the tables and the note
+  read them, the drawing does not);
+* ``plan.mu``: the scale (the plan's unit per mm): one sheet millimetre per plan mm.
+
+Nothing else is read: the caption, the ids of the vectors (``prefix``) and the sides of
+the links' images a similarity point was found on (``sides``, optional) are given.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+from drawing.labels import LabelRequest
+from drawing.scene import Arrow, Circle, Group, Item, Segment, shared_label
+from drawing.styles import LineType
+from drawing.views.common import HEAD, LETTER, WORDS, View, finish, per_mm, shared_points
+from plans.fmt import notation_in, num
+from plans.plan.solution import image_sides
+
+__all__ = ["plan_view", "vector_plan_view"]
+
+def _plan_xy(value: complex, mu: float) -> tuple[float, float]:
+    z = value / mu
+    return (z.real, -z.imag)
+
+
+def plan_view(sol, kind: str, tag: str, lang: str = "ru", label: str | None = None,
+              sizing: bool = False) -> View:
+    """The velocity (``kind="velocity"``) or acceleration plan of the solution ``sol``,
+    captioned with its position (``label``, else ``tag``) and scale factor.
+
+    ``tag`` distinguishes the position (``"3"``) in the ids of its vectors.
+    """
+    plan = sol.velocity if kind == "velocity" else sol.acceleration
+    w = WORDS[lang]
+    unit = per_mm(w["ms" if kind == "velocity" else "ms2"], lang)
+    mu_name = "μ_v" if kind == "velocity" else "μ_a"
+    caption = f"{w[kind]} ({label or tag}), {mu_name} = {num(plan.mu, 4, lang)} {unit}"
+    return vector_plan_view(plan, f"{kind}-{tag}", caption, "v" if kind == "velocity" else "a",
+                            tag, lang, sides=image_sides(plan), sizing=sizing)
+
+
+def vector_plan_view(plan, name: str, caption: str, prefix: str, tag: str, lang: str = "ru",
+                     sides: Sequence[tuple[complex, complex]] = (), sizing: bool = False) -> View:
+    """The view ``name`` of ``plan`` (the protocol of this module) at one sheet mm per plan
+    mm under ``caption``: the construction lines of its intersections thin, ``sides``
+    (pairs of values: the links' images its similarity points were found on) thin, its
+    vectors heavy, each a group of class ``vec PREFIX-STARTEND-TAG`` (``vec v-pa3-1``) so
+    that its length can be measured on the SVG, the pole a dot, the points lettered (those
+    that coincide share one label, the pole first), the equations of the intersections
+    under it in ``lang``."""
+    mu = plan.mu
+    pts = {n: _plan_xy(p.value, mu) for n, p in plan.points.items()}
+    pts.setdefault(plan.pole, (0.0, 0.0))
+    items: list[Item] = []
+    # construction lines of the intersections, thin, under the vectors
+    for p in plan.points.values():
+        if p.source.kind != "intersection":
+            continue
+        for line in p.source.lines:
+            if line.through not in pts:
+                continue
+            tx, ty = pts[line.through]
+            dx, dy = line.direction.real, -line.direction.imag
+            px, py = pts[p.name]
+            t = (px - tx) * dx + (py - ty) * dy
+            a, b = min(0.0, t) - 6.0, max(0.0, t) + 6.0
+            items.append(
+                Segment((tx + a * dx, ty + a * dy), (tx + b * dx, ty + b * dy), LineType.THIN)
+            )
+    # the link's image each similarity point is found on, thin: bc on to e of a coupler
+    # BCE, the sides be, ce of a triangle
+    items += [Segment(_plan_xy(a, mu), _plan_xy(b, mu), LineType.THIN) for a, b in sides]
+    # the vectors
+    for v in plan.vectors:
+        p1, p2 = pts[v.start], pts[v.end]
+        if math.dist(p1, p2) < 1e-6:
+            continue
+        arrow = Arrow(p1, p2, LineType.MAIN, **HEAD)
+        items.append(Group((arrow,), name=f"vec {prefix}-{v.start}{v.end}-{tag}"))
+    # the points: pole dot, joints of the letters; coincident points share a label
+    groups = shared_points(
+        (pts[name], name) for name in [plan.pole, *[n for n in plan.points if n != plan.pole]])
+    items.append(Circle(pts[plan.pole], 0.6, LineType.MAIN, fill="black"))
+    # prefer the side away from the pole
+    cx = sum(x for x, _ in pts.values()) / len(pts)
+    cy = sum(y for _, y in pts.values()) / len(pts)
+    reqs = []
+    for xy, names in groups:
+        ang = math.degrees(math.atan2(-(xy[1] - cy), xy[0] - cx)) % 360
+        prefer = ("e", "ne", "n", "nw", "w", "sw", "s", "se")[int(((ang + 22.5) % 360) // 45)]
+        reqs.append(LabelRequest(xy, shared_label(names, plan.pole), LETTER, prefer,
+                                 blank=True, cross=False))
+    eqs: list[str] = []
+    for p in plan.points.values():
+        if p.source.kind == "intersection" and p.source.equation:
+            eqs.append(notation_in(p.source.equation, lang))
+    return finish(name, items, reqs, caption, eqs, sizing=sizing)
