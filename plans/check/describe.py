@@ -81,6 +81,7 @@ def mistake_words(mk, lang: str = "en") -> tuple[str, str]:
     elif k in ("weight-omitted", "inertia-along", "inertia-omitted", "inertia-moment-omitted",
                "inertia-moment-reversed"):
         key = f"{k}-all" if mk.target == "all" else k
+        fields["where"] = w["load_where"]["crank" if g("crank") else "group"]
     elif k == "force-reversed":
         key = "force-reversed-resistance" if g("what") == "resistance" else k
         fields["rule"] = w["rules"].get(g("rule"), w["rules"][""]).format(point=g("point"))

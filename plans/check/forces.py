@@ -370,7 +370,8 @@ def _moment_what(name: str) -> str:
 def _where(ctx: ForceContext, ld: Load) -> tuple[tuple[str, str], ...]:
     """The words of a load's mistake: its centre of mass and link."""
     centre = ctx.loads.masses[ld.link].centre if ld.link in ctx.loads.masses else (ld.point or "")
-    return (("centre", centre), ("image", plan_name(centre)))
+    crank = (("crank", "1"),) if ld.link == ctx.solution.mechanism.driver.link else ()
+    return (("centre", centre), ("image", plan_name(centre)), *crank)
 
 
 def _rule(ctx: ForceContext, ld: Load) -> tuple[tuple[str, str], ...]:

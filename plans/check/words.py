@@ -163,8 +163,8 @@ EN = {
             "as on the link, not mirrored"),
         "weight-omitted": (
             "the weight {target} is left out of the force plans and the lever",
-            "{target} = m{link}·g acts at {centre}, downwards: lay it off in the force plan of its "
-            "group and apply it on the lever at {image}"),
+            "{target} = m{link}·g acts at {centre}, downwards: {where} and apply it on the lever "
+            "at {image}"),
         "weight-omitted-all": (
             "the weights are left out of the force plans and the lever",
             "G = m·g of each link acts at its centre of mass, downwards: lay each off in the force "
@@ -180,8 +180,8 @@ EN = {
             "Φ = −m·a_S: each through its centre of mass S, against the acceleration a_S"),
         "inertia-omitted": (
             "the inertia force {target} is left out",
-            "{target} = −m{link}·a_{centre} acts through {centre}: lay it off in the force plan "
-            "of its group and apply it on the lever at {image}"),
+            "{target} = −m{link}·a_{centre} acts through {centre}: {where} and apply it on the "
+            "lever at {image}"),
         "inertia-omitted-all": (
             "the inertia forces are left out",
             "Φ = −m·a_S of each link acts through its centre of mass S: lay each off in the "
@@ -252,6 +252,9 @@ EN = {
               "along guide": "along the guide of its link", "": "at the angle the file gives"},
     #: a group as a force plan's words name it
     "of_group": "group {key}",
+    #: where a load left out goes: its group's force plan, or the driving link's equilibrium
+    "load_where": {"group": "lay it off in the force plan of its group",
+                   "crank": "take it into the driving link's equilibrium"},
     #: an item beyond tolerance that is, within tolerance, something else
     "lookalikes": {
         "segment": "{item} = {m} mm is the length of {other} ({exact} mm): measured from the "
@@ -396,8 +399,8 @@ RU = {
             "фигура не зеркальная"),
         "weight-omitted": (
             "сила тяжести {target} не учтена в планах сил и на рычаге",
-            "{target} = m{link}·g приложена в точке {centre} и направлена вниз: отложите её на "
-            "плане сил своей группы и приложите к рычагу в точке {image}"),
+            "{target} = m{link}·g приложена в точке {centre} и направлена вниз: {where} и "
+            "приложите к рычагу в точке {image}"),
         "weight-omitted-all": (
             "силы тяжести не учтены в планах сил и на рычаге",
             "G = m·g каждого звена приложена в его центре масс и направлена вниз: отложите "
@@ -411,8 +414,8 @@ RU = {
             "Φ = −m·a_S: каждая через свой центр масс S, против ускорения a_S"),
         "inertia-omitted": (
             "сила инерции {target} не учтена",
-            "{target} = −m{link}·a_{centre} приложена в точке {centre}: отложите её на плане "
-            "сил своей группы и приложите к рычагу в точке {image}"),
+            "{target} = −m{link}·a_{centre} приложена в точке {centre}: {where} и приложите к "
+            "рычагу в точке {image}"),
         "inertia-omitted-all": (
             "силы инерции не учтены",
             "Φ = −m·a_S каждого звена приложена в его центре масс S: отложите каждую на плане "
@@ -477,6 +480,8 @@ RU = {
               "against guide": "вдоль направляющей звена, против её направления",
               "along guide": "вдоль направляющей звена", "": "под углом, заданным в файле"},
     "of_group": "группы {key}",
+    "load_where": {"group": "отложите её на плане сил своей группы",
+                   "crank": "учтите её в равновесии ведущего звена"},
     "lookalikes": {
         "segment": "{item} = {m} мм — это длина {other} ({exact} мм): отрезок измерен не от "
                    "той точки?",
