@@ -644,3 +644,33 @@ def test_the_lever_not_turned_by_its_definition(templates):
     pb = abs(complex(sol.scalar.velocity["B"])) / mu
     assert fd.pb == pytest.approx(pb) and fd.F_y == pytest.approx(total / pb, rel=1e-12)
     assert abs(fd.F_y - meas.forces.drawn().F_y) > 0.05 * abs(meas.forces.drawn().F_y)
+
+
+def test_a_reaction_read_off_a_force_plan_is_judged_at_that_plans_mu_F(templates):
+    """The larger of 1 mm of μF and 5 % for a force read off a plan (one that closes it,
+    a reaction drawn whole, the inner one, and the same force the other way round); 5 %
+    for a load and for what a moment equation gives (R^τ, the slotted link's R12)."""
+    per_mm = {it.name: it.per_mm for it in templates[PRESS].items if it.kind == "force"}
+    read = {"R05": 20.0, "R34": 20.0, "R34^n": 20.0, "R54": 20.0, "R45": 20.0, "R43": 20.0, "R03": 20.0,
+            "R32": 20.0, "R23": 20.0}
+    computed = {"R34^τ": 0.0, "R12": 0.0, "R21": 0.0, "G4": 0.0, "Φ4": 0.0, "P": 0.0, "R01": 0.0}
+    assert {k: per_mm[k] for k in read} == read
+    assert {k: per_mm[k] for k in computed} == computed
+
+
+@pytest.mark.parametrize("variant", [2, 5])
+def test_a_variant_is_checked_with_its_tables_loads(tmp_path, capsys, variant):
+    """A file of ``variant = N``: Table 2's loads (5 kg per metre, the resistance 100·G)
+    give the force analysis; its exact F_у and M_у pass, F_у ten times off does not."""
+    path = tmp_path / "v.toml"
+    path.write_text(f'variant = {variant}\n[values]\n"F_у" = 1\n', encoding="utf-8")
+    ctx = ck.load(path).forces
+    exact = ctx.drawn()
+    M = exact.values[cf.M_Y]
+    path.write_text(f'variant = {variant}\n[values]\n"F_у" = {abs(exact.F_y):.6g}\n'
+                    f'"M_у" = "{abs(M):.6g} {"ccw" if M > 0 else "cw"}"\n', encoding="utf-8")
+    code, out, _ = run(capsys, "check", path)
+    assert code == 0, out
+    path.write_text(f'variant = {variant}\n[values]\n"F_у" = {10 * abs(exact.F_y):.6g}\n', encoding="utf-8")
+    code, out, _ = run(capsys, "check", path)
+    assert code == 1 and "F_у" in out
