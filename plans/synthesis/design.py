@@ -127,12 +127,15 @@ def impossible(problem: Problem, key: str, message: str) -> InputError:
 
 
 def merged(spans: list[tuple[float, float]], close: float = 1e-9) -> list[tuple[float, float]]:
-    """Overlapping spans (lo, hi) joined, ascending.
+    """Overlapping spans (lo, hi) joined, ascending; an end within rounding of 0 is 0.
 
-    >>> merged([(3, 4), (0, 1), (0.5, 2)])
-    [(0, 2), (3, 4)]
+    >>> merged([(3.0, 4.0), (1e-17, 1.0), (0.5, 2.0)])
+    [(0.0, 2.0), (3.0, 4.0)]
     """
     out: list[tuple[float, float]] = []
+    big = max((max(abs(lo), abs(hi)) for lo, hi in spans), default=0.0)
+    spans = [(0.0 if abs(lo) < 1e-9 * big else lo, 0.0 if abs(hi) < 1e-9 * big else hi)
+             for lo, hi in spans]  # an end the family reaches in the limit, as 0
     for lo, hi in sorted(spans):
         if out and lo <= out[-1][1] + close * max(abs(hi), 1.0):
             out[-1] = (out[-1][0], max(out[-1][1], hi))

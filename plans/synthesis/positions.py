@@ -277,8 +277,9 @@ def _coupler_pair(problem: Problem, Bs, Cs):
             x = golden_min(neg, best[k] - steps[k], best[k] + steps[k])
             if neg(x) <= neg(best[k]):
                 best = (x, best[1]) if k == 0 else (best[0], x)
+    best_per_a = np.max(np.where(ok, gam, -np.inf), axis=1)
     curves = (Curve("A on the bisector of B1B2", "gamma_min", ta,
-                    np.nanmax(np.where(ok, gam, np.nan), axis=1) if np.any(ok) else ta * np.nan),)
+                    np.where(np.isfinite(best_per_a), best_per_a, np.nan)),)
     why = "given" if len(ta) == len(td) == 1 else problem.criterion
     return ma + best[0] * na, md + best[1] * nd, curves, why
 
