@@ -422,7 +422,7 @@ def test_the_slider_family_spans_lambda_from_tan2_half_theta_to_1():
 
 
 def test_a_shaper_whose_block_would_leave_the_rocker_is_refused():
-    with pytest.raises(InputError, match="AB must be less than 0.1 m"):
+    with pytest.raises(InputError, match=r"AB must be less than 0\.1 m"):
         design("slotted-link", "K=2", "H=0.3", "AB=0.12")
 
 

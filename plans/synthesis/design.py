@@ -19,6 +19,7 @@ from typing import Any
 import numpy as np
 
 from plans.errors import InputError
+from plans.model.fileformat import Problems
 
 
 def theta_of(K: float) -> float:
@@ -102,6 +103,8 @@ class Problem:
     criterion: str = "best"
     solution: int | None = None
     text: tuple[str, ...] = ()
+    #: the synthesis file's text, to locate a problem to its line (None: the command line)
+    file_text: str | None = None
 
 
 @dataclass(frozen=True)
@@ -121,9 +124,11 @@ class Design:
 
 
 def impossible(problem: Problem, key: str, message: str) -> InputError:
-    """The one line of a requirement that no mechanism meets: the key, the condition it
-    violates and the admissible range."""
-    return InputError(problem.source, f"{key}: {message}" if key else message)
+    """The one line of a requirement that no mechanism meets: the key (located to its line
+    in a synthesis file), the condition it violates and the admissible range."""
+    pr = Problems(problem.source, problem.file_text)
+    pr.add(key, message)
+    return InputError(problem.source, pr.lines())
 
 
 def merged(spans: list[tuple[float, float]], close: float = 1e-9) -> list[tuple[float, float]]:

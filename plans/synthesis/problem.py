@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import math
 import tomllib
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -73,15 +74,15 @@ def read_file(path: str | Path, pairs: list[str] = ()) -> Problem:
     data, text = read_toml(path, "a synthesis file is a few lines")
     source = str(path)
     if {"frame", "links", "driver"} & data.keys():
-        raise InputError(source, "a mechanism file, not a synthesis file: solve it with plans solve "
-                                 f"{source}; a synthesis file names its kind = \"crank-rocker\" …")
+        raise InputError(source, "a mechanism file, not a synthesis file: plans solve, sheet and "
+                                 "forces read it; a synthesis file names its kind = \"crank-rocker\" …")
     extra = _pairs(pairs, Problems("command line"))
     pr = Problems(source, text)
     merged_data = {**data, **extra}
     if "kind" not in merged_data:
         pr.add("kind", f"missing: what to synthesise, one of {', '.join(KINDS)}")
         pr.raise_if_any()
-    return _read(merged_data, source, pr, _lines(text, data, extra))
+    return replace(_read(merged_data, source, pr, _lines(text, data, extra)), file_text=text)
 
 
 def read_pairs(words: list[str]) -> Problem:
@@ -101,11 +102,11 @@ def _pairs(words, pr: Problems) -> dict[str, Any]:
     out: dict[str, Any] = {}
     for w in words:
         if "=" not in w:
-            pr.add("command line", f"{quote(w)} is not KEY=VALUE (e.g. K=1.25)")
+            pr.add("", f"{quote(w)} is not KEY=VALUE (e.g. K=1.25)")
             continue
         key, value = (s.strip() for s in w.split("=", 1))
         if not key:
-            pr.add("command line", f"{quote(w)} has no key before its =")
+            pr.add("", f"{quote(w)} has no key before its =")
             continue
         if key in out:
             pr.add(key, "given twice on the command line")
@@ -127,7 +128,8 @@ def _lines(text: str, data: dict, extra: dict) -> list[str]:
             continue
         if s.startswith("["):
             break
-        if "=" in s and s.split("=", 1)[0].strip().strip('"') not in extra:
+        key = s.split("=", 1)[0].strip().strip('"')
+        if "=" in s and key not in extra and key != "kind":
             out.append(s)
     out += [f"{k} = {v!r}" if isinstance(v, str) else f"{k} = {v}" for k, v in extra.items()]
     return out
