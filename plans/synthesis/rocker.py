@@ -43,6 +43,9 @@ from plans.synthesis.design import (
 )
 from plans.synthesis.roots import SAMPLES, golden_min, ranges, roots
 
+#: members worked at once by :meth:`RockerFamily.gamma_min` (as the engine's sweep blocks)
+BLOCK = 8192
+
 #: the two arcs A may lie on: beyond the chord C₁C₂ from D, or on D's side
 SIDES = (1, -1)
 SIDE_WORDS = {1: "beyond C1C2 from D", -1: "on D's side of C1C2"}
@@ -100,6 +103,45 @@ class RockerFamily:
               & (s1 == s2) & (s1 != 0) & (np.abs(seen - self.theta) < 1e-9))
         return {"AB": a, "BC": b, "AD": d, "CD": np.full(a.shape, c), "gamma_min": gamma,
                 "frame": frame, "ok": ok}
+
+    def gamma_min(self, u, side: int):
+        """(γmin, ok) of the members at ``u`` (any shape) on arc ``side``: the family's figure
+        of merit over any number of members in one call. AB and BC come from u directly (what
+        :meth:`members` measures back from A), A from cos u and sin u alone, and both
+        transmission angles at the crank along the frame through one arccos:
+        max |cos γ| = (|BC² + CD² − AD² − AB²| + 2·AB·AD) / (2·BC·CD). Worked in blocks of
+        :data:`BLOCK` members, which stay in the processor's cache."""
+        u = np.asarray(u, dtype=float)
+        gamma = np.empty(u.shape)
+        ok = np.empty(u.shape, dtype=bool)
+        flat, g, k = u.reshape(-1), gamma.reshape(-1), ok.reshape(-1)
+        for start in range(0, flat.size, BLOCK):
+            part = slice(start, start + BLOCK)
+            self._gamma_block(flat[part], side, g[part], k[part])
+        return gamma, ok
+
+    def _gamma_block(self, u, side: int, gamma, ok) -> None:
+        t = self.theta / 2
+        ct, st = math.cos(t), math.sin(t)
+        c = self.c
+        cu, su = np.cos(u), np.sin(u)
+        a = (self.chord / (2 * ct)) * cu
+        b = (self.chord / (2 * st)) * su
+        r = b - a
+        cx = cu * ct - su * st  # cos(u + θ/2)
+        sx = su * ct + cu * st  # sin(u + θ/2)
+        ax = self.C1.real - r * cx
+        ay = self.C1.imag + side * r * sx
+        d = np.sqrt(ax * ax + ay * ay)
+        # C1 and C2 on one side of AD (D the origin): the cross products of one sign
+        s1 = ax * self.C1.imag - ay * self.C1.real
+        s2 = ax * self.C2.imag - ay * self.C2.real
+        longest = np.maximum(np.maximum(b, c), d)
+        shortest = np.minimum(np.minimum(b, c), d)
+        margin = (b + c + d - 2 * longest) - a
+        worst = (np.abs(b * b + c * c - d * d - a * a) + 2 * a * d) / (2 * c * b)
+        np.arccos(np.minimum(worst, 1.0), out=gamma)
+        np.logical_and((a < shortest) & (margin > 1e-12 * (a + longest)), s1 * s2 > 0, out=ok)
 
     def quantity(self, key: str, side: int):
         """``key`` of the members over u on arc ``side``, as (values, defined) for the
