@@ -30,11 +30,11 @@ WORDS = {
     "ru": {"construction": "Построение", "family": "Семейство решений", "results": "Результаты синтеза",
            "quantity": "Величина", "value": "Значение", "drawing": "На чертеже, мм",
            "check": "Проверка анализом (plans cycle): {what}; расхождение {d}",
-           "chosen": "выбрано", "m": "м", "mm": "мм", "u": "u, °", "given": "задано"},
+           "chosen": "выбрано", "m": "м", "mm": "мм", "given": "задано"},
     "en": {"construction": "Construction", "family": "The family of solutions", "results": "Results",
            "quantity": "Quantity", "value": "Value", "drawing": "On the drawing, mm",
            "check": "Checked by analysis (plans cycle): {what}; difference {d}",
-           "chosen": "chosen", "m": "m", "mm": "mm", "u": "u, °", "given": "given"},
+           "chosen": "chosen", "m": "m", "mm": "mm", "given": "given"},
 }
 
 _COMPASS = ("e", "ne", "n", "nw", "w", "sw", "s", "se")
@@ -189,8 +189,7 @@ def family_view(design, lang: str = "ru") -> View | None:
     curves = [c for c in design.curves if np.isfinite(c.y).any()]
     if not curves:
         return None
-    angle = curves[0].label != "CD/AD"
-    xs = np.concatenate([np.degrees(c.x) if angle else c.x for c in curves])
+    xs = np.concatenate([c.shown(c.x) for c in curves])
     ys = np.concatenate([np.degrees(c.y) for c in curves])
     ok = np.isfinite(ys)
     x0, x1 = float(xs[ok].min()), float(xs[ok].max())
@@ -202,7 +201,7 @@ def family_view(design, lang: str = "ru") -> View | None:
 
     items: list[Item] = [Segment((0, H), (W, H), LineType.THIN), Segment((0, 0), (0, H), LineType.THIN)]
     for k, c in enumerate(curves):
-        cx = np.degrees(c.x) if angle else c.x
+        cx = c.shown(c.x)
         cy = np.degrees(c.y)
         run: list[tuple[float, float]] = []
         for x, y in zip(cx, cy, strict=True):
@@ -217,8 +216,7 @@ def family_view(design, lang: str = "ru") -> View | None:
             items.append(Polyline(run, LineType.MAIN if k == 0 else LineType.DASHED))
     sol = design.solution
     fig = sol.figures["gamma_min" if curves[0].figure == "gamma_min" else "delta_m"]
-    xp = math.degrees(sol.param) if angle and sol.param is not None else (
-        sol.lengths["CD"] / sol.lengths["AD"] if not angle else x0)
+    xp = float(curves[0].shown(sol.param)) if sol.param is not None else x0
     px, py = at(xp, math.degrees(fig))
     items += [Circle((px, py), 1.2, LineType.MAIN, fill="black"),
               Segment((px, py), (px, H), LineType.THIN)]
@@ -233,8 +231,9 @@ def family_view(design, lang: str = "ru") -> View | None:
         texts.append(Text((-2.5, ty + 1.25), num(float(y), 3, lang), 2.5, anchor="end"))
     sym = "γ_{min}, °" if curves[0].figure == "gamma_min" else "δ_{max}, °"
     texts.append(Text((2, -3), sym, 3.5, markup=True))
-    texts.append(Text((W, H + 11), WORDS[lang]["u"] if angle else "l_{CD}/l_{AD}", 3.5,
-                      anchor="end", markup=True))
+    unit = {"°": ", °", "m": f", {WORDS[lang]['m']}"}.get(curves[0].unit, "")
+    name = {"t_A": "t_{A}", "CD/AD": "l_{CD}/l_{AD}"}.get(curves[0].parameter, curves[0].parameter)
+    texts.append(Text((W, H + 11), name + unit, 3.5, anchor="end", markup=True))
     texts.append(Text((px + 2, py - 2), f"{num(math.degrees(fig), 4, lang)}°", 2.5))
     for k, c in enumerate(curves):
         y = H + 17 + 5 * k

@@ -78,13 +78,21 @@ class Solution:
 @dataclass(frozen=True)
 class Curve:
     """A family's figure of merit sampled over its free parameter, for the note, the JSON
-    and the sheet: ``x`` the parameter (rad: the angle u = β + θ/2 at the chord), ``y``
-    the figure (rad), NaN where no mechanism exists; ``label`` names the branch."""
+    and the sheet: ``x`` the parameter (the angle u = ∠AC₂C₁ + θ/2 in rad, a ratio, or a
+    distance), ``y`` the figure (rad), NaN where no mechanism exists; ``label`` names the
+    branch."""
 
     label: str
     figure: str  # "gamma_min" or "delta_max"
     x: np.ndarray
     y: np.ndarray
+    #: the free parameter's symbol and unit ("°": ``x`` in rad shown in degrees; "m"; "")
+    parameter: str = "u"
+    unit: str = "°"
+
+    def shown(self, x):
+        """The parameter as the report and the sheet write it (degrees for an angle)."""
+        return np.degrees(x) if self.unit == "°" else np.asarray(x, dtype=float)
 
 
 @dataclass(frozen=True)

@@ -241,6 +241,8 @@ def _slotted(design: Design, lang: str) -> list[str]:
         out.append(_step("α_max = arcsin(f/(2·l_DE))", f"arcsin({f.n(F['sagitta'])}/(2·{f.n(L['DE'])}))",
                          f.deg(F["alpha_max"]), "°"))
     else:
+        if "alpha_max" not in g:
+            out += ["", t["alpha_default"].format(a=f.deg(F["alpha_max"])), ""]
         out.append(_step("l_DE = f/(2·sin α_max)", f"{f.n(F['sagitta'])}/(2·sin {f.deg(F['alpha_max'])}°)",
                          f.n(L["DE"]), f.m))
     return out

@@ -37,6 +37,10 @@ from plans.geometry import cross
 from plans.synthesis.design import Curve, Design, Mark, Problem, Solution, acute, impossible
 from plans.synthesis.roots import golden_min
 
+#: the rocker CD over the frame AD that the two-position family spans: links of a size with
+#: the frame (a rocker far shorter makes the crank shorter still, as γmin grows towards 90°)
+RATIO = (0.2, 5.0)
+
 
 def fourbar_figures(a, b, c, d):
     """γmin of crank a, coupler b, rocker c, frame d (arrays), and where the chain is a
@@ -103,11 +107,11 @@ def _function(problem: Problem) -> Design:
             why = "only"
         else:
             t, gam, ok = _function_family(d, phi, psi, rows, rhs)
-            curves = (Curve("CD/AD", "gamma_min", t, np.where(ok, gam, np.nan)),)
+            curves = (Curve("CD/AD", "gamma_min", t, np.where(ok, gam, np.nan), "CD/AD", ""),)
             if not ok.any():
-                raise impossible(problem, "psi_deg", "no crank-rocker with CD from 0.05 to 20 "
-                                 "times AD moves through the two positions on one assembly; "
-                                 "give CD or AB, or a third position")
+                raise impossible(problem, "psi_deg", f"no crank-rocker with CD from {RATIO[0]:g} to "
+                                 f"{RATIO[1]:g} times AD moves through the two positions on one "
+                                 "assembly; give CD or AB, or a third position")
             i = int(np.argmax(np.where(ok, gam, -np.inf)))
 
             def neg(x):
@@ -140,7 +144,7 @@ def _function(problem: Problem) -> Design:
     for i, (B, C) in enumerate(zip(Bs, Cs, strict=True)):
         marks += [Mark("thin", (A, B)), Mark("thin", (B, C)), Mark("thin", (D, C)),
                   Mark("point", (B,), f"B{i + 1}"), Mark("point", (C,), f"C{i + 1}")]
-    sol = Solution({"AB": a, "BC": b, "CD": c, "AD": d}, figures, points, tuple(marks))
+    sol = Solution({"AB": a, "BC": b, "CD": c, "AD": d}, figures, points, tuple(marks), c / d)
     return Design(problem, (sol,), 0, why, curves)
 
 
@@ -164,7 +168,7 @@ def _function_member(d, phi, psi, rows, rhs, t):
 
 
 def _function_family(d, phi, psi, rows, rhs):
-    t = np.geomspace(0.05, 20.0, 2001)
+    t = np.geomspace(*RATIO, 2001)
     gam, ok = _function_member(d, phi, psi, rows, rhs, t)
     return t, gam, ok
 
@@ -206,6 +210,8 @@ def _coupler(problem: Problem) -> Design:
                                  f"{name} through them")
     else:
         A, D, curves, why = _coupler_pair(problem, Bs, Cs)
+        mid, normal = (Bs[0] + Bs[1]) / 2, 1j * (Bs[1] - Bs[0]) / abs(Bs[1] - Bs[0])
+        param = ((A - mid) * normal.conjugate()).real
     a, b = abs(Bs[0] - A), lengths[0]
     c, d = abs(Cs[0] - D), abs(D - A)
     gam, ok = fourbar_figures(np.array(a), np.array(b), np.array(c), np.array(d))
@@ -222,7 +228,8 @@ def _coupler(problem: Problem) -> Design:
             marks.append(Mark("line", (p, q)))
         marks.append(Mark("arc", (centre, *_ccw(centre, pts[0], pts[-1]))))
     figures = {"gamma_min": float(gam), "crank_rocker": float(bool(ok))}
-    sol = Solution({"AB": a, "BC": b, "CD": c, "AD": d}, figures, points, tuple(marks))
+    sol = Solution({"AB": a, "BC": b, "CD": c, "AD": d}, figures, points, tuple(marks),
+                   param if len(Bs) == 2 else None)
     return Design(problem, (sol,), 0, why, curves)
 
 
@@ -279,7 +286,7 @@ def _coupler_pair(problem: Problem, Bs, Cs):
                 best = (x, best[1]) if k == 0 else (best[0], x)
     best_per_a = np.max(np.where(ok, gam, -np.inf), axis=1)
     curves = (Curve("A on the bisector of B1B2", "gamma_min", ta,
-                    np.where(np.isfinite(best_per_a), best_per_a, np.nan)),)
+                    np.where(np.isfinite(best_per_a), best_per_a, np.nan), "t_A", "m"),)
     why = "given" if len(ta) == len(td) == 1 else problem.criterion
     return ma + best[0] * na, md + best[1] * nd, curves, why
 

@@ -100,8 +100,8 @@ def text(design: Design, check, lang: str = "en", written: str | None = None) ->
 def _shown(r, lang: str) -> str:
     if r.unit == "°":
         return f"{num(math.degrees(r.engine), 8, lang)}°"
-    if r.scale is not None and r.synthesis == 0.0:
-        return f"{num(r.engine, 2, lang)} {WORDS[lang]['m']} off"
+    if r.scale is not None and r.synthesis == 0.0:  # a position's distance from the given one
+        return WORDS[lang]["off"].format(d=num(r.engine, 2, lang))
     unit = f" {WORDS[lang]['m']}" if r.unit == "m" else ""
     return f"{num(r.engine, 8, lang)}{unit}"
 
@@ -119,17 +119,20 @@ def _family(design: Design, lang: str) -> list[str]:
             out.append(t["no_member"].format(label=t["curves"].get(cv.label, cv.label)))
             continue
         best = int(np.nanargmin(cv.y) if cv.figure == "delta_max" else np.nanargmax(cv.y))
-        unit = "°" if cv.figure in ("gamma_min", "delta_max") else ""
-        angle = cv.label != "CD/AD"
+        edge = best in (int(np.flatnonzero(ok)[0]), int(np.flatnonzero(ok)[-1]))
+        x = cv.shown(cv.x)
+        after = {"°": "°", "m": f" {t['m']}"}.get(cv.unit, "")
         out.append(t["family_row"].format(
-            label=t["curves"].get(cv.label, cv.label), figure=figure,
-            lo=f"{num(math.degrees(np.nanmin(cv.y)), 4, lang)}{unit}",
-            hi=f"{num(math.degrees(np.nanmax(cv.y)), 4, lang)}{unit}",
-            ulo=num(math.degrees(cv.x[ok].min()) if angle else cv.x[ok].min(), 4, lang),
-            uhi=num(math.degrees(cv.x[ok].max()) if angle else cv.x[ok].max(), 4, lang),
-            best=f"{num(math.degrees(cv.y[best]), 4, lang)}{unit}",
-            u=num(math.degrees(cv.x[best]) if angle else cv.x[best], 4, lang)))
-    return [t["family"].format(what=f"{t[design.curves[0].figure]}(u)"), *out]
+            label=t["curves"].get(cv.label, cv.label), figure=figure, p=cv.parameter,
+            lo=f"{num(math.degrees(np.nanmin(cv.y)), 4, lang)}°",
+            hi=f"{num(math.degrees(np.nanmax(cv.y)), 4, lang)}°",
+            ulo=f"{num(float(x[ok].min()), 4, lang)}{after}",
+            uhi=f"{num(float(x[ok].max()), 4, lang)}{after}",
+            best=f"{num(math.degrees(cv.y[best]), 4, lang)}°",
+            u=f"{num(float(x[best]), 4, lang)}{after}")
+            + (t["edge"] if edge else ""))
+    cv = design.curves[0]
+    return [t["family"].format(what=f"{t[cv.figure]}({cv.parameter})"), *out]
 
 
 def as_json(design: Design, check, written: str | None = None) -> dict[str, Any]:
@@ -163,7 +166,8 @@ def as_json(design: Design, check, written: str | None = None) -> dict[str, Any]
             "branch": s.branch,
         } for s in design.solutions],
         "family": [{"label": cv.label, "figure": cv.figure,
-                    "parameter": [float(x) for x in (np.degrees(cv.x) if cv.label != "CD/AD" else cv.x)],
+                    "parameter_name": cv.parameter, "parameter_unit": cv.unit,
+                    "parameter": [float(x) for x in cv.shown(cv.x)],
                     "value_deg": [None if not math.isfinite(y) else math.degrees(float(y)) for y in cv.y]}
                    for cv in design.curves],
         "check": None if check is None else {

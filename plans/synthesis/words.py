@@ -40,6 +40,8 @@ EN = {
     "shaper_swing": "The rocker swings through ψ = θ (the crank stands across it at the extremes):",
     "shaper_guide": ("The ram's guide through the middle of the sagitta of D's arc (the least offset "
                      "of D from it, f/2):"),
+    "alpha_default": ("The rod DE for the pressure angle α_max = {a}° on the ram (taken where neither "
+                      "DE nor alpha_max_deg is given):"),
     "freudenstein": ("The loop closes where K1·cos ψ − K2·cos φ + K3 = cos(φ − ψ), "
                      "K1 = l_AD/l_AB, K2 = l_AD/l_CD, K3 = (l_AB² − l_BC² + l_CD² + l_AD²)/(2·l_AB·l_CD); "
                      "one equation per position:"),
@@ -60,9 +62,11 @@ EN = {
             "asked": "asked for", "best_slider": "the least largest pressure angle",
             "given_slider": "the least largest pressure angle of those listed"},
     "family": "Family: {what}",
-    "family_row": ("  {label}: {figure} from {lo} to {hi} over u from {ulo}° to {uhi}°; "
-                   "best {best} at u = {u}°"),
+    "family_row": ("  {label}: {figure} from {lo} to {hi} over {p} from {ulo} to {uhi}; "
+                   "best {best} at {p} = {u}"),
     "no_member": "  {label}: no member",
+    "edge": " (at the end of the range searched)",
+    "off": "{d} m from the given place",
     "file": "Mechanism file: {path}",
     "no_file": "Mechanism file: give -o MECH.toml to write it",
     "head": ("#", "A", "l_AB, m", "l_BC, m", "l_CD, m", "l_AD, m", "γmin"),
@@ -114,6 +118,8 @@ RU = {
     "shaper_swing": "Угол качания кулисы ψ = θ (в крайних положениях кривошип перпендикулярен кулисе):",
     "shaper_guide": ("Направляющая ползуна через середину стрелы дуги точки D (наименьшее отклонение D "
                      "от неё, f/2):"),
+    "alpha_default": ("Шатун DE — по углу давления на ползун α_max = {a}° (принят, так как не заданы "
+                      "ни DE, ни alpha_max_deg):"),
     "freudenstein": ("Контур замыкается при K1·cos ψ − K2·cos φ + K3 = cos(φ − ψ), "
                      "K1 = l_AD/l_AB, K2 = l_AD/l_CD, K3 = (l_AB² − l_BC² + l_CD² + l_AD²)/(2·l_AB·l_CD); "
                      "по уравнению на каждое положение:"),
@@ -134,8 +140,11 @@ RU = {
             "asked": "задано", "best_slider": "наименьший наибольший угол давления",
             "given_slider": "наименьший наибольший угол давления из найденных"},
     "family": "Семейство: {what}",
-    "family_row": "  {label}: {figure} от {lo} до {hi} при u от {ulo}° до {uhi}°; лучший {best} при u = {u}°",
+    "family_row": ("  {label}: {figure} от {lo} до {hi} при {p} от {ulo} до {uhi}; "
+                   "лучший {best} при {p} = {u}"),
     "no_member": "  {label}: механизмов нет",
+    "edge": " (на границе просмотренного диапазона)",
+    "off": "{d} м от заданного положения",
     "file": "Файл механизма: {path}",
     "no_file": "Файл механизма: запишите его ключом -o MECH.toml",
     "head": ("№", "A", "l_AB, м", "l_BC, м", "l_CD, м", "l_AD, м", "γmin"),
