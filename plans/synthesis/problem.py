@@ -176,6 +176,8 @@ def _read(data: dict, source: str, pr: Problems, text: list[str]) -> Problem:
         pr.add("solution", f"must be the number of a solution listed (1, 2 …), got {quote(solution)}")
         solution = None
     pr.raise_if_any()
+    keys = {*spec["required"], *spec["one"], *spec["optional"], "criterion", "solution"}
+    text = [line for line in text if line.split("=", 1)[0].strip().strip('"') in keys]
     return Problem(kind, given, source, options, criterion, solution, tuple(text))
 
 
