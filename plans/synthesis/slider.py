@@ -133,7 +133,9 @@ def synthesise(problem: Problem) -> Design:
             spans = merged(ranges(fam.quantity(fixed), fam.lo, fam.hi))
             raise impossible(problem, _key(fixed), _no_member(fam, fixed, value, spans))
         found = [_solution(fam, u, problem) for u in us]
-        found.sort(key=lambda s: s.figures["delta_m"])
+        # the least largest pressure angle first; where that is the requirement itself, the
+        # working stroke's largest
+        found.sort(key=lambda s: (round(s.figures["delta_m"], 9), s.figures["delta_w"]))
         why = "given"
     else:
         found = [_solution(fam, _best(fam, problem, limit), problem)]

@@ -60,7 +60,8 @@ EN = {
     "why": {"given": "the largest γmin of those listed", "only": "the only one",
             "best": "the family's best by γmin", "size": "the smallest within the limit",
             "asked": "asked for", "best_slider": "the least largest pressure angle",
-            "given_slider": "the least largest pressure angle of those listed"},
+            "given_slider": "the least pressure angles of those listed: the largest, then the "
+                            "working stroke's"},
     "family": "Family: {what}",
     "family_row": ("  {label}: {figure} from {lo} to {hi} over {p} from {ulo} to {uhi}; "
                    "best {best} at {p} = {u}"),
@@ -138,7 +139,8 @@ RU = {
     "why": {"given": "наибольший γmin из найденных", "only": "единственное",
             "best": "лучший член семейства по γmin", "size": "наименьший в пределах ограничения",
             "asked": "задано", "best_slider": "наименьший наибольший угол давления",
-            "given_slider": "наименьший наибольший угол давления из найденных"},
+            "given_slider": "наименьшие углы давления из найденных: наибольший, затем на "
+                            "рабочем ходе"},
     "family": "Семейство: {what}",
     "family_row": ("  {label}: {figure} от {lo} до {hi} при {p} от {ulo} до {uhi}; "
                    "лучший {best} при {p} = {u}"),
