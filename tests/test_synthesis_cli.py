@@ -98,7 +98,9 @@ def test_json(capsys, tmp_path):
     assert sol["lengths"]["AB"] == pytest.approx(0.0215067466596774, rel=1e-12)
     assert sol["figures"]["theta_deg"] == pytest.approx(36.0)
     assert got["check"]["ok"] is True and got["check"]["worst"] <= 1e-12
-    assert {r["name"] for r in got["check"]["rows"]} == {"K", "θ", "H", "δmax"}
+    rows = {r["name"]: r for r in got["check"]["rows"]}
+    assert set(rows) == {"K", "θ", "H", "δmax"}
+    assert rows["θ"]["unit"] == "deg" and rows["θ"]["engine"] == pytest.approx(36.0, rel=1e-13)
     assert got["file"] == str(tmp_path / "m.toml")
     assert got["mechanism"]["sliders"][0]["guide"]["through"][1] == pytest.approx(-0.02)
 

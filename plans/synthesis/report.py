@@ -171,7 +171,9 @@ def as_json(design: Design, check, written: str | None = None) -> dict[str, Any]
                     "value_deg": [None if not math.isfinite(y) else math.degrees(float(y)) for y in cv.y]}
                    for cv in design.curves],
         "check": None if check is None else {
-            "rows": [{"name": r.name, "synthesis": r.synthesis, "engine": r.engine, "unit": r.unit,
+            "rows": [{"name": r.name, "unit": "deg" if r.unit == "°" else r.unit,
+                      "synthesis": math.degrees(r.synthesis) if r.unit == "°" else r.synthesis,
+                      "engine": math.degrees(r.engine) if r.unit == "°" else r.engine,
                       "error": r.error} for r in check.rows],
             "worst": check.worst, "grashof": check.grashof, "ok": check.ok},
         "mechanism": mechanism_dict(design),
