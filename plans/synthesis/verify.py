@@ -119,7 +119,9 @@ def check(design: Design) -> Check:
     the engine does not give back is an internal error (a bug), except for positions a
     linkage reaches only in its other assembly, which is said as the design's failure."""
     p, sol = design.problem, design.solution
-    mech = from_dict(mechanism_dict(design), f"{p.source} (the mechanism written)")
+    # a problem of the tables carried over ([loads], [drive], [title]) is located to its line
+    # of the synthesis file, where the same keys are
+    mech = from_dict(mechanism_dict(design), p.source, text=p.file_text)
     sv = Solver(mech)
     cycle = analyse_cycle(mech, solver=sv)
     rows: list[Row] = []
