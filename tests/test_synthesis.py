@@ -501,3 +501,17 @@ def test_coupler_positions_give_back_the_fixed_pivots():
 def test_circumcentre():
     assert circumcentre(0j, 2 + 0j, 2j) == 1 + 1j
     assert circumcentre(0j, 1 + 0j, 2 + 0j) is None
+
+
+@pytest.mark.parametrize("sense", ["ccw", "cw"])
+def test_the_working_stroke_pushes_the_slider_away_from_the_crank(sense):
+    """The guide goes on the side that makes the slower stroke the one away from the crank,
+    whichever way it turns: the engine's position 0 starts it, and the slider's travel grows."""
+    from plans.kinematics.solver import Solver
+
+    d = design("crank-slider", "K=1.3", "H=0.1", "AB=0.04", f'sense="{sense}"')
+    got = check(d)
+    sv = Solver(got.mechanism)
+    start, end = (float(got.cycle.output.value(sv.solve_one(x), got.mechanism))
+                  for x in got.cycle.extremes)
+    assert end - start == pytest.approx(0.1, rel=1e-12)
