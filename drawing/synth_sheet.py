@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from drawing.scene import Layer, Scene
 from drawing.sheet.frame import Sheet, frame_scene
-from drawing.sheet.layout import Placed, place_views, spread
+from drawing.sheet.layout import LayoutError, Placed, place_views, spread
 from drawing.sheet1 import FIELDS, title_block
 from drawing.svg import to_svg
 from drawing.views.construction import construction_view, extent, family_view, results_view
@@ -18,13 +18,14 @@ from plans.scales import GOST_MU_L, gost_scale, series
 
 __all__ = ["FIELDS", "build", "choose_mu_l", "render"]
 
-#: the share of the sheet's free field the construction may take, across and down
-SHARE = (0.55, 0.8)
+#: the share of the sheet's free field the construction may take, across and down, at
+#: most: where the other views do not fit beside it, the next GOST μl is taken
+SHARE = (0.72, 0.85)
 
 
 def choose_mu_l(design, check, sheet: Sheet) -> float:
     """The smallest GOST μl (m/mm) at which the construction fits its share of the field
-    (:data:`SHARE`), with room for its letters."""
+    (:data:`SHARE`), with room for its letters: the first :func:`build` tries."""
     x0, y0, x1, y1 = extent(design, check)
     f = sheet.frame
     room_w = (f.w - 10) * SHARE[0] - 20
@@ -40,12 +41,19 @@ def build(design, check, fmt: str = "A3", lang: str = "ru", title=()) -> tuple[S
     """(scene, sheet, μl): the views placed in the frame with the title block, the title
     block's scale that of the construction."""
     sheet = Sheet(fmt)
-    mu_l = choose_mu_l(design, check, sheet)
-    views = [construction_view(design, check, mu_l, lang)]
-    if (fam := family_view(design, lang)) is not None:
-        views.append(fam)
-    views.append(results_view(design, check, mu_l, lang))
-    placed: list[Placed] = spread(sheet, place_views(sheet, views))
+    first = choose_mu_l(design, check, sheet)
+    tries = [mu for mu in GOST_MU_L if mu >= first] or [first]
+    for k, mu_l in enumerate(tries):
+        views = [construction_view(design, check, mu_l, lang)]
+        if (fam := family_view(design, lang)) is not None:
+            views.append(fam)
+        views.append(results_view(design, check, mu_l, lang))
+        try:
+            placed: list[Placed] = spread(sheet, place_views(sheet, views))
+            break
+        except LayoutError:
+            if k == len(tries) - 1:
+                raise
     tb = title_block(check.mechanism, sheet, list(title), gost_scale(mu_l, lang), lang)
     scene = frame_scene(sheet, tb, lang=lang)
     scene = scene + Scene((Layer("views", tuple(p.group() for p in placed)),))
