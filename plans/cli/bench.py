@@ -25,6 +25,7 @@ from plans.cli.common import EXIT_OK, number
 from plans.cli.output import picture_format
 from plans.errors import InputError
 from plans.forces.bench import force_bench
+from plans.synthesis.bench import family_bench
 from plans.verify.bench import (
     BENCH_SCENES,
     FD_STEPS,
@@ -68,7 +69,8 @@ def configure(p) -> None:
         "--scene",
         action="append",
         metavar="NAME",
-        help=f"only these scenes (repeatable; default: {', '.join(BENCH_SCENES)})",
+        help=f"only these scenes (repeatable; default: {', '.join(BENCH_SCENES)}, and the "
+        "synthesis's crank-rocker family, which a --scene leaves out)",
     )
     p.add_argument(
         "--methods",
@@ -156,7 +158,7 @@ def run(args) -> int:
     if skipped and not args.scene:
         notes.append(f"{', '.join(skipped)}: the samples are benched in a source checkout")
     rows: list[Row] = []
-    for name in names:
+    for name in names if methods - {"synthesis"} else ():
         rows += bench.scene(name, scenes[name], sizes)
         mech = scenes[name].mechanism()
         if "forces" in methods and mech.loads is not None and scenes[name].full_turn:
@@ -166,6 +168,11 @@ def run(args) -> int:
                     got = force_bench(mech, name, n, repeats=1 if args.quick else 3,
                                       checks=4 if args.quick else 24)
                     rows.append(Row(name, "forces", n, got.seconds_per_position, float(got.max_rel_error)))
+    if "synthesis" in methods and not args.scene:  # γmin over a crank-rocker family, one call
+        n = 10_000 if args.quick else 1_000_000
+        log(f"bench synthesis: γmin over {n} members of a crank-rocker family")
+        got = family_bench(n, repeats=1 if args.quick else 3, checks=4 if args.quick else 24)
+        rows.append(Row("crank-rocker family", "synthesis", n, got.seconds / n, got.max_rel_error))
     if args.json:
         text = json.dumps([r.as_json() for r in rows], indent=1) + "\n"
         for n in notes:
@@ -258,11 +265,19 @@ def targets(rows: list[Row]) -> list[str]:
             out.append(f"{head} {figures} — {verdict}")
     label, scenes, goal = FORCE_TARGET
     got = {r.positions: 1 / r.seconds_per_position for r in rows
-           if r.method == "forces" and r.scene in scenes and r.positions >= 100_000 and r.seconds_per_position > 0}
+           if r.method == "forces" and r.scene in scenes and r.positions >= 100_000
+           and r.seconds_per_position > 0}
     if got:
         figures = ", ".join(f"{v:.3g} at N = {n:.0e}" for n, v in sorted(got.items()))
         verdict = "met" if min(got.values()) >= goal else "NOT met"
         out.append(f"  {label} ≥ {goal:.0e} positions/s, N ≥ 1e5: {figures} — {verdict}")
+    for r in rows:
+        if r.method == "synthesis":
+            whole = _time(r.seconds_per_position * r.positions)
+            out.append(f"  γmin over a crank-rocker family in one call: {r.positions:.0e} members in "
+                       f"{whole} "
+                       f"({1 / r.seconds_per_position:.3g} members/s), against the engine "
+                       f"{_err(r.max_rel_error)}")
     plan = [
         r.seconds_per_position
         for r in rows

@@ -33,6 +33,7 @@ COMMANDS = {
     "forces": ("plans.cli.forces", "force analysis: loads, force plans, Zhukovsky's lever, the drive"),
     "check": ("plans.cli.check", "check a hand-drawn plan against the computed one"),
     "bench": ("plans.cli.bench", "speed and error against a high-precision reference"),
+    "synth": ("plans.cli.synth", "a mechanism from requirements: by K or by given positions"),
 }
 
 EPILOG = """exit status: 0 success, 1 a check found deviations, 2 bad input or an

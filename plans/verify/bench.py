@@ -67,8 +67,9 @@ BENCH_SCENES = {
     "tangent": "PRP",
     "scotch_yoke": "RPP",
 }
-#: "forces": the loaded sweep of the force analysis, benched by the command (plans.forces.bench)
-METHODS = ("vectorized", "reused", "recorded", "plan", "fd", "peers", "forces")
+#: "forces": the loaded sweep of the force analysis, benched by the command (plans.forces.bench);
+#: "synthesis": γmin over a crank-rocker family in one call (plans.synthesis.bench)
+METHODS = ("vectorized", "reused", "recorded", "plan", "fd", "peers", "forces", "synthesis")
 PEER_HINTS = {
     "pylinkage": "pip install pylinkage",
     "pyslvs": "it ships no wheel for recent Pythons and its source build fails on 3.11",
