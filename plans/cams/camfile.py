@@ -58,6 +58,9 @@ FOLLOWERS = ("knife-edge", "roller", "flat-faced")
 MOTIONS = ("translating", "oscillating")
 LANGS = ("en", "ru")
 TOP_KEYS = {"name", "cam", "follower", "limits", "phases", "disc", "title"}
+#: the senses of rotation as they may be spelt, and the word the file reads them as
+SENSES = {"clockwise": "cw", "counter-clockwise": "ccw", "counterclockwise": "ccw",
+          "anticlockwise": "ccw", "anti-clockwise": "ccw"}
 MAX_PHASES = 50
 
 
@@ -162,7 +165,9 @@ def from_dict(data: dict, source: str, text: str | None = None) -> Cam:
 
     # the cam ------------------------------------------------------------------------
     check_keys(cam_t, {"sense", "omega", "rpm", "base_radius", "step_deg"}, "cam", pr)
-    sense = _choice(cam_t.get("sense", "ccw"), "cam.sense", ("ccw", "cw"), pr, "ccw")
+    sense = cam_t.get("sense", "ccw")
+    sense = SENSES.get(sense.strip().lower(), sense) if isinstance(sense, str) else sense
+    sense = _choice(sense, "cam.sense", ("ccw", "cw"), pr, "ccw")
     omega, rpm = _speed(cam_t, pr)
     base = cam_t.get("base_radius")
     base = None if base is None else read_number(base, "cam.base_radius", pr, positive=True, low=1e-6)
@@ -241,6 +246,12 @@ def _choice(value: Any, where: str, choices, pr: Problems, default: str) -> str:
 
 
 def _speed(table: dict, pr: Problems) -> tuple[float, float | None]:
+    for key in ("omega", "rpm"):
+        value = table.get(key)
+        if isinstance(value, int | float) and not isinstance(value, bool) and value < 0:
+            pr.add(f"cam.{key}", f"must be positive, got {value:g} (the sense of rotation is sense = "
+                                 '"cw" or "ccw")')
+            return 1.0, None
     if "omega" in table and "rpm" in table:
         pr.add("cam.rpm", "give omega (rad/s) or rpm, not both")
         return 1.0, None
@@ -253,7 +264,7 @@ def _speed(table: dict, pr: Problems) -> tuple[float, float | None]:
 
 
 def _angle_limit(value, where: str, default: float, pr: Problems) -> float:
-    x = read_number(value, where, pr, default=default, unit="°", high=90.0)
+    x = read_number(value, where, pr, default=default, unit="°")
     if x is None:
         return default
     if not 0.0 < x < 90.0:

@@ -17,12 +17,14 @@ import math
 
 from drawing import export
 from drawing.cam_sheet import render
+from drawing.sheet.layout import LayoutError
 from plans.cams.camfile import load
 from plans.cams.design import Design, design
 from plans.cams.note import cam_note
 from plans.cams.table import profile_table
 from plans.cams.words import words
 from plans.cli.common import EXIT_OK, number, picture_names, warn
+from plans.errors import InputError
 from plans.fmt import columns, num
 
 PICTURES = {".svg": ("-o", "output"), ".png": ("--png", "png"), ".pdf": ("--pdf", "pdf")}
@@ -65,7 +67,10 @@ def run(args) -> int:
         text = to_text(d, args.lang)
     files: list[tuple[str | None, str | bytes]] = [(None, text)]
     if sheet:
-        svg = render(d, args.format, args.lang, args.title_block)
+        try:
+            svg = render(d, args.format, args.lang, args.title_block)
+        except LayoutError as exc:  # the format is too small: which is not, said by the file
+            raise InputError(cam.source, str(exc)) from None
         if args.output is not None:
             files.append((args.output, svg))
         if args.png:
