@@ -91,6 +91,11 @@ def _sampled(d, per_phase: int = 240):
             s1 = np.insert(s1, j, s1l[-1])
             s2 = np.insert(s2, j, s2l[-1])
         out.append((phi, s, s1, s2))
+    # the turn's start as the last phase leaves it, so that a jump there is drawn too
+    last = len(d.motion.phases) - 1
+    end = np.array([d.motion.phases[last].end])
+    before = d.motion.of_phase(last, end, "left")
+    out.insert(0, (np.array([0.0]), *(np.asarray(v) for v in before[:3])))
     return [np.concatenate([o[k] for o in out]) for k in range(4)]
 
 
@@ -228,15 +233,19 @@ def limit_view(d, lang: str = "ru", width: float = 200.0, height: float = 45.0) 
     w = CAM_WORDS[lang]
     phi = np.linspace(0.0, 2 * math.pi, 721)
     c = d.curves(phi)
-    if d.cam.follower.flat:
+    lim = d.cam.limits
+    if d.cam.follower.flat:  # the bound over the whole turn
         data = 1000.0 / c.kappa_profile
-        name, unit, lines = "ρ", w["mm"], [d.cam.limits.min_radius * 1000]
+        name, unit = "ρ", w["mm"]
+        lines = [(0.0, 2 * math.pi, lim.min_radius * 1000)]
         title = w["rho"] if not d.cam.follower.oscillating else "ρ(φ)"
-    else:
+    else:  # each phase's limit over it
         data = np.degrees(c.pressure)
-        name, unit, lines = "α", "°", [d.cam.limits.rise_deg, d.cam.limits.return_deg]
+        name, unit = "α", "°"
+        lines = [(p.start, p.end, lim.rise_deg if p.kind == "rise" else lim.return_deg)
+                 for p in d.motion.phases if p.moves]
         title = w["alpha"]
-    hi = max(float(data.max()), *lines) * 1.1
+    hi = max(float(data.max()), *(v for _, _, v in lines)) * 1.1
     mu = choose_mu(hi / height, 0.0, crank_mm=1.0)
     x = phi / (2 * math.pi) * width
     y0 = hi / mu
@@ -244,12 +253,21 @@ def limit_view(d, lang: str = "ru", width: float = 200.0, height: float = 45.0) 
                          Arrow((0, y0 + 2), (0, -6), LineType.THIN, 3.0, 1.0),
                          Polyline(list(zip(x.tolist(), (y0 - data / mu).tolist(), strict=True)),
                                   LineType.MAIN)]
-    for v in sorted(set(lines)):
-        items.append(Segment((0, y0 - v / mu), (width, y0 - v / mu), LineType.DASHED))
-        items.append(Text((width + 1, y0 - v / mu + 1), num(v, 3, lang), size=2.5))
+    labels = []
+    for a, b, v in lines:
+        xa, xb = a / (2 * math.pi) * width, b / (2 * math.pi) * width
+        items.append(Segment((xa, y0 - v / mu), (xb, y0 - v / mu), LineType.DASHED))
+        labels.append(LabelRequest(((xa + xb) / 2, y0 - v / mu), num(v, 3, lang), 2.5, "n", markup=False))
+    for p in d.motion.phases[1:]:  # the joints, and the numbered positions
+        xj = p.start / (2 * math.pi) * width
+        items.append(Segment((xj, y0 + 2), (xj, y0 - hi / mu), LineType.THIN))
+    for k, r in enumerate(positions(d)):
+        xr = r / (2 * math.pi) * width
+        items.append(Segment((xr, y0 - 1), (xr, y0 + 1), LineType.THIN))
+        labels.append(LabelRequest((xr, y0), str(k), 2.5, "s", markup=False, optional=True))
     items.append(Text((2, -6), f"{name}, {unit}", size=3.5, baseline="hanging"))
     items.append(Text((width + 6, y0 - 1.5), "φ", size=3.5, anchor="end"))
-    return finish("portrait", items, [], f"{title}, μ_{name} = {num(mu, 3, lang)} {unit}/{w['mm']}")
+    return finish("portrait", items, labels, f"{title}, μ_{name} = {num(mu, 3, lang)} {unit}/{w['mm']}")
 
 
 def construction_view(d, lang: str = "ru", size: float = 250.0) -> View:
@@ -372,11 +390,11 @@ def _follower(d, mu: float, pitch0: complex, contact0: complex, reach: float) ->
         if f.kind == "roller":
             out.append(Circle(_xy(pitch0, mu), f.roller / mu, LineType.MAIN, fill="white"))
         return out
-    top = pitch0 + 1j * (d.motion.stroke + 0.25 * reach)
+    top = pitch0 + 1j * (d.motion.stroke + 0.12 * reach)
     base = pitch0 if f.kind != "roller" else pitch0 + 1j * f.roller
     out.append(Segment(_xy(base, mu), _xy(top, mu), LineType.MAIN))
     # the guide: two short strokes either side of the rod, hatched outside
-    g = pitch0 + 1j * (d.motion.stroke + 0.12 * reach)
+    g = pitch0 + 1j * (d.motion.stroke + 0.04 * reach)
     gx, gy = _xy(g, mu)
     for side in (-1, 1):
         x = gx + side * 2.5

@@ -66,8 +66,8 @@ T = {
         "along_axis": "from the axis", "along_pivot": "from the pivot",
         "table": "Coordinates of the numbered positions (cam's frame, mm):",
         "head": "| No. | φ, ° | {s} | pitch x | pitch y | x | y | α, ° |",
-        "rise": "rise", "return": "return", "dwell": "dwell",
-        "ok": "no undercut", "ccw": "+1, counter-clockwise", "cw": "−1, clockwise",
+        "rise": "rise", "return": "return", "dwell": "dwell", "outer": "outer dwell", "inner": "inner dwell",
+        "ok": "no undercut", "ccw": "+1, counter-clockwise", "cw": "−1, clockwise", "tan": "tan",
     },
     "ru": {
         "title": "Кулачковый механизм: {name}",
@@ -111,8 +111,10 @@ T = {
         "along_axis": "от оси", "along_pivot": "от оси качания",
         "table": "Координаты пронумерованных положений (система кулачка, мм):",
         "head": "| № | φ, ° | {s} | центр. x | центр. y | x | y | α, ° |",
-        "rise": "удаление", "return": "возвращение", "dwell": "стояние",
+        "rise": "удаление", "return": "возвращение", "dwell": "стояние", "outer": "дальнее стояние",
+        "inner": "ближнее стояние",
         "ok": "подрезания нет", "ccw": "+1, против часовой стрелки", "cw": "−1, по часовой стрелке",
+        "tan": "tg",
     },
 }
 
@@ -132,11 +134,16 @@ def cam_note(d, lang: str = "en", section: int = 1) -> str:
          "v": ("рад/с" if ru else "rad/s") if f.oscillating else ("м/с" if ru else "m/s"),
          "a": ("рад/с²" if ru else "rad/s²") if f.oscillating else ("м/с²" if ru else "m/s²")}
 
-    def n(x, digits=4):
-        return num(float(x), digits, lang)
+    def n(x, digits=4):  # a true minus; rounding's noise of a zero is a zero
+        x = float(x)
+        return num(0.0 if abs(x) < 1e-12 else x, digits, lang).replace("-", "−")
 
     def mm(x):
         return n(float(x) * 1000)
+
+    def pm(x):  # in parentheses where negative, as a term of a formula
+        text = mm(x)
+        return f"({text})" if text.startswith("−") else text
 
     def deg(x):
         v = math.degrees(float(x)) % 360.0
@@ -149,7 +156,8 @@ def cam_note(d, lang: str = "en", section: int = 1) -> str:
     # the motion -----------------------------------------------------------------------
     out += [f"### {section}.{k}. {t['motion']}", ""]
     if cam.disc is not None:
-        out += [t["disc"], "", f"- `{m.law.formula}`", ""]
+        out += [t["disc"].format(R=mm(cam.disc.radius), c=mm(cam.disc.eccentricity)) + ":", "",
+                f"- `{m.law.formula}`", ""]
     for i, p in enumerate(m.phases):
         if not p.moves:
             continue
@@ -176,10 +184,16 @@ def cam_note(d, lang: str = "en", section: int = 1) -> str:
     # impacts --------------------------------------------------------------------------
     k += 1
     out += [f"### {section}.{k}. {t['impacts']}", ""]
+    def phase(i):
+        p = m.phases[i]
+        return t[p.kind] if p.moves else t["outer" if p.level > h / 2 else "inner"]
+
     for imp in d.impacts:
         b, a = imp.where
-        dv, da = imp.dv * cam.omega, imp.da * cam.omega**2
-        out.append(f"- φ = {deg(imp.phi)}° ({t[m.phases[b].kind]} → {t[m.phases[a].kind]}): "
+        # a jump under the classing's threshold is rounding: written as none
+        dv = imp.dv * cam.omega if imp.kind == "rigid" else 0.0
+        da = imp.da * cam.omega**2 if imp.kind != "none" else 0.0
+        out.append(f"- φ = {deg(imp.phi)}° ({phase(b)} → {phase(a)}): "
                    f"`Δv = {n(dv)} {u['v']}`, `Δa = {n(da)} {u['a']}`: {t[imp.kind]}")
     out.append("")
     # the base circle ------------------------------------------------------------------
@@ -198,10 +212,10 @@ def cam_note(d, lang: str = "en", section: int = 1) -> str:
             sign = "+" if tg.m > 0 else "−"
             out.append(f"- {t['tangent'].format(phi=deg(tg.phi), kind=t[m.phases[tg.phase].kind])} "
                        f"`b = s {sign} σ·s′·cot {n(tg.limit_deg)}° = {mm(tg.y)} {sign} "
-                       f"{mm(-tg.x)}·{n(abs(tg.m))} = {mm(tg.b)} {u['mm']}`")
+                       f"{pm(-tg.x)}·{n(abs(tg.m))} = {mm(tg.b)} {u['mm']}`")
         x, y = d.portrait.centre
         out += ["", t["nearest"], "",
-                _step("r0,min = √(x_O² + y_O²)", f"√({mm(x)}² + {mm(y)}²)", mm(d.best[0]), u["mm"]),
+                _step("r0,min = √(x_O² + y_O²)", f"√({pm(x)}² + {pm(y)}²)", mm(d.best[0]), u["mm"]),
                 _step("e = −x_O", "", mm(d.best[1]), u["mm"]), "",
                 t["at_e"].format(e=mm(d.offset)), "",
                 _step("r0 = √(e² + s0²)", f"√({mm(d.offset)}² + {mm(d.portrait.at_offset(d.offset)[1])}²)",
@@ -210,7 +224,7 @@ def cam_note(d, lang: str = "en", section: int = 1) -> str:
         out.append(t["flat"])
         if d.smallest is not None:  # min(s + s″) = ρ_min − r0,min
             out += ["", _step("r0,min = ρ_min − min(s + s″)",
-                              f"{mm(lim.min_radius)} − ({mm(lim.min_radius - d.smallest)})", mm(d.smallest),
+                              f"{mm(lim.min_radius)} − {pm(lim.min_radius - d.smallest)}", mm(d.smallest),
                               u["mm"])]
     elif f.flat:
         out.append(t["flat_osc"].format(r=mm(d.smallest)) if d.smallest is not None else "")
@@ -236,13 +250,13 @@ def cam_note(d, lang: str = "en", section: int = 1) -> str:
                 st = arr.sigma * arr.tau
                 psi = n(math.degrees(arr.psi0 + s))
                 minus, plus = ("−", "+") if st > 0 else ("+", "−")
-                out.append(_step("tan α = |l·(ψ′ − στ) + στ·a·cos Ψ| / (a·sin Ψ)",
+                out.append(_step(f"{t['tan']} α = |l·(ψ′ − στ) + στ·a·cos Ψ| / (a·sin Ψ)",
                                  f"|{mm(arr.l)}·({n(s1)} {minus} 1) {plus} {mm(arr.a)}·cos {psi}°| / "
                                  f"({mm(arr.a)}·sin {psi}°)", n(math.tan(e.value))))
             else:
                 se = arr.sigma * arr.e
-                out.append(_step("tan α = |s′ − σe| / (s0 + s)",
-                                 f"|{mm(s1)} − ({mm(se)})| / ({mm(arr.s0)} + {mm(s)})", n(math.tan(e.value))))
+                out.append(_step(f"{t['tan']} α = |s′ − σe| / (s0 + s)",
+                                 f"|{mm(s1)} − {pm(se)}| / ({mm(arr.s0)} + {mm(s)})", n(math.tan(e.value))))
             out.append(_step("α", "", n(math.degrees(e.value)), "°"))
             out.append("")
     # the profile ----------------------------------------------------------------------
@@ -253,7 +267,7 @@ def cam_note(d, lang: str = "en", section: int = 1) -> str:
         r = d.radius["profile"]
         c = d.of_phase(r.phase, np.array([r.phi]), "right")
         if not f.oscillating:
-            out.append(_step("ρ_min = r0 + s + s″", f"{mm(d.r0)} + {mm(c.s[0])} + ({mm(c.s2[0])})",
+            out.append(_step("ρ_min = r0 + s + s″", f"{mm(d.r0)} + {mm(c.s[0])} + {pm(c.s2[0])}",
                              mm(r.value), u["mm"]))
         else:
             out.append(_step("ρ_min", "", mm(r.value), u["mm"]))
