@@ -268,3 +268,11 @@ def test_hostile_cam_files_are_refused_in_lines_or_designed(data):
         assert "\n" not in str(exc)
         return
     assert math.isfinite(d.r0) and all(math.isfinite(e.value) for e in d.pressure.values())
+
+
+def test_the_committed_sample_sheet_is_the_readmes_command(capsys, tmp_path):
+    """samples/cam.svg is what README's command writes, byte for byte."""
+    out = tmp_path / "cam.svg"
+    code, _, err = run(capsys, "cam", SAMPLE, "--lang", "ru", "-o", out)
+    assert code == 0 and err == ""
+    assert out.read_bytes() == (ROOT / "samples" / "cam.svg").read_bytes()
