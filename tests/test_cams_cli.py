@@ -71,6 +71,10 @@ def test_json_is_si_and_agrees_with_the_design(capsys):
     rows = data["profile"]
     assert len(rows) == 360 and rows[0]["phi_deg"] == 0.0 and rows[-1]["phi_deg"] == pytest.approx(359.0)
     assert math.hypot(*rows[0]["pitch"]) == pytest.approx(d.r0, rel=1e-14)  # on the base circle
+    om = 120 * math.pi / 30
+    for r in rows[::37]:  # the follower's velocity, acceleration and jerk at ω
+        assert (r["velocity"], r["acceleration"], r["jerk"]) == pytest.approx(
+            (r["ds"] * om, r["d2s"] * om**2, r["d3s"] * om**3), rel=1e-15, abs=1e-300)
     assert math.hypot(*[a - b for a, b in zip(rows[0]["pitch"], rows[0]["profile"], strict=True)]) == \
         pytest.approx(0.008, rel=1e-12)
 
@@ -208,6 +212,9 @@ def test_outputs_onto_the_cam_file_or_each_other_are_refused(capsys, tmp_path):
     assert code == 2 and "-o" in err and list(tmp_path.iterdir()) == [cam]
     code, _, err = run(capsys, "cam", cam, "--json", "--csv")
     assert code == 2 and "not allowed with argument" in err
+    code, out, err = run(capsys, "cam", cam, "-o", "-")
+    assert (code, out) == (2, "")
+    assert err == "plans cam: command line: -o -: stdout takes the text; give the sheet a file name\n"
 
 
 def test_a_sheet_that_does_not_fit_says_so_and_writes_nothing(capsys, tmp_path, monkeypatch):

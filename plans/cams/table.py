@@ -30,7 +30,7 @@ __all__ = ["Table", "profile_table"]
 
 
 class Table(NamedTuple):
-    """Rows of the profile: the cam angle, the phase, s, s′, s″, the pressure angle, the
+    """Rows of the profile: the cam angle, the phase, s, s′, s″, s‴, the pressure angle, the
     pitch point and the profile's point in the cam's frame (complex, m), the profile's
     radius of curvature (m, convex positive; inf where straight) and ``corner``: the row
     is one of the extra points of a corner (its cam angle repeats)."""
@@ -40,6 +40,7 @@ class Table(NamedTuple):
     s: np.ndarray
     s1: np.ndarray
     s2: np.ndarray
+    s3: np.ndarray
     pressure: np.ndarray
     pitch: np.ndarray
     profile: np.ndarray
@@ -75,7 +76,7 @@ def _columns(c, phase, corner, phi_value=None) -> dict:
         radius = np.where(c.kappa_profile == 0, np.inf, 1.0 / np.where(c.kappa_profile == 0, 1.0,
                                                                          c.kappa_profile))
     phi = c.phi if phi_value is None else np.full(len(c.phi), phi_value)
-    return {"phi": phi, "phase": phase, "s": c.s, "s1": c.s1, "s2": c.s2, "pressure": c.pressure,
+    return {"phi": phi, "phase": phase, "s": c.s, "s1": c.s1, "s2": c.s2, "s3": c.s3, "pressure": c.pressure,
             "pitch": c.pitch, "profile": c.profile, "radius": radius, "corner": corner}
 
 
@@ -93,7 +94,7 @@ def _fill(d, corner, left, c, at) -> dict | None:
     ang = a0 + span * np.arange(1, k) / k
     pts = centre + rr * np.exp(1j * ang)
     m = len(pts)
-    rep = {f: np.repeat(getattr(left, f)[:1], m) for f in ("s", "s1", "s2", "pressure")}
+    rep = {f: np.repeat(getattr(left, f)[:1], m) for f in ("s", "s1", "s2", "s3", "pressure")}
     return {"phi": np.full(m, corner.phi), "phase": np.full(m, corner.after), **rep,
             "pitch": np.full(m, centre), "profile": pts, "radius": np.full(m, -rr),
             "corner": np.ones(m, bool)}

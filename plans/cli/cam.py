@@ -52,6 +52,8 @@ def configure(p) -> None:
 
 def run(args) -> int:
     picture_names(args, PICTURES)
+    if args.output == "-":  # the text (or JSON, CSV) goes there
+        raise InputError("command line", "-o -: stdout takes the text; give the sheet a file name")
     args.run_files.claim(args, [args.file])  # an output onto the cam file: refused first
     sheet = args.output is not None or args.png or args.pdf
     if args.png or args.pdf:
@@ -335,8 +337,11 @@ def to_json(d: Design, t) -> dict:
                      "max_acceleration_phi_deg": math.degrees(a.phi),
                      "max_pressure_deg": math.degrees(d.phase_pressure[i].value)}
         out["phases"].append(item)
+    om = cam.omega
     out["profile"] = [{"phi_deg": math.degrees(t.phi[k]), "phase": int(t.phase[k]), "s": _f(t.s[k]),
-                       "ds": _f(t.s1[k]), "d2s": _f(t.s2[k]),
+                       "ds": _f(t.s1[k]), "d2s": _f(t.s2[k]), "d3s": _f(t.s3[k]),
+                       "velocity": _f(t.s1[k] * om), "acceleration": _f(t.s2[k] * om**2),
+                       "jerk": _f(t.s3[k] * om**3),
                        "pressure_deg": math.degrees(float(t.pressure[k])),
                        "pitch": _xy(t.pitch[k]), "profile": _xy(t.profile[k]), "radius": _f(t.radius[k]),
                        "corner": bool(t.corner[k])} for k in range(len(t.phi))]
