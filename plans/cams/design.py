@@ -230,7 +230,7 @@ def _corners(motion, arr: Arrangement, imps) -> tuple[Corner, ...]:
 
 
 def _mm(x: float) -> str:
-    return num(x * 1000.0, 4)
+    return num(x * 1000.0, 4).replace("-", "−")
 
 
 def _deg(x: float) -> str:
@@ -271,8 +271,8 @@ def _check(cam, motion, arr: Arrangement, d: _Figures, corners, smallest) -> lis
             need = f"at least {_mm(m)} mm" if m > 0 else "positive"
             raise ProfileError(
                 f"the profile is not convex enough for a flat face at {_where(motion, rho)}: its radius of "
-                f"curvature is {_mm(rho.value)} mm (" + ("r0 + s + s″" if not f.oscillating else "ρ") +
-                f"), it must be {need}, short by {_mm(max(m, 0.0) - rho.value)} mm{fix('flat')}", source=src)
+                f"curvature is {_mm(rho.value)} mm" + (" (r0 + s + s″)" if not f.oscillating else "") +
+                f", it must be {need}, short by {_mm(max(m, 0.0) - rho.value)} mm{fix('flat')}", source=src)
     else:
         k = d.radius["pitch"]
         floor = rr + m
