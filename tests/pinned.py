@@ -89,6 +89,18 @@ def _jobs(scenes: list[str]) -> list[tuple[str, list[str], str | None]]:
                  None))
     for bad in sorted((ROOT / "tests" / "corpus").glob("*.toml")):
         jobs.append((f"corpus-{bad.stem}.err", ["solve", f"corpus/{bad.name}"], None))
+    cam = "samples/cam.toml"
+    jobs += [
+        ("cam.txt", ["cam", cam], None),
+        ("cam.ru.txt", ["cam", cam, "--lang", "ru"], None),
+        ("cam.json", ["cam", cam, "--json"], None),
+        ("cam.csv", ["cam", cam, "--csv"], None),
+        ("cam.sheet.ru.svg", ["cam", cam, "--lang", "ru", "-o", "out.svg"], "out.svg"),
+        ("cam.sheet.en.A3.svg", ["cam", cam, "--format", "A3", "-o", "out.svg"], "out.svg"),
+        ("cam.note.ru.md", ["cam", cam, "--lang", "ru", "--note", "note.md"], "note.md"),
+    ]
+    for bad in sorted((ROOT / "tests" / "corpus" / "cams").glob("*.toml")):
+        jobs.append((f"corpus-cams-{bad.stem}.err", ["cam", f"corpus/cams/{bad.name}"], None))
     return jobs
 
 
@@ -102,7 +114,7 @@ def outputs() -> dict[str, bytes]:
     with tempfile.TemporaryDirectory() as tmp:
         work = Path(tmp)
         (work / "samples").mkdir()
-        for f in ("press.toml", "fourbar.toml", "check_press.toml", "check_forces.toml"):
+        for f in ("press.toml", "fourbar.toml", "check_press.toml", "check_forces.toml", "cam.toml"):
             shutil.copy(ROOT / "samples" / f, work / "samples" / f)
         # the overlay cases name their mechanisms as ../../samples/…
         shutil.copytree(ROOT / "tests" / "overlay_cases", work / "tests" / "overlay_cases")

@@ -53,6 +53,22 @@ def test_corpus_through_the_cli(capsys, tmp_path, path):
     assert not out.exists() and list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.parametrize("path", sorted((CORPUS / "cams").glob("*.toml")), ids=lambda p: p.stem)
+def test_cam_corpus_through_the_cli(capsys, tmp_path, path):
+    """Each broken cam file (or a cam whose profile cannot be made: an undercut, a flat face
+    on a hollow, a roller at a velocity jump): its problems, one located line each, exit 2,
+    neither the text nor the sheet nor the note written."""
+    sheet, note = tmp_path / "cam.svg", tmp_path / "cam.md"
+    code, stdout, err = run(capsys, "cam", path, "-o", sheet, "--note", note)
+    assert code == 2 and stdout == ""
+    lines = assert_clean_failure(err, "cam")
+    want = expectations(path)
+    assert len(lines) == len(want), err
+    for line, expected in zip(lines, want, strict=True):
+        assert line.startswith(f"plans cam: {path}: ") and expected in line
+    assert list(tmp_path.iterdir()) == []
+
+
 @pytest.mark.parametrize("path", sorted((CORPUS / "tables").glob("*.toml")), ids=lambda p: p.stem)
 def test_table_corpus_through_the_cli(capsys, path):
     """Each broken table asked for the row it has (or 0): the problems of that row, or of

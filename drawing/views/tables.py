@@ -8,10 +8,10 @@ from drawing.text import LINE_PITCH, SLANT, text_box, text_width, wrap_words
 from drawing.views.common import WORDS, View, assembled, bbox, centred, notation, shifted
 from plans.fmt import notation_in, num
 
-__all__ = ["PART_GAP", "note_view", "omega_table_view", "segments_table_view"]
+__all__ = ["PART_GAP", "note_view", "omega_table_view", "segments_table_view", "table_view"]
 
-def _table(name: str, caption: str, header: list[str], rows: list[list[str]],
-           widths: list[float], row_h: float = 7.0, parts: int = 1, sizing: bool = False) -> View:
+def table_view(name: str, caption: str, header: list[str], rows: list[list[str]],
+               widths: list[float], row_h: float = 7.0, parts: int = 1, sizing: bool = False) -> View:
     """A table under its caption; ``parts`` > 1 sets its rows in that many tables side
     by side, each under the header (a tall table on a small sheet). ``sizing``: its lines
     only (every cell's text is fitted into its cell), for its size."""
@@ -87,7 +87,7 @@ def segments_table_view(sols: list[tuple[str, object]], lang: str = "ru", parts:
                 row += ["—", "—"]
         rows.append(row)
     widths = [40.0] + [22.0, 28.0] * len(sols)
-    return _table("segments", w["segments"], header, rows, widths, row_h=6.0, parts=parts,
+    return table_view("segments", w["segments"], header, rows, widths, row_h=6.0, parts=parts,
                   sizing=sizing)
 
 
@@ -106,7 +106,7 @@ def omega_table_view(sols: list[tuple[str, object]], lang: str = "ru") -> View:
             row += [_signed(om, lang), _signed(ep, lang)]
         rows.append(row)
     widths = [16.0] + [34.0, 34.0] * len(sols)
-    return _table("angular", w["angular"], header, rows, widths, row_h=6.0)
+    return table_view("angular", w["angular"], header, rows, widths, row_h=6.0)
 
 
 def _signed(x: float, lang: str) -> str:

@@ -31,6 +31,7 @@ COMMANDS = {
     "cycle": ("plans.cli.cycle", "every point and link over N crank positions"),
     "sheet": ("plans.cli.sheet", "drawing sheet 1 as SVG (ESKD frame and title block)"),
     "forces": ("plans.cli.forces", "force analysis: loads, force plans, Zhukovsky's lever, the drive"),
+    "cam": ("plans.cli.cam", "a cam: motion laws, base circle, profile, the cam sheet"),
     "check": ("plans.cli.check", "check a hand-drawn plan against the computed one"),
     "bench": ("plans.cli.bench", "speed and error against a high-precision reference"),
     "synth": ("plans.cli.synth", "a mechanism from requirements: by K or by given positions"),
