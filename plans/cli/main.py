@@ -33,8 +33,7 @@ COMMANDS = {
     "forces": ("plans.cli.forces", "force analysis: loads, force plans, Zhukovsky's lever, the drive"),
     "check": ("plans.cli.check", "check a hand-drawn plan against the computed one"),
     "bench": ("plans.cli.bench", "speed and error against a high-precision reference"),
-    "project": ("plans.cli.project", "a course project's files: sheet 1 (SVG, PDF, DXF), the note "
-                "(Markdown, DOCX, PDF), the results (JSON)"),
+    "project": ("plans.cli.project", "a course project's files: the sheet, the note, the results"),
 }
 
 EPILOG = """exit status: 0 success, 1 a check found deviations, 2 bad input or an
