@@ -18,6 +18,7 @@ The file's bytes depend on the note alone: its parts are zipped with one fixed d
 
 from __future__ import annotations
 
+import datetime
 import io
 import re
 import zipfile
@@ -202,8 +203,6 @@ class _Writer:
         core.title, core.language = self.note.title, lang
         core.author = self.tb.developer or ""
         core.subject = self.tb.designation or ""
-        import datetime
-
         fixed = datetime.datetime(2000, 1, 1)
         core.created = core.modified = fixed
         core.last_modified_by, core.revision = "", 1
