@@ -459,6 +459,10 @@ def to_dxf(
                     writer.on(kind, own)
             for item in items:
                 writer.item(item, own)
+        # the classes of the entity types used, in one order: ezdxf adds them from a set,
+        # whose order changes from run to run
+        for name in sorted(doc.entitydb.dxf_types_in_use()):
+            doc.classes.add_class(name)
         out = io.StringIO()
         doc.write(out)
     finally:

@@ -460,3 +460,21 @@ def test_batch_writes_each_dxf_beside_its_svg(tmp_path, capsys):
     assert sorted(p.name for p in out.iterdir()) == ["variant-6.dxf", "variant-6.svg",
                                                      "variant-8.dxf", "variant-8.svg"]
     assert not ezdxf.readfile(out / "variant-8.dxf").audit().has_errors
+
+
+def test_the_bytes_do_not_change_from_run_to_run(tmp_path):
+    """Two processes with different string hashes write the same DXF (ezdxf orders the
+    classes section by a set of the entity types used, unless told)."""
+    import sys
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parent.parent
+    code = ("import sys\nfrom drawing.dxf import to_dxf\n"
+            "from drawing.scene import Arrow, Blank, Circle, Layer, Page, Polyline, Scene, Text\n"
+            "items = (Arrow((0, 0), (20, 0)), Blank((5, 5), (10, 8)), Circle((30, 30), 2, fill='white'),\n"
+            "         Polyline(((0, 0), (5, 5), (9, 1))), Text((1, 1), 'x_{a}', markup=True),\n"
+            "         Text((2, 2), 'y'))\n"
+            "sys.stdout.buffer.write(to_dxf(Scene((Layer('v', items),)), Page(100, 50, 'mm')))\n")
+    outs = [subprocess.run([sys.executable, "-c", code], capture_output=True, check=True, cwd=root,
+                           env={**os.environ, "PYTHONHASHSEED": seed}).stdout for seed in ("1", "2", "3")]
+    assert outs[0] == outs[1] == outs[2] and b"WIPEOUT" in outs[0]
