@@ -309,10 +309,13 @@ class _Writer:
         footer.is_linked_to_previous = False
         Mm, Pt = self.Mm, self.Pt
         table = footer.add_table(rows=len(form.rows), cols=len(form.cols), width=Mm(sum(form.cols)))
-        table.alignment = WD_TABLE_ALIGNMENT.RIGHT
+        table.alignment = WD_TABLE_ALIGNMENT.LEFT
         table.autofit = False
         tbl = table._tbl
         tbl_pr = tbl.tblPr
+        # its left edge on the frame's, 20 mm from the page's, left of the text's margin
+        indent = round((20.0 - MARGINS[True][0]) * 56.6929)
+        tbl_pr.append(parse_xml(f'<w:tblInd {nsdecls("w")} w:w="{indent}" w:type="dxa"/>'))
         tbl_pr.append(parse_xml(f'<w:tblLayout {nsdecls("w")} w:type="fixed"/>'))
         tbl_pr.append(parse_xml(f'<w:tblCellMar {nsdecls("w")}><w:left w:w="28" w:type="dxa"/>'
                                 '<w:right w:w="28" w:type="dxa"/></w:tblCellMar>'))

@@ -94,7 +94,7 @@ FORM2 = Form(
     cells=(
         *_left(0, 5),
         Cell(0, 5, rows=3, cols=6, text="designation", size=7.0),
-        Cell(3, 5, rows=5, text="name", size=5.0),
+        Cell(3, 5, rows=5, text="name", size=3.5),
         Cell(3, 6, cols=3, text="lit"), Cell(3, 9, text="sheet"), Cell(3, 10, text="sheets"),
         Cell(4, 6, text="literal0"), Cell(4, 7, text="literal1"), Cell(4, 8, text="literal2"),
         Cell(4, 9, text="page"), Cell(4, 10, text="pages"),
