@@ -437,9 +437,9 @@ def sparse_note(mech, sheet, placed) -> str | None:
 def render(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
            plans: list[int] | None = None, title: list[str] = ()) -> tuple[str, dict]:
     """(the SVG of sheet 1 of ``mech``, what :func:`build_sheet` tells of it, with the
-    ``sheet`` it is drawn on)."""
+    ``sheet`` it is drawn on and the ``scene`` drawn, which the DXF is written from)."""
     scene, sheet, info = build_sheet(mech, fmt, lang, n_positions, plans, title)
-    return to_svg(scene, sheet, title=mech.name_in(lang)), dict(info, sheet=sheet)
+    return to_svg(scene, sheet, title=mech.name_in(lang)), dict(info, sheet=sheet, scene=scene)
 
 
 def plain_titles(solutions) -> list[tuple[str, object]]:

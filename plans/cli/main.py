@@ -35,6 +35,7 @@ COMMANDS = {
     "check": ("plans.cli.check", "check a hand-drawn plan against the computed one"),
     "bench": ("plans.cli.bench", "speed and error against a high-precision reference"),
     "synth": ("plans.cli.synth", "a mechanism from requirements: by K or by given positions"),
+    "project": ("plans.cli.project", "a course project's files: the sheet, the note, the results"),
 }
 
 EPILOG = """exit status: 0 success, 1 a check found deviations, 2 bad input or an

@@ -20,9 +20,10 @@ from plans.errors import InputError
 #: the output options of the commands: (option, attribute); ``-o`` alone is stdout when
 #: absent, the others are then not written at all
 OUTPUTS = (("-o", "output"), ("--svg", "svg"), ("--note", "note"), ("--png", "png"),
-           ("--pdf", "pdf"), ("--chart", "chart"), ("--plot", "plot"))
+           ("--pdf", "pdf"), ("--dxf", "dxf"), ("--docx", "docx"), ("--chart", "chart"),
+           ("--plot", "plot"))
 
-KINDS = {".svg": "an SVG", ".png": "a PNG", ".pdf": "a PDF"}
+KINDS = {".svg": "an SVG", ".png": "a PNG", ".pdf": "a PDF", ".dxf": "a DXF"}
 #: names of other picture formats, which no command writes
 PICTURE_SUFFIXES = {*KINDS, ".jpg", ".jpeg", ".gif", ".bmp", ".tif", ".tiff", ".webp", ".eps",
                     ".ps", ".dxf"}

@@ -1,9 +1,24 @@
-"""``plans report``: the explanatory-note text of one crank position (Markdown)."""
+"""``plans report``: the explanatory-note text of one crank position (Markdown), and the
+note as a document: ``--docx`` (editable, its formulas as Office Math) and ``--pdf``,
+on request in the text document's frame with its title block (``--frame``).
+
+    plans report samples/press.toml --lang ru -o note.md
+    plans report --variant 3 --lang ru --docx note.docx --pdf note.pdf --frame \\
+        --title-block student=Иванов group=ТМ-21
+"""
 
 from __future__ import annotations
 
+from pathlib import Path
+
+from drawing import docx as docx_writer
+from drawing import notepdf
+from drawing.document import parse_note
+from drawing.sheet.frame import TitleBlock
+from drawing.sheet1 import FIELDS, title_fields
 from plans.cli.common import EXIT_OK, add_source, mechanism_from, solved_position, warn
 from plans.cycle.analysis import analyse_cycle
+from plans.errors import InputError
 from plans.forces.note import force_note
 from plans.forces.summary import solve_forces
 from plans.note.report import note
@@ -13,18 +28,79 @@ def configure(p) -> None:
     add_source(p)
     p.add_argument("--lang", choices=("ru", "en"), default="en",
                    help="language of the note (ru uses a decimal comma)")
-    p.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of stdout")
+    p.add_argument("-o", "--output", metavar="FILE",
+                   help="write the Markdown to FILE instead of stdout (with --docx or --pdf, "
+                        "the Markdown is written only where -o asks for it)")
+    p.add_argument("--docx", metavar="FILE", help="also write the note as DOCX (needs python-docx)")
+    p.add_argument("--pdf", metavar="FILE", help="also write the note as PDF (needs fpdf2)")
+    p.add_argument("--frame", action="store_true",
+                   help="the DOCX and PDF in the text document's frame, title block form 2 on "
+                        "the first page and 2a on the others (GOST 2.104)")
+    p.add_argument("--title-block", nargs="*", default=[], metavar="KEY=VALUE",
+                   help="the frame's title block: " + ", ".join(sorted(FIELDS)))
 
 
-def run(args) -> int:
-    mech = mechanism_from(args)
+def markdown(args, mech) -> tuple[str, list[str]]:
+    """(the note's Markdown, the warnings of its position)."""
     solver, sol = solved_position(args, mech)
     cycle = analyse_cycle(mech, solver=solver)
     text = note(sol, args.lang, cycle)
     if mech.loads is not None:  # the note goes on with the force analysis, section after section
         section = sum(line.startswith("## ") for line in text.splitlines()) + 1
         text = text.rstrip("\n") + "\n\n" + force_note(solve_forces(sol, solver, cycle), args.lang, section)
-    args.run_files.write(args.output, text)
-    for w in sol.warnings:
+    return text, list(sol.warnings)
+
+
+def title_block(mech, pairs, lang: str) -> TitleBlock:
+    """The text document's title block: the file's [title] and --title-block, its
+    designation the document's (GOST 2.102 gives an explanatory note the code ПЗ)."""
+    fields = title_fields(mech, pairs, "", lang)
+    fields.pop("scale", None)  # a text document has no scale
+    designation = fields.get("designation", "")
+    if designation and lang == "ru" and not designation.rstrip().endswith("ПЗ"):
+        fields["designation"] = f"{designation} ПЗ"
+    return TitleBlock(**fields)
+
+
+def documents(text: str, args, mech) -> list[tuple[str, bytes]]:
+    """The DOCX and PDF asked for, as (path, bytes)."""
+    out: list[tuple[str, bytes]] = []
+    if not (args.docx or args.pdf):
+        return out
+    doc = parse_note(text, args.lang)
+    tb = title_block(mech, args.title_block, args.lang)
+    if args.docx:
+        out.append((args.docx, docx_writer.to_docx(doc, args.frame, tb)))
+    if args.pdf:
+        out.append((args.pdf, notepdf.to_pdf(doc, args.frame, tb)))
+    return out
+
+
+def check_names(args) -> None:
+    """--docx and --pdf name files of their kind; refused before anything is computed."""
+    for opt, attr, suffix in (("--docx", "docx", ".docx"), ("--pdf", "pdf", ".pdf")):
+        path = getattr(args, attr)
+        if path and path != "-" and Path(path).suffix.lower() != suffix and not (
+                Path(path).exists() and not Path(path).is_file()):
+            raise InputError("command line", f"{opt} {path}: the name must end in {suffix} ({opt} "
+                                             f"writes {suffix[1:].upper()})")
+        if path == "-":
+            raise InputError("command line", f"{opt} writes a file, not stdout: give its name")
+
+
+def run(args) -> int:
+    check_names(args)
+    mech = mechanism_from(args)
+    if args.docx:
+        docx_writer.require()  # before anything is computed
+    if args.pdf:
+        notepdf.require()
+    text, warnings = markdown(args, mech)
+    files = documents(text, args, mech)  # every output made before the first is written
+    if args.output is not None or not files:
+        args.run_files.write(args.output, text)
+    for path, data in files:
+        args.run_files.write(path, data)
+    for w in warnings:
         warn("report", w)
     return EXIT_OK

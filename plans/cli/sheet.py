@@ -4,6 +4,7 @@ plans, kinematic diagrams, tables) as one SVG in real millimetres.
     plans sheet samples/press.toml --format A2 -o press.svg
     plans sheet --variant 3 --format A2 --lang en --plans 1,4 -o v3.svg --png v3.png
     plans sheet --variant all -o sheets/      # one sheet per variant
+    plans sheet samples/press.toml -o press.svg --dxf press.dxf   # and for a CAD program
 
 The sheet is built by :mod:`drawing.sheet1`; this module is the command around it: its
 options, the files it writes (all rendered before the first is written) and the batch of
@@ -16,7 +17,7 @@ import copy
 import sys
 from pathlib import Path
 
-from drawing import export
+from drawing import dxf, export
 from drawing.sheet.layout import LayoutError
 from drawing.sheet1 import FIELDS, POSITIONS, plain_titles, sparse_note
 from drawing.sheet1 import render as render_sheet
@@ -57,12 +58,16 @@ def configure(p) -> None:
                         "(with --variant all: a note beside each sheet)")
     p.add_argument("--png", metavar="FILE", help="also write a PNG (needs cairosvg)")
     p.add_argument("--pdf", metavar="FILE", help="also write a PDF (needs cairosvg)")
+    p.add_argument("--dxf", metavar="FILE", nargs="?", const="",
+                   help="also write the sheet as DXF for КОМПАС or AutoCAD (needs ezdxf); with "
+                        "--variant all, --dxf alone writes each beside its SVG")
     p.add_argument("--dpi", type=number(10, 600), default=100.0,
                    help="PNG resolution, 10 to 600 (default 100)")
 
 
-def render(mech, args) -> tuple[str, str | None]:
-    """(the sheet's SVG, its explanatory note or None when --note is not asked for)."""
+def render(mech, args) -> tuple[str, str | None, bytes | None]:
+    """(the sheet's SVG, its explanatory note or None when --note is not asked for, its
+    DXF or None when --dxf is not asked for)."""
     plans = None
     if args.plans is not None:
         plans = [int(t) for t in args.plans.split(",") if t.strip()] if all(
@@ -90,16 +95,22 @@ def render(mech, args) -> tuple[str, str | None]:
         # the structure and μl from the given position; with --plans the plan of
         # positions draws theirs heavy, and the note says so and gives their segments
         text = note(info["given"], args.lang, info["cycle"], titles if sols[0][0] != "g" else ())
-    return svg, text
+    drawn = None
+    if getattr(args, "dxf", None) is not None:  # from the scene the SVG was written from
+        drawn = dxf.to_dxf(info["scene"], info["sheet"], title=mech.name_in(args.lang),
+                           lang=args.lang)
+    return svg, text, drawn
 
 
-def _write(rendered: tuple[str, str | None], args) -> None:
-    """The SVG, and the note, PNG and PDF asked for: all rendered before the first is
-    written, so that a failed export leaves every existing output as it was."""
-    svg, text = rendered
+def _write(rendered: tuple[str, str | None, bytes | None], args) -> None:
+    """The SVG, and the note, PNG, PDF and DXF asked for: all rendered before the first
+    is written, so that a failed export leaves every existing output as it was."""
+    svg, text, drawn = rendered
     files: list[tuple[str | None, str | bytes]] = [(args.output, svg)]
     if text is not None:
         files.append((args.note, text))
+    if drawn is not None:
+        files.append((args.dxf, drawn))
     if args.png or args.pdf:
         if args.png:
             files.append((args.png, export.png_bytes(svg, dpi=args.dpi)))
@@ -110,16 +121,22 @@ def _write(rendered: tuple[str, str | None], args) -> None:
 
 
 #: the option (and its attribute) that writes each picture format
-PICTURES = {".svg": ("-o", "output"), ".png": ("--png", "png"), ".pdf": ("--pdf", "pdf")}
+PICTURES = {".svg": ("-o", "output"), ".png": ("--png", "png"), ".pdf": ("--pdf", "pdf"),
+            ".dxf": ("--dxf", "dxf")}
 
 
 def run(args) -> int:
     if str(args.variant).strip().lower() == "all" and args.file is None:
         return _batch(args)
+    if args.dxf == "":
+        raise InputError("--dxf", "give the DXF's file name: --dxf FILE (--dxf alone is for "
+                         "--variant all, which writes each DXF beside its SVG)")
     picture_names(args, PICTURES)  # x.png given to -o would hold SVG text
     mech = mechanism_from(args)
     if args.png or args.pdf:
         export.require()  # before anything is computed
+    if args.dxf:
+        dxf.require()
     _write(render(mech, args), args)
     return EXIT_OK
 
@@ -133,6 +150,8 @@ def _batch(args) -> int:
     if not out.exists() and out.suffix and not args.output.endswith(("/", "\\")):
         raise InputError("-o", f"{args.output} looks like a file name: with --variant all give a "
                          "folder, e.g. -o sheets/")
+    if args.dxf is not None:
+        dxf.require()  # before a folder is made or a row is drawn
     table = read_table(args.table)  # once, for every row
     numbers = table.numbers  # a table that cannot be used: no folder made
     for line in table.others(None):  # rows with no number: no sheet
@@ -149,6 +168,7 @@ def _batch(args) -> int:
         a.png = str(out / f"variant-{n}.png") if args.png else None
         a.pdf = str(out / f"variant-{n}.pdf") if args.pdf else None
         a.note = str(out / f"variant-{n}.md") if args.note else None
+        a.dxf = str(out / f"variant-{n}.dxf") if args.dxf is not None else None
         try:
             mech = mechanism_from(a, table)
             _write(render(mech, a), a)
