@@ -17,6 +17,7 @@ measured on the sheet is the segment its table gives.
 from __future__ import annotations
 
 import dataclasses
+import math
 
 from drawing.scene import Layer, Scene
 from drawing.sheet.fit import SIZES, Fit, readable
@@ -39,18 +40,26 @@ from plans.note.report import no_full_turn
 from plans.plan.solution import plan_name, solve_position
 from plans.scales import CRANK_MM, GOST_MU_L, PLAN_MM, choose_mu, gost_scale, series
 
-__all__ = ["FORCE_SIZES", "LARGEST", "MOMENT", "NO_LOADS", "Sheet2", "build_sheet2", "force_plans_at",
-           "needs_loads", "render"]
+__all__ = ["FORCE_SIZES", "LARGEST", "LONGEST", "MECHANISM_MM", "MOMENT", "NO_LOADS", "Sheet2",
+           "build_sheet2", "force_plans_at", "needs_loads", "render"]
 
 #: the force plans' sizes tried: their longest vector as a share of FORCE_PLAN_MM (150 mm,
 #: as ``plans forces`` draws them), largest first: they are what sheet 2 is for
-FORCE_SIZES = (2.0, 1.5, 1.25, 1.0, 0.75, 0.5)
+FORCE_SIZES = (2.5, 2.0, 1.5, 1.25, 1.0, 0.75, 0.5)
 #: the largest the mechanism's views and the lever are drawn, as a multiple of the
 #: engine's default size (150 mm across): the force plans, not the mechanism drawn three
 #: times over, should take the room a large sheet has
-LARGEST = {"mu_l": 1.5, "mu_v": 2.0}
-#: mm: the M_у(φ) diagram's widths tried (one turn of the crank) with its height
-MOMENT = {360.0: 70.0, 240.0: 60.0, 180.0: 50.0, 120.0: 40.0}
+LARGEST = {"mu_l": 2.0, "mu_v": 3.0}
+#: mm: the longest a flat mechanism (a crank-slider) is drawn
+LONGEST = 500.0
+#: mm: the size across of the mechanism's views that counts as their default when the
+#: sheet weighs them against the other views (the engine's plan of positions is 150 mm:
+#: sheet 2 draws the mechanism two or three times over, and no force plan should be
+#: drawn smaller for it to be drawn at 1:1)
+MECHANISM_MM = 100.0
+#: mm: the M_у(φ) diagram's sizes tried, largest first: its width (one turn of the
+#: crank) and its height; the factor's value is the size's index
+MOMENT = ((360.0, 120.0), (360.0, 90.0), (240.0, 70.0), (180.0, 50.0), (120.0, 40.0))
 
 NO_LOADS = ("loads: missing: sheet 2 draws the force analysis, which needs the links' masses and "
             'the forces on them, e.g. [loads.links.3] mass = 10, J_S = 0.4, centre = "S3" (README: Loads)')
@@ -81,11 +90,21 @@ def force_plans_at(forces: Forces, size: float) -> Forces:
     return dataclasses.replace(forces, analysis=fa)
 
 
-def _extent(sol) -> float:
-    """The larger side (m) of the box round the mechanism in its position."""
+def _box(sol) -> tuple[float, float]:
+    """The sides (m) of the box round the mechanism in its position, the larger first."""
     xs = [z.real for z in sol.positions.values()]
     ys = [z.imag for z in sol.positions.values()]
-    return max(max(xs) - min(xs), max(ys) - min(ys), 1e-9)
+    w, h = max(xs) - min(xs), max(ys) - min(ys)
+    return max(w, h, 1e-9), max(min(w, h), 1e-9)
+
+
+def _not_too_large(box: tuple[float, float], mu_l: float) -> bool:
+    """Whether the mechanism's views at ``mu_l`` are no larger than sheet 2 wants them: no
+    more than :data:`LARGEST` times the default size across, as large in area as a square
+    of that size, and a flat one (a crank-slider) up to :data:`LONGEST` long."""
+    side = PLAN_MM * LARGEST["mu_l"]
+    long, short = box[0] / mu_l, box[1] / mu_l
+    return long <= side or (long <= LONGEST and long * short <= side * side)
 
 
 class Sheet2:
@@ -100,12 +119,14 @@ class Sheet2:
 
     def factors(self) -> list[tuple[str, list[float], list[float]]]:
         out = []
-        extent = _extent(self.sol)
+        box = _box(self.sol)
+        extent = box[0]
         if "mu_l" not in self.scales:
-            values = [m for m in GOST_MU_L if readable(extent / m / PLAN_MM)
-                      and extent / m / PLAN_MM <= LARGEST["mu_l"]]
+            values = [m for m in GOST_MU_L if readable(extent / m / PLAN_MM) and _not_too_large(box, m)]
             values = values or [min(GOST_MU_L, key=lambda m: abs(extent / m - PLAN_MM))]
-            out.append(("mu_l", values, [extent / m / PLAN_MM for m in values]))
+            # sized against MECHANISM_MM: the mechanism is drawn two or three times, and
+            # a step of the GOST series may halve it; the force plans come first
+            out.append(("mu_l", values, [extent / m / MECHANISM_MM for m in values]))
         if "mu_v" not in self.scales:
             plan = self.sol.velocity
             tip = abs(plan.value(plan_name(self.mech.driver.tip)))
@@ -117,8 +138,9 @@ class Sheet2:
             out.append(("mu_v", [m for m, _ in sized], [k for _, k in sized]))
         out.append(("mu_F", list(FORCE_SIZES), list(FORCE_SIZES)))
         if self.forces.turn is not None:
-            widths = sorted(MOMENT, reverse=True)
-            out.append(("diagrams", widths, [w / 180 for w in widths]))
+            # as a multiple of the default 180 × 50 mm, by its area
+            out.append(("diagrams", list(range(len(MOMENT))),
+                        [math.sqrt(w * h / (180.0 * 50.0)) for w, h in MOMENT]))
         return out
 
     def draw(self, key: str, value: float, sizing: bool = False) -> list:
@@ -134,7 +156,7 @@ class Sheet2:
         if key == "mu_F":
             return [force_plan_view(gf, lang, str(i), sizing=sizing)
                     for i, gf in enumerate(force_plans_at(self.forces, value).analysis.groups, 1)]
-        return [moment_diagram_view(self.forces, self.cycle, lang, value, MOMENT[value], sizing=sizing)]
+        return [moment_diagram_view(self.forces, self.cycle, lang, *MOMENT[int(value)], sizing=sizing)]
 
     def tables(self, mu: dict[str, float]) -> list:
         """The tables at the scale factors ``mu`` (their sizes do not depend on them)."""
@@ -242,9 +264,11 @@ def _no_room(mech, sheet, lang, forces, cycle, scales) -> str:
         holds = name
         break
     where = f"{holds} holds it: use --format {holds}" if holds else "no format holds it"
-    return (f"sheet 2 does not fit on {room(sheet)} with its views at their smallest readable "
-            f"scales (the mechanism {PLAN_MM * SIZES[1]:.0f} mm across, the force plans' longest "
-            f"vectors {FORCE_PLAN_MM * FORCE_SIZES[-1]:.0f} mm); {where}")
+    fixed = [f"μ{k[-1]} = {v:g}" for k, v in scales.items() if k in ("mu_l", "mu_v")]
+    given = f", {' and '.join(fixed)} as fixed" if fixed else ""
+    return (f"sheet 2 does not fit on {room(sheet)}: its views need more room even at their "
+            f"smallest (the force plans' longest vectors {FORCE_PLAN_MM * FORCE_SIZES[-1]:.0f} mm, "
+            f"the mechanism {PLAN_MM * SIZES[1]:.0f} mm across{given}); {where}")
 
 
 def render(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12, title: list[str] = (),

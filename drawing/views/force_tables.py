@@ -39,8 +39,14 @@ BODY = 3.5  # their indices 2.45 mm: GOST 2.304's 1.8 mm or more
 
 
 def _deg(z: complex, lang: str) -> str:
-    """A direction in degrees counter-clockwise from +x, in [0, 360)."""
-    return f"{num(math.degrees(cmath.phase(z)) % 360.0, 4, lang)}°"
+    """A direction in degrees counter-clockwise from +x, in [0, 360), rounding of a
+    whole angle written as it (0°, not 1,6e-14°).
+
+    >>> _deg(complex(1.0, 2.8e-16), "ru"), _deg(complex(1.0, -2.8e-16), "en"), _deg(-1j, "en")
+    ('0°', '0°', '270°')
+    """
+    a = round(math.degrees(cmath.phase(z)) % 360.0, 9) % 360.0
+    return f"{num(a, 4, lang)}°"
 
 
 def loads_table_view(forces, lang: str = "ru", sizing: bool = False) -> View:
@@ -76,15 +82,23 @@ def loads_table_view(forces, lang: str = "ru", sizing: bool = False) -> View:
 
 
 def reactions_table_view(forces, lang: str = "ru", sizing: bool = False) -> View:
-    """Every reaction the force plans find, group by group, and the frame's on the driving
-    link: its size (N), its segment on its group's force plan (mm at the plan's μF; "—"
-    where the plan draws none) and its direction; a reaction found as two components is
-    followed by them."""
+    """Every reaction on the force plans, group by group (those a group solved before puts
+    on its links, then those it finds), and the frame's on the driving link: its size
+    (N), its segment on the group's force plan (mm at the plan's μF; "—" where the plan
+    draws none) and its direction; a reaction found as two components is followed by
+    them."""
     w = TABLE_WORDS[lang]
     fa = forces.analysis
     rows = []
     for gf in fa.groups:
         segments = gf.plan.segments
+        # a reaction a group solved before puts on this one's links, as this plan draws it
+        known = [ld for lid in gf.group.links for ld in gf.loads[lid]
+                 if ld.kind == "reaction" and ld.force != 0]
+        for ld in known:
+            mm = segments.get(ld.name)
+            rows.append([force_markup(ld.name, lang), num(abs(ld.force), 4, lang),
+                         "—" if mm is None else num(mm, 4, lang), _deg(complex(ld.force), lang)])
         for r in gf.reactions:
             mm = segments.get(r.name)
             rows.append([force_markup(r.name, lang), num(abs(r.value), 4, lang),
@@ -115,7 +129,7 @@ def lever_table_view(forces, mu_v: float, lang: str = "ru", sizing: bool = False
         if t.force == 0 and t.moment:  # a couple on a block: its moment as it is
             rows.append(["—", force_markup(t.name, lang), "—", "—", num(t.moment * k, 5, lang)])
         elif t.name in numbers:
-            rows.append([f"h_{numbers[t.name]}", force_markup(t.name, lang), num(abs(t.force), 4, lang),
+            rows.append([f"h_{{{numbers[t.name]}}}", force_markup(t.name, lang), num(abs(t.force), 4, lang),
                          num(t.arm * k, 4, lang), num(t.moment * k, 5, lang)])
     d = forces.analysis.solution.mechanism.driver
     sense = 1.0 if d.omega > 0 else -1.0

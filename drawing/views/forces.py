@@ -83,6 +83,7 @@ FORCE_WORDS = {
         "My": "M_у = {value} Н·м, {sense}",
         "Fy": "F_у = M_у / l_{{{crank}}} = {value} Н",
         "title": "Силовой анализ",
+        "far": "{name}: линия действия пересекает направляющую в {d} м от {block}",
     },
     "en": {
         "mechanism": "Mechanism with its loads",
@@ -100,6 +101,7 @@ FORCE_WORDS = {
         "My": "M_у = {value} N·m, {sense}",
         "Fy": "F_у = M_у / l_{{{crank}}} = {value} N",
         "title": "Force analysis",
+        "far": "{name}: its line meets the guide {d} m from {block}",
     },
 }
 
@@ -110,11 +112,13 @@ def force_markup(name: str, lang: str = "ru") -> str:
 
     >>> [force_markup(n) for n in ("G4", "Φ3", "R34", "R34^τ", "R12,3^n", "M_Φ3", "P", "F_пс")]
     ['G_4', 'Φ_3', 'R_{34}', 'R^τ_{34}', 'R^n_{12,3}', 'M_{Φ3}', 'P', 'F_{пс}']
-    >>> force_markup("R34^τ", "en"), force_markup("M_Φ3(B)")
-    ('R^t_{34}', 'P_{Φ3}')
+    >>> force_markup("R34^τ", "en"), force_markup("M_Φ3(B)"), force_markup("M53")
+    ('R^t_{34}', 'P_{Φ3}', 'M_{53}')
     """
     if m := re.fullmatch(r"M_(\S+)\((\w+)\)", name):  # a couple's force at a joint (the lever)
         return f"P_{{{m[1]}}}"
+    if m := re.fullmatch(r"M(\d+(?:,\d+)?)", name):  # the couple of a slide's reaction
+        return f"M_{{{m[1]}}}"
     if m := re.fullmatch(r"R(\d+(?:,\d+)?)(?:\^(τ|n))?", name):
         sup = "" if m[2] is None else "^" + ("t" if m[2] == "τ" and lang == "en" else m[2])
         return f"R{sup}_{{{m[1]}}}"
@@ -158,7 +162,9 @@ def loads_drawn(mech, loads, pos, pairs: bool) -> list[Drawn]:
         if ld.moment:
             ends = joints(mech, ld.link) if pairs and ld.kind == "inertia moment" else None
             if ends is None:
-                out.append(Drawn(ld.name, _centre(mech, ld, pos), 0j, float(ld.moment), kind))
+                # a slide's reaction carries a couple too: M₅₃ beside the force R₅₃
+                name = "M" + ld.name[1:] if kind == "reaction" else ld.name
+                out.append(Drawn(name, _centre(mech, ld, pos), 0j, float(ld.moment), kind))
                 continue
             for point, at, f in couple_pair(ld.link, float(ld.moment), pos, *ends):
                 out.append(Drawn(f"{ld.name}({point})", complex(at), complex(f), 0.0, kind))
@@ -166,9 +172,10 @@ def loads_drawn(mech, loads, pos, pairs: bool) -> list[Drawn]:
 
 
 def _centre(mech, ld, pos) -> complex:
-    """Where a couple on a link is drawn: its centre of mass, else its middle."""
-    if ld.point is not None and ld.point in pos:
-        return complex(pos[ld.point])
+    """Where a couple on a link is drawn: round its centre of mass (an inertia moment's
+    ``at``), else round the middle of the link's points."""
+    if ld.kind == "inertia moment":
+        return complex(ld.at)
     own = [pos[n] for n in mech.links[ld.link].points if n in pos]
     return complex(sum(own) / len(own)) if own else complex(ld.at)
 
@@ -396,12 +403,13 @@ def mechanism_view(fa, mu_l: float, lang: str = "ru", label: str = "", sizing: b
                      frame=True, sizing=sizing)
 
 
-def _unknowns(gf) -> list[Drawn]:
+def _unknowns(mech, gf, pos, mu_l: float, lang: str) -> tuple[list[Drawn], list[str]]:
     """The reactions a group's force plan finds on its links from the links outside it:
     a revolute's two components where the textbook finds it so, else the whole, and a
-    prismatic pair's normal force where it acts (none where it is 0)."""
+    prismatic pair's normal force where it acts (none where it is 0; at its block where it
+    acts far along the guide, said in the lines returned)."""
     links = set(gf.group.links)
-    out = []
+    out, notes = [], []
     for r in gf.reactions:
         if r.on not in links or r.by in links or r.at is None:
             continue
@@ -410,8 +418,27 @@ def _unknowns(gf) -> list[Drawn]:
                 if abs(value) > 1e-12 * max(1.0, abs(r.value)):
                     out.append(Drawn(r.name + part, complex(r.at), complex(value), 0.0, "reaction"))
         elif abs(r.value) > 0:
-            out.append(Drawn(r.name, complex(r.at), complex(r.value), 0.0, "reaction"))
-    return out
+            d, said = _near_block(mech, pos, r, Drawn(r.name, complex(r.at), complex(r.value), 0.0,
+                                                      "reaction"), mu_l, lang)
+            out.append(d)
+            notes += said
+    return out, notes
+
+
+#: mm: a slide's normal force whose line meets its guide farther than this from the
+#: block is drawn at the block, and where its line is is written under the view
+FAR = 25.0
+
+
+def _near_block(mech, pos, r, d: Drawn, mu_l: float, lang: str) -> tuple[Drawn, list[str]]:
+    """A slide's normal force ``d`` (of the reaction ``r``) acting far along its guide
+    (:data:`FAR`) moved to its block, with the line that says where it acts."""
+    s = mech.slider_of(r.on)
+    if r.pair != "prismatic" or s is None or s.point not in pos or abs(d.at - pos[s.point]) / mu_l <= FAR:
+        return d, []
+    note = FORCE_WORDS[lang]["far"].format(name=force_markup(d.name, lang), block=s.point,
+                                           d=num(abs(d.at - pos[s.point]), 4, lang))
+    return d._replace(at=complex(pos[s.point])), [note]
 
 
 def group_view(fa, gf, mu_l: float, lang: str = "ru", index: str = "1", sizing: bool = False) -> View:
@@ -424,7 +451,8 @@ def group_view(fa, gf, mu_l: float, lang: str = "ru", index: str = "1", sizing: 
     w = FORCE_WORDS[lang]
     pairs = mech.loads.couples == "pair"
     loads = [ld for lid in gf.group.links for ld in gf.loads[lid]]
-    drawn = loads_drawn(mech, loads, sol_pos, pairs) + _unknowns(gf)
+    unknowns, notes = _unknowns(mech, gf, sol_pos, mu_l, lang)
+    drawn = loads_drawn(mech, loads, sol_pos, pairs) + unknowns
     under = []
     for eq in gf.equations:
         # the slotted link's group solves the slide's force on the block, named as the plan names it
@@ -435,7 +463,7 @@ def group_view(fa, gf, mu_l: float, lang: str = "ru", index: str = "1", sizing: 
                                            value=num(abs(eq.value), 4, lang)))
     caption = f"{w['group']} {group_name(gf.group, lang)}, {_mu_l(mu_l, lang)}"
     return body_view(f"group-{index}", caption, mech, sol_pos, mu_l, gf.group.links, drawn, lang,
-                     under=under, sizing=sizing)
+                     under=under + notes, sizing=sizing)
 
 
 def crank_view(fa, mu_l: float, lang: str = "ru", sizing: bool = False) -> View:

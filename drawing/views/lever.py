@@ -148,6 +148,6 @@ def _arm(image: complex, force: complex, name: str, number: int | None, labels: 
     along = ((foot - image) * u.conjugate()).real  # where the foot is along the line, from the image
     if along < -0.8 or along > 0.8 + ARROW:  # beyond the arrow: the line carried on to it
         out.append(Segment((image.real, -image.imag), (foot.real, -foot.imag), LineType.THIN))
-    labels.append(LabelRequest((foot.real / 2, -foot.imag / 2), f"h_{number}", LETTER, "ne", blank=True,
+    labels.append(LabelRequest((foot.real / 2, -foot.imag / 2), f"h_{{{number}}}", LETTER, "ne", blank=True,
                                also=tuple((foot.real * t, -foot.imag * t) for t in (0.3, 0.7, 0.85))))
     return out
