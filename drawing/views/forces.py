@@ -44,9 +44,11 @@ __all__ = [
     "FORCE_WORDS",
     "UNDER",
     "Drawn",
+    "beside",
     "body_view",
     "compass",
     "crank_view",
+    "force_arrow",
     "force_markup",
     "force_plan_view",
     "group_name",
@@ -325,8 +327,7 @@ def _forces(mech, pos, mu_l, links, drawn: list[Drawn], lang: str):
         got = rays(hard, soft, [_sheet_dir(drawn[i].force) for i in forces])
         seen = list(hard)
         for i, r in zip(forces, got, strict=True):
-            # on a bar, or on an arrow drawn there: beside it, the further the more it would hide
-            way[i], aside[i] = r, BESIDE * sum(clear([q], r) < CROWDED for q in seen)
+            way[i], aside[i] = r, beside(seen, r)
             seen.append(r)
         for i in idx:
             bars[i] = hard
@@ -338,16 +339,29 @@ def _forces(mech, pos, mu_l, links, drawn: list[Drawn], lang: str):
             items.append(Group(tuple(arc), name=f"moment {d.name}"))
             labels.append(LabelRequest(anchor, markup, LETTER, prefer))
             continue
-        u, r = _sheet_dir(d.force), way[i]
-        gap = JOINT_R + 0.3
-        side = complex(-r.imag, r.real) * aside[i]
-        near = (p[0] + gap * r.real + side.real, p[1] + gap * r.imag + side.imag)
-        far = (p[0] + (gap + ARROW) * r.real + side.real, p[1] + (gap + ARROW) * r.imag + side.imag)
-        leaves = abs(r - u) < 1e-9
-        arrow = Arrow(near, far, LineType.MAIN, **HEAD) if leaves else Arrow(far, near, LineType.MAIN, **HEAD)
+        arrow, far = force_arrow(p, _sheet_dir(d.force), way[i], aside[i], JOINT_R + 0.3)
         items.append(Group((arrow,), name=f"{d.kind} {d.name}"))
         labels.append(LabelRequest(far, markup, LETTER, compass(r)))
     return items, labels
+
+
+def beside(seen: list[complex], r: complex) -> float:
+    """How far aside (mm) an arrow on the ray ``r`` is drawn, parallel to its line: on a
+    bar or on an arrow drawn there before (``seen``), :data:`BESIDE` for each it would
+    hide itself behind."""
+    return BESIDE * sum(clear([q], r) < CROWDED for q in seen)
+
+
+def force_arrow(p, u: complex, r: complex, aside: float, gap: float) -> tuple[Arrow, tuple[float, float]]:
+    """The arrow (:data:`ARROW` long) of a force of direction ``u`` (unit, sheet) at the
+    point ``p``, on the ray ``r`` (``u``: it leaves the point; ``-u``: it arrives), ``gap``
+    mm off the point and ``aside`` mm to the ray's left; and its far end, where its name
+    goes."""
+    side = complex(-r.imag, r.real) * aside
+    near = (p[0] + gap * r.real + side.real, p[1] + gap * r.imag + side.imag)
+    far = (p[0] + (gap + ARROW) * r.real + side.real, p[1] + (gap + ARROW) * r.imag + side.imag)
+    ends = (near, far) if abs(r - u) < 1e-9 else (far, near)
+    return Arrow(*ends, LineType.MAIN, **HEAD), far
 
 
 def compass(d: complex) -> str:

@@ -16,7 +16,7 @@ from drawing.labels import LabelRequest
 from drawing.scene import Arrow, Circle, Group, Item, Segment, shared_label
 from drawing.styles import LineType
 from drawing.views.common import HEAD, LETTER, View, finish, per_mm, shared_points
-from drawing.views.forces import ARROW, UNDER, compass, force_markup, rays
+from drawing.views.forces import ARROW, UNDER, beside, compass, force_arrow, force_markup, rays
 from plans.fmt import num
 from plans.plan.solution import plan_name
 
@@ -83,20 +83,13 @@ def lever_view(forces, mu_v: float, lang: str = "ru", sizing: bool = False) -> V
             near.append(i)
     for z, idx in spots:
         xy = (z.real, -z.imag)
-        bars = []
-        for v in plan.vectors:  # the plan's vectors that leave or reach this image
-            for a, b in ((v.start, v.end), (v.end, v.start)):
-                if math.dist(pts[a], xy) < 1.5 and math.dist(pts[a], pts[b]) > 1e-6:
-                    dx, dy = pts[b][0] - pts[a][0], pts[b][1] - pts[a][1]
-                    bars.append(complex(dx, dy) / math.hypot(dx, dy))
+        bars = _vectors_at(plan, pts, xy)
         dirs = [complex(at[i][1].real, -at[i][1].imag) / abs(at[i][1]) for i in idx]
+        seen = list(bars)
         for i, r, u in zip(idx, rays(bars, [], dirs), dirs, strict=True):
             image, force, name = at[i]
-            p = (image.real, -image.imag)
-            near = (p[0] + 0.8 * r.real, p[1] + 0.8 * r.imag)
-            far = (p[0] + (0.8 + ARROW) * r.real, p[1] + (0.8 + ARROW) * r.imag)
-            ends = (near, far) if abs(r - u) < 1e-9 else (far, near)  # it leaves, or reaches, its image
-            arrow = Arrow(*ends, LineType.MAIN, **HEAD)
+            arrow, far = force_arrow((image.real, -image.imag), u, r, beside(seen, r), 0.8)
+            seen.append(r)
             items.append(Group((arrow,), name=f"{'balancing' if name == 'F_у' else 'load'} {name}"))
             labels.append(LabelRequest(far, force_markup(name, lang), LETTER, compass(r)))
             if name == "F_у":
@@ -110,6 +103,27 @@ def lever_view(forces, mu_v: float, lang: str = "ru", sizing: bool = False) -> V
                                 d=_percent(forces.discrepancy, lang))]
     caption = f"{w['lever']}, μ_v = {num(mu_v, 4, lang)} {per_mm(w['ms'], lang)}"
     return finish("lever", items, labels, caption, under, sizing=sizing, under_size=UNDER)
+
+
+def _vectors_at(plan, pts, xy) -> list[complex]:
+    """The directions (unit, sheet) of the turned plan's vectors at the image ``xy``: those
+    that leave or reach it, and both ways along one that runs through it (the image s₁ on
+    pb): an arrow along them would be hidden."""
+    out = []
+    p = complex(*xy)
+    for v in plan.vectors:
+        a, b = complex(*pts[v.start]), complex(*pts[v.end])
+        if abs(b - a) < 1e-6:
+            continue
+        u = (b - a) / abs(b - a)
+        t = ((p - a) * u.conjugate()).real  # along the vector, from its start
+        if abs(p - a) < 1.5:
+            out.append(u)
+        elif abs(p - b) < 1.5:
+            out.append(-u)
+        elif 0 < t < abs(b - a) and abs(((p - a) * u.conjugate()).imag) < 0.5:
+            out += [u, -u]
+    return out
 
 
 def _percent(share: float, lang: str) -> str:
