@@ -86,6 +86,9 @@ def _jobs(scenes: list[str]) -> list[tuple[str, list[str], str | None]]:
         ("check_press.txt", ["check", "samples/check_press.toml"], None),
         ("check_press.ru.txt", ["check", "samples/check_press.toml", "--lang", "ru"], None),
         ("check_press.json", ["check", "samples/check_press.toml", "--json"], None),
+        ("check_forces.txt", ["check", "samples/check_forces.toml"], None),
+        ("check_forces.ru.txt", ["check", "samples/check_forces.toml", "--lang", "ru"], None),
+        ("check_forces.json", ["check", "samples/check_forces.toml", "--json"], None),
         ("check_press.overlay.svg", ["check", "samples/check_press.toml", "--svg", "over.svg"],
          "over.svg"),
     ]
@@ -113,7 +116,7 @@ def outputs() -> dict[str, bytes]:
     with tempfile.TemporaryDirectory() as tmp:
         work = Path(tmp)
         (work / "samples").mkdir()
-        for f in ("press.toml", "fourbar.toml", "check_press.toml"):
+        for f in ("press.toml", "fourbar.toml", "check_press.toml", "check_forces.toml"):
             shutil.copy(ROOT / "samples" / f, work / "samples" / f)
         # the overlay cases name their mechanisms as ../../samples/…
         shutil.copytree(ROOT / "tests" / "overlay_cases", work / "tests" / "overlay_cases")

@@ -804,7 +804,7 @@ def test_measurement_problems_are_located_and_hinted_like_a_mechanism_files(tmp_
     assert code == 2 and out == ""
     assert err.splitlines() == [
         f"plans check: {path}: line 2: tolerence: unknown key — did you mean \"tolerance\"? "
-        "known: angle_deg, mechanism, scales, segments, table, title, tolerance, values, variant",
+        "known: angle_deg, forces, mechanism, scales, segments, table, title, tolerance, values, variant",
         f'plans check: {path}: line 7: segments."πa3": must be a number, got "abc"',
         f'plans check: {path}: line 8: segments.pb3: must be a number, got "55 mm": '
         "write 55 without the unit",

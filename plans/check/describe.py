@@ -78,6 +78,19 @@ def mistake_words(mk, lang: str = "en") -> tuple[str, str]:
         fields |= {"at": g(f"at_{lang}"), "given": g(f"given_{lang}")}
     elif k in ("scale", "scale-swapped"):
         return _scale_words(mk, lang)
+    elif k in ("weight-omitted", "inertia-along", "inertia-omitted", "inertia-moment-omitted",
+               "inertia-moment-reversed"):
+        key = f"{k}-all" if mk.target == "all" else k
+        fields["where"] = w["load_where"]["crank" if g("crank") else "group"]
+    elif k == "force-reversed":
+        key = "force-reversed-resistance" if g("what") == "resistance" else k
+        fields["rule"] = w["rules"].get(g("rule"), w["rules"][""]).format(point=g("point"))
+    elif k == "lever-unturned":
+        key = k
+    elif k == "moment-sense":
+        key = f"{k}-{g('what')}"
+    elif k == "force-scale":
+        return _force_scale_words(mk, lang)
     elif k == "term-scale":
         f = float(mk.factor.real)
         key = "term-scale-long" if f > 1 else "term-scale-short"
@@ -132,6 +145,20 @@ def _scale_words(mk, lang: str) -> tuple[str, str]:
     description, correction = t[key]
     fields = {"what": what, "mu": mu, "value": value, "example": example or "AB"}
     return description.format(**fields), correction.format(**fields)
+
+
+def _force_scale_words(mk, lang: str) -> tuple[str, str]:
+    """A force plan (or every one) drawn at another μF than the one written down."""
+    w = WORDS[lang]
+    t = w["mistakes"]
+    f = float(mk.get("factor"))
+    every = "-all" if mk.target == "all" else ""
+    what = t[f"force-scale{every}-{'large' if f > 1 else 'small'}"].format(
+        group=w["of_group"].format(key=mk.target), times=w["times"](f if f > 1 else 1 / f))
+    if mk.get("fits"):
+        what += t["force-scale-fits"].format(fits=num(float(mk.get("fits")), 3, lang))
+    description, correction = t["force-scale-fitted" if mk.get("fits") else "force-scale"]
+    return description.format(what=what), correction
 
 
 def describe(mk, lang: str = "en") -> str:

@@ -1,5 +1,6 @@
-"""What the check speaks of: the three plans and their scale factors, the tolerance, and
-one measured item (:class:`Item`), the words the rest of the check is built on.
+"""What the check speaks of: the three plans and their scale factors, the force plans and
+Zhukovsky's lever, the tolerance, and one measured item (:class:`Item`), the words the rest
+of the check is built on.
 """
 
 from __future__ import annotations
@@ -15,6 +16,12 @@ PLANS = ("positions", "velocity", "acceleration")
 MU_KEY = {"positions": "mu_l", "velocity": "mu_v", "acceleration": "mu_a"}
 #: the scale factor of each plan as the note writes it
 MU_SYMBOL = {"positions": "μl", "velocity": "μv", "acceleration": "μa"}
+#: what the force analysis's items are on: the groups' force plans (mm at μF, and the
+#: forces and moments in N, N·m) and Zhukovsky's lever (mm of the velocity plan at μv)
+FORCE_PLANS = ("force", "lever")
+#: the kinds of item whose value has a sense (counter-clockwise positive): ω, ε, a moment
+#: and the balancing force F_у (positive where it turns the crank counter-clockwise)
+SIGNED = ("omega", "epsilon", "moment", "balancing")
 
 
 @dataclass(frozen=True, slots=True)
@@ -75,8 +82,11 @@ class Item:
     """One measured segment or one value the student wrote down.
 
     kind: "segment" (mm on a plan), "value" (m/s, m/s²), "omega", "epsilon" (rad/s,
-    rad/s²). ``start``/``end``: plan point names (mechanism names on the plan of
-    positions); ``per_mm``: how much of the item 1 mm of drawing is (for the tolerance).
+    rad/s²), "force" (N), "moment" (N·m), "balancing" (F_у, N). ``plan``: one of
+    :data:`PLANS`, or of :data:`FORCE_PLANS` for the force analysis's items.
+    ``start``/``end``: plan point names (mechanism names on the plan of positions);
+    ``per_mm``: how much of the item 1 mm of drawing is (for the tolerance); ``group``:
+    the group whose force plan a force-plan segment is on ("4–5").
     """
 
     key: str  # where in the file, e.g. "segments.pia3"
@@ -89,8 +99,10 @@ class Item:
     link: int = 0
     sense: int = 0  # ω, ε: +1 ccw, −1 cw, 0 not given
     per_mm: float = 1.0
+    group: str = ""
 
     @property
     def unit(self) -> str:
-        return {"segment": "mm", "omega": "rad/s", "epsilon": "rad/s²"}.get(
+        return {"segment": "mm", "omega": "rad/s", "epsilon": "rad/s²", "force": "N",
+                "balancing": "N", "moment": "N·m"}.get(
             self.kind, "m/s" if self.plan == "velocity" else "m/s²")

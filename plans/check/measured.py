@@ -3,62 +3,46 @@ names of the segments (pa3, aa3, πa3, n1a3…) matched to the plans' recorded s
 
 :func:`load` and :func:`from_dict` read a measurement file into a :class:`Measurement` of
 :class:`Item` s, each saying which plan and which segment or value it is; every problem in
-the file is reported at once, with its location.
+the file is reported at once, with its location. The force analysis's items (``[forces]``
+and the forces of ``[values]``) are read by :mod:`plans.check.force_items`.
 """
 
 from __future__ import annotations
 
 import os
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
+from plans.check.force_items import ForceNames, read_forces
+from plans.check.forces import ForceContext
 from plans.check.items import MU_KEY, PLANS, Item, Tolerance, parse_tolerance
+from plans.check.reading import (  # noqa: F401  (SENSE_WORDS: the check's public words)
+    SENSE_WORDS,
+    magnitude_sense,
+    normal_unit,
+    number,
+)
 from plans.check.replay import reading_pairs
-from plans.cycle.analysis import outside, reachable_cycle
+from plans.cycle.analysis import analyse_cycle, outside, reachable_cycle
 from plans.errors import AssemblyError, InputError, PlansError
 from plans.kinematics.solver import Solver
 from plans.model import mechanism as mechmod
 from plans.model import variants
 from plans.model.fileformat import (
-    DECIMAL,
     LOOKALIKES,
     Problems,
     check_keys,
     close_match,
-    decimal,
     key_text,
     other_kind,
     quote,
-    read_number,
     read_toml,
     type_in_latin,
 )
 from plans.model.mechanism import MU_UNIT, Mechanism
 from plans.plan.solution import Plan, Solution, plan_name, solve_position
-
-#: the sense of an ω or ε as a student writes it after the magnitude, +1 ccw, −1 cw
-SENSE_WORDS = {
-    "ccw": 1, "cw": -1, "counterclockwise": 1, "counter-clockwise": 1, "anticlockwise": 1,
-    "anti-clockwise": 1, "clockwise": -1,
-    "против часовой стрелки": 1, "против часовой": 1, "против ч.с.": 1, "против ч. с.": 1,
-    "против чс": 1, "против": 1,
-    "по часовой стрелке": -1, "по часовой": -1, "по ч.с.": -1, "по ч. с.": -1, "по чс": -1,
-    "по": -1,
-}
-#: the senses a hint names
-SENSE_HINT = "ccw, cw, против часовой стрелки, по часовой стрелке, против ч.с., по ч.с."
-#: the units a quoted value may carry, by kind (Item.kind, "value" by its plan)
-VALUE_UNITS = {
-    "velocity": ("m/s", ("m/s", "м/с")),
-    "acceleration": ("m/s²", ("m/s²", "м/с²")),
-    "omega": ("rad/s", ("rad/s", "рад/с", "1/s", "1/с", "s⁻¹", "с⁻¹")),
-    "epsilon": ("rad/s²", ("rad/s²", "рад/с²", "1/s²", "1/с²", "s⁻²", "с⁻²")),
-}
-_WHAT = {"velocity": "a velocity", "acceleration": "an acceleration",
-         "omega": "an angular velocity", "epsilon": "an angular acceleration"}
-
 
 # ---------------------------------------------------------------------------------------
 # what the student measured
@@ -79,10 +63,12 @@ class Measurement:
     inputs: tuple[str, ...] = ()
     #: the scale factors the file gives (the others in ``mu`` the tool chose)
     given: frozenset[str] = frozenset()
+    #: the exact force analysis and the student's μF, where the file measures forces
+    forces: ForceContext | None = None
 
 
 TOP_KEYS = {"title", "mechanism", "variant", "table", "angle_deg", "tolerance", "scales",
-            "segments", "values"}
+            "segments", "values", "forces"}
 
 
 def load(path: str | Path, solvers: Solvers | None = None) -> Measurement:
@@ -112,17 +98,6 @@ class Solvers:
         solver = Solver(mech)
         self.known.append((mech, solver))
         return solver
-
-
-def _num(value: Any, where: str, problems: Problems, *, positive=False, nonneg=False,
-         unit: str = "mm", what: str = "a length on the drawing") -> float | None:
-    """A number of the file (``fileformat.read_number``: in quotes too, with a decimal point
-    or comma); ``what`` (a length on the drawing, a magnitude) is not negative."""
-    x = read_number(value, where, problems, positive=positive, unit=unit)
-    if x is not None and nonneg and x < 0:
-        problems.add(where, f"{what} cannot be negative, got {x:g}")
-        return None
-    return x
 
 
 def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = None, *,
@@ -162,7 +137,7 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
                 mech = None  # not the built-in table instead
     angle = None
     if "angle_deg" in data:
-        angle = _num(data["angle_deg"], "angle_deg", problems, unit="°")
+        angle = number(data["angle_deg"], "angle_deg", problems, unit="°")
     tol = None
     if "tolerance" in data:
         try:
@@ -174,11 +149,13 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
     if not isinstance(scales, dict):
         problems.add("scales", "must be a table, e.g. [scales] mu_v = 0.05")
         scales = {}
-    check_keys(scales, set(MU_KEY.values()), "scales", problems)
+    if "mu_F" in scales:  # the force plans' μF is the [forces] table's
+        problems.add("scales.mu_F", "goes in [forces]: [forces] mu_F = 20 (N/mm)")
+    check_keys({k: v for k, v in scales.items() if k != "mu_F"}, set(MU_KEY.values()), "scales", problems)
     for key, value in scales.items():
         if key not in MU_KEY.values():
             continue
-        x = _num(value, f"scales.{key}", problems, positive=True, unit=MU_UNIT[key])
+        x = number(value, f"scales.{key}", problems, positive=True, unit=MU_UNIT[key])
         if x is not None:
             mu[key] = x
     raw_segments = data.get("segments", {})
@@ -189,6 +166,10 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
     if not isinstance(raw_values, dict):
         problems.add('values', 'must be a table, e.g. [values] omega3 = "4.82 ccw"')
         raw_values = {}
+    raw_forces = data.get("forces")
+    if raw_forces is not None and not isinstance(raw_forces, dict):
+        problems.add("forces", "must be a table, e.g. [forces] mu_F = 20, \"R12^τ\" = 28.4")
+        raw_forces = {}
     # (key as the report shows it, key path as the file spells it, plan or None, name, mm)
     segs: list[tuple[str, str, str | None, str, float]] = []
     for key, value in raw_segments.items():
@@ -199,17 +180,17 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
                 continue
             for k2, v2 in value.items():
                 where = f"segments.{key}.{key_text(k2)}"
-                x = _num(v2, where, problems, nonneg=True)
+                x = number(v2, where, problems, nonneg=True)
                 if x is not None:
                     segs.append((f"segments.{key}.{k2}", where, key, k2, x))
             continue
         where = f"segments.{key_text(key)}"
-        x = _num(value, where, problems, nonneg=True)
+        x = number(value, where, problems, nonneg=True)
         if x is not None:
             segs.append((f"segments.{key}", where, None, key, x))
-    if not raw_segments and not raw_values:
+    if not raw_segments and not raw_values and not raw_forces:
         problems.add("segments", "nothing to check: give the measured segments, e.g. "
-                        "[segments] pa3 = 55")
+                        '[segments] pa3 = 55, or a force analysis\'s ([forces] "R12^τ" = 28.4)')
     if isinstance(mech, int):
         rows = _table_of(mech, table, problems)
         if rows is None:
@@ -243,10 +224,31 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
         item = names.segment(key, where, scope, name, x, problems)
         if item is not None:
             items.append(item)
+    # the force analysis, where the file measures forces
+    ctx = fnames = None
+    if raw_forces is not None or (m.loads is not None and not all(map(names.kinematic, raw_values))):
+        ctx = _force_context(sol, problems)
+        fnames = ForceNames(ctx) if ctx is not None else None
+    force_items: list[Item] = []
+    mu_F: dict[str, float] = {}
+    if fnames is not None and raw_forces:
+        force_items, mu_F, given = read_forces(raw_forces, fnames, problems)
+        ctx = replace(ctx, mu_F=mu_F, mu_F_given=given)
     for key, value in raw_values.items():
-        item = names.value(f"values.{key}", f"values.{key_text(key)}", key, value, problems)
+        where = f"values.{key_text(key)}"
+        if fnames is not None and not names.kinematic(key):
+            item = fnames.value(f"values.{key}", where, key, value, problems, mu_F)
+            if item is not False:
+                force_items += [item] if item is not None else []
+                continue
+        item = names.value(f"values.{key}", where, key, value, problems, fnames)
         if item is not None:
             items.append(item)
+    seen: dict[tuple, Item] = {}
+    for it in force_items:  # one force or arm twice, in two spellings
+        was = seen.setdefault((it.plan, it.kind, it.name), it)
+        if was is not it:
+            problems.add(it.key, f"measures what {was.key} does: give each once")
     first: dict[tuple, Item] = {}
     for it in items:  # one thing measured twice with two values ([segments] and [segments.velocity])
         same = (it.kind, it.plan, *sorted((it.start, it.end)), it.link)
@@ -257,16 +259,38 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
     need = {it.plan for it in items if it.kind in ("segment", "value")}
     need |= {"velocity" for it in items if it.kind == "omega"}
     need |= {"acceleration" for it in items if it.kind == "epsilon"}
+    need |= {"velocity" for it in force_items if it.plan == "lever"}  # the velocity plan turned
     for plan in PLANS:
         if plan in need and MU_KEY[plan] not in scales:  # given but bad: said above
             what = {"positions": "the plan of positions", "velocity": "the velocity plan",
                     "acceleration": "the acceleration plan"}[plan]
             problems.add(f"scales.{MU_KEY[plan]}", f"missing: the scale factor the student "
                             f"used for {what}")
+    if not items and not force_items and not problems:  # [forces] mu_F = 20 and nothing measured
+        problems.add("forces", 'nothing to check: give the segments of the force plans, e.g. [forces] '
+                     '"R12^τ" = 28.4, the lever\'s arms (h.G1 = 19) or the forces in [values]')
     problems.raise_if_any()
     read = [source] + [str(p) for p in (mech if not isinstance(mech, int) else table,) if p]
-    return Measurement(source, m, sol, sol.mu,
-                       tuple(items), tol, title, angle, tuple(read), frozenset(mu))
+    return Measurement(source, m, sol, sol.mu, tuple(items + force_items), tol, title, angle,
+                       tuple(read), frozenset(mu), ctx if force_items else None)
+
+
+def _force_context(sol: Solution, problems: Problems) -> ForceContext | None:
+    """The exact force analysis of the measurement's position; None, and a problem of
+    [forces], where there is none: the mechanism gives no loads, or its force plans cannot
+    be drawn here."""
+    mech = sol.mechanism
+    if mech.loads is None:
+        problems.add("forces", f"the mechanism ({mech.source}) gives no loads: the force analysis "
+                     'needs its [loads], e.g. [loads.links.3] mass = 10, J_S = 0.4, centre = "S3" '
+                     "(README: Loads)")
+        return None
+    try:
+        cycle = analyse_cycle(mech, solver=sol.solver) if mech.loads.resistance is not None else None
+        return ForceContext.build(sol, cycle)
+    except PlansError as exc:
+        problems.add("forces", f"no force analysis at this position: {str(exc).split(': ', 1)[-1]}")
+        return None
 
 
 def _input_file(value: Any, key: str, folder: Path | None, problems: Problems) -> Path | None:
@@ -389,7 +413,14 @@ class _Names:
         (plan, x, y), sp = next(iter(cands.items()))
         return Item(key, sp, "segment", plan, mm, x, y)
 
-    def value(self, key, where, name, value, problems) -> Item | None:
+    def kinematic(self, name: str) -> bool:
+        """Whether [values] ``name`` is an ω, an ε or a value of the plans (V_A3, a^k_A3A)."""
+        return bool(re.fullmatch(r"(omega|ω|w|epsilon|ε|eps|alpha|α)_?(\d+)", name)) or \
+            self._physical(name) is not None
+
+    def value(self, key, where, name, value, problems, forces=None) -> Item | None:
+        """The item of [values] ``name``; ``forces``: the force analysis's names
+        (:class:`plans.check.force_items.ForceNames`) an unknown name is offered too."""
         sol = self.sol
         # α3 (alpha3) is ε3 as Western texts write the angular acceleration
         m = re.fullmatch(r"(omega|ω|w|epsilon|ε|eps|alpha|α)_?(\d+)", name)
@@ -400,7 +431,7 @@ class _Names:
                 problems.add(where, f"there is no link {link} (links: "
                                 f"{', '.join(map(str, sorted(sol.mechanism.links)))})")
                 return None
-            mag, sense = _magnitude_sense(value, where, problems, allow_sense=True, kind=kind)
+            mag, sense = magnitude_sense(value, where, problems, allow_sense=True, kind=kind)
             if mag is None:
                 return None
             plan = "velocity" if kind == "omega" else "acceleration"
@@ -414,10 +445,11 @@ class _Names:
         if hit is None:
             labels = ["ω<link>", "ε<link>", "V_<point>", "a_<point>", "V_<point><point>"]
             labels += [v.label for v in sol.acceleration.vectors if v.component != "absolute"]
-            problems.add(where, f"unknown value \"{name}\"; known: {', '.join(dict.fromkeys(labels))}")
+            more = f"; forces and moments: {forces.known_values()}" if forces is not None else ""
+            problems.add(where, f"unknown value \"{name}\"; known: {', '.join(dict.fromkeys(labels))}{more}")
             return None
         plan, x, y, label = hit
-        mag, _ = _magnitude_sense(value, where, problems, allow_sense=False, kind=plan)
+        mag, _ = magnitude_sense(value, where, problems, allow_sense=False, kind=plan)
         if mag is None:
             return None
         return Item(key, label, "value", plan, mag, x, y,
@@ -454,84 +486,3 @@ class _Names:
 def _cyrillic(name: str) -> str:
     """', with the Cyrillic letters р, а: type them in Latin' where ``name`` has some."""
     return f", with {type_in_latin(name)}" if type_in_latin(name) else ""
-
-
-def normal_unit(text: str) -> str:
-    """A unit as a student types it, in one spelling: lower case, no spaces, powers as
-    superscripts ("m/s^2", "m/s2", "м/с²" → "m/s²", "м/с²"; "s^-1", "с-1" → "s⁻¹", "с⁻¹").
-
-    >>> [normal_unit(u) for u in ("M/S^2", "м/с2", "rad / s", "c^-1", "1/s**2")]
-    ['m/s²', 'м/с²', 'rad/s', 'с⁻¹', '1/s²']
-    """
-    u = "".join(text.lower().split()).replace("**", "^")
-    u = re.sub(r"(?<=[sсc])\^?-1$", "⁻¹", u)
-    u = re.sub(r"(?<=[sсc])\^?-2$", "⁻²", u)
-    u = re.sub(r"(?<=[sсc])\^?2$", "²", u)
-    if re.search(r"[а-я]", u):  # "м/c" typed with a Latin c
-        u = u.replace("c", "с")
-    elif u in ("c⁻¹", "c⁻²"):
-        u = "с" + u[1:]
-    return u
-
-
-def _split_sense(rest: str) -> tuple[str, int]:
-    """The words after a magnitude as (unit, sense): the sense (SENSE_WORDS) before or
-    after the unit, or alone."""
-    r = " ".join(rest.lower().split())
-    for phrase in sorted(SENSE_WORDS, key=len, reverse=True):
-        if r == phrase:
-            return "", SENSE_WORDS[phrase]
-        if r.endswith(" " + phrase):
-            return r[: -len(phrase) - 1], SENSE_WORDS[phrase]
-        if r.startswith(phrase + " "):
-            return r[len(phrase) + 1:], SENSE_WORDS[phrase]
-    return r, 0
-
-
-def _magnitude_sense(value, key, problems, *, allow_sense, kind="velocity"):
-    """The magnitude and sense (+1 ccw, −1 cw, 0 not given) of a value of [values]: a
-    number, or in quotes a number (decimal point or comma) with its unit and, for ω and
-    ε (``allow_sense``), a sense: "4,82 рад/с против часовой стрелки"."""
-    sense = 0
-    main, units = VALUE_UNITS[kind]
-    if isinstance(value, str):
-        if allow_sense:
-            example = (f'e.g. "4.82 ccw" or "4,82 {units[1]} против часовой стрелки" '
-                       f"(senses: {SENSE_HINT})")
-            bad = f"write a magnitude and a sense, {example}, got {quote(value)}"
-        else:
-            example = f'e.g. 2.77, "2,77" or "2.77 {main}"'
-            bad = f"must be a number, got {quote(value)}: write {_WHAT[kind]} in {main}, {example}"
-        m = re.fullmatch(rf"\s*({DECIMAL})\s*(.*?)\s*", value, re.S)
-        if m is None:
-            problems.add(key, bad)
-            return None, 0
-        unit, sense = _split_sense(m.group(2))
-        if sense and not allow_sense:
-            problems.add(key, f"{bad} (a sense is given for ω and ε only)")
-            return None, 0
-        if unit and normal_unit(unit) not in {normal_unit(u) for u in units}:
-            other = next((k for k, (_, us) in VALUE_UNITS.items()
-                          if normal_unit(unit) in {normal_unit(u) for u in us}), None)
-            if other is not None:
-                problems.add(key, f"{quote(value)} is in {unit}, the unit of {_WHAT[other]}: "
-                                  f"{_WHAT[kind]} is in {' or '.join(units[:2])}")
-            elif allow_sense:
-                problems.add(key, f"{bad}: {quote(unit, 20)} is neither a sense nor a unit of "
-                                  f"{_WHAT[kind]} ({', '.join(units)})")
-            else:
-                problems.add(key, f"must be a number, got {quote(value)}: {quote(unit, 20)} is not "
-                                  f"a unit of {_WHAT[kind]}; write it in {' or '.join(units)}, "
-                                  f"{example}")
-            return None, 0
-        mag = decimal(m.group(1))
-        value = mag
-        if allow_sense and mag < 0 and not sense:
-            sense, value = -1, -mag  # "-4.82": clockwise, as a number would be
-    elif allow_sense and isinstance(value, int | float) and not isinstance(value, bool) and value < 0:
-        sense, value = -1, -value  # ω3 = -4.82: clockwise, as the engine signs it
-    x = _num(value, key, problems, nonneg=True, unit=main,
-             what="a magnitude with a sense word" if allow_sense else "a magnitude")
-    if x is None:
-        return None, 0
-    return x, sense

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from plans.check import describe
-from plans.check.items import MU_KEY, PLANS, Item
+from plans.check.items import FORCE_PLANS, MU_KEY, PLANS, Item
 from plans.geometry import cross, intersect
 from plans.kinematics.solver import Solver
 from plans.model.structure import DyadKind
@@ -24,7 +24,9 @@ from plans.plan.solution import NOISE, Plan, Solution, plan_name, solve_position
 @dataclass(frozen=True)
 class State:
     """Plans as drawn: point values (m/s, m/s²) by plan name, positions by mechanism name,
-    ω and ε as read off the plans, and a length factor per plan (a scale mistake)."""
+    ω and ε as read off the plans, and a length factor per plan (a scale mistake); the
+    exact motion of the position drawn (``scalar``), and the force analysis drawn on these
+    plans (``forces``: a :class:`plans.check.forces.ForceDrawn`, where forces are measured)."""
 
     positions: dict[str, complex]
     velocity: dict[str, complex]
@@ -32,6 +34,8 @@ class State:
     omega: dict[int, float]
     epsilon: dict[int, float]
     factor: dict[str, float] = field(default_factory=lambda: dict.fromkeys(PLANS, 1.0))
+    scalar: object = field(default=None, compare=False, repr=False)
+    forces: object = field(default=None, compare=False, repr=False)
 
     def values(self, plan: str) -> dict[str, complex]:
         return self.velocity if plan == "velocity" else self.acceleration
@@ -39,7 +43,10 @@ class State:
 
 def expected(item: Item, st: State, mu: dict[str, float]) -> float:
     """What the student should have measured (or computed) if they drew ``st``.
-    ω and ε are signed (counter-clockwise positive); everything else is a length."""
+    ω and ε are signed (counter-clockwise positive); everything else is a length. An item
+    of the force analysis is what the force analysis drawn on ``st`` gives."""
+    if item.plan in FORCE_PLANS:
+        return st.forces.expected(item)
     f = st.factor[item.plan]
     if item.kind == "omega":
         return st.omega.get(item.link, 0.0) * f
@@ -66,7 +73,10 @@ class Mistake:
     kind: coriolis-reversed, coriolis-omitted, coriolis-half, coriolis-double, term-scale,
     normal-reversed, normal-omitted, normal-length, normal-swapped, omega-sense, crank-sense,
     value-sense, crank-omega, crank-angle, line-swapped,
-    branch, scale, scale-swapped, similarity-ratio, similarity-mirrored.
+    branch, scale, scale-swapped, similarity-ratio, similarity-mirrored; and of the force
+    analysis (:mod:`plans.check.forces`): weight-omitted, inertia-along, inertia-omitted,
+    inertia-moment-omitted, inertia-moment-reversed, force-reversed, lever-unturned,
+    force-scale, moment-sense.
     """
 
     kind: str
@@ -97,7 +107,11 @@ class Mistake:
                 "line-swapped": "line", "branch": "branch", "scale": "scale",
                 "scale-swapped": "scale", "term-scale": "scale",
                 "similarity-ratio": "similarity",
-                "similarity-mirrored": "similarity"}[self.kind]
+                "similarity-mirrored": "similarity",
+                "weight-omitted": "weight", "inertia-along": "inertia", "inertia-omitted": "inertia",
+                "inertia-moment-omitted": "inertia moment", "inertia-moment-reversed": "inertia moment",
+                "force-reversed": "force", "lever-unturned": "lever",
+                "force-scale": "scale", "moment-sense": "sense"}[self.kind]
 
     def get(self, key: str) -> str:
         return dict(self.info).get(key, "")
@@ -175,7 +189,7 @@ class Replayer:
         s = self.sol
         v = {n: p.value for n, p in s.velocity.points.items()} | {s.velocity.pole: 0j}
         a = {n: p.value for n, p in s.acceleration.points.items()} | {s.acceleration.pole: 0j}
-        return State(dict(self.pos), v, a, dict(s.omega), dict(s.epsilon))
+        return State(dict(self.pos), v, a, dict(s.omega), dict(s.epsilon), scalar=s.scalar)
 
     def _omega(self, vel, flip: set[int]) -> dict[int, float]:
         out = {}
@@ -220,7 +234,7 @@ class Replayer:
         omega = self._omega(vel, flip)
         acc = self._plan(s.acceleration, mk, vel, omega)
         eps = self._epsilon(acc)
-        return State(dict(self.pos), vel, acc, omega, eps)
+        return State(dict(self.pos), vel, acc, omega, eps, scalar=s.scalar)
 
     def _crank_reversed(self) -> State:
         """The plans of a student who lays off the crank's V_A in the sense opposite to
@@ -235,7 +249,7 @@ class Replayer:
         st = self.exact()
         vel = {n: -z for n, z in st.velocity.items()}
         omega = {lid: -w for lid, w in st.omega.items()}
-        return State(st.positions, vel, st.acceleration, omega, st.epsilon)
+        return State(st.positions, vel, st.acceleration, omega, st.epsilon, scalar=st.scalar)
 
     def _applies(self, mk: Mistake, kind: str) -> bool:
         return mk.plan in (kind, "both")
@@ -326,7 +340,7 @@ def simulate(sol: Solution, mk: Mistake | None, mu: dict[str, float] | None = No
         for plan, f in mk.info:
             if plan in factor:  # ("fits", μ), ("example", OA): words only
                 factor[plan] = float(f)
-        return State(st.positions, st.velocity, st.acceleration, st.omega, st.epsilon, factor)
+        return State(st.positions, st.velocity, st.acceleration, st.omega, st.epsilon, factor, st.scalar)
     return Replayer(sol).run(mk)
 
 

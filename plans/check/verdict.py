@@ -26,6 +26,11 @@ as a^t / l with the sense of a^t, which is where a reversed ε comes from. Witho
 reported sense of ωk this mistake draws the same plans as "Coriolis vector reversed";
 both are then named.
 
+The items of a force analysis (:mod:`plans.check.forces`) are compared with the exact force
+analysis at the student's scales, and its mistakes replayed as the plans' are: the loads
+changed and the same group walk, the lever not turned, a plan at another μF. A mistake of
+the plans carries over to the forces drawn on them.
+
 Reading of "ω1 with the wrong sense": the student lays off the crank's V_A the other way
 round. Every velocity is proportional to ω1, so the whole velocity plan is reflected
 through p (no length changes) and every ω read off it turns the other way; the
@@ -40,9 +45,11 @@ import math
 from collections import Counter
 from dataclasses import dataclass, field, replace
 
+from plans.check import forces
 from plans.check.items import (  # noqa: F401  (the public names of the check live here)
     MU_KEY,
     PLANS,
+    SIGNED,
     Item,
     Tolerance,
     parse_tolerance,
@@ -54,6 +61,7 @@ from plans.check.measured import (  # noqa: F401
     load,
     recorded_segments,
 )
+from plans.check.rebuild import rebuild  # noqa: F401  (the overlay's, by this name)
 from plans.check.replay import (  # noqa: F401
     Degenerate,
     Mistake,
@@ -69,7 +77,7 @@ from plans.check.replay import (  # noqa: F401
 )
 from plans.check.words import WORDS
 from plans.errors import PlansError
-from plans.geometry import apart, circle_circle, cross
+from plans.geometry import apart
 from plans.plan.solution import plan_name
 from plans.scales import series
 
@@ -91,7 +99,7 @@ def compare(item: Item, computed: float, tol: Tolerance) -> Deviation:
     limit = tol.limit(mag, item.per_mm)
     pct = dev / mag * 100.0 if mag > 0 else math.nan
     sense_ok = None
-    if item.kind in ("omega", "epsilon") and item.sense and mag > limit:
+    if item.kind in SIGNED and item.sense and mag > limit:
         sense_ok = (item.sense > 0) == (computed > 0)
     ok = abs(dev) <= limit * (1 + 1e-9) + 1e-12 and sense_ok is not False
     return Deviation(item, float(computed), float(dev), float(pct), float(limit), ok, sense_ok)
@@ -159,7 +167,7 @@ class CheckResult:
 def check(meas: Measurement, tol: Tolerance | None = None, *, diagnose_: bool = True) -> CheckResult:
     """Compare every measured item with the exact plans; diagnose what is beyond tolerance."""
     tol = tol or meas.tolerance or Tolerance()
-    st = Replayer(meas.solution).exact()
+    st = redraw(meas)
     devs = tuple(compare(it, expected(it, st, meas.mu), tol) for it in meas.items)
     diag = diagnose(meas, devs, tol, exact=st) if diagnose_ else Diagnosis(None)
     if diagnose_ and not all(d.ok for d in devs):
@@ -348,14 +356,14 @@ def diagnose(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance,
     if not bad:
         return Diagnosis(None)
     items = meas.items
-    plans = {it.plan for it in items}
+    plans = {it.plan for it in items} & set(PLANS)  # the plans measured (not the forces)
     findings: list[Finding] = []
     tried = 0
 
     def judge(mistakes) -> None:
         nonlocal tried
         for mk in mistakes:
-            got = _redrawn(meas, lambda mk=mk: simulate(meas.solution, mk, meas.mu), tol)
+            got = _redrawn(meas, lambda mk=mk: redraw(meas, mk), tol)
             if got is None:
                 continue
             st, sim = got
@@ -367,12 +375,15 @@ def diagnose(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance,
             broken = tuple(items[i].name for i, d in enumerate(devs) if d.ok and not sim[i].ok)
             findings.append(Finding(mk, explained, unexplained, broken, _misfit(sim), st))
 
-    judge([*hypotheses(meas.solution, plans), *_fitted_scales(meas, devs)])
+    if plans:
+        judge([*hypotheses(meas.solution, plans), *_fitted_scales(meas, devs)])
+    if meas.forces is not None:
+        judge([*forces.hypotheses(meas.forces, items), *forces.fitted_scales(meas.forces, devs)])
     # the plans of another crank angle, only where no mistake above explains everything
     # without spoiling a thing, nor do slips of the items on the exact plans (two swapped,
     # one from the wrong point: an ordinary file, checked as fast as before): its search
     # solves some two hundred positions
-    if not any(not f.broken and not f.unexplained for f in findings):
+    if plans and not any(not f.broken and not f.unexplained for f in findings):
         if exact is None:
             exact = Replayer(meas.solution).exact()
         failed = {items[i].name for i in bad}
@@ -395,6 +406,17 @@ def diagnose(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance,
     near = sorted((f for f in findings if not f.broken),
                   key=lambda f: (-len(f.explained), _score(f)))
     return Diagnosis(None, (), near[0] if near else None, tried)
+
+
+def redraw(meas: Measurement, mk: Mistake | None = None, st: State | None = None) -> State:
+    """The plans a student who makes the mistake ``mk`` draws (None: the exact ones; ``st``:
+    drawn already, another crank angle's), and where the file measures forces, the force
+    analysis on them (:mod:`plans.check.forces`): a mistake of the plans carries over."""
+    if st is None:
+        st = simulate(meas.solution, None if mk is not None and mk.kind in forces.KINDS else mk, meas.mu)
+    if meas.forces is not None:
+        st = replace(st, forces=meas.forces.drawn(st, mk))
+    return st
 
 
 def _redrawn(meas: Measurement, drawn, tol: Tolerance) -> tuple[State, list[Deviation]] | None:
@@ -457,6 +479,8 @@ def _fitted_scales(meas: Measurement, devs: tuple[Deviation, ...]) -> list[Mista
     return out
 
 
+#: the plans of another crank angle, as the forces drawn on them take it
+_ANGLE = Mistake("crank-angle")
 #: the grid the crank angle of :func:`fitted_angle` is searched on, and how near the
 #: given angle a fit is drawing scatter, not another position (rad)
 _ANGLE_STEP = math.radians(2.0)
@@ -479,7 +503,7 @@ def fitted_angle(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance)
     mu = meas.mu
 
     def misfit(phi: float) -> float:
-        got = _redrawn(meas, lambda: at_angle(sol, phi, mu), tol)
+        got = _redrawn(meas, lambda: redraw(meas, _ANGLE, at_angle(sol, phi, mu)), tol)
         return math.inf if got is None else _misfit(got[1])
 
     given = sol.phi
@@ -513,86 +537,3 @@ def fitted_angle(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance)
              for key, x in (("at", phi), ("given", given))]
     return [Mistake("crank-angle", "both", sol.mechanism.driver.phi_sym,
                     info=(("phi", phi), *words))]
-
-
-# ---------------------------------------------------------------------------------------
-# the student's plan rebuilt from the measured lengths (for the overlay)
-# ---------------------------------------------------------------------------------------
-
-
-def rebuild(result: CheckResult) -> dict[str, dict[str, complex]]:
-    """Points of each plan (mm at the student's scale, pole at 0) placed from the measured
-    segments: a point measured from two placed points by the intersection of two circles
-    (the one nearer the reference), from one placed point along the reference direction.
-    The reference is the plan of the diagnosed mistake if there is one, else the exact
-    plan. Points that no measurement reaches are left out."""
-    meas = result.measurement
-    diag = result.diagnosis
-    st = diag.best.state if diag.best and diag.best.state is not None else Replayer(meas.solution).exact()
-    out: dict[str, dict[str, complex]] = {}
-    for kind in ("velocity", "acceleration"):
-        plan = meas.solution.velocity if kind == "velocity" else meas.solution.acceleration
-        mu = meas.mu[MU_KEY[kind]] / st.factor[kind]
-        ref = {n: z / mu for n, z in st.values(kind).items()}
-        segs = [(it.start, it.end, it.measured) for it in meas.items
-                if it.kind == "segment" and it.plan == kind]
-        placed = {plan.pole: 0j}
-        for n, p in plan.points.items():
-            if p.source.kind == "pole":
-                placed[n] = 0j
-        order = list(plan.points)
-        changed = True
-        while changed:
-            changed = False
-            for n in order:
-                if n in placed:
-                    continue
-                anchors = []
-                for a, b, L in segs:
-                    if a == n and b in placed:
-                        anchors.append((b, L))
-                    elif b == n and a in placed:
-                        anchors.append((a, L))
-                if not anchors:
-                    continue
-                z = _place(n, anchors, placed, ref)
-                if z is not None:
-                    placed[n] = z
-                    changed = True
-        out[kind] = {n: z for n, z in placed.items()
-                     if any(n in (a, b) for a, b, _ in segs) or n == plan.pole}
-    return out
-
-
-def _place(n, anchors, placed, ref):
-    uniq = {}
-    for a, L in anchors:
-        uniq.setdefault(placed[a], (a, L))
-    anchors = list(uniq.values())
-    if len(anchors) >= 2:
-        best = None
-        for i, (a, La) in enumerate(anchors):
-            for b, Lb in anchors[i + 1:]:
-                ua, ub = ref[n] - ref[a], ref[n] - ref[b]
-                s = abs(cross(ua, ub)) / max(abs(ua) * abs(ub), 1e-300)
-                if best is None or s > best[0]:
-                    best = (s, a, La, b, Lb)
-        s, a, La, b, Lb = best
-        if s > 0.05:
-            guess = placed[a] + (ref[n] - ref[a])
-            d = abs(placed[b] - placed[a])
-            if d > 1e-9:
-                cands = []
-                for sign in (1, -1):
-                    z, disc = circle_circle(placed[a], La, placed[b], Lb, sign)
-                    if disc < 0:  # the circles miss: the nearest point between them
-                        u = (placed[b] - placed[a]) / d
-                        z = placed[a] + u * (La + (d - La - Lb) / 2 if d > La + Lb else
-                                             (La if La > Lb else d - Lb))
-                    cands.append(complex(z))
-                return min(cands, key=lambda z: abs(z - guess))
-    a, L = anchors[0]
-    u = ref[n] - ref[a]
-    if abs(u) < 1e-12:
-        return None
-    return placed[a] + L * u / abs(u)

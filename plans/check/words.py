@@ -1,8 +1,9 @@
 """The check's words, one table per language: the names of the plans, the units, the
-tolerance, each mistake (what it is, and its correction in the method's words) and each
-look-alike. A third language is a third table of the same keys, registered in
-:data:`WORDS`; the functions that fill them in (:mod:`plans.check.describe`) stay as they
-are. Numbers are written in the language's own convention by :func:`plans.fmt.num`.
+tolerance, each mistake of the plans and of the force analysis (what it is, and its
+correction in the method's words) and each look-alike. A third language is a third table
+of the same keys, registered in :data:`WORDS`; the functions that fill them in
+(:mod:`plans.check.describe`) stay as they are. Numbers are written in the language's own
+convention by :func:`plans.fmt.num`.
 
 A mistake's templates are (description, correction) under its kind, or under its kind
 and a variant where the method says it otherwise (``normal-reversed-crank``,
@@ -160,7 +161,100 @@ EN = {
             "the figure for {target} {on} is mirrored",
             "by similarity: {equation}, with the letters in the same order round the figure "
             "as on the link, not mirrored"),
+        "weight-omitted": (
+            "the weight {target} is left out of the force plans and the lever",
+            "{target} = m{link}·g acts at {centre}, downwards: {where} and apply it on the lever "
+            "at {image}"),
+        "weight-omitted-all": (
+            "the weights are left out of the force plans and the lever",
+            "G = m·g of each link acts at its centre of mass, downwards: lay each off in the force "
+            "plan of its group and apply it on the lever at the image of the centre of mass"),
+        "inertia-along": (
+            "the inertia force {target} is laid along the acceleration a_{centre} instead of "
+            "against it",
+            "{target} = −m{link}·a_{centre}: through {centre}, against the acceleration of the "
+            "centre of mass (π{image} on the acceleration plan, turned round)"),
+        "inertia-along-all": (
+            "every inertia force is laid along the acceleration of its centre of mass instead "
+            "of against it",
+            "Φ = −m·a_S: each through its centre of mass S, against the acceleration a_S"),
+        "inertia-omitted": (
+            "the inertia force {target} is left out",
+            "{target} = −m{link}·a_{centre} acts through {centre}: {where} and apply it on the "
+            "lever at {image}"),
+        "inertia-omitted-all": (
+            "the inertia forces are left out",
+            "Φ = −m·a_S of each link acts through its centre of mass S: lay each off in the "
+            "force plan of its group and apply it on the lever at the image of S"),
+        "inertia-moment-omitted": (
+            "the inertia moment {target} is left out",
+            "{target} = −J_S{link}·ε{link} enters the moment equations of link {link}, and the "
+            "lever as two forces {target}/l ⊥ the link at the images of its joints"),
+        "inertia-moment-omitted-all": (
+            "the inertia moments are left out",
+            "M_Φ = −J_S·ε of each link enters the moment equations of its link, and the lever "
+            "as two forces M_Φ/l ⊥ the link at the images of its joints"),
+        "inertia-moment-reversed": (
+            "the inertia moment {target} has the wrong sense",
+            "{target} = −J_S{link}·ε{link} turns against ε{link}"),
+        "inertia-moment-reversed-all": (
+            "every inertia moment has the wrong sense",
+            "M_Φ = −J_S·ε turns against the ε of its link"),
+        "force-reversed-resistance": (
+            "the useful resistance {target} points the wrong way",
+            "{target} acts on the output against its motion: on the working stroke against "
+            "V_{point}, along the guide"),
+        "force-reversed": (
+            "the force {target} points the wrong way",
+            "{target} acts {rule}"),
+        "lever-unturned": (
+            "on Zhukovsky's lever the forces are applied to the velocity plan as it is, not "
+            "turned by 90° (or turned by 90° with it)",
+            "turn the velocity plan by 90° (either way) and apply each force at the image of "
+            "its point, keeping its own direction; h is the perpendicular from the pole p to "
+            "the line of the force, and F_у·{pb} balances Σ ±F·h"),
+        "moment-sense-balancing": (
+            "{target} written with the wrong sense; the force analysis is right",
+            "M_у balances the moments of the loads on the driving link about its pivot: it "
+            "turns the other way than their sum"),
+        "moment-sense-force": (
+            "{target} written with the wrong sense; the force analysis is right",
+            "F_у turns the crank in the sense of M_у: the sense in which Σ ±F·h on the lever "
+            "needs it to balance"),
+        "moment-sense-inertia": (
+            "{target} written with the wrong sense; the force analysis is right",
+            "{target} = −J_S·ε turns against the ε of its link"),
+        "moment-sense-moment": (
+            "{target} written with the wrong sense; the force analysis is right",
+            "{target} turns as the mechanism file gives it"),
+        "force-scale-large": "the force plan of {group} is drawn {times} times too large for "
+                             "the stated μF",
+        "force-scale-small": "the force plan of {group} is drawn {times} times too small for "
+                             "the stated μF",
+        "force-scale-all-large": "the force plans are drawn {times} times too large for the "
+                                 "stated μF",
+        "force-scale-all-small": "the force plans are drawn {times} times too small for the "
+                                 "stated μF",
+        "force-scale-fits": ": their segments fit μF = {fits} N/mm",
+        "force-scale": (
+            "{what}",
+            "a segment of a force plan is the force divided by μF, in mm, and a force read "
+            "off it is the segment times μF: check the power of 10"),
+        "force-scale-fitted": (
+            "{what}",
+            "draw the force plan at the μF written down (segment = force / μF), or write "
+            "down the μF it was drawn at"),
     },
+    #: a force's direction as the file's rule gives it (README: Loads)
+    "rules": {"against velocity": "against the velocity of {point}",
+              "along velocity": "along the velocity of {point}",
+              "against guide": "along the guide of its link, against its direction",
+              "along guide": "along the guide of its link", "": "at the angle the file gives"},
+    #: a group as a force plan's words name it
+    "of_group": "group {key}",
+    #: where a load left out goes: its group's force plan, or the driving link's equilibrium
+    "load_where": {"group": "lay it off in the force plan of its group",
+                   "crank": "take it into the driving link's equilibrium"},
     #: an item beyond tolerance that is, within tolerance, something else
     "lookalikes": {
         "segment": "{item} = {m} mm is the length of {other} ({exact} mm): measured from the "
@@ -181,7 +275,7 @@ RU = {
                 "positions": "на плане положений", "both": "на обоих планах"},
     "units": {"m": "м", "mm": "мм", "m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с",
               "rad/s²": "рад/с²", "m/mm": "м/мм", "(m/s)/mm": "(м/с)/мм",
-              "(m/s²)/mm": "(м/с²)/мм"},
+              "(m/s²)/mm": "(м/с²)/мм", "N": "Н", "N·m": "Н·м", "N/mm": "Н/мм"},
     "tolerance": "большее из {mm} мм и {percent} %",
     "times": _times_ru,
     "group": "группа",
@@ -303,7 +397,91 @@ RU = {
             "фигура для точки {target} {on} построена зеркально",
             "по теореме подобия: {equation}; обход букв на плане тот же, что на звене, "
             "фигура не зеркальная"),
+        "weight-omitted": (
+            "сила тяжести {target} не учтена в планах сил и на рычаге",
+            "{target} = m{link}·g приложена в точке {centre} и направлена вниз: {where} и "
+            "приложите к рычагу в точке {image}"),
+        "weight-omitted-all": (
+            "силы тяжести не учтены в планах сил и на рычаге",
+            "G = m·g каждого звена приложена в его центре масс и направлена вниз: отложите "
+            "каждую на плане сил своей группы и приложите к рычагу в образе центра масс"),
+        "inertia-along": (
+            "сила инерции {target} направлена по ускорению a_{centre}, а не против него",
+            "{target} = −m{link}·a_{centre}: через точку {centre}, против ускорения центра масс "
+            "(вектор π{image} плана ускорений, повёрнутый на 180°)"),
+        "inertia-along-all": (
+            "все силы инерции направлены по ускорениям центров масс, а не против них",
+            "Φ = −m·a_S: каждая через свой центр масс S, против ускорения a_S"),
+        "inertia-omitted": (
+            "сила инерции {target} не учтена",
+            "{target} = −m{link}·a_{centre} приложена в точке {centre}: {where} и приложите к "
+            "рычагу в точке {image}"),
+        "inertia-omitted-all": (
+            "силы инерции не учтены",
+            "Φ = −m·a_S каждого звена приложена в его центре масс S: отложите каждую на плане "
+            "сил своей группы и приложите к рычагу в образе точки S"),
+        "inertia-moment-omitted": (
+            "момент сил инерции {target} не учтён",
+            "{target} = −J_S{link}·ε{link} входит в уравнения моментов звена {link}, а на "
+            "рычаг — парой сил {target}/l ⊥ звену в образах его шарниров"),
+        "inertia-moment-omitted-all": (
+            "моменты сил инерции не учтены",
+            "M_Φ = −J_S·ε каждого звена входит в уравнения моментов звена, а на рычаг — парой "
+            "сил M_Φ/l ⊥ звену в образах его шарниров"),
+        "inertia-moment-reversed": (
+            "момент сил инерции {target} направлен в обратную сторону",
+            "{target} = −J_S{link}·ε{link} направлен против ε{link}"),
+        "inertia-moment-reversed-all": (
+            "все моменты сил инерции направлены в обратную сторону",
+            "M_Φ = −J_S·ε направлен против ε своего звена"),
+        "force-reversed-resistance": (
+            "сила полезного сопротивления {target} направлена в обратную сторону",
+            "{target} действует на выходное звено против его движения: на рабочем ходе "
+            "против V_{point}, вдоль направляющей"),
+        "force-reversed": (
+            "сила {target} направлена в обратную сторону",
+            "{target} направлена {rule}"),
+        "lever-unturned": (
+            "на рычаге Жуковского силы приложены к плану скоростей, не повёрнутому на 90° "
+            "(или повёрнуты вместе с ним)",
+            "поверните план скоростей на 90° (в любую сторону) и приложите каждую силу в "
+            "образе её точки, сохранив её направление; плечо h — перпендикуляр из полюса p "
+            "на линию действия силы, и F_у·{pb} уравновешивает Σ ±F·h"),
+        "moment-sense-balancing": (
+            "{target} записан с обратным направлением; силовой расчёт выполнен верно",
+            "M_у уравновешивает моменты нагрузок ведущего звена относительно его оси: он "
+            "направлен противоположно их сумме"),
+        "moment-sense-force": (
+            "{target} записана с обратным направлением; силовой расчёт выполнен верно",
+            "F_у поворачивает кривошип в сторону M_у: в ту, в которую её требует равновесие "
+            "рычага Σ ±F·h"),
+        "moment-sense-inertia": (
+            "{target} записан с обратным направлением; силовой расчёт выполнен верно",
+            "{target} = −J_S·ε направлен против ε своего звена"),
+        "moment-sense-moment": (
+            "{target} записан с обратным направлением; силовой расчёт выполнен верно",
+            "{target} направлен так, как задано в файле механизма"),
+        "force-scale-large": "план сил {group} {times} крупнее (при указанном μF)",
+        "force-scale-small": "план сил {group} {times} мельче (при указанном μF)",
+        "force-scale-all-large": "планы сил {times} крупнее (при указанном μF)",
+        "force-scale-all-small": "планы сил {times} мельче (при указанном μF)",
+        "force-scale-fits": ": их отрезки соответствуют μF = {fits} Н/мм",
+        "force-scale": (
+            "{what}",
+            "отрезок плана сил = сила / μF, в мм, а сила, снятая с плана, = отрезок · μF: "
+            "проверьте степень 10"),
+        "force-scale-fitted": (
+            "{what}",
+            "постройте план сил при записанном μF (отрезок = сила / μF) или запишите тот μF, "
+            "при котором он построен"),
     },
+    "rules": {"against velocity": "против скорости точки {point}",
+              "along velocity": "по скорости точки {point}",
+              "against guide": "вдоль направляющей звена, против её направления",
+              "along guide": "вдоль направляющей звена", "": "под углом, заданным в файле"},
+    "of_group": "группы {key}",
+    "load_where": {"group": "отложите её на плане сил своей группы",
+                   "crank": "учтите её в равновесии ведущего звена"},
     "lookalikes": {
         "segment": "{item} = {m} мм — это длина {other} ({exact} мм): отрезок измерен не от "
                    "той точки?",

@@ -8,7 +8,7 @@ import math
 
 from plans.check import verdict as ck
 from plans.check.describe import lookalike_lines, unit_in
-from plans.check.items import MU_KEY, MU_SYMBOL
+from plans.check.items import FORCE_PLANS, MU_KEY, MU_SYMBOL, SIGNED
 from plans.cli.words import WORDS
 from plans.errors import InputError
 from plans.fmt import (
@@ -67,7 +67,7 @@ def _row(d, lang, w) -> list[str]:
     it = d.item
     meas = num(it.measured, 4, lang)
     comp = num(abs(d.computed), 4, lang)
-    if it.kind in ("omega", "epsilon"):
+    if it.kind in SIGNED:
         if it.sense:
             meas += " " + _sense(it.sense, w)
         comp += " " + _sense(d.computed, w)
@@ -94,20 +94,29 @@ def to_text(result, lang: str = "en") -> str:
 
     given = [f"{MU_SYMBOL[plan]} = {num(mu[key], 4, lang)} {unit_in(MU_UNIT[key], lang)}"
              for plan, key in MU_KEY.items() if key in meas.given]
+    given += _mu_F(meas, lang, w)
     out.append(f"{w['scales']}: {listing(given, lang) if given else w['none_given']}")
     out.append(f"{w['tol']}: {result.tolerance.describe(lang)}")
-    groups = [("positions", lambda it: it.kind == "segment" and it.plan == "positions"),
-              ("velocity", lambda it: it.kind == "segment" and it.plan == "velocity"),
-              ("acceleration", lambda it: it.kind == "segment" and it.plan == "acceleration"),
-              ("values", lambda it: it.kind != "segment")]
-    for key, pick in groups:
+    # (the section's title, its items, whether they are values)
+    groups = [(w["positions"], lambda it: it.kind == "segment" and it.plan == "positions", False),
+              (w["velocity"], lambda it: it.kind == "segment" and it.plan == "velocity", False),
+              (w["acceleration"], lambda it: it.kind == "segment" and it.plan == "acceleration", False),
+              (w["values"], lambda it: it.kind != "segment" and it.plan not in FORCE_PLANS, True)]
+    # the force analysis's items: each group's force plan, the lever, the forces computed
+    forces = meas.forces
+    for key in forces.keys if forces is not None else ():
+        head = w["force_plan"].format(group=key, mu=num(forces.mu_F.get(key, 0.0), 4, lang))
+        groups.append((head, lambda it, key=key: it.kind == "segment" and it.group == key, False))
+    groups += [(w["lever"], lambda it: it.plan == "lever", False),
+               (w["forces"], lambda it: it.plan == "force" and it.kind != "segment", True)]
+    for head, pick, values in groups:
         devs = [d for d in result.deviations if pick(d.item)]
         if not devs:
             continue
         out.append("")
-        out.append(w[key])
-        out += columns([_row(d, lang, w) for d in devs],
-                       w["vcols"] if key == "values" else w["cols"], right=range(1, 5))
+        out.append(head)
+        out += columns([_row(d, lang, w) for d in devs], w["vcols"] if values else w["cols"],
+                       right=range(1, 5))
     out.append("")
     n = len(result.deviations)
     failed = result.failed
@@ -122,6 +131,17 @@ def to_text(result, lang: str = "en") -> str:
         out.append(f"{w['warning']}: {line}")
     # the items' names in the notation of the language (a^τ_A3B in Russian), as the words
     return notation_in("\n".join(out) + "\n", lang)
+
+
+def _mu_F(meas, lang: str, w) -> list[str]:
+    """μF as the file gives it: one for every force plan, or one for each."""
+    given = meas.forces.mu_F_given if meas.forces is not None else None
+    if given is None:
+        return []
+    unit = unit_in("N/mm", lang)
+    if not isinstance(given, dict):
+        return [f"μF = {num(given, 4, lang)} {unit}"]
+    return ["μF = " + w["mu_F_group"].format(mu=num(mu, 4, lang), group=g) for g, mu in given.items()]
 
 
 def diagnosis_lines(result, lang: str = "en") -> list[str]:
@@ -179,6 +199,12 @@ def _finding(f, lang: str):
     }
 
 
+def _json_mu_F(meas) -> dict:
+    """μF as the file gives it (N/mm): a number, or an object by group ("4–5")."""
+    given = meas.forces.mu_F_given if meas.forces is not None else None
+    return {} if given is None else {"mu_F": given}
+
+
 def to_json(result, lang: str = "en") -> dict:
     """The check as data; the words of a finding (description, correction) and of a
     near-singular position's warning in ``lang``."""
@@ -186,6 +212,7 @@ def to_json(result, lang: str = "en") -> dict:
     items = []
     for d in result.deviations:
         it = d.item
+        extra = {"group": it.group} if it.group else {}  # a force plan's segment: its plan
         items.append({
             "key": it.key,
             "name": it.name,
@@ -199,11 +226,12 @@ def to_json(result, lang: str = "en") -> dict:
             "sense": {1: "ccw", -1: "cw"}.get(it.sense),
             "computed": abs(d.computed),
             "computed_sense": ({1: "ccw", -1: "cw"}.get(int(math.copysign(1, d.computed)))
-                               if it.kind in ("omega", "epsilon") and d.computed else None),
+                               if it.kind in SIGNED and d.computed else None),
             "deviation": d.deviation,
             "percent": d.percent if math.isfinite(d.percent) else None,
             "limit": d.limit,
             "ok": d.ok,
+            **extra,
         })
     diag = result.diagnosis
     return {
@@ -211,7 +239,7 @@ def to_json(result, lang: str = "en") -> dict:
         "mechanism": meas.mechanism.source,
         "phi_deg": json_angle(from_x(meas.solution.phi)),
         "angle_deg": json_angle(meas.mechanism.driver.file_angle(meas.solution.phi)),
-        "scales": {k: v for k, v in meas.mu.items() if k in meas.given},
+        "scales": {k: v for k, v in meas.mu.items() if k in meas.given} | _json_mu_F(meas),
         "tolerance": {"percent": result.tolerance.percent, "mm": result.tolerance.mm},
         "items": items,
         "ok": result.ok,

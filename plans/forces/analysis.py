@@ -34,8 +34,8 @@ from plans.geometry import cross
 from plans.model.loads import Loads
 from plans.model.mechanism import Mechanism
 from plans.model.structure import DyadKind, Group
-from plans.plan.solution import PlanLine, PlanPoint, PlanVector, Solution, Source
 from plans.plan.solution import Plan as VectorPlan
+from plans.plan.solution import PlanLine, PlanPoint, PlanVector, Solution, Source
 from plans.scales import choose_mu
 
 #: the force plan's longest vector is at most this long (mm) at the μF chosen
@@ -150,13 +150,26 @@ def _partner(mech: Mechanism, point: str, link: int, known: set[int]) -> int:
     raise ValueError(f"link {link} is not hinged to a known link at {point}")  # pragma: no cover
 
 
-def analyse(sol: Solution, loads: Loads, stroke: Stroke | None = None, mu_F: float | None = None) -> ForceAnalysis:
+def analyse(sol: Solution, loads: Loads, stroke: Stroke | None = None,
+            mu_F: float | None = None) -> ForceAnalysis:
     """The force analysis at the position of ``sol`` under ``loads``; ``stroke``: the
     working stroke (:func:`plans.forces.loads.stroke_of`), which a P(S) graph needs;
     ``mu_F``: one scale factor for every force plan (None: each its own standard value)."""
     mech, m = sol.mechanism, sol.scalar
     # a load that is exactly nothing here (the inertia force of a centre on the pivot) is left out
     external = [ld for ld in at_position(mech, loads, m, sol.phi, stroke) if ld.force != 0 or ld.moment != 0]
+    return analyse_loads(sol, external, stroke, mu_F)
+
+
+def analyse_loads(sol: Solution, external, stroke: Stroke | None = None, mu_F: float | None = None,
+                  motion=None) -> ForceAnalysis:
+    """The force analysis at the position of ``sol`` under the external loads ``external``
+    (:class:`plans.forces.loads.Load` s, as :func:`plans.forces.loads.at_position` gives
+    them, or changed: the check replays a student's mistake so), the groups solved at
+    ``motion`` (default the solution's own; the check passes the motion a student's plans
+    give)."""
+    mech = sol.mechanism
+    m = sol.scalar if motion is None else motion
     on: dict[int, list[Load]] = {lid: [] for lid in mech.links}
     for ld in external:
         on[ld.link].append(ld)
@@ -201,8 +214,8 @@ def walk(mech: Mechanism, groups, motion, on: dict[int, list[Load]]):
                 on[b.link].append(Load(b.name, "reaction", b.link, None, b.at, b.force, b.moment))
     d = mech.driver
     terms = [ld.term for ld in on[d.link]]
-    O = motion.position[d.pivot]
-    M_y, R01 = K.crank(O, K.resultant(terms), K.moment(terms, O))
+    pivot = motion.position[d.pivot]
+    M_y, R01 = K.crank(pivot, K.resultant(terms), K.moment(terms, pivot))
     return steps, M_y, R01
 
 
@@ -220,21 +233,24 @@ def _step(mech, m, g: Group, on, known) -> Step:
         P, C, Q = pos[g.P], pos[g.C], pos[g.Q]
         kP, kQ = _partner(mech, g.P, g.a, known), _partner(mech, g.Q, g.b, known)
         r = K.rrr(P, C, Q, Fa, K.moment(ta, C), Fb, K.moment(tb, C))
-        backs = (K.Back(kP, _name(g.a, kP), g.a, P, -r.R_P, 0.0), K.Back(kQ, _name(g.b, kQ), g.b, Q, -r.R_Q, 0.0))
+        backs = (K.Back(kP, _name(g.a, kP), g.a, P, -r.R_P, 0.0),
+                 K.Back(kQ, _name(g.b, kQ), g.b, Q, -r.R_Q, 0.0))
         return Step(g, r, {"P": P, "C": C, "Q": Q}, {g.P: kP, g.Q: kQ}, {g.a: A, g.b: B}, backs)
     if kind == DyadKind.RRP:
         P, C = pos[g.P], pos[g.C]
         kP, k = _partner(mech, g.P, g.a, known), g.s1.guide.link
         u = _direction(m, g.s1.guide)
         r = K.rrp(P, C, u, Fa, K.moment(ta, C), Fb, K.moment(tb, C))
-        backs = (K.Back(kP, _name(g.a, kP), g.a, P, -r.R_P, 0.0), K.Back(k, _name(g.b, k), g.b, C, -r.N, r.m_b))
+        backs = (K.Back(kP, _name(g.a, kP), g.a, P, -r.R_P, 0.0),
+                 K.Back(k, _name(g.b, k), g.b, C, -r.N, r.m_b))
         return Step(g, r, {"P": P, "C": C, "u": u}, {g.P: kP}, {g.a: A, g.b: B}, backs)
     if kind == DyadKind.RPR:
         P, Q = pos[g.P], pos[g.Q]
         kP, kQ = _partner(mech, g.P, g.a, known), _partner(mech, g.Q, g.b, known)
         u = m.links[g.b].rotor * g.s1.guide.direction
         r = K.rpr(P, Q, u, Fa, K.moment(ta, P), Fb, K.moment(tb, Q))
-        backs = (K.Back(kP, _name(g.a, kP), g.a, P, -r.R_P, 0.0), K.Back(kQ, _name(g.b, kQ), g.b, Q, -r.R_Q, 0.0))
+        backs = (K.Back(kP, _name(g.a, kP), g.a, P, -r.R_P, 0.0),
+                 K.Back(kQ, _name(g.b, kQ), g.b, Q, -r.R_Q, 0.0))
         return Step(g, r, {"P": P, "Q": Q, "u": u}, {g.P: kP, g.Q: kQ}, {g.a: A, g.b: B}, backs)
     if kind == DyadKind.PRP:
         C = pos[g.C]
@@ -253,7 +269,8 @@ def _step(mech, m, g: Group, on, known) -> Step:
     u = _direction(m, gout)
     B0 = m.links[k].pos(gout.point) if k else gout.point
     r = K.rpp(P, B0, us, u, Fa, K.moment(ta, P), Fb, K.moment(tb, B0))
-    backs = (K.Back(kP, _name(g.a, kP), g.a, P, -r.R_P, 0.0), K.Back(k, _name(g.b, k), g.b, B0, -r.N_kb, -r.couple))
+    backs = (K.Back(kP, _name(g.a, kP), g.a, P, -r.R_P, 0.0),
+             K.Back(k, _name(g.b, k), g.b, B0, -r.N_kb, -r.couple))
     return Step(g, r, {"P": P, "us": us, "u": u, "B0": B0}, {g.P: kP}, {g.a: A, g.b: B}, backs)
 
 
@@ -313,8 +330,10 @@ def _recorded(mech, step: Step, mu_F, sol) -> GroupForces:
         C, u1, u2 = geo["C"], geo["u1"], geo["u2"]
         g1, g2 = g.s1.guide, g.s2.guide
         _singular(r.sine, g, sol, f"the lines ⊥ {g1.label} and ⊥ {g2.label}")
-        R1 = Reaction(_name(g1.link, g.a), g1.link, g.a, "prismatic", None, _contact(C, u1, r.m_a, r.nu1), r.N1)
-        R2 = Reaction(_name(g2.link, g.b), g2.link, g.b, "prismatic", None, _contact(C, u2, r.m_b, r.nu2), r.N2)
+        R1 = Reaction(_name(g1.link, g.a), g1.link, g.a, "prismatic", None, _contact(C, u1, r.m_a, r.nu1),
+                      r.N1)
+        R2 = Reaction(_name(g2.link, g.b), g2.link, g.b, "prismatic", None, _contact(C, u2, r.m_b, r.nu2),
+                      r.N2)
         RC = Reaction(_name(g.b, g.a), g.b, g.a, "revolute", g.C, C, r.R_C)
         RCb = Reaction(_name(g.a, g.b), g.a, g.b, "revolute", g.C, C, -r.R_C)
         plan = _closed_plan([*_vectors(A), *_vectors(B)],
@@ -337,7 +356,8 @@ def _recorded(mech, step: Step, mu_F, sol) -> GroupForces:
 def _singular(sine, g: Group, sol: Solution, lines: str) -> None:
     if not abs(sine) > 1e-10:
         raise SingularPlanError(f"{g.label}: {lines} are parallel: the force plan has no unique solution "
-                                "at this position (a dead point)", sine=abs(sine), source=sol.mechanism.source)
+                                "at this position (a dead point)", sine=abs(sine),
+                                source=sol.mechanism.source)
 
 
 def _contact(X, u, m, nu):
@@ -429,7 +449,8 @@ def _closed_plan(known, last, first, sine, mu_F, wholes, inner, A) -> VectorPlan
     value = points[end].value + last[3]
     eq = " + ".join([v.label for v in vectors] + [last[0], first[0]]) + " = 0"
     lines = (PlanLine(end, last[1], last[2], last[0]), PlanLine(pole, first[1], first[2], first[0]))
-    points[meet] = PlanPoint(meet, value, Source("intersection", equation=eq, lines=lines, sine=float(abs(sine))))
+    points[meet] = PlanPoint(meet, value, Source("intersection", equation=eq, lines=lines,
+                                                 sine=float(abs(sine))))
     vectors += [PlanVector(end, meet, "closing", last[0]), PlanVector(meet, pole, "closing", first[0])]
     ends[last[0]] = (end, meet)
     ends[first[0]] = (meet, pole)
@@ -451,8 +472,10 @@ def _resultants(points, vectors, ends, wholes, inner, A, pole, meet):
         ends[r.name] = (a, b)
     # link a's loads run from the end of its first reaction's component on
     a_labels = [ld.name for ld in A if ld.force != 0]
-    start = ends[a_labels[-1]][1] if a_labels else (ends[wholes[0].name + "^τ"][1] if wholes[0].tangential is not None
-                                                     else pole)
+    if a_labels:
+        start = ends[a_labels[-1]][1]
+    else:
+        start = ends[wholes[0].name + "^τ"][1] if wholes[0].tangential is not None else pole
     vectors.append(PlanVector(start, meet, "reaction", inner.name))
     ends[inner.name] = (start, meet)
 
@@ -480,7 +503,8 @@ def _yoke_plan(b_vectors, outer, inner_b, a_vectors, RP, sine, mu_F) -> VectorPl
     value = points[end].value + outer[3]
     eq = " + ".join([v.label for v in vectors] + [outer[0], inner_b[0]]) + " = 0"
     lines = (PlanLine(end, outer[1], outer[2], outer[0]), PlanLine(pole, inner_b[1], inner_b[2], inner_b[0]))
-    points[meet] = PlanPoint(meet, value, Source("intersection", equation=eq, lines=lines, sine=float(abs(sine))))
+    points[meet] = PlanPoint(meet, value, Source("intersection", equation=eq, lines=lines,
+                                                 sine=float(abs(sine))))
     vectors += [PlanVector(end, meet, "closing", outer[0]), PlanVector(meet, pole, "closing", inner_b[0])]
     ends[outer[0]] = (end, meet)
     ends[inner_b[0]] = (meet, pole)
@@ -508,7 +532,8 @@ def residual(fa: ForceAnalysis) -> float:
                 if r.on == lid and r.at is not None:
                     terms.append((r.at, r.value, 0.0))
             worst = max(worst, abs(K.resultant(terms)), abs(K.moment(terms, 0j)))
-    terms = [ld.term for ld in fa.crank_loads] + [(fa.solution.positions[fa.mechanism.driver.pivot], fa.R01, fa.M_y)]
+    pivot = fa.solution.positions[fa.mechanism.driver.pivot]
+    terms = [ld.term for ld in fa.crank_loads] + [(pivot, fa.R01, fa.M_y)]
     worst = max(worst, abs(K.resultant(terms)), abs(K.moment(terms, 0j)))
     big = max([abs(ld.force) for ld in fa.loads] + [abs(ld.moment) for ld in fa.loads] + [1e-300])
     return worst / big
