@@ -19,7 +19,8 @@ from drawing.scene import INDEX_SIZE, Text, flatten
 from drawing.sheet.layout import LayoutError
 from drawing.sheet2 import NO_LOADS, build_sheet2, force_plans_at
 from drawing.svg import to_svg
-from drawing.views.forces import force_markup, polygon_equation, rays
+from drawing.views.arrows import rays
+from drawing.views.forces import force_markup, polygon_equation
 from drawing.views.lever import arm_numbers
 from plans.fmt import num
 from plans.model.loads import Loads, Mass

@@ -3,27 +3,27 @@ every load, each Assur group drawn apart with its loads and its unknown reaction
 driving link with its reactions and the balancing moment M_у, and each group's force plan
 (:func:`drawing.views.plans.vector_plan_view`, its vectors named by their forces).
 
-A force on a link is drawn as an arrow of one length (:data:`ARROW`) at its point: its
-line, its sense and where it acts, not its size, which the force plans give to scale.
-Where several forces act at one point, each is drawn leaving the point or arriving at it,
-whichever keeps it clearest of the links' bars and of the arrows drawn there before
-(:func:`ray`): a force along a bar arrives from outside rather than lies on the bar. A
-moment is an arc arrow round the link's centre of mass (an inertia moment written as a
-pair of forces, ``couples = "pair"``, is drawn as those two forces).
+A force on a link is drawn as an arrow of one length (:data:`drawing.views.arrows.ARROW`)
+at its point: its line, its sense and where it acts, not its size, which the force plans
+give to scale. Where several forces act at one point, each is drawn leaving the point or
+arriving at it, chosen together so that it keeps clear of the links' bars and of the other
+arrows there (:func:`drawing.views.arrows.rays`): a force along a bar arrives from outside
+rather than lies on the bar. A moment is an arc arrow round the link's centre of mass (an
+inertia moment written as a pair of forces, ``couples = "pair"``, is drawn as those two
+forces).
 """
 
 from __future__ import annotations
 
-import cmath
-import itertools
 import math
 import re
 from typing import NamedTuple
 
 from drawing.labels import LabelRequest
-from drawing.scene import Arrow, Circle, Group, Item, Polyline, Segment, shared_label
+from drawing.scene import Circle, Group, Item, Segment, shared_label
 from drawing.styles import LineType
-from drawing.views.common import HEAD, JOINT_R, LETTER, View, finish, shared_points
+from drawing.views.arrows import ARROW, arc_arrow, beside, compass, force_arrow, rays
+from drawing.views.common import JOINT_R, LETTER, View, finish, shared_points
 from drawing.views.plans import vector_plan_view
 from drawing.views.positions import (
     centre_of_mass,
@@ -39,16 +39,12 @@ from plans.fmt import num
 from plans.forces.lever import couple_pair, joints
 
 __all__ = [
-    "ARC_R",
-    "ARROW",
+    "FAR",
     "FORCE_WORDS",
     "UNDER",
     "Drawn",
-    "beside",
     "body_view",
-    "compass",
     "crank_view",
-    "force_arrow",
     "force_markup",
     "force_plan_view",
     "group_name",
@@ -56,14 +52,8 @@ __all__ = [
     "loads_drawn",
     "mechanism_view",
     "polygon_equation",
-    "rays",
 ]
 
-#: mm: a force's arrow on a link: its line and sense, not to scale
-ARROW = 14.0
-#: mm: the radius of a moment's arc arrow, and how far round it runs (degrees)
-ARC_R = 6.0
-ARC_SPAN = 270.0
 #: letters of the lines under a view of sheet 2: 3.5 mm, their indices 2.45 mm (GOST
 #: 2.304 allows no index under 1.8 mm, which 2.5 mm letters' 1.75 mm ones are)
 UNDER = 3.5
@@ -182,50 +172,6 @@ def _centre(mech, ld, pos) -> complex:
     return complex(sum(own) / len(own)) if own else complex(ld.at)
 
 
-def rays(bars: list[complex], guides: list[complex], directions: list[complex]) -> list[complex]:
-    """The ways the arrows of ``directions`` (unit, sheet) at one point run from it: each
-    ``d`` (it leaves the point) or ``-d`` (it arrives at it), chosen together so that no
-    arrow comes close in angle to a bar there, to another arrow (two alike are set side by
-    side, :data:`BESIDE`) or, less, to the ``guides`` (a thin line a force may lie on), and
-    then so that as many as may leave the point.
-
-    >>> [(r.real, r.imag) for r in rays([1 + 0j], [], [1 + 0j, 1j])]  # one arrives: not on the bar
-    [(-1.0, 0.0), (0.0, 1.0)]
-    >>> [r.real for r in rays([-1 + 0j], [], [1 + 0j, 1 + 0j])]  # two alike both leave, off the bar
-    [1.0, 1.0]
-    """
-    n = len(directions)
-    if n > 10:  # 1024 ways at most; beyond, each the clearer way from those before it
-        head = rays(bars, guides, directions[:10])
-        return head + [d if clear(bars + head, d) >= clear(bars + head, -d) else -d
-                       for d in directions[10:]]
-
-    def near(a: complex, b: complex) -> float:  # how close two rays are, 0 beyond 40°
-        return max(0.0, 40.0 - math.degrees(abs(cmath.phase(a / b)))) ** 2
-
-    best, chosen = None, list(directions)
-    for signs in itertools.product((1, -1), repeat=n):
-        out = [s * d for s, d in zip(signs, directions, strict=True)]
-        cost = (sum(near(r, b) for r in out for b in bars)
-                + 0.5 * sum(near(a, b) for i, a in enumerate(out) for b in out[i + 1:])
-                + 0.25 * sum(near(r, g) for r in out for g in guides))
-        score = (round(cost, 6), -sum(signs))
-        if best is None or score < best:
-            best, chosen = score, out
-    return chosen
-
-
-def clear(used: list[complex], r: complex) -> float:
-    """The smallest angle (rad) between the ray ``r`` and the rays ``used``."""
-    return min((abs(cmath.phase(r / u)) for u in used), default=math.pi)
-
-
-#: rad: an arrow closer than this in angle to a bar or an arrow at its point is moved
-#: :data:`BESIDE` mm aside, parallel to its line, so that it is seen
-CROWDED = math.radians(5.0)
-BESIDE = 2.5
-
-
 def _bars_at(mech, pos, links, name) -> tuple[list[complex], list[complex]]:
     """The directions (unit, sheet) of the bars of ``links`` that leave the point ``name``,
     and of the guide its block slides along (both ways)."""
@@ -335,7 +281,7 @@ def _forces(mech, pos, mu_l, links, drawn: list[Drawn], lang: str):
         p = to_sheet(d.at, mu_l)
         markup = force_markup(d.name, lang)
         if d.force == 0:
-            arc, anchor, prefer = _arc(p, d.moment, bars[i])
+            arc, anchor, prefer = arc_arrow(p, d.moment, bars[i])
             items.append(Group(tuple(arc), name=f"moment {d.name}"))
             labels.append(LabelRequest(anchor, markup, LETTER, prefer))
             continue
@@ -343,60 +289,6 @@ def _forces(mech, pos, mu_l, links, drawn: list[Drawn], lang: str):
         items.append(Group((arrow,), name=f"{d.kind} {d.name}"))
         labels.append(LabelRequest(far, markup, LETTER, compass(r)))
     return items, labels
-
-
-def beside(seen: list[complex], r: complex) -> float:
-    """How far aside (mm) an arrow on the ray ``r`` is drawn, parallel to its line: on a
-    bar or on an arrow drawn there before (``seen``), :data:`BESIDE` for each it would
-    hide itself behind."""
-    return BESIDE * sum(clear([q], r) < CROWDED for q in seen)
-
-
-def force_arrow(p, u: complex, r: complex, aside: float, gap: float) -> tuple[Arrow, tuple[float, float]]:
-    """The arrow (:data:`ARROW` long) of a force of direction ``u`` (unit, sheet) at the
-    point ``p``, on the ray ``r`` (``u``: it leaves the point; ``-u``: it arrives), ``gap``
-    mm off the point and ``aside`` mm to the ray's left; and its far end, where its name
-    goes."""
-    side = complex(-r.imag, r.real) * aside
-    near = (p[0] + gap * r.real + side.real, p[1] + gap * r.imag + side.imag)
-    far = (p[0] + (gap + ARROW) * r.real + side.real, p[1] + (gap + ARROW) * r.imag + side.imag)
-    ends = (near, far) if abs(r - u) < 1e-9 else (far, near)
-    return Arrow(*ends, LineType.MAIN, **HEAD), far
-
-
-def compass(d: complex) -> str:
-    """The compass direction (on the sheet, y down) nearest to ``d``: where a label at the
-    end of an arrow running that way goes.
-
-    >>> compass(1 + 0j), compass(-1j)
-    ('e', 'n')
-    """
-    ang = math.degrees(math.atan2(-d.imag, d.real)) % 360
-    return ("e", "ne", "n", "nw", "w", "sw", "s", "se")[int(((ang + 22.5) % 360) // 45)]
-
-
-def _arc(p, moment: float, rays: list[complex]):
-    """An arc arrow of radius :data:`ARC_R` round ``p`` (sheet) in the sense of ``moment``
-    (counter-clockwise positive, as on the sheet too), its gap on the first bar there;
-    with where its label goes and which way."""
-    sense = 1.0 if moment > 0 else -1.0
-    gap = cmath.phase(complex(rays[0].real, -rays[0].imag)) if rays else math.pi / 2  # world angle
-    start = gap + sense * math.radians((360.0 - ARC_SPAN) / 2)
-    head = 3.5 / ARC_R  # the head's chord, in radians of the arc
-
-    def at(t):  # world angle → sheet point
-        return (p[0] + ARC_R * math.cos(t), p[1] - ARC_R * math.sin(t))
-
-    span = math.radians(ARC_SPAN)
-    pts = [at(start + sense * span * k / 40) for k in range(41)]
-    end = start + sense * span
-    body = [q for k, q in enumerate(pts) if sense * span * k / 40 <= span - head + 1e-9]
-    items: list[Item] = [Polyline(body, LineType.MAIN),
-                         Arrow(at(end - sense * head), at(end), LineType.MAIN, **HEAD)]
-    mid = start + sense * span / 2
-    anchor = at(mid)
-    out = complex(math.cos(mid), -math.sin(mid))
-    return items, anchor, compass(out)
 
 
 def _mu_l(mu_l: float, lang: str) -> str:

@@ -15,8 +15,9 @@ import math
 from drawing.labels import LabelRequest
 from drawing.scene import Arrow, Circle, Group, Item, Segment, shared_label
 from drawing.styles import LineType
+from drawing.views.arrows import ARROW, beside, compass, force_arrow, rays
 from drawing.views.common import HEAD, LETTER, View, finish, per_mm, shared_points
-from drawing.views.forces import ARROW, UNDER, beside, compass, force_arrow, force_markup, rays
+from drawing.views.forces import UNDER, force_markup
 from plans.fmt import num
 from plans.plan.solution import plan_name
 
