@@ -87,11 +87,17 @@ TITLE_FLOOR = 1.8
 POSITIONS = (3, 72)
 
 
-def title_fields(mech, pairs, scale: str, lang: str = "ru") -> dict[str, str]:
+def title_fields(mech, pairs, scale: str, lang: str = "ru", numbers: tuple[str, str] | None = None,
+                 subtitle: str = "") -> dict[str, str]:
     """The title block's fields: the file's [title], then --title-block over them. Two
     names of one field given different values in one place ("university" and
-    "organisation") are refused: neither is dropped without a word."""
+    "organisation") are refused: neither is dropped without a word. ``numbers``: the
+    sheet's number and the count of sheets (fields 7 and 8) where several are drawn,
+    under what the file and the options give; ``subtitle``: what the sheet shows, after
+    the name in field 1 ("… . Силовой анализ")."""
     out = {"name": mech.name_in(lang), "scale": scale}
+    if numbers is not None:
+        out["sheet"], out["sheets"] = numbers
     for where, items in ((mech.source, list((mech.title or {}).items())),
                          ("--title-block", title_pairs(pairs))):
         given: dict[str, tuple[str, str]] = {}
@@ -105,6 +111,8 @@ def title_fields(mech, pairs, scale: str, lang: str = "ru") -> dict[str, str]:
                                         f"both fill the title block's {key}: give one")
             given[key] = (k, str(v))
         out.update({key: v for key, (_, v) in given.items()})
+    if subtitle:
+        out["name"] = f"{out['name']}. {subtitle}" if out["name"] else subtitle
     return out
 
 
@@ -119,9 +127,11 @@ def title_pairs(pairs) -> list[tuple[str, str]]:
     return out
 
 
-def title_block(mech, sheet, title, scale: str, lang: str):
-    """The title block, each entry in letters of at least TITLE_FLOOR mm."""
-    fields = title_fields(mech, title, scale, lang)
+def title_block(mech, sheet, title, scale: str, lang: str, numbers: tuple[str, str] | None = None,
+                subtitle: str = ""):
+    """The title block, each entry in letters of at least TITLE_FLOOR mm (``numbers``,
+    ``subtitle``: :func:`title_fields`)."""
+    fields = title_fields(mech, title, scale, lang, numbers, subtitle)
     tb = TitleBlock(**fields)
     named = {FIELDS.get(k.lower()): (k, "--title-block") for k, _ in title_pairs(title)}
     for k in (mech.title or {}):
@@ -156,13 +166,15 @@ def parse_plans(text: str | None, n: int) -> list[int] | None:
 
 
 def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
-                plans: list[int] | None = None, title: list[str] = ()):
-    """(scene, sheet, info) for ``mech``; info holds the solutions drawn."""
+                plans: list[int] | None = None, title: list[str] = (),
+                numbers: tuple[str, str] | None = None):
+    """(scene, sheet, info) for ``mech``; info holds the solutions drawn. ``numbers``:
+    the sheet's number and the count of sheets, where both sheets are drawn ("1", "2")."""
     if not POSITIONS[0] <= n_positions <= POSITIONS[1]:  # called from Python, not argparse
         raise InputError("--positions", f"give {POSITIONS[0]} to {POSITIONS[1]} positions, "
                          f"got {n_positions}")
     sheet = Sheet(fmt)
-    title_block(mech, sheet, title, "", lang)  # refused before the views are fitted
+    title_block(mech, sheet, title, "", lang, numbers)  # refused before the views are fitted
     solver = Solver(mech)
     cycle = analyse_cycle(mech, n_positions, solver=solver)
     chosen = parse_plans(None if plans is None else ",".join(map(str, plans)), len(cycle.positions))
@@ -179,7 +191,7 @@ def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
                                 sine=exc.sine, source=exc.source) from None
     sheet_ = Sheet1(mech, sheet, solver, cycle, chosen, lang, fixed, given, mu0)
     mu, placed = sheet_.fill()  # every μ: the file's and those chosen
-    return compose(mech, sheet, cycle, mu, lang, title, placed, sheet_.titled(mu))
+    return compose(mech, sheet, cycle, mu, lang, title, placed, sheet_.titled(mu), numbers)
 
 
 class AnySize(NamedTuple):
@@ -407,11 +419,11 @@ def one_title_size(sheet, placed: list, together=()) -> list:
     return [Placed(v, Rect(x, y, v.w, v.h)) for v, (x, y) in zip(views, spots, strict=True)]
 
 
-def compose(mech, sheet, cycle, mu, lang, title, placed, sols):
+def compose(mech, sheet, cycle, mu, lang, title, placed, sols, numbers=None):
     """(scene, sheet, info): the views ``placed`` in the frame with the title block, its
-    scale that of the given position at ``mu``."""
+    scale that of the given position at ``mu`` (``numbers``: :func:`title_fields`)."""
     given = solve_position(mech, solver=sols[0][2].solver, mu=mu)
-    tb = title_block(mech, sheet, title, gost_scale(given.mu_l, lang), lang)
+    tb = title_block(mech, sheet, title, gost_scale(given.mu_l, lang), lang, numbers)
     scene = frame_scene(sheet, tb, lang=lang)
     scene = scene + Scene((Layer("views", tuple(p.group() for p in placed)),))
     return scene, sheet, {"solutions": sols, "given": given, "cycle": cycle, "placed": placed}
@@ -435,10 +447,11 @@ def sparse_note(mech, sheet, placed) -> str | None:
 
 
 def render(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
-           plans: list[int] | None = None, title: list[str] = ()) -> tuple[str, dict]:
+           plans: list[int] | None = None, title: list[str] = (),
+           numbers: tuple[str, str] | None = None) -> tuple[str, dict]:
     """(the SVG of sheet 1 of ``mech``, what :func:`build_sheet` tells of it, with the
     ``sheet`` it is drawn on and the ``scene`` drawn, which the DXF is written from)."""
-    scene, sheet, info = build_sheet(mech, fmt, lang, n_positions, plans, title)
+    scene, sheet, info = build_sheet(mech, fmt, lang, n_positions, plans, title, numbers)
     return to_svg(scene, sheet, title=mech.name_in(lang)), dict(info, sheet=sheet, scene=scene)
 
 

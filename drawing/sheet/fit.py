@@ -67,13 +67,19 @@ class Fit:
     ``fixed`` are the views no free factor sizes; ``factors`` gives
     each free factor's candidates, largest views first, with the size of its views at
     each (as a multiple of the engine's default size); ``order``, the views' names in
-    the order they are packed (the plan of positions first: top left where it fits).
+    the order they are packed (the plan of positions first: top left where it fits);
+    ``lettered``, the factors beyond :data:`LETTERED` whose views are sized drawn without
+    their letters.
     """
 
     def __init__(self, sheet, factors: list[tuple[str, list[float], list[float]]], draw,
-                 fixed: list, order: list[str], plain: set[str] = frozenset()):
+                 fixed: list, order: list[str], plain: set[str] = frozenset(),
+                 lettered: tuple[str, ...] = ()):
         self.sheet, self.factors, self.draw, self.fixed = sheet, factors, draw, fixed
         self.plain = plain  # the factors that only change a view's shape: the first that packs
+        #: the factors whose views are sized drawn without their letters: LETTERED, and
+        #: the sheet's own (sheet 2's force plans)
+        self.lettered = LETTERED + tuple(lettered)
         self.order = order  # the views' names in the order they are packed
         self._drawn: dict[tuple[str, float], list] = {}
         self._names: dict[str, list[str]] = {}
@@ -93,7 +99,7 @@ class Fit:
         that scale, marks that do not), so the straight line between the two is never
         under it; the caption and the equations do not scale."""
         def drawn(value):
-            got = self.draw(key, value, sizing=True) if key in LETTERED else self.views(key, value)
+            got = self.draw(key, value, sizing=True) if key in self.lettered else self.views(key, value)
             self._names[key] = [v.name for v in got]
             return got
 

@@ -1,7 +1,9 @@
 """The views of a sheet, each built in its own box of sheet millimetres: the plan of
 positions (:mod:`.positions`), the vector plans (:mod:`.plans`), the kinematic diagrams
 (:mod:`.diagrams`), the tables and the note (:mod:`.tables`), on what they share
-(:mod:`.common`)."""
+(:mod:`.common`); sheet 2's, the force analysis: the mechanism, the groups and the force
+plans (:mod:`.forces`, their arrows :mod:`.arrows`), Zhukovsky's lever (:mod:`.lever`),
+M_у(φ) and P(S) (:mod:`.force_diagrams`) and their tables (:mod:`.force_tables`)."""
 
 from .common import (
     BLANK_PAD,

@@ -240,17 +240,18 @@ def finish(
     pad: float = PAD,
     over: list[Item] = (),
     sizing: bool = False,
+    under_size: float = 2.5,
 ) -> View:
     """Frame ``drawing`` with room for its labels, letter it, caption on top,
-    ``under`` (equations) below; shift everything to the box (0, 0)–(w, h). ``over``:
-    thin lines that no break cuts (a dimension's own arc), drawn after the breaks.
-    ``sizing``: no letters placed, the view as large as they could make it (they stay
-    within ``pad`` of the drawing), for a sheet that tries many scales."""
+    ``under`` (equations) below in ``under_size`` mm letters; shift everything to the box
+    (0, 0)–(w, h). ``over``: thin lines that no break cuts (a dimension's own arc), drawn
+    after the breaks. ``sizing``: no letters placed, the view as large as they could make
+    it (they stay within ``pad`` of the drawing), for a sheet that tries many scales."""
     drawing = list(drawing)
     x0, y0, x1, y1 = bbox(drawing + list(over))
     region = shp_box(x0 - pad, y0 - pad, x1 + pad, y1 + pad)
     if sizing:
-        return captioned(name, list(drawing) + list(over), region.bounds, caption, under)
+        return captioned(name, list(drawing) + list(over), region.bounds, caption, under, under_size)
     thin = (LineType.THIN, LineType.DASHED, LineType.DASH_DOUBLE_DOT_THIN)
     is_soft = [isinstance(it, Segment | Polyline) and it.line in thin for it in drawing]
     drawing += over
@@ -272,7 +273,7 @@ def finish(
         drawing = ([it for it, s in zip(drawing, is_soft, strict=True) if s] + blanks
                    + [it for it, s in zip(drawing, is_soft, strict=True) if not s])
     items = list(drawing) + texts
-    return captioned(name, items, bbox(items), caption, under)
+    return captioned(name, items, bbox(items), caption, under, under_size)
 
 
 def _leader(point, end) -> Segment:
@@ -283,14 +284,18 @@ def _leader(point, end) -> Segment:
     return Segment(start, end, LineType.THIN)
 
 
-def captioned(name: str, items: list[Item], bounds, caption: str, under: list[str]) -> View:
-    """The view of ``items`` (within ``bounds``) under ``caption``, ``under`` below."""
+def captioned(name: str, items: list[Item], bounds, caption: str, under: list[str],
+              under_size: float = 2.5) -> View:
+    """The view of ``items`` (within ``bounds``) under ``caption``, ``under`` below in
+    ``under_size`` mm letters (2.5: the sheet's equations; 3.5 keeps their indices at
+    GOST 2.304's 1.8 mm or more), each line 3 mm under the one above."""
     x0, _y0, _x1, y1 = bounds
     lines = []
     y = y1 + 2.0
     for line in under:
-        y += 3.5 + 2.0
-        lines.append(Text((x0, y), notation(line), size=2.5, markup=True, baseline="alphabetic"))
+        y += under_size + 3.0
+        lines.append(Text((x0, y), notation(line), size=under_size, markup=True,
+                          baseline="alphabetic"))
     return assembled(name, (items, lines), bounds, caption, "fit")
 
 

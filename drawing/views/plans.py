@@ -17,13 +17,16 @@ end and closed by two lines of known direction):
 * ``plan.mu``: the scale (the plan's unit per mm): one sheet millimetre per plan mm.
 
 Nothing else is read: the caption, the ids of the vectors (``prefix``) and the sides of
-the links' images a similarity point was found on (``sides``, optional) are given.
+the links' images a similarity point was found on (``sides``, optional) are given, and so
+may be the lines under the plan (a force plan's equation written as its sheet writes the
+forces' names) and how each vector's ``label`` is written beside it (``named``: a force
+plan names its forces, G₄, R₃₄, where its points' letters say little).
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 from drawing.labels import LabelRequest
 from drawing.scene import Arrow, Circle, Group, Item, Segment, shared_label
@@ -32,7 +35,7 @@ from drawing.views.common import HEAD, LETTER, WORDS, View, finish, per_mm, shar
 from plans.fmt import notation_in, num
 from plans.plan.solution import image_sides
 
-__all__ = ["plan_view", "vector_plan_view"]
+__all__ = ["NAME_MM", "plan_view", "vector_plan_view"]
 
 def _plan_xy(value: complex, mu: float) -> tuple[float, float]:
     z = value / mu
@@ -56,14 +59,19 @@ def plan_view(sol, kind: str, tag: str, lang: str = "ru", label: str | None = No
 
 
 def vector_plan_view(plan, name: str, caption: str, prefix: str, tag: str, lang: str = "ru",
-                     sides: Sequence[tuple[complex, complex]] = (), sizing: bool = False) -> View:
+                     sides: Sequence[tuple[complex, complex]] = (), sizing: bool = False,
+                     under: Sequence[str] | None = None, under_size: float = 2.5,
+                     named: Callable[[str], str] | None = None) -> View:
     """The view ``name`` of ``plan`` (the protocol of this module) at one sheet mm per plan
     mm under ``caption``: the construction lines of its intersections thin, ``sides``
     (pairs of values: the links' images its similarity points were found on) thin, its
     vectors heavy, each a group of class ``vec PREFIX-STARTEND-TAG`` (``vec v-pa3-1``) so
     that its length can be measured on the SVG, the pole a dot, the points lettered (those
     that coincide share one label, the pole first), the equations of the intersections
-    under it in ``lang``."""
+    under it in ``lang`` (or the lines ``under``, in ``under_size`` mm letters).
+    ``named``: each vector's label as markup (``"R34^τ"`` → ``"R^τ_{34}"``), written
+    beside its vector (one of :data:`NAME_MM` or longer), off the vectors, on the side
+    away from the plan's middle."""
     mu = plan.mu
     pts = {n: _plan_xy(p.value, mu) for n, p in plan.points.items()}
     pts.setdefault(plan.pole, (0.0, 0.0))
@@ -106,8 +114,41 @@ def vector_plan_view(plan, name: str, caption: str, prefix: str, tag: str, lang:
         prefer = ("e", "ne", "n", "nw", "w", "sw", "s", "se")[int(((ang + 22.5) % 360) // 45)]
         reqs.append(LabelRequest(xy, shared_label(names, plan.pole), LETTER, prefer,
                                  blank=True, cross=False))
+    if named is not None:
+        reqs += _vector_names(plan, pts, named, (cx, cy))
     eqs: list[str] = []
     for p in plan.points.values():
         if p.source.kind == "intersection" and p.source.equation:
             eqs.append(notation_in(p.source.equation, lang))
-    return finish(name, items, reqs, caption, eqs, sizing=sizing)
+    return finish(name, items, reqs, caption, eqs if under is None else list(under),
+                  sizing=sizing, under_size=under_size)
+
+
+#: where along a vector its name may stand, in order of preference: its middle first
+NAME_AT = (0.5, 0.35, 0.65, 0.2, 0.8)
+#: mm: a vector shorter than this is not named: its name would stand beside another
+#: vector as much as beside it; its points' letters, in the order of the plan's equation,
+#: say which it is
+NAME_MM = 6.0
+
+
+def _vector_names(plan, pts, named, centre) -> list[LabelRequest]:
+    """A label for each vector of ``plan`` of :data:`NAME_MM` or longer: ``named(label)``
+    beside it, anchored along it (:data:`NAME_AT`), on the side of it away from
+    ``centre``."""
+    out = []
+    compass = ("e", "ne", "n", "nw", "w", "sw", "s", "se")
+    for v in plan.vectors:
+        (x1, y1), (x2, y2) = pts[v.start], pts[v.end]
+        if math.dist((x1, y1), (x2, y2)) < NAME_MM:
+            continue
+        along = [(x1 + t * (x2 - x1), y1 + t * (y2 - y1)) for t in NAME_AT]
+        mx, my = along[0]
+        nx, ny = -(y2 - y1), x2 - x1  # across the vector, to the side away from the middle
+        if nx * (mx - centre[0]) + ny * (my - centre[1]) < 0:
+            nx, ny = -nx, -ny
+        ang = math.degrees(math.atan2(-ny, nx)) % 360
+        prefer = compass[int(((ang + 22.5) % 360) // 45)]
+        out.append(LabelRequest(along[0], named(v.label), LETTER, prefer, also=tuple(along[1:]),
+                                blank=True, cross=False))
+    return out

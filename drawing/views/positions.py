@@ -28,7 +28,9 @@ __all__ = [
     "guide_slots",
     "link_segments",
     "positions_view",
+    "slider_block",
     "slot_segments",
+    "support",
     "swing_arc",
     "swing_point",
     "to_sheet",
@@ -99,7 +101,7 @@ def _hull(points: list[complex]) -> list[complex]:
     return hull if len(hull) >= 3 else []
 
 
-def _block(center: tuple[float, float], direction: complex, line: LineType,
+def slider_block(center: tuple[float, float], direction: complex, line: LineType,
            w: float = 8.0, h: float = 5.0) -> Polyline:
     """A slider / slide block: a small rectangle along ``direction`` (model)."""
     ux, uy = direction.real, -direction.imag
@@ -189,7 +191,7 @@ def slot_segments(mech, slots, pos, mu_l: float, line: LineType) -> list[Item]:
     return out
 
 
-def _support(xy: tuple[float, float]) -> list[Item]:
+def support(xy: tuple[float, float]) -> list[Item]:
     """A fixed pivot: a small triangle standing on a hatched base."""
     x, y = xy
     return [
@@ -269,11 +271,11 @@ def positions_view(sol, cycle, lang: str = "ru", sizing: bool = False,
                 items.append(Circle(to_sheet(pos[n], mu_l), 0.6, LineType.MAIN, fill="black"))
         for s in mech.sliders:
             if s.point in pos:
-                items.append(_block(to_sheet(pos[s.point], mu_l), guide_dir(mech, s, pos),
+                items.append(slider_block(to_sheet(pos[s.point], mu_l), guide_dir(mech, s, pos),
                                     LineType.MAIN))
     pos = main[0]  # the one lettered
     for name in mech.frame:
-        items += _support(to_sheet(pos[name], mu_l))
+        items += support(to_sheet(pos[name], mu_l))
     # the joints (points of two links or more) are the mechanism's: found once, ringed
     # in each heavy position
     joints = sorted({n for link in mech.links.values() for n in link.points

@@ -29,7 +29,7 @@ COMMANDS = {
     "solve": ("plans.cli.solve", "positions and both plans for one crank position"),
     "report": ("plans.cli.report", "the explanatory-note text, step by step (Markdown)"),
     "cycle": ("plans.cli.cycle", "every point and link over N crank positions"),
-    "sheet": ("plans.cli.sheet", "drawing sheet 1 as SVG (ESKD frame and title block)"),
+    "sheet": ("plans.cli.sheet", "drawing sheets as SVG: 1 the kinematics, 2 the force analysis"),
     "forces": ("plans.cli.forces", "force analysis: loads, force plans, Zhukovsky's lever, the drive"),
     "cam": ("plans.cli.cam", "a cam: motion laws, base circle, profile, the cam sheet"),
     "check": ("plans.cli.check", "check a hand-drawn plan against the computed one"),

@@ -1,14 +1,19 @@
 """``plans sheet``: drawing sheet 1 (plan of positions, velocity and acceleration
-plans, kinematic diagrams, tables) as one SVG in real millimetres.
+plans, kinematic diagrams, tables) and sheet 2 (the force analysis), each as one SVG in
+real millimetres.
 
     plans sheet samples/press.toml --format A2 -o press.svg
     plans sheet --variant 3 --format A2 --lang en --plans 1,4 -o v3.svg --png v3.png
+    plans sheet samples/press.toml --sheet 2 -o press-2.svg
+    plans sheet samples/press.toml --sheet 1,2 -o press.svg   # press.svg and press-2.svg
     plans sheet --variant all -o sheets/      # one sheet per variant
     plans sheet samples/press.toml -o press.svg --dxf press.dxf   # and for a CAD program
 
-The sheet is built by :mod:`drawing.sheet1`; this module is the command around it: its
-options, the files it writes (all rendered before the first is written) and the batch of
-a whole table of variants.
+The sheets are built by :mod:`drawing.sheet1` and :mod:`drawing.sheet2`; this module is
+the command around them: its options, the files it writes (all rendered before the first
+is written: both sheets, their pictures and the note, or none) and the batch of a whole
+table of variants. Where both sheets are drawn, each file option names sheet 1's file
+and sheet 2's goes beside it, its name's stem ending in "-2" (:func:`beside`).
 """
 
 from __future__ import annotations
@@ -21,6 +26,8 @@ from drawing import dxf, export
 from drawing.sheet.layout import LayoutError
 from drawing.sheet1 import FIELDS, POSITIONS, plain_titles, sparse_note
 from drawing.sheet1 import render as render_sheet
+from drawing.sheet2 import needs_loads
+from drawing.sheet2 import render as render_sheet2
 from plans.cli.common import (
     EXIT_INPUT,
     EXIT_OK,
@@ -29,16 +36,22 @@ from plans.cli.common import (
     mechanism_from,
     number,
     picture_names,
+    same_file,
     warn,
 )
 from plans.cycle.analysis import outside_range
 from plans.errors import AssemblyError, InputError, PlansError
+from plans.forces.note import force_note
 from plans.model.variants import read_table
 from plans.note.report import note
 
 
 def configure(p) -> None:
     add_source(p, allow_all=True)
+    p.add_argument("--sheet", default="1", metavar="1|2|1,2|all",
+                   help="which sheet: 1 the kinematics (default), 2 the force analysis (needs "
+                        "[loads]), 1,2 or all both: then -o, --png and --pdf name sheet 1's files "
+                        "and sheet 2's go beside them, NAME-2.svg")
     p.add_argument("-o", "--output", metavar="OUT.svg",
                    help="SVG file, '-' for stdout, or a folder with --variant all (default: stdout)")
     p.add_argument("--format", default="A1", choices=["A0", "A1", "A2", "A3", "A4"],
@@ -65,9 +78,40 @@ def configure(p) -> None:
                    help="PNG resolution, 10 to 600 (default 100)")
 
 
-def render(mech, args) -> tuple[str, str | None, bytes | None]:
-    """(the sheet's SVG, its explanatory note or None when --note is not asked for, its
-    DXF or None when --dxf is not asked for)."""
+#: what --sheet takes
+SHEETS = {"1": (1,), "2": (2,), "1,2": (1, 2), "2,1": (1, 2), "all": (1, 2)}
+
+
+def sheets_of(text: str) -> tuple[int, ...]:
+    """--sheet's sheets, in order: "1", "2", "1,2" or "all".
+
+    >>> sheets_of("2"), sheets_of(" 1, 2 "), sheets_of("ALL")
+    ((2,), (1, 2), (1, 2))
+    """
+    got = SHEETS.get(text.replace(" ", "").lower())
+    if got is None:
+        raise InputError("--sheet", f"{text!r}: give 1 (the kinematics), 2 (the force analysis), "
+                         "1,2 or all (both)")
+    return got
+
+
+def beside(path: str | None, n: int = 2) -> str | None:
+    """The name of sheet ``n``'s file beside sheet 1's ``path``: its stem ending in "-n",
+    in the same folder, with the same ending.
+
+    >>> beside("out/press.svg"), beside("press.PNG"), beside("sheet"), beside(None)
+    ('out/press-2.svg', 'press-2.PNG', 'sheet-2', None)
+    """
+    if path is None:
+        return None
+    p = Path(path)
+    return str(p.with_name(f"{p.stem}-{n}{p.suffix}"))
+
+
+def render(mech, args, numbers: tuple[str, str] | None = None) -> tuple[str, str | None, dict]:
+    """(sheet 1's SVG, its explanatory note or None when --note is not asked for, what
+    :func:`drawing.sheet1.render` tells of it); ``numbers``: the sheet's number and the
+    count of sheets, where both are drawn."""
     plans = None
     if args.plans is not None:
         plans = [int(t) for t in args.plans.split(",") if t.strip()] if all(
@@ -76,7 +120,7 @@ def render(mech, args) -> tuple[str, str | None, bytes | None]:
             raise InputError("--plans", f"{args.plans!r} is not a list of position numbers like 1,4")
     try:
         svg, info = render_sheet(mech, args.format, args.lang, args.positions, plans,
-                                 args.title_block)
+                                 args.title_block, numbers)
     except LayoutError as exc:  # named by its file (or its table's variant), not an option
         raise InputError(mech.source, str(exc)) from None
     except AssemblyError as exc:  # an angle where it does not assemble: which, and where it does
@@ -95,29 +139,96 @@ def render(mech, args) -> tuple[str, str | None, bytes | None]:
         # the structure and μl from the given position; with --plans the plan of
         # positions draws theirs heavy, and the note says so and gives their segments
         text = note(info["given"], args.lang, info["cycle"], titles if sols[0][0] != "g" else ())
-    drawn = None
-    if getattr(args, "dxf", None) is not None:  # from the scene the SVG was written from
-        drawn = dxf.to_dxf(info["scene"], info["sheet"], title=mech.name_in(args.lang),
-                           lang=args.lang)
-    return svg, text, drawn
+    return svg, text, info
 
 
-def _write(rendered: tuple[str, str | None, bytes | None], args) -> None:
-    """The SVG, and the note, PNG, PDF and DXF asked for: all rendered before the first
-    is written, so that a failed export leaves every existing output as it was."""
-    svg, text, drawn = rendered
-    files: list[tuple[str | None, str | bytes]] = [(args.output, svg)]
+def render2(mech, args, numbers: tuple[str, str], beside_: dict[str, float] | None) -> tuple[str, dict]:
+    """(sheet 2's SVG, what :func:`drawing.sheet2.render` tells of it); ``beside_``: sheet
+    1's μv and μa where it is drawn too."""
+    try:
+        svg, info = render_sheet2(mech, args.format, args.lang, args.positions, args.title_block,
+                                  numbers, beside_)
+    except LayoutError as exc:
+        raise InputError(mech.source, str(exc)) from None
+    except AssemblyError as exc:
+        raise outside_range(mech, exc, *angle_field(args, mech)) from None
+    if info["sparse"] is not None:
+        print(f"plans sheet: note: {mech.source}: sheet 2: {info['sparse']}", file=sys.stderr)
+    return svg, info
+
+
+def render_all(mech, args, sheets: tuple[int, ...]) -> list[tuple[str | None, str | bytes]]:
+    """Every file of the run as (path, data): the sheets asked for, the note, PNGs and
+    PDFs, all rendered before the first is written, so that a failed export leaves every
+    existing output as it was. Sheet 2's files go :func:`beside` sheet 1's where both are
+    drawn."""
+    both = len(sheets) == 2
+    files: list[tuple[str | None, str | bytes]] = []
+    text = None
+    besides = None
+    if 1 in sheets:
+        svg, text, info = render(mech, args, ("1", "2") if both else None)
+        files += _pictures(svg, args.output, args.png, args.pdf, args)
+        if getattr(args, "dxf", None):  # from the scene the SVG was written from
+            files.append((args.dxf, dxf.to_dxf(info["scene"], info["sheet"], title=mech.name_in(args.lang),
+                                               lang=args.lang)))
+        given = info["given"]
+        besides = {"mu_v": given.velocity.mu, "mu_a": given.acceleration.mu}
+    if 2 in sheets:
+        svg2, info2 = render2(mech, args, ("2", "2"), besides)
+        if 1 not in sheets or args.plans is not None:  # a plan near a dead point is said so once
+            for w in info2["solution"].warnings:
+                warn("sheet", w, mech.source)
+        names = (beside(args.output), beside(args.png), beside(args.pdf)) if both else (
+            args.output, args.png, args.pdf)
+        files += _pictures(svg2, *names, args)
+        if getattr(args, "dxf", None):
+            drawn = dxf.to_dxf(info2["scene"], info2["sheet"], title=mech.name_in(args.lang), lang=args.lang)
+            files.append((beside(args.dxf) if both else args.dxf, drawn))
+        if getattr(args, "note", None):
+            forces = info2["forces"]
+            if text is None:  # the note of the position sheet 2 draws, then its forces
+                text = note(info2["solution"], args.lang, info2["cycle"])
+            section = sum(line.startswith("## ") for line in text.splitlines()) + 1
+            text = text.rstrip("\n") + "\n\n" + force_note(forces, args.lang, section)
     if text is not None:
         files.append((args.note, text))
-    if drawn is not None:
-        files.append((args.dxf, drawn))
-    if args.png or args.pdf:
-        if args.png:
-            files.append((args.png, export.png_bytes(svg, dpi=args.dpi)))
-        if args.pdf:
-            files.append((args.pdf, export.pdf_bytes(svg)))
+    return files
+
+
+def _pictures(svg: str, output, png, pdf, args) -> list[tuple[str | None, str | bytes]]:
+    """A sheet's SVG at ``output``, and its PNG and PDF where asked for."""
+    out: list[tuple[str | None, str | bytes]] = [(output, svg)]
+    if png:
+        out.append((png, export.png_bytes(svg, dpi=args.dpi)))
+    if pdf:
+        out.append((pdf, export.pdf_bytes(svg)))
+    return out
+
+
+def _write(files: list[tuple[str | None, str | bytes]], args) -> None:
     for path, data in files:
         args.run_files.write(path, data)
+
+
+def _check_second(args, sheets: tuple[int, ...]) -> None:
+    """Refuse, before anything is computed, what sheet 2's files beside sheet 1's could
+    not be: stdout (two sheets are two files), a file of the run's own, or one another's."""
+    if len(sheets) < 2:
+        return
+    if args.output in (None, "-"):
+        raise InputError("-o", "two sheets are two files: give -o NAME.svg (sheet 2 is written "
+                         "beside it as NAME-2.svg)")
+    second = copy.copy(args)
+    second.output, second.png, second.pdf, second.note = (beside(args.output), beside(args.png),
+                                                          beside(args.pdf), None)
+    second.dxf = beside(getattr(args, "dxf", None) or None)
+    args.run_files.check(second)
+    firsts = [getattr(args, a) for a in ("output", "png", "pdf", "note", "dxf") if getattr(args, a, None)]
+    for path in (second.output, second.png, second.pdf, second.dxf):
+        if path and any(same_file(path, other) for other in firsts):
+            raise InputError("command line", f"{path} is both sheet 2's file (beside sheet 1's) and "
+                             "another output: give them other names")
 
 
 #: the option (and its attribute) that writes each picture format
@@ -126,22 +237,36 @@ PICTURES = {".svg": ("-o", "output"), ".png": ("--png", "png"), ".pdf": ("--pdf"
 
 
 def run(args) -> int:
+    sheets = sheets_of(args.sheet)
     if str(args.variant).strip().lower() == "all" and args.file is None:
-        return _batch(args)
+        return _batch(args, sheets)
     if args.dxf == "":
         raise InputError("--dxf", "give the DXF's file name: --dxf FILE (--dxf alone is for "
                          "--variant all, which writes each DXF beside its SVG)")
     picture_names(args, PICTURES)  # x.png given to -o would hold SVG text
+    _plans_need_sheet_1(args, sheets)
     mech = mechanism_from(args)
+    _check_second(args, sheets)
+    if 2 in sheets:
+        needs_loads(mech)  # one line, before sheet 1 is drawn
     if args.png or args.pdf:
         export.require()  # before anything is computed
     if args.dxf:
         dxf.require()
-    _write(render(mech, args), args)
+    _write(render_all(mech, args, sheets), args)
     return EXIT_OK
 
 
-def _batch(args) -> int:
+def _plans_need_sheet_1(args, sheets: tuple[int, ...]) -> None:
+    """--plans chooses sheet 1's plans: with sheet 2 alone it would be dropped unsaid."""
+    if args.plans is not None and 1 not in sheets:
+        raise InputError("--plans", "chooses the positions of sheet 1's plans; sheet 2 draws the "
+                         "force analysis of the file's position (choose it with --angle): give "
+                         "--sheet 1,2, or leave --plans out")
+
+
+def _batch(args, sheets: tuple[int, ...] = (1,)) -> int:
+    _plans_need_sheet_1(args, sheets)
     if not args.output or args.output == "-":
         raise InputError("-o", "with --variant all give a folder: -o DIR/")
     out = Path(args.output)
@@ -164,14 +289,18 @@ def _batch(args) -> int:
             print(f"\rsheet {i}/{len(numbers)}: variant {n} ", end="", file=sys.stderr, flush=True)
         a = copy.copy(args)
         a.variant = str(n)
-        a.output = str(out / f"variant-{n}.svg")
-        a.png = str(out / f"variant-{n}.png") if args.png else None
-        a.pdf = str(out / f"variant-{n}.pdf") if args.pdf else None
+        # sheet 1 variant-N.svg, sheet 2 beside it variant-N-2.svg, whichever are drawn
+        stem = f"variant-{n}" if 1 in sheets else f"variant-{n}-2"
+        a.output = str(out / f"{stem}.svg")
+        a.png = str(out / f"{stem}.png") if args.png else None
+        a.pdf = str(out / f"{stem}.pdf") if args.pdf else None
         a.note = str(out / f"variant-{n}.md") if args.note else None
-        a.dxf = str(out / f"variant-{n}.dxf") if args.dxf is not None else None
+        a.dxf = str(out / f"{stem}.dxf") if args.dxf is not None else None
         try:
             mech = mechanism_from(a, table)
-            _write(render(mech, a), a)
+            if 2 in sheets:
+                needs_loads(mech)
+            _write(render_all(mech, a, sheets), a)
         except (PlansError, ValueError, ArithmeticError) as exc:
             source = getattr(exc, "source", "")  # an input error names its source itself
             msg = str(exc) if isinstance(exc, InputError) or not source else f"{source}: {exc}"
