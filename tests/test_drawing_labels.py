@@ -267,11 +267,13 @@ def test_a_label_among_more_thin_lines_than_allowed_everywhere_still_gets_a_plac
 
 
 @settings(max_examples=60, deadline=None)
-@given(st.tuples(*[st.floats(-50, 50)] * 2, st.floats(0.1, 30), st.floats(0.1, 30)),
-       st.tuples(*[st.floats(-50, 50)] * 2, st.floats(0.1, 60), st.floats(0.1, 60)))
+@given(st.tuples(*[st.floats(-50, 50, allow_subnormal=False)] * 2, st.floats(0.1, 30), st.floats(0.1, 30)),
+       st.tuples(*[st.floats(-50, 50, allow_subnormal=False)] * 2, st.floats(0.1, 60), st.floats(0.1, 60)))
 def test_the_area_outside_a_region_by_bounds_is_shapelys(b, r):
     """The label placer measures how far a box sticks out of its view by bounds (both are
-    axis-parallel rectangles); it must be what shapely's difference gives."""
+    axis-parallel rectangles); it must be what shapely's difference gives. Not at subnormal
+    coordinates (a region's corner at y = 2.2e-313), where GEOS's own difference goes wrong
+    (0.875 for the 1.25 that the bounds give) and no sheet ever draws."""
     from drawing.obstacles import area_outside
 
     lab = box(b[0], b[1], b[0] + b[2], b[1] + b[3])
