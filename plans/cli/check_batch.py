@@ -17,7 +17,6 @@ and leaves an old one alone. ``-o FILE`` writes the table (or the JSON list) to 
 from __future__ import annotations
 
 import copy
-import json
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -27,7 +26,7 @@ from drawing.overlay import overlay_svg
 from plans.check import verdict as ck
 from plans.check.describe import plan_unit
 from plans.check.measured import Solvers
-from plans.cli.check_report import PNG_SCALE, all_items, command_tolerance
+from plans.cli.check_report import PNG_SCALE, all_items, command_tolerance, json_text
 from plans.cli.check_report import to_json as file_json
 from plans.cli.common import (
     EXIT_DEVIATIONS,
@@ -36,13 +35,16 @@ from plans.cli.common import (
     EXIT_OK,
     arg_text,
     error_lines,
+    make_folder,
     same_file,
+    say,
+    terminal,
     warn,
 )
 from plans.cli.words import WORDS
 from plans.errors import InputError, PlansError
 from plans.fmt import angle, columns, cut, listing, notation_in
-from plans.model.fileformat import one_line, read_toml
+from plans.model.fileformat import read_toml
 from plans.model.variants import BUILTIN, BUILTIN_RU
 
 #: a title wider than this (columns of a terminal) is cut in the table (the file's title
@@ -115,17 +117,18 @@ def run(args, files: list[str]) -> int:
     rows = []
     for i, path in enumerate(files, 1):
         if tty:
-            print(f"\rcheck {i}/{len(files)}: {path} ", end="", file=sys.stderr, flush=True)
+            print(f"\rcheck {i}/{len(files)}: {terminal(path, 60)} ", end="", file=sys.stderr,
+                  flush=True)
         rows.append(_one(args, report, path, tol, folders, solvers))
     if tty:
         print("\r\033[K", end="", file=sys.stderr, flush=True)
     for r in rows:
         for line in r.error:
-            print(f"plans check: {line}", file=sys.stderr)
+            say("check", line)
         for w in r.result.measurement.solution.warnings if r.result is not None else ():
             warn("check", w, r.path)  # near-singular: said as for one file, naming it
     if args.json:
-        text = json.dumps(to_json(rows, args.lang), ensure_ascii=False, indent=2) + "\n"
+        text = json_text(to_json(rows, args.lang))
     else:
         text = to_text(rows, args.lang, tol)
     args.run_files.write(args.output, text)
@@ -198,13 +201,10 @@ def _make_folders(args, folders: dict[str, Path]) -> None:
     cannot be made (under a file, on a read-only disk) is a problem of the command line,
     said in one line before anything is checked, not each file's internal error."""
     for suffix, folder in folders.items():
-        opt = "--svg" if suffix == ".svg" else "--png"
-        try:
-            folder.mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            value = args.svg if suffix == ".svg" else args.png
-            raise InputError("command line", f"{opt} {value}: cannot make the folder: "
-                             f"{exc.strerror or exc}") from None
+        if suffix == ".svg":
+            make_folder(folder, "--svg", args.svg)
+        else:
+            make_folder(folder, "--png", args.png)
 
 
 def _draw(result, args, path: str, folders: dict[str, Path]) -> None:
@@ -322,10 +322,10 @@ def to_text(rows: list[Row], lang: str = "en", tol=None) -> str:
     table = []
     for r in rows:
         res = r.result
-        cells = [r.path]
+        cells = [terminal(r.path, 80)]
         if titled:
             # cut to the columns it takes (a Chinese character two), not to its characters
-            cells.append(cut(one_line(" ".join(r.title_text().split()), TITLE_WIDTH), TITLE_WIDTH))
+            cells.append(cut(terminal(" ".join(r.title_text().split()), TITLE_WIDTH), TITLE_WIDTH))
         cells.append(mechanism_cell(res.measurement, lang) if res is not None else "")
         cells += [verdict_cell(r, lang, common), diagnosis_cell(r, lang)]
         table.append(cells)
