@@ -44,6 +44,7 @@ __all__ = [
     "png_bytes",
     "raster_size",
     "require",
+    "signals_held",
 ]
 
 _HINT = ("PNG and PDF export needs cairosvg, the export extra: in the source folder, "
@@ -107,7 +108,7 @@ def _render(call, svg: str, **options) -> bytes:
     """
     global _fonts_ready
     if _fonts_ready or "FONTCONFIG_FILE" in os.environ:
-        with _signals_held():
+        with signals_held():
             return call(bytestring=svg.encode("utf-8"), **options)
     folder = tempfile.mkdtemp(prefix="vector-plans-fonts-")  # private: mode 0700
     atexit.register(shutil.rmtree, folder, ignore_errors=True)
@@ -115,7 +116,7 @@ def _render(call, svg: str, **options) -> bytes:
     conf.write_text(_FONTS_CONF.format(fonts=FONT_FILE.parent.resolve()), encoding="utf-8")
     os.environ["FONTCONFIG_FILE"] = str(conf)
     try:
-        with _signals_held():
+        with signals_held():
             return call(bytestring=svg.encode("utf-8"), **options)
     finally:
         del os.environ["FONTCONFIG_FILE"]
@@ -127,7 +128,7 @@ _HELD = tuple(getattr(signal, n) for n in ("SIGINT", "SIGTERM", "SIGHUP") if has
 
 
 @contextmanager
-def _signals_held():
+def signals_held():
     """Ctrl-C, SIGTERM and SIGHUP wait until the block is done, then act as they would
     have: a KeyboardInterrupt raised inside cairo's C callbacks is printed as a
     traceback and the render goes on or fails in its own way (4 of 8 interrupted runs
