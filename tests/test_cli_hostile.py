@@ -255,6 +255,7 @@ def test_check_svg_folder_with_one_file_as_with_several(capsys, meas, tmp_path):
 def test_a_file_given_twice_is_checked_and_counted_once(capsys, meas):
     path = meas()
     code, out, err = run(capsys, "check", path, path, str(path.parent / "." / path.name))
+    assert code in (0, 1)
     assert "is given twice" in err and "checked and counted once" in err
     assert "1 file:" in out or "1 file" in out.splitlines()[0]
 
@@ -269,7 +270,8 @@ def test_the_bench_needs_its_extra_and_writes_no_chart_unasked(capsys, tmp_path,
     import importlib.util
 
     real = importlib.util.find_spec
-    monkeypatch.setattr(importlib.util, "find_spec", lambda name, *a: None if name == "sympy" else real(name, *a))
+    monkeypatch.setattr(importlib.util, "find_spec",
+                        lambda name, *a: None if name == "sympy" else real(name, *a))
     code, _, err = run(capsys, "bench", "--quick")
     line = one_line(err, "bench")
     assert code == 2 and "pip install '.[bench]'" in line
@@ -303,7 +305,8 @@ def test_no_svg_on_a_terminal(capsys, monkeypatch):
 def test_variant_all_takes_picture_options_as_folders(capsys, tmp_path):
     table = tmp_path / "t.toml"
     table.write_text((ROOT / "plans" / "data" / "table2.toml").read_text("utf-8"), "utf-8")
-    code, _, err = run(capsys, "sheet", "--variant", "all", "-o", f"{tmp_path}/s/", "--note", tmp_path / "x.md")
+    code, _, err = run(capsys, "sheet", "--variant", "all", "-o", f"{tmp_path}/s/",
+                       "--note", tmp_path / "x.md")
     assert code == 2 and "looks like a file name" in one_line(err, "sheet")
     assert not (tmp_path / "s").exists()
 
