@@ -405,10 +405,27 @@ def test_debug_shows_the_traceback(monkeypatch, press):
 
 @pytest.mark.parametrize("argv", [["--help"], ["solve", "--help"]])
 def test_help_documents_the_exit_status(capsys, argv):
+    """Each command's --help lists the statuses it can end with: exit 1 is the check's
+    alone (every command's epilog had listed it)."""
     assert main(argv) == 0  # main returns argparse's code, it does not exit
     text = " ".join(capsys.readouterr().out.split())
-    assert ("exit status: 0 success, 1 a check found deviations, 2 bad input or an unsolvable "
-            "scene, 3 internal error (rerun with --debug for the traceback)") in text
+    if argv == ["--help"]:
+        assert ("exit status: 0 success, 1 a check found deviations (plans check only), 2 bad "
+                "input or an unsolvable scene, 3 internal error (rerun with --debug for the "
+                "traceback)") in text
+    else:
+        assert ("exit status: 0 success, 2 bad input or an unsolvable scene, 3 internal error "
+                "(rerun with --debug for the traceback)") in text
+        assert "1 a check" not in text
+
+
+@pytest.mark.parametrize("command", [c for c in COMMANDS if c != "check"])
+def test_only_the_check_lists_exit_1(capsys, command):
+    assert main([command, "--help"]) == 0
+    assert "1 a check found deviations" not in capsys.readouterr().out
+    assert main(["check", "--help"]) == 0
+    text = " ".join(capsys.readouterr().out.split())
+    assert "1 a check found deviations" in text
 
 
 def test_help_and_a_misspelt_command_still_name_every_command(capsys):
@@ -666,13 +683,13 @@ def test_stdout_on_a_full_disk_is_bad_output_not_a_crash(buffered):
 
 
 def test_outputs_through_links_and_devices(capsys, tmp_path):
-    """A symbolic link is written through (it stayed a link and its file was left old;
-    as root, -o /dev/stdout replaced the /dev/stdout link with a file); /dev/null may
-    take several outputs; an empty file name is refused plainly."""
+    """A symbolic link is written through when asked (--follow-links: it stays a link and
+    its file is new; as root, -o /dev/stdout replaced the /dev/stdout link with a file);
+    /dev/null may take several outputs; an empty file name is refused plainly."""
     real, link = tmp_path / "real.txt", tmp_path / "link.txt"
     real.write_text("old")
     link.symlink_to(real)
-    code, _, _ = run(capsys, "solve", "--variant", "3", "-o", link)
+    code, _, _ = run(capsys, "solve", "--variant", "3", "-o", link, "--follow-links")
     assert code == 0 and link.is_symlink() and real.read_text().startswith("Four-bar linkage, variant 3")
     code, _, err = run(capsys, "sheet", "--variant", "3", "-o", "/dev/null", "--png", "/dev/null",
                        "--note", "/dev/null")

@@ -412,7 +412,7 @@ def test_png_and_pdf_export(tmp_path):
 def test_export_without_cairosvg_says_what_to_install(tmp_path, monkeypatch):
     monkeypatch.setitem(sys.modules, "cairosvg", None)  # import now raises ImportError
     with pytest.raises(
-        ExportUnavailableError, match=r"pip install 'vector-plans\[export\]'"
+        ExportUnavailableError, match=r"pip install '\.\[export\]'"
     ):
         write_output(str(tmp_path / "x.png"), png_bytes("<svg/>"))
     assert list(tmp_path.iterdir()) == []

@@ -8,6 +8,10 @@
 2. Random mutations of valid files (deleted lines and keys, wrong types, swapped names,
    garbage bytes, truncation): the CLI exits 0 with its output, or 2 with one line per
    problem, no traceback and no output file; ``from_dict`` raises only InputError.
+3. Hostile generators: long dotted headers with one problem, tiny and huge scale factors
+   of a measurement file, control and bidi characters in a title and a file name, and a
+   table's designation of any width: one located line and exit 2 or a correct result,
+   and no raw control character on the terminal.
 
 The examples are derandomized so CI is reproducible; ``PLANS_FUZZ_EXAMPLES=2000`` runs a
 longer exploration locally.
@@ -18,6 +22,7 @@ from __future__ import annotations
 import copy
 import os
 import tomllib
+import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import numpy as np
@@ -308,7 +313,8 @@ def mutated(draw, seeds=SEED_TEXTS):
                 lines[i] = f'{k}= "{v.strip()}"'
         elif op == "swap":
             a, b = draw(st.sampled_from(names)), draw(st.sampled_from(names))
-            lines[i] = lines[i].replace(f'"{a}"', '"\0"').replace(f'"{b}"', f'"{a}"').replace('"\0"', f'"{b}"')
+            lines[i] = (lines[i].replace(f'"{a}"', '"\0"').replace(f'"{b}"', f'"{a}"')
+                        .replace('"\0"', f'"{b}"'))
             lines[i] = lines[i].replace(f"{a} =", "\0").replace(f"{b} =", f"{a} =").replace("\0", f"{b} =")
         text = "\n".join(lines)
         if op == "truncate":
@@ -432,3 +438,88 @@ def test_broken_dicts_raise_only_input_errors(data):
 def test_all_five_kinds_are_generated():
     # the generators above are what the random tests claim to cover
     assert set(KINDS) == {k.name for k in DyadKind}
+
+
+# =======================================================================================
+# 3. hostile generators: dotted headers, tiny scales, control characters, designation
+#    widths (issue 22): one located line and exit 2, or a correct result
+# =======================================================================================
+
+PRESS = (ROOT / "samples" / "press.toml").read_text("utf-8")
+CHECK_PRESS = (ROOT / "samples" / "check_press.toml").read_text("utf-8")
+#: characters no terminal may receive raw: C0, DEL, C1, the bidi controls
+HOSTILE_CHARS = st.sampled_from([*map(chr, range(0, 32)), "\x7f", "\x85", "\x9b", "\u061c", "\u200e",
+                                 "\u200f", "\u2028", "\u202a", "\u202e", "\u2066", "\u2069", "\ufeff"])
+RAW = set(map(chr, range(0, 9))) | set(map(chr, range(11, 32))) | {"\x7f", "\x85", "\x9b", "\u202e", "\u2066"}
+
+
+def _clean_run(capsys, argv, codes=(0, 2)) -> tuple[int, str, str]:
+    code = main([str(a) for a in argv])
+    out, err = capsys.readouterr()
+    assert code in codes, err
+    assert "Traceback" not in err and "internal error" not in err
+    assert not RAW & set(err), repr(err)
+    return code, out, err
+
+
+@fuzz(25)
+@given(depth=st.integers(1, 400), problem=st.sampled_from(["omega = -20", "sense = \"sideways\"",
+                                                           "angle_deg = \"x\""]))
+def test_a_dotted_header_and_one_problem_is_one_located_line(tmp_path_factory, depth, problem):
+    """A long dotted table header ([a.a.a…]) and one problem: one located line, exit 2.
+    (Deep headers of 10,000 levels are the benchmark's: benchmarks/hostile.py.)"""
+    d = tmp_path_factory.mktemp("dotted")
+    key = problem.split(" = ")[0]
+    text = PRESS.replace(f"\n{key} = ", f"\n{problem}\n# {key} = ", 1)
+    text += "\n[" + ".".join(["a"] * depth) + "]\nx = 1\n"
+    path = d / "m.toml"
+    path.write_text(text, "utf-8")
+    code = main(["solve", str(path), "-o", str(d / "out.txt")])
+    assert code == 2 and not (d / "out.txt").exists()
+
+
+@fuzz(40)
+@given(mu=st.one_of(st.floats(min_value=5e-324, max_value=1e-9, exclude_max=True),
+                    st.floats(min_value=1e6, max_value=1e308, exclude_min=True)),
+       key=st.sampled_from(["mu_l", "mu_v", "mu_a"]))
+def test_tiny_and_huge_scales_of_a_measurement_file_are_located(tmp_path_factory, capsys, mu, key):
+    d = tmp_path_factory.mktemp("scales")
+    (d / "press.toml").write_text(PRESS, "utf-8")
+    text = CHECK_PRESS.replace(f"\n{key} = ", f"\n{key} = {mu!r}\n# ", 1)
+    (d / "m.toml").write_text(text, "utf-8")
+    _, out, err = _clean_run(capsys, ["check", d / "m.toml", "--json"], codes=(2,))
+    assert out == "" and f"scales.{key}:" in err and ("too small" in err or "out of range" in err)
+
+
+@fuzz(30)
+@given(junk=st.lists(HOSTILE_CHARS, min_size=1, max_size=6), where=st.sampled_from(["title", "name"]))
+def test_control_characters_reach_no_terminal(tmp_path_factory, capsys, junk, where):
+    d = tmp_path_factory.mktemp("ctl")
+    (d / "press.toml").write_text(PRESS, "utf-8")
+    esc = "".join(f"\\u{ord(c):04x}" for c in junk)
+    if where == "title":
+        path = d / "m.toml"
+        path.write_text(CHECK_PRESS.replace('title = "', f'title = "{esc}', 1), "utf-8")
+        _, out, _ = _clean_run(capsys, ["check", path, "--svg", d / "o.svg"], codes=(0, 1, 2))
+        if (d / "o.svg").exists():
+            ET.parse(d / "o.svg")
+    else:
+        name = "m" + "".join(c for c in junk if c not in "\0/") + ".toml"
+        try:
+            path = d / name
+            path.write_text(CHECK_PRESS, "utf-8")
+        except (OSError, ValueError):
+            return
+        _, out, _ = _clean_run(capsys, ["check", path, path.with_name("none.toml")], codes=(0, 1, 2))
+    assert not RAW & set(out), repr(out)
+
+
+@fuzz(6)
+@given(width=st.integers(1, 300), align=st.sampled_from([">", "<", "^", "0>"]))
+def test_designation_widths_are_said_not_drawn_past(tmp_path_factory, capsys, width, align):
+    """A table's designation of any width: its sheet, or "does not fit" in one line."""
+    d = tmp_path_factory.mktemp("designation")
+    table = d / "t.toml"
+    table.write_text(TABLE.replace('designation = "ПМ.01.{n:02d}"',
+                                   f'designation = "ПМ.{{n:{align}{width}}}"'), "utf-8")
+    _clean_run(capsys, ["sheet", "--variant", "3", "--table", table, "-o", d / "s.svg"])

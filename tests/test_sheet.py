@@ -161,7 +161,8 @@ def test_png_without_cairosvg_is_a_setup_error_and_writes_nothing(tmp_path, monk
     code = main(["sheet", "samples/press.toml", "-o", str(svg), "--png", str(png)])
     err = capsys.readouterr().err
     assert code == 2
-    assert "pip install 'vector-plans[export]'" in err and "internal error" not in err
+    # the source install the README's setup uses, not a PyPI package
+    assert "pip install '.[export]'" in err and "internal error" not in err
     assert list(tmp_path.iterdir()) == []
 
 

@@ -25,7 +25,7 @@ from typing import Any
 
 from plans.check.forces import F_Y, ForceContext, group_key
 from plans.check.items import Item
-from plans.check.reading import magnitude_sense, number
+from plans.check.reading import magnitude_sense, number, scale
 from plans.model.fileformat import LOOKALIKES, Problems, close_match, key_text, quote
 
 #: the key of the force plans' scale factor, as a file may write it
@@ -213,7 +213,7 @@ def _mu_F(mu_at, names: ForceNames, problems: Problems) -> tuple[dict[str, float
     where = f"forces.{key_text(key)}"
     keys = names.ctx.keys
     if not isinstance(value, dict):
-        x = number(value, where, problems, positive=True, unit="N/mm")
+        x = scale(value, where, problems, "N/mm")
         return (dict.fromkeys(keys, x), x) if x is not None else ({}, None)
     out: dict[str, float] = {}
     by_links = {frozenset(map(int, k.split("–"))): k for k in keys}
@@ -227,7 +227,7 @@ def _mu_F(mu_at, names: ForceNames, problems: Problems) -> tuple[dict[str, float
             problems.add(w2, f"{quote(k2)} is not a group of the mechanism: its groups are "
                          f"{', '.join(keys)} (by their links)")
             continue
-        x = number(v2, w2, problems, positive=True, unit="N/mm")
+        x = scale(v2, w2, problems, "N/mm")
         if x is not None:
             if group in out:
                 problems.add(w2, f"gives the μF of group {group} again: give it once")

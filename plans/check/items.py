@@ -53,6 +53,14 @@ def parse_tolerance(text: str, base: Tolerance | None = None) -> Tolerance:
     Traceback (most recent call last):
     ValueError: "5%,1mm,2mm" gives the mm part twice: give a percentage and a length at most
     once each, e.g. "5%,1mm"
+
+    A number without its unit is refused, not read as a percentage (``5`` had silently
+    been 5 %, where 5 mm may have been meant):
+
+    >>> parse_tolerance("5")
+    Traceback (most recent call last):
+    ValueError: "5" has no unit: write "5%" for a percentage of the computed value or "5mm"
+    for a length on the drawing
     """
     base = base or Tolerance()
     pct, mm = base.percent, base.mm
@@ -62,6 +70,9 @@ def parse_tolerance(text: str, base: Tolerance | None = None) -> Tolerance:
         raise ValueError(f'"{text[:40]}" is not a tolerance (e.g. "5%", "1mm" or "5%,1mm")')
     seen: set[str] = set()
     for number, unit in re.findall(token, text):
+        if not unit:
+            raise ValueError(f'"{number[:20]}" has no unit: write "{number[:20]}%" for a percentage of '
+                             f'the computed value or "{number[:20]}mm" for a length on the drawing')
         x = float(number.replace(",", "."))
         if not math.isfinite(x) or x > 1000:
             raise ValueError(f'"{number}" is out of range')

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import os
 import re
+import stat
 from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
@@ -23,6 +24,7 @@ from plans.check.reading import (  # noqa: F401  (SENSE_WORDS: the check's publi
     magnitude_sense,
     normal_unit,
     number,
+    scale,
 )
 from plans.check.replay import reading_pairs
 from plans.cycle.analysis import analyse_cycle, outside, reachable_cycle
@@ -155,7 +157,7 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
     for key, value in scales.items():
         if key not in MU_KEY.values():
             continue
-        x = number(value, f"scales.{key}", problems, positive=True, unit=MU_UNIT[key])
+        x = scale(value, f"scales.{key}", problems, MU_UNIT[key])
         if x is not None:
             mu[key] = x
     raw_segments = data.get("segments", {})
@@ -304,11 +306,19 @@ def _input_file(value: Any, key: str, folder: Path | None, problems: Problems) -
         # students/../press.toml is press.toml, as a batch's table and a message name it
         p = Path(os.path.normpath(folder / p))
     name = quote(value, 80)[1:-1]
-    if p.is_dir():
+    try:  # a name too long, a folder in the path that is a file: said, never a traceback
+        st = p.stat()
+    except FileNotFoundError:
+        problems.add(key, f"{name}: no such file (paths are relative to the measurement file)")
+        return None
+    except OSError as exc:
+        problems.add(key, f"{name}: cannot read the file: {exc.strerror or exc}")
+        return None
+    if stat.S_ISDIR(st.st_mode):
         problems.add(key, f"{name}: is a folder, not a file")
         return None
-    if not p.is_file():
-        problems.add(key, f"{name}: no such file (paths are relative to the measurement file)")
+    if not stat.S_ISREG(st.st_mode):  # /dev/zero, a pipe: there, but no file of the tool's
+        problems.add(key, f"{name}: is a device or a pipe, not a file: name the {key} file")
         return None
     try:
         with open(p, "rb"):

@@ -8,7 +8,8 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from plans.model.fileformat import DECIMAL, Problems, decimal, quote, read_number
+from plans.model.fileformat import DECIMAL, MAX_ABS, Problems, decimal, quote, read_number
+from plans.model.mechanism import SCALE
 
 #: the sense of an ω, an ε or a moment as a student writes it after the magnitude, +1 ccw,
 #: −1 cw
@@ -38,14 +39,24 @@ WHAT = {"velocity": "a velocity", "acceleration": "an acceleration",
 
 
 def number(value: Any, where: str, problems: Problems, *, positive=False, nonneg=False,
-           unit: str = "mm", what: str = "a length on the drawing") -> float | None:
+           unit: str = "mm", what: str = "a length on the drawing",
+           low: float | None = None, high: float = MAX_ABS) -> float | None:
     """A number of the file (``fileformat.read_number``: in quotes too, with a decimal point
-    or comma); ``what`` (a length on the drawing, a magnitude) is not negative."""
-    x = read_number(value, where, problems, positive=positive, unit=unit)
+    or comma); ``what`` (a length on the drawing, a magnitude) is not negative; ``low``,
+    ``high``: the magnitudes admitted (a scale factor's, :func:`scale`)."""
+    x = read_number(value, where, problems, positive=positive, unit=unit, low=low, high=high)
     if x is not None and nonneg and x < 0:
         problems.add(where, f"{what} cannot be negative, got {x:g}")
         return None
     return x
+
+
+def scale(value: Any, where: str, problems: Problems, unit: str) -> float | None:
+    """A scale factor the student used (μl, μv, μa, μF): positive and within the range a
+    mechanism file admits for its own (``plans.model.mechanism.SCALE``), with the same
+    located message. A μ of 1e-160 had overflowed the check's misfit (an internal
+    error), one of 5e-324 had made every computed segment infinite and every item "ok"."""
+    return number(value, where, problems, positive=True, unit=unit, low=SCALE[0], high=SCALE[1])
 
 
 def normal_unit(text: str) -> str:

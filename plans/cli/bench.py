@@ -8,20 +8,22 @@ against ``plans.verify.reference``, and checks the rates against the targets.
 
 The table goes to stdout (``--json``: a list of rows ``{"scene", "method", "positions",
 "seconds_per_position", "max_rel_error"}``), the error-versus-time chart (log-log;
-``drawing.chart.bench_chart``, PNG, SVG or PDF by the name's ending) to ``--chart``
-(default ``bench.svg``).
-The bench needs sympy (the ``bench`` extra); the two samples are benched in a source
-checkout, where ``samples/`` is.
+``drawing.chart.bench_chart``, PNG, SVG or PDF by the name's ending) to ``--chart FILE``
+only when asked (it had written bench.svg into the current folder unasked).
+The bench needs sympy and mpmath (the ``bench`` extra: without them it says so, exit 2);
+the two samples are benched in a source checkout, where ``samples/`` is, and ``--help``
+lists them only there.
 """
 
 from __future__ import annotations
 
+import importlib.util
 import json
 import math
 import sys
 
 from drawing import chart as charts
-from plans.cli.common import EXIT_OK, number
+from plans.cli.common import EXIT_OK, number, say
 from plans.cli.output import picture_format
 from plans.errors import InputError
 from plans.forces.bench import force_bench
@@ -51,7 +53,15 @@ TARGETS = (
 FORCE_TARGET = ("loaded press, forces", ("press",), 1e6)
 
 
+#: what the bench imports to compute its reference, with the extra that installs it
+NEEDS = ("sympy", "mpmath")
+EXTRA_HINT = "the bench extra: in the source folder, pip install '.[bench]' (README, Setup)"
+
+
 def configure(p) -> None:
+    scenes = load_scenes()
+    here = [n for n in BENCH_SCENES if n in scenes]
+    absent = [n for n in BENCH_SCENES if n not in scenes]
     p.add_argument("--json", action="store_true", help="print the rows as JSON")
     p.add_argument(
         "--quick",
@@ -69,8 +79,9 @@ def configure(p) -> None:
         "--scene",
         action="append",
         metavar="NAME",
-        help=f"only these scenes (repeatable; default: {', '.join(BENCH_SCENES)}, and the "
-        "synthesis's crank-rocker family, which a --scene leaves out)",
+        help=f"only these scenes (repeatable; default: {', '.join(here)}, and the "
+        "synthesis's crank-rocker family, which a --scene leaves out"
+        + (f"; {', '.join(absent)}: samples of the source checkout, not installed)" if absent else ")"),
     )
     p.add_argument(
         "--methods",
@@ -103,9 +114,8 @@ def configure(p) -> None:
     p.add_argument(
         "--chart",
         metavar="FILE",
-        default="bench.svg",
-        help="error-versus-time chart, PNG, SVG or PDF by the name's ending "
-        "(default bench.svg; '' for none)",
+        help="also draw the error-versus-time chart, PNG, SVG or PDF by the name's ending "
+        "(default: no chart)",
     )
     p.add_argument(
         "-o",
@@ -116,6 +126,9 @@ def configure(p) -> None:
 
 
 def run(args) -> int:
+    missing = [m for m in NEEDS if importlib.util.find_spec(m) is None]
+    if missing:  # before anything is timed: a setup problem, not an internal error
+        raise InputError("command line", f"the bench needs {' and '.join(missing)}, {EXTRA_HINT}")
     methods = {m.strip() for m in args.methods.split(",") if m.strip()}
     unknown = methods - set(METHODS)
     if unknown or not methods:
@@ -128,12 +141,15 @@ def run(args) -> int:
     scenes = load_scenes()
     names = args.scene or [n for n in BENCH_SCENES if n in scenes]
     skipped = [n for n in BENCH_SCENES if n not in scenes]
-    missing = [n for n in names if n not in scenes]
-    if missing:
+    unknown = [n for n in names if n not in scenes]
+    if unknown:
+        samples = [n for n in unknown if n in BENCH_SCENES]
+        why = (f"; {', '.join(samples)}: samples of the source checkout (samples/), not installed: "
+               "run the bench from the source folder" if samples else "")
         raise InputError(
             "command line",
-            f"--scene: unknown {', '.join(missing)} "
-            f"(known: {', '.join(sorted(scenes))})",
+            f"--scene: unknown {', '.join(unknown)} "
+            f"(known: {', '.join(sorted(scenes))}){why}",
         )
     sizes = [
         n for n in (QUICK_SIZES if args.quick else SIZES) if n <= args.max_positions
@@ -176,7 +192,7 @@ def run(args) -> int:
     if args.json:
         text = json.dumps([r.as_json() for r in rows], indent=1) + "\n"
         for n in notes:
-            print(f"plans bench: note: {n}", file=sys.stderr)
+            say("bench", f"note: {n}")
     else:
         text = to_text(rows, notes)
     chart = None

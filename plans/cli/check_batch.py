@@ -17,7 +17,6 @@ and leaves an old one alone. ``-o FILE`` writes the table (or the JSON list) to 
 from __future__ import annotations
 
 import copy
-import json
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -26,8 +25,8 @@ from drawing import export
 from drawing.overlay import overlay_svg
 from plans.check import verdict as ck
 from plans.check.describe import plan_unit
-from plans.check.measured import Solvers
-from plans.cli.check_report import PNG_SCALE, all_items, command_tolerance
+from plans.check.measured import Solvers, from_dict
+from plans.cli.check_report import PNG_SCALE, all_items, command_tolerance, json_text
 from plans.cli.check_report import to_json as file_json
 from plans.cli.common import (
     EXIT_DEVIATIONS,
@@ -36,13 +35,16 @@ from plans.cli.common import (
     EXIT_OK,
     arg_text,
     error_lines,
+    make_folder,
     same_file,
+    say,
+    terminal,
     warn,
 )
 from plans.cli.words import WORDS
 from plans.errors import InputError, PlansError
 from plans.fmt import angle, columns, cut, listing, notation_in
-from plans.model.fileformat import one_line, read_toml
+from plans.model.fileformat import read_toml
 from plans.model.variants import BUILTIN, BUILTIN_RU
 
 #: a title wider than this (columns of a terminal) is cut in the table (the file's title
@@ -64,28 +66,20 @@ class Row:
         return self.result.measurement.title if self.result is not None else self.title
 
 
-def _read(path: str) -> dict:
-    """The file's TOML, where it reads as TOML at all; else {}."""
+def _read(path: str):
+    """(the file's TOML as a dict, its text, the problem of reading it): read once for
+    everything the batch does with it (its names, its check, its title)."""
     try:
-        data, _ = read_toml(path)
-    except (PlansError, OSError, ValueError):
-        return {}
-    return data if isinstance(data, dict) else {}
+        data, text = read_toml(path, "a measurement file is a few KB")
+    except PlansError as exc:
+        return {}, None, exc
+    return (data if isinstance(data, dict) else {}), text, None
 
 
-def _title_of(path: str) -> str:
-    """The title of a file that cannot be checked, where it reads as TOML at all: the
-    teacher sees whose file it is."""
-    title = _read(path).get("title")
-    return title if isinstance(title, str) else ""
-
-
-def _named(path: str) -> list[Path]:
+def _named(data: dict, path: str) -> list[Path]:
     """The files a measurement file names (its mechanism file, its table of variants),
-    relative to its folder as :func:`plans.check.measured.load` reads them: inputs of the run
-    even where the file cannot be checked, so that ``-o`` never goes over one. A pipe
-    (/dev/stdin) is not read ahead: it would be read once only."""
-    data = _read(path) if Path(path).is_file() else {}
+    relative to its folder as :func:`plans.check.measured.load` reads them: inputs of the
+    run even where the file cannot be checked, so that ``-o`` never goes over one."""
     names = [Path(v) for v in (data.get("mechanism"), data.get("table"))
              if isinstance(v, str) and v]
     return [p if p.is_absolute() else Path(path).parent / p for p in names]
@@ -101,8 +95,10 @@ def run(args, files: list[str]) -> int:
     report = copy.copy(args)  # the report's own output, checked as one run checks it
     report.svg = report.png = None
     # every file the run reads, refused as -o before anything is checked or drawn (a
-    # file that cannot be checked has its mechanism file read, or named, all the same)
-    report.run_files.claim(report, [*files, *(p for f in files for p in _named(f))])
+    # file that cannot be checked has its mechanism file named all the same); each file
+    # is read here once, and what it holds checked from what was read
+    read = {path: _read(path) for path in files}
+    report.run_files.claim(report, [*files, *(p for f in files for p in _named(read[f][0], f))])
     folders = _picture_folders(args, files)
     if args.png:
         export.require()  # before anything is computed
@@ -115,29 +111,33 @@ def run(args, files: list[str]) -> int:
     rows = []
     for i, path in enumerate(files, 1):
         if tty:
-            print(f"\rcheck {i}/{len(files)}: {path} ", end="", file=sys.stderr, flush=True)
-        rows.append(_one(args, report, path, tol, folders, solvers))
+            print(f"\rcheck {i}/{len(files)}: {terminal(path, 60)} ", end="", file=sys.stderr,
+                  flush=True)
+        rows.append(_one(args, report, path, tol, folders, solvers, read.pop(path)))
     if tty:
         print("\r\033[K", end="", file=sys.stderr, flush=True)
     for r in rows:
         for line in r.error:
-            print(f"plans check: {line}", file=sys.stderr)
+            say("check", line)
         for w in r.result.measurement.solution.warnings if r.result is not None else ():
             warn("check", w, r.path)  # near-singular: said as for one file, naming it
     if args.json:
-        text = json.dumps(to_json(rows, args.lang), ensure_ascii=False, indent=2) + "\n"
+        text = json_text(to_json(rows, args.lang))
     else:
         text = to_text(rows, args.lang, tol)
     args.run_files.write(args.output, text)
     return status(rows)
 
 
-def _one(args, report, path: str, tol, folders: dict[str, Path], solvers=None) -> Row:
+def _one(args, report, path: str, tol, folders: dict[str, Path], solvers=None, read=None) -> Row:
     """Check one file of the batch, and draw its pictures; a problem of its own (bad
     input, an unsolvable position, a picture that cannot be written) is its row's, not the
     batch's. A problem of the command line stops the batch."""
+    data, text, problem = read if read is not None else _read(path)
     try:
-        meas = ck.load(path, solvers)
+        if problem is not None:
+            raise problem
+        meas = from_dict(data, str(Path(path)), Path(path).parent, text=text, solvers=solvers)
         report.run_files.claim(report, meas.inputs[1:])  # -o is never a mechanism file read
         result = ck.check(meas, tol)  # None: the file's own, or the default
         _draw(result, args, path, folders)
@@ -145,7 +145,7 @@ def _one(args, report, path: str, tol, folders: dict[str, Path], solvers=None) -
     except PlansError as exc:
         if isinstance(exc, InputError) and exc.source == "command line":
             raise
-        return Row(path, error=error_lines(exc), status=EXIT_INPUT, title=_title_of(path))
+        return Row(path, error=error_lines(exc), status=EXIT_INPUT, title=_title(data))
     except (KeyboardInterrupt, MemoryError):
         raise
     except Exception as exc:  # one file's internal error: said, and the others checked
@@ -153,7 +153,14 @@ def _one(args, report, path: str, tol, folders: dict[str, Path], solvers=None) -
             raise
         return Row(path, error=[f"{path}: internal error: {type(exc).__name__}: {exc} "
                                 "(rerun with --debug for the traceback)"],
-                   status=EXIT_INTERNAL, title=_title_of(path))
+                   status=EXIT_INTERNAL, title=_title(data))
+
+
+def _title(data: dict) -> str:
+    """The title of a file that cannot be checked, where it reads as TOML at all: the
+    teacher sees whose file it is."""
+    title = data.get("title")
+    return title if isinstance(title, str) else ""
 
 
 def _picture_folders(args, files: list[str]) -> dict[str, Path]:
@@ -198,13 +205,10 @@ def _make_folders(args, folders: dict[str, Path]) -> None:
     cannot be made (under a file, on a read-only disk) is a problem of the command line,
     said in one line before anything is checked, not each file's internal error."""
     for suffix, folder in folders.items():
-        opt = "--svg" if suffix == ".svg" else "--png"
-        try:
-            folder.mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            value = args.svg if suffix == ".svg" else args.png
-            raise InputError("command line", f"{opt} {value}: cannot make the folder: "
-                             f"{exc.strerror or exc}") from None
+        if suffix == ".svg":
+            make_folder(folder, "--svg", args.svg)
+        else:
+            make_folder(folder, "--png", args.png)
 
 
 def _draw(result, args, path: str, folders: dict[str, Path]) -> None:
@@ -322,10 +326,10 @@ def to_text(rows: list[Row], lang: str = "en", tol=None) -> str:
     table = []
     for r in rows:
         res = r.result
-        cells = [r.path]
+        cells = [terminal(r.path, 80)]
         if titled:
             # cut to the columns it takes (a Chinese character two), not to its characters
-            cells.append(cut(one_line(" ".join(r.title_text().split()), TITLE_WIDTH), TITLE_WIDTH))
+            cells.append(cut(terminal(" ".join(r.title_text().split()), TITLE_WIDTH), TITLE_WIDTH))
         cells.append(mechanism_cell(res.measurement, lang) if res is not None else "")
         cells += [verdict_cell(r, lang, common), diagnosis_cell(r, lang)]
         table.append(cells)

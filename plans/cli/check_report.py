@@ -4,11 +4,13 @@ of one file and of several share (the ``--tolerance`` option, the pictures' scal
 
 from __future__ import annotations
 
+import json
 import math
 
 from plans.check import verdict as ck
 from plans.check.describe import lookalike_lines, unit_in
 from plans.check.items import FORCE_PLANS, MU_KEY, MU_SYMBOL, SIGNED
+from plans.cli.output import terminal
 from plans.cli.words import WORDS
 from plans.errors import InputError
 from plans.fmt import (
@@ -84,10 +86,11 @@ def to_text(result, lang: str = "en") -> str:
     meas = result.measurement
     sol = meas.solution
     mech = meas.mechanism
-    out = [f"{w['head']}: {meas.source}"]
+    # the user's texts one line each, no escape sequence or bidi control among them
+    out = [f"{w['head']}: {terminal(meas.source)}"]
     if meas.title:
-        out.append(f"  {meas.title}")
-    out.append(f"{w['mech']}: {mech.name_in(lang)} ({mech.source_in(lang)}), "
+        out.append(f"  {terminal(meas.title)}")
+    out.append(f"{w['mech']}: {terminal(mech.name_in(lang))} ({terminal(mech.source_in(lang))}), "
                f"{mech.driver.phi_sym} = "
                f"{mech.driver.both(sol.phi, lang, lo=sol.solver.shown_from())}")
     mu = meas.mu
@@ -203,6 +206,26 @@ def _json_mu_F(meas) -> dict:
     """μF as the file gives it (N/mm): a number, or an object by group ("4–5")."""
     given = meas.forces.mu_F_given if meas.forces is not None else None
     return {} if given is None else {"mu_F": given}
+
+
+def json_text(data) -> str:
+    """``data`` as the JSON a check prints: never NaN or Infinity (a value that is not
+    finite is null) and no −0.0 (it is 0.0).
+
+    >>> json_text({"a": -0.0, "b": [float("inf"), 1.5]}).split()
+    ['{', '"a":', '0.0,', '"b":', '[', 'null,', '1.5', ']', '}']
+    """
+    return json.dumps(_plain(data), ensure_ascii=False, indent=2, allow_nan=False) + "\n"
+
+
+def _plain(x):
+    if isinstance(x, float):
+        return x + 0.0 if math.isfinite(x) else None  # + 0.0: no −0.0
+    if isinstance(x, dict):
+        return {k: _plain(v) for k, v in x.items()}
+    if isinstance(x, list | tuple):
+        return [_plain(v) for v in x]
+    return x
 
 
 def to_json(result, lang: str = "en") -> dict:

@@ -17,8 +17,10 @@ from plans.cli.output import (
     RunFiles,
     arg_text,
     check_outputs,
+    make_folder,
     picture_names,
     same_file,
+    terminal,
     write_output,
 )
 from plans.cycle.analysis import outside_range
@@ -42,11 +44,14 @@ __all__ = [
     "check_outputs",
     "cycle_json",
     "error_lines",
+    "make_folder",
     "mechanism_from",
     "number",
     "picture_names",
     "same_file",
+    "say",
     "solved_position",
+    "terminal",
     "warn",
     "write_output",
 ]
@@ -178,12 +183,24 @@ def cycle_json(c) -> dict:
 def error_lines(exc: PlansError) -> list[str]:
     """The lines that say ``exc``, as ``plans CMD: LINE`` prints each: an input error
     names its file itself; a position that cannot be solved (a group that does not close,
-    a dead point) carries the mechanism it belongs to, which is put before each line."""
-    source = getattr(exc, "source", "")
-    where = f"{source}: " if source and not isinstance(exc, InputError) else ""
-    return [f"{where}{line}" for line in str(exc).splitlines() or [type(exc).__name__]]
+    a dead point) carries the mechanism it belongs to, which is put before each line. The
+    file's name is written as :func:`terminal` writes it (a line break in it had forged a
+    line of its own)."""
+    source = str(getattr(exc, "source", "") or "")
+    text = str(exc)
+    if source and terminal(source) != source:
+        text = text.replace(source, terminal(source))
+    where = f"{terminal(source)}: " if source and not isinstance(exc, InputError) else ""
+    return [f"{where}{line}" for line in text.splitlines() or [type(exc).__name__]]
+
+
+def say(command: str, line: str) -> None:
+    """One line on stderr, "plans CMD: line", through :func:`terminal`: no escape
+    sequence, bidi control or line break of a user's text reaches the terminal, and no
+    echoed argument runs on for pages."""
+    print(f"plans {command}: {terminal(line)}", file=sys.stderr)
 
 
 def warn(command: str, text: str, source: str = "") -> None:
     """One warning line on stderr: "plans CMD: warning: [SOURCE: ]text"."""
-    print(f"plans {command}: warning: {source + ': ' if source else ''}{text}", file=sys.stderr)
+    say(command, f"warning: {source + ': ' if source else ''}{text}")

@@ -16,7 +16,6 @@ import csv
 import io
 import json
 import math
-import sys
 
 import numpy as np
 
@@ -29,6 +28,7 @@ from plans.cli.common import (
     cycle_json,
     mechanism_from,
     number,
+    say,
     warn,
 )
 from plans.cli.output import picture_format
@@ -110,7 +110,7 @@ def run(args) -> int:
                       f"position {worst}: {_fig(min(table.status[worst].figures.values()))})")
     for i in failed:
         for e in table.status[i].errors:
-            print(f"plans cycle: error: position {i}: {e}", file=sys.stderr)
+            say("cycle", f"error: position {i}: {e}")
     singular = [i for i, s in enumerate(table.status) if s.singular]
     if singular:
         which = ", ".join(str(i) for i in singular)

@@ -1,12 +1,15 @@
 """The ``plans`` command: argparse front end and the command registry, one module per
 command (``configure(parser)`` and ``run(args) -> int`` each).
 
-Exit status (:class:`plans.cli.common.ExitStatus`): 0 success, 1 a check found deviations,
-2 bad input or an unsolvable scene, 3 internal error (rerun with --debug for the
-traceback).
+Exit status (:class:`plans.cli.common.ExitStatus`): 0 success, 1 a check found deviations
+(``plans check`` only), 2 bad input or an unsolvable scene, 3 internal error (rerun with
+--debug for the traceback), 130 interrupted (Ctrl-C), 143 and 129 stopped by SIGTERM and
+SIGHUP.
 
 Each run gets its own :class:`~plans.cli.output.RunFiles` on ``args.run_files``: the files
-the command reads are claimed there and never written over.
+the command reads are claimed there and never written over, and the files it writes are
+committed together once it has made them all, or removed, the old ones left, where it
+fails or is stopped.
 """
 
 from __future__ import annotations
@@ -17,9 +20,11 @@ import importlib
 import importlib.util
 import os
 import re
+import signal
 import sys
+import threading
 
-from plans.cli.common import ExitStatus, error_lines
+from plans.cli.common import ExitStatus, error_lines, say, terminal
 from plans.cli.output import RunFiles
 from plans.errors import PlansError
 
@@ -38,8 +43,32 @@ COMMANDS = {
     "project": ("plans.cli.project", "a course project's files: the sheet, the note, the results"),
 }
 
-EPILOG = """exit status: 0 success, 1 a check found deviations, 2 bad input or an
-unsolvable scene, 3 internal error (rerun with --debug for the traceback)"""
+EPILOG = """exit status: 0 success, 1 a check found deviations (plans check only), 2 bad
+input or an unsolvable scene, 3 internal error (rerun with --debug for the traceback)"""
+
+
+def epilog(command: str) -> str:
+    """The exit statuses ``command`` can end with: 1 only where it checks (plans check)."""
+    if command == "check":
+        return ("exit status: 0 every item within tolerance, 1 a check found deviations, 2 bad\n"
+                "input or an unsolvable scene, 3 internal error (rerun with --debug for the\n"
+                "traceback)")
+    return ("exit status: 0 success, 2 bad input or an unsolvable scene, 3 internal error\n"
+            "(rerun with --debug for the traceback)")
+
+
+class Stopped(BaseException):
+    """SIGTERM or SIGHUP during a run: raised where the run is, so that it unwinds as
+    Ctrl-C does and its temporary files are removed (a BaseException: no ``except
+    Exception`` of a command takes it for an error of its own)."""
+
+    def __init__(self, signum: int) -> None:
+        super().__init__(signum)
+        self.signum = signum
+
+
+#: the signals a run stops on as on Ctrl-C, its outputs left as they were
+STOP_SIGNALS = tuple(getattr(signal, n) for n in ("SIGTERM", "SIGHUP") if hasattr(signal, n))
 
 
 class _Parser(argparse.ArgumentParser):
@@ -83,7 +112,8 @@ class _Parser(argparse.ArgumentParser):
         return len(named) == 1 and named[0] in self.dash_values
 
     def error(self, message: str):  # type: ignore[override]
-        print(f"{self.prog}: command line: {message} (see {self.prog} --help)", file=sys.stderr)
+        print(f"{self.prog}: command line: {terminal(message)} (see {self.prog} --help)",
+              file=sys.stderr)
         sys.exit(ExitStatus.INPUT)
 
 
@@ -113,13 +143,16 @@ def build_parser(only: str | None = None) -> argparse.ArgumentParser:
             if _missing(exc, module):
                 continue  # a command family not built yet
             raise
-        p = sub.add_parser(name, help=help_text, description=help_text, epilog=EPILOG,
+        p = sub.add_parser(name, help=help_text, description=help_text, epilog=epilog(name),
                            formatter_class=argparse.RawDescriptionHelpFormatter)
         mod.configure(p)
         # also after the command (plans solve F --debug), as its message says; SUPPRESS:
         # absent there, it leaves the value given before the command alone
         p.add_argument("--debug", action="store_true", default=argparse.SUPPRESS,
                        help="show the traceback of an internal error")
+        p.add_argument("--follow-links", action="store_true",
+                       help="an output that is a symbolic link: write the file it names "
+                            "(default: replace the link with the new file)")
         p.set_defaults(run=mod.run)
         parser.commands[name] = p
     return parser
@@ -163,33 +196,64 @@ def main(argv: list[str] | None = None) -> int:
     if not getattr(args, "run", None):
         parser.print_help()
         return ExitStatus.INPUT
-    args.run_files = RunFiles()  # this run's: each command claims the files it reads
+    # this run's: each command claims the files it reads and stages those it writes
+    args.run_files = RunFiles(follow_links=getattr(args, "follow_links", False))
+    held = _stop_on_signals()
     try:
-        return args.run(args)
+        return _run(args)
+    except Stopped as exc:
+        name = signal.Signals(exc.signum).name
+        say(args.command, f"stopped by {name}: nothing written")
+        return 128 + exc.signum
     except PlansError as exc:
         for line in error_lines(exc):
-            print(f"plans {args.command}: {line}", file=sys.stderr)
+            say(args.command, line)
         return ExitStatus.INPUT
     except KeyboardInterrupt:
-        print(f"plans {args.command}: interrupted", file=sys.stderr)
+        say(args.command, "interrupted")
         return ExitStatus.INTERRUPTED
     except BrokenPipeError:
         return ExitStatus.OK
-    except OSError as exc:  # stdout on a full disk or a dead device: bad output, not a bug
-        if exc.errno not in (errno.ENOSPC, errno.EIO, errno.EDQUOT, errno.EROFS):
-            raise
-        print(f"plans {args.command}: cannot write the output: {exc.strerror}", file=sys.stderr)
-        _drop_stdout()
-        return ExitStatus.INPUT
     except Exception as exc:  # an internal error: short message, traceback on --debug
+        if isinstance(exc, OSError) and exc.errno in (errno.ENOSPC, errno.EIO, errno.EDQUOT,
+                                                      errno.EROFS):
+            # stdout on a full disk or a dead device: bad output, not a bug
+            say(args.command, f"cannot write the output: {exc.strerror}")
+            _drop_stdout()
+            return ExitStatus.INPUT
         if args.debug:
             raise
-        print(
-            f"plans {args.command}: internal error: {type(exc).__name__}: {exc} "
-            "(rerun with --debug for the traceback)",
-            file=sys.stderr,
-        )
+        say(args.command, f"internal error: {type(exc).__name__}: {terminal(str(exc), 300)} "
+                          "(rerun with --debug for the traceback)")
         return ExitStatus.INTERNAL
+    finally:
+        for signum, handler in held.items():
+            signal.signal(signum, handler)
+
+
+def _run(args) -> int:
+    """The command, then its staged outputs committed together; where it fails or is
+    stopped, none of them (:class:`~plans.cli.output.RunFiles`)."""
+    try:
+        code = args.run(args)
+        args.run_files.commit()
+        return code
+    except BaseException:
+        args.run_files.abort()
+        raise
+
+
+def _stop(signum, frame) -> None:
+    raise Stopped(signum)
+
+
+def _stop_on_signals() -> dict:
+    """SIGTERM and SIGHUP unwind the run as Ctrl-C does (its temporary files removed);
+    the handlers they had, to put back (none outside the main thread, where Python
+    cannot set them)."""
+    if threading.current_thread() is not threading.main_thread():
+        return {}
+    return {signum: signal.signal(signum, _stop) for signum in STOP_SIGNALS}
 
 
 def _drop_stdout() -> None:

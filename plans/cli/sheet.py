@@ -19,10 +19,13 @@ and sheet 2's goes beside it, its name's stem ending in "-2" (:func:`beside`).
 from __future__ import annotations
 
 import copy
+import difflib
+import re
 import sys
 from pathlib import Path
 
 from drawing import dxf, export
+from drawing.sheet.frame import FORMATS
 from drawing.sheet.layout import LayoutError
 from drawing.sheet1 import FIELDS, POSITIONS, plain_titles, sparse_note
 from drawing.sheet1 import render as render_sheet
@@ -33,17 +36,29 @@ from plans.cli.common import (
     EXIT_OK,
     add_source,
     angle_field,
+    arg_text,
+    make_folder,
     mechanism_from,
     number,
     picture_names,
     same_file,
+    say,
     warn,
 )
 from plans.cycle.analysis import outside_range
 from plans.errors import AssemblyError, InputError, PlansError
 from plans.forces.note import force_note
-from plans.model.variants import read_table
+from plans.model.variants import DESIGNATION, read_table
 from plans.note.report import note
+
+#: the longest title-block entry any cell holds: the widest cell (field 1, 70 mm, three
+#: lines) takes about 120 letters of 1.8 mm condensed; a longer one is refused at once
+MAX_ENTRY = 200
+#: field 4 (the literal) has three cells of one letter each
+LITERAL_CELLS = 3
+#: the built-in table's designation on an English sheet: «ПМ» is «прикладная механика»,
+#: the workbook's subject, applied mechanics (a table's own designation is kept as given)
+DESIGNATION_EN = "AM.01.{n:02d}"
 
 
 def configure(p) -> None:
@@ -53,7 +68,8 @@ def configure(p) -> None:
                         "[loads]), 1,2 or all both: then -o, --png and --pdf name sheet 1's files "
                         "and sheet 2's go beside them, NAME-2.svg")
     p.add_argument("-o", "--output", metavar="OUT.svg",
-                   help="SVG file, '-' for stdout, or a folder with --variant all (default: stdout)")
+                   help="SVG file, '-' for stdout, or a folder with --variant all (default: "
+                        "stdout, unless it is a terminal)")
     p.add_argument("--format", default="A1", choices=["A0", "A1", "A2", "A3", "A4"],
                    help="sheet format (default A1)")
     p.add_argument("--lang", default="ru", choices=["ru", "en"], help="language of the sheet (default ru)")
@@ -68,14 +84,19 @@ def configure(p) -> None:
     p.add_argument("--note", metavar="NOTE.md",
                    help="also write the explanatory note (Markdown) of the positions the sheet "
                         "draws plans for, at the sheet's scale factors and in its language "
-                        "(with --variant all: a note beside each sheet)")
-    p.add_argument("--png", metavar="FILE", help="also write a PNG (needs cairosvg)")
-    p.add_argument("--pdf", metavar="FILE", help="also write a PDF (needs cairosvg)")
+                        "(with --variant all: a folder, DIR/variant-N.md for each sheet)")
+    p.add_argument("--png", metavar="FILE",
+                   help="also write a PNG (needs cairosvg; with --variant all: a folder)")
+    p.add_argument("--pdf", metavar="FILE",
+                   help="also write a PDF (needs cairosvg; with --variant all: a folder)")
     p.add_argument("--dxf", metavar="FILE", nargs="?", const="",
                    help="also write the sheet as DXF for КОМПАС or AutoCAD (needs ezdxf); with "
                         "--variant all, --dxf alone writes each beside its SVG")
     p.add_argument("--dpi", type=number(10, 600), default=100.0,
-                   help="PNG resolution, 10 to 600 (default 100)")
+                   help="PNG resolution, 10 to 600 (default 100); a PNG has at most "
+                        f"{export.MAX_PIXELS // 1_000_000} million pixels (A1 up to "
+                        f"{export.largest_dpi(*FORMATS['A1'])} dpi, A0 up to "
+                        f"{export.largest_dpi(*FORMATS['A0'])})")
 
 
 #: what --sheet takes
@@ -112,21 +133,16 @@ def render(mech, args, numbers: tuple[str, str] | None = None) -> tuple[str, str
     """(sheet 1's SVG, its explanatory note or None when --note is not asked for, what
     :func:`drawing.sheet1.render` tells of it); ``numbers``: the sheet's number and the
     count of sheets, where both are drawn."""
-    plans = None
-    if args.plans is not None:
-        plans = [int(t) for t in args.plans.split(",") if t.strip()] if all(
-            t.strip().lstrip("-").isdigit() for t in args.plans.split(",") if t.strip()) else None
-        if plans is None:
-            raise InputError("--plans", f"{args.plans!r} is not a list of position numbers like 1,4")
+    plans = None if args.plans is None else position_numbers(args.plans)
     try:
         svg, info = render_sheet(mech, args.format, args.lang, args.positions, plans,
-                                 args.title_block, numbers)
+                                 [*args.title_block, *designation_in(mech, args)], numbers)
     except LayoutError as exc:  # named by its file (or its table's variant), not an option
         raise InputError(mech.source, str(exc)) from None
     except AssemblyError as exc:  # an angle where it does not assemble: which, and where it does
         raise outside_range(mech, exc, *angle_field(args, mech)) from None
     if (text := sparse_note(mech, info["sheet"], info["placed"])) is not None:
-        print(f"plans sheet: note: {mech.source}: {text}", file=sys.stderr)
+        say("sheet", f"note: {mech.source}: {text}")
     for _, _, sol in info["solutions"]:  # a plan drawn near a dead point is said so
         for w in sol.warnings:
             warn("sheet", w, mech.source)
@@ -142,18 +158,67 @@ def render(mech, args, numbers: tuple[str, str] | None = None) -> tuple[str, str
     return svg, text, info
 
 
+def position_numbers(text: str) -> list[int]:
+    """--plans: the position numbers, at most 72 of them and each of a few digits
+    (a 5,000-digit number had ended in an internal error).
+
+    >>> position_numbers("1, 4")
+    [1, 4]
+    """
+    parts = [t.strip() for t in text.split(",") if t.strip()]
+    if not parts or len(parts) > POSITIONS[1] or not all(re.fullmatch(r"-?\d{1,6}", t) for t in parts):
+        raise InputError("--plans", f"{arg_text(text, 60)} is not a list of position numbers like 1,4")
+    return [int(t) for t in parts]
+
+
+def title_entries(pairs) -> None:
+    """Refuse, before anything is drawn, a --title-block entry of an unknown field (with
+    the field meant, where it is plain), one no cell holds, and a literal longer than its
+    three cells: each in one line."""
+    for pair in pairs:
+        key, eq, value = pair.partition("=")
+        key = key.strip()
+        if not eq:
+            raise InputError("--title-block", f"{arg_text(pair, 60)} is not KEY=VALUE")
+        if key.lower() not in FIELDS:
+            near = difflib.get_close_matches(key.lower(), FIELDS, n=1, cutoff=0.6)
+            hint = f' — did you mean "{near[0]}"?' if near else ""
+            raise InputError("--title-block", f"unknown title-block field {arg_text(key, 40)}{hint}; "
+                             f"known: {', '.join(sorted(FIELDS))}")
+        if len(value) > MAX_ENTRY:
+            raise InputError("--title-block", f"{key}= ({len(value)} characters) does not fit any "
+                             f"cell of the title block, which holds at most {MAX_ENTRY}: shorten it")
+        if FIELDS[key.lower()] == "literal" and len(value) > LITERAL_CELLS:
+            raise InputError("--title-block", f"{key}={arg_text(value, 40)} does not fit field 4: "
+                             f"the literal has {LITERAL_CELLS} cells of one letter each (e.g. У)")
+
+
+def designation_in(mech, args) -> list[str]:
+    """The built-in table's designation for an English sheet ("AM.01.03" for
+    «ПМ.01.03»), where neither the command line nor another table gives one: a sheet in
+    English carries no Cyrillic of the tool's own."""
+    if args.lang != "en" or getattr(args, "table", None) or args.variant is None:
+        return []
+    if any(FIELDS.get(p.partition("=")[0].strip().lower()) == "designation" for p in args.title_block):
+        return []
+    n = int(str(args.variant).strip())
+    if (mech.title or {}).get("designation") != DESIGNATION.format(n=n):
+        return []
+    return [f"designation={DESIGNATION_EN.format(n=n)}"]
+
+
 def render2(mech, args, numbers: tuple[str, str], beside_: dict[str, float] | None) -> tuple[str, dict]:
     """(sheet 2's SVG, what :func:`drawing.sheet2.render` tells of it); ``beside_``: sheet
     1's μv and μa where it is drawn too."""
     try:
-        svg, info = render_sheet2(mech, args.format, args.lang, args.positions, args.title_block,
-                                  numbers, beside_)
+        svg, info = render_sheet2(mech, args.format, args.lang, args.positions,
+                                  [*args.title_block, *designation_in(mech, args)], numbers, beside_)
     except LayoutError as exc:
         raise InputError(mech.source, str(exc)) from None
     except AssemblyError as exc:
         raise outside_range(mech, exc, *angle_field(args, mech)) from None
     if info["sparse"] is not None:
-        print(f"plans sheet: note: {mech.source}: sheet 2: {info['sparse']}", file=sys.stderr)
+        say("sheet", f"note: {mech.source}: sheet 2: {info['sparse']}")
     return svg, info
 
 
@@ -238,8 +303,16 @@ PICTURES = {".svg": ("-o", "output"), ".png": ("--png", "png"), ".pdf": ("--pdf"
 
 def run(args) -> int:
     sheets = sheets_of(args.sheet)
+    title_entries(args.title_block)
+    if args.plans is not None:
+        position_numbers(args.plans)  # once, not for each variant of --variant all
+    if args.png:
+        export.check_raster(*FORMATS[args.format], args.dpi, f"the {args.format} sheet")
     if str(args.variant).strip().lower() == "all" and args.file is None:
         return _batch(args, sheets)
+    if args.output is None and sys.stdout.isatty():
+        raise InputError("command line", "the sheet is an SVG of some 250 KB, not for a terminal: "
+                         "give -o FILE.svg (or -o - to print it all the same)")
     if args.dxf == "":
         raise InputError("--dxf", "give the DXF's file name: --dxf FILE (--dxf alone is for "
                          "--variant all, which writes each DXF beside its SVG)")
@@ -265,23 +338,43 @@ def _plans_need_sheet_1(args, sheets: tuple[int, ...]) -> None:
                          "--sheet 1,2, or leave --plans out")
 
 
+def _folder(args, opt: str, attr: str) -> Path | None:
+    """The folder an output option names with --variant all (each sheet's file goes in it
+    under the variant's name); refused in one line where it is a file or looks like a
+    file's name (it had been ignored without a word)."""
+    value = getattr(args, attr)
+    if value is None:
+        return None
+    hint = f"with --variant all give a folder, e.g. {opt} {'sheets' if opt == '-o' else attr}/"
+    if value in ("", "-"):
+        raise InputError(opt, f"{arg_text(value)}: {hint}")
+    d = Path(value)
+    if d.exists() and not d.is_dir():
+        raise InputError(opt, f"{value} is not a folder: {hint}")
+    if not d.exists() and d.suffix and not value.endswith(("/", "\\")):
+        raise InputError(opt, f"{value} looks like a file name: {hint}")
+    return d
+
+
 def _batch(args, sheets: tuple[int, ...] = (1,)) -> int:
     _plans_need_sheet_1(args, sheets)
     if not args.output or args.output == "-":
         raise InputError("-o", "with --variant all give a folder: -o DIR/")
-    out = Path(args.output)
-    if out.exists() and not out.is_dir():
-        raise InputError("-o", f"{args.output} is not a folder")
-    if not out.exists() and out.suffix and not args.output.endswith(("/", "\\")):
-        raise InputError("-o", f"{args.output} looks like a file name: with --variant all give a "
-                         "folder, e.g. -o sheets/")
+    out = _folder(args, "-o", "output")
+    folders = {attr: _folder(args, opt, attr) or out
+               for opt, attr in (("--png", "png"), ("--pdf", "pdf"), ("--note", "note"))}
     if args.dxf is not None:
         dxf.require()  # before a folder is made or a row is drawn
     table = read_table(args.table)  # once, for every row
     numbers = table.numbers  # a table that cannot be used: no folder made
     for line in table.others(None):  # rows with no number: no sheet
         warn("sheet", line)
-    out.mkdir(parents=True, exist_ok=True)
+    if args.png or args.pdf:
+        export.require()  # before any folder is made
+    make_folder(out, "-o", args.output)
+    for opt, attr in (("--png", "png"), ("--pdf", "pdf"), ("--note", "note")):
+        if getattr(args, attr):
+            make_folder(folders[attr], opt, getattr(args, attr))
     tty = sys.stderr.isatty()
     failed: list[tuple[int, str]] = []
     for i, n in enumerate(numbers, 1):
@@ -292,9 +385,9 @@ def _batch(args, sheets: tuple[int, ...] = (1,)) -> int:
         # sheet 1 variant-N.svg, sheet 2 beside it variant-N-2.svg, whichever are drawn
         stem = f"variant-{n}" if 1 in sheets else f"variant-{n}-2"
         a.output = str(out / f"{stem}.svg")
-        a.png = str(out / f"{stem}.png") if args.png else None
-        a.pdf = str(out / f"{stem}.pdf") if args.pdf else None
-        a.note = str(out / f"variant-{n}.md") if args.note else None
+        a.png = str(folders["png"] / f"{stem}.png") if args.png else None
+        a.pdf = str(folders["pdf"] / f"{stem}.pdf") if args.pdf else None
+        a.note = str(folders["note"] / f"variant-{n}.md") if args.note else None
         a.dxf = str(out / f"{stem}.dxf") if args.dxf is not None else None
         try:
             mech = mechanism_from(a, table)
@@ -311,9 +404,9 @@ def _batch(args, sheets: tuple[int, ...] = (1,)) -> int:
         print(file=sys.stderr)
     for _, msg in failed:
         for line in msg.splitlines():
-            print(f"plans sheet: {line}", file=sys.stderr)
+            say("sheet", line)
     if failed:
-        print(f"plans sheet: {len(failed)} of {len(numbers)} sheets failed", file=sys.stderr)
+        say("sheet", f"{len(failed)} of {len(numbers)} sheets failed")
         return EXIT_INPUT
     return EXIT_OK
 
