@@ -11,7 +11,8 @@ import pytest
 from support import NON_GRASHOF, run
 
 from plans.cycle.analysis import analyse_cycle
-from plans.kinematics.solver import WARN_SINE, Solver
+from plans.kinematics.solver import Solver
+from plans.tolerances import WARN_SINE
 from plans.model import mechanism
 from plans.plan.solution import solve_position
 
@@ -195,11 +196,11 @@ def test_a_linkage_that_cannot_turn_fully_has_its_positions_inside_its_exact_lim
 
 
 def test_singular_positions_are_errors_with_no_values(capsys, monkeypatch):
-    import plans.kinematics.records
+    import plans.tolerances
 
     # make every position with |sin| < 0.7 count as singular, so the error path runs
-    monkeypatch.setattr(plans.kinematics.records, "SINGULAR_SINE", 0.7)
-    monkeypatch.setattr(plans.kinematics.records, "WARN_SINE", 0.9)
+    monkeypatch.setattr(plans.tolerances, "SINGULAR_SINE", 0.7)
+    monkeypatch.setattr(plans.tolerances, "WARN_SINE", 0.9)
     code, out, err = run(capsys, "cycle", FOURBAR, "--json", "--positions", "9")
     assert code == 2
     rows = json.loads(out)["rows"]
@@ -217,10 +218,10 @@ def test_singular_positions_are_errors_with_no_values(capsys, monkeypatch):
 
 
 def test_table_marks_warnings(capsys, monkeypatch):
-    import plans.kinematics.records
+    import plans.tolerances
 
     # the five positions' sines are 0.54 at the ends and 0.86 or more between: warn below 0.6
-    monkeypatch.setattr(plans.kinematics.records, "WARN_SINE", 0.6)
+    monkeypatch.setattr(plans.tolerances, "WARN_SINE", 0.6)
     code, out, _ = run(capsys, "cycle", FOURBAR, "--positions", "5")
     assert code == 0
     assert "position 0: warning: group 2–3 (RRR)" in out

@@ -185,9 +185,8 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
     ``solver``, the motion's, names the change points among the angles."""
     import numpy as np
 
+    from plans import tolerances
     from plans.kinematics.records import (
-        SINGULAR_SINE,
-        WARN_SINE,
         is_pivot,
         near_pivot,
         on_pivot,
@@ -205,12 +204,12 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
         s = np.broadcast_to(sine_figure(np.asarray(g.velocity.sine, dtype=float)), (n,))
         valid = np.broadcast_to(np.asarray(g.valid, dtype=bool), (n,))
         q = None if pivot is None else np.where(np.isfinite(pivot), pivot, 0.0).tolist()
-        cols.append((g, g.group.label, valid.tolist(), s.tolist(), (s < WARN_SINE).tolist(), q))
+        cols.append((g, g.group.label, valid.tolist(), s.tolist(), (s < tolerances.WARN_SINE).tolist(), q))
     phis = np.asarray(motion.phi, dtype=float).tolist()
     at_ = solver.at if solver is not None else mech.driver.at
     at = functools.cache(lambda k: at_(phis[k]))  # words only where flagged, once
     placed = np.broadcast_to(np.asarray(motion.placed, dtype=bool), (n,)).tolist()
-    plain = (SINGULAR_SINE, SINGULAR_SINE)
+    plain = (tolerances.SINGULAR_SINE, tolerances.SINGULAR_SINE)
     out = []
     for k in range(n):
         figures: dict[str, float] = {}
@@ -221,10 +220,10 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
             # a group beside one of its change points: its figures must reach CHANGE_SINE
             # (Solver.singular_figures), and its failures are the change point's: positions
             # only, no error. Looked up only where a figure calls for a word
-            flagged = not valid[k] or low[k] or (pivot is not None and pivot[k] < WARN_SINE)
+            flagged = not valid[k] or low[k] or (pivot is not None and pivot[k] < tolerances.WARN_SINE)
             under, under_q = (solver.singular_figures(i, phis[k])
                               if flagged and solver is not None else plain)
-            fails = singular if under > SINGULAR_SINE and placed[k] else errors
+            fails = singular if under > tolerances.SINGULAR_SINE and placed[k] else errors
             if not valid[k]:
                 fails.append(str(g.failure(k, at(k))))
                 figures[label] = sine[k] if placed[k] else math.nan  # in line: about 0
@@ -240,7 +239,7 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
             if pivot is not None:
                 q = pivot[k]
                 figures[pivot_key(label)] = q
-                if q < WARN_SINE:  # worded (and the angle with it) only where flagged
+                if q < tolerances.WARN_SINE:  # worded (and the angle with it) only where flagged
                     if (err := on_pivot(g, q, at(k), below=under_q)) is not None:
                         fails.append(str(err))
                     else:
@@ -525,7 +524,7 @@ def to_text(t: CycleTable) -> str:
         value = float(value)
         return num(0.0 if abs(value) <= NOISE * big else value)
 
-    from plans.plan.solution import NOISE
+    from plans.tolerances import NOISE
 
     ok = np.array([st.ok for st in t.status], dtype=bool)
     placed = np.array([st.placed for st in t.status], dtype=bool)

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from plans import tolerances
 from plans.errors import InputError, PlansError
 from plans.fmt import angle, from_x
 from plans.geometry import apart
@@ -456,10 +457,10 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
             slow, fast = max(span, TWO_PI - span), min(span, TWO_PI - span)
             theta = (slow - fast) / 2
             K = slow / fast
-            if abs(theta) < 1e-9:  # equal strokes, as the tie below: θ = 0 and K = 1 exactly
+            if abs(theta) < tolerances.EQUAL_STROKES:  # equal strokes, as the tie below: θ = 0 and K = 1 exactly
                 theta, K = 0.0, 1.0
             # position 0 starts the slower (working) stroke; on a tie, the lower output value
-            if abs(span - (TWO_PI - span)) < 1e-9:
+            if abs(span - (TWO_PI - span)) < tolerances.EQUAL_STROKES:
                 start = extremes[int(np.argmin(val))]
             else:
                 start = extremes[0] if span >= TWO_PI - span else extremes[1]
@@ -481,7 +482,7 @@ def change_angles(changes, driver, lang: str = "en") -> list[str]:
 def at_rest(mech: Mechanism, linear: bool, order: int = 1) -> float:
     """Below this an output's value (``order`` 0), rate (1) or acceleration (2) is rounding
     of 0: 1e-9 of the crank's own (its pin's for a linear output) to that order."""
-    return 1e-9 * (mech.driver.length if linear else 1.0) * abs(mech.driver.omega) ** order
+    return tolerances.AT_REST * (mech.driver.length if linear else 1.0) * abs(mech.driver.omega) ** order
 
 
 def _change_points(solver: Solver, grid: np.ndarray) -> tuple[tuple[float, ...], np.ndarray]:
@@ -533,7 +534,7 @@ def _refine(solver: Solver, out: Output, mech: Mechanism, a: float, b: float,
             a = mid
         else:
             b = mid
-        if abs(b - a) < 1e-13:
+        if abs(b - a) < tolerances.ANGLE:
             break
     return 0.5 * (a + b)
 
@@ -562,7 +563,7 @@ def _limits(solver: Solver, lo: float, hi: float, step: float,
             for label, side in _guide_sides(got).items() if sides else ():
                 ok = ok & (side == sides[label])
         inside, outside = np.where(ok, mid, inside), np.where(ok, outside, mid)
-        if np.all(np.abs(outside - inside) < 1e-13):
+        if np.all(np.abs(outside - inside) < tolerances.ANGLE):
             break
     return float(inside[0]), float(inside[1])
 

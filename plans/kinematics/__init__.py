@@ -1,9 +1,8 @@
 """Group-by-group kinematics: one formula per dyad kind, recorded and bulk solves."""
 
+from plans.tolerances import LIMIT_STEP, SINGULAR_SINE, WARN_SINE
+
 from .solver import (
-    LIMIT_STEP,
-    SINGULAR_SINE,
-    WARN_SINE,
     Construction,
     GroupSolution,
     LinkState,

@@ -12,9 +12,10 @@ import math
 
 import numpy as np
 
+from plans import tolerances
 from plans.errors import AssemblyError, InputError, SingularPlanError
 from plans.geometry import cross
-from plans.kinematics.records import IN_LINE, coincident_name
+from plans.kinematics.records import coincident_name
 from plans.model.mechanism import Mechanism
 from plans.model.structure import DyadKind, Structure
 
@@ -22,15 +23,6 @@ RELATIONS = ("above", "below", "left of", "right of")
 
 #: samples of the turn searched for change points
 CHANGE_SAMPLES = 3600
-
-#: how far past an angle where a group's two assemblies meet its hints are read (rad):
-#: there (a change point, a limit of the crank's range) no hint can tell them apart,
-#: while 1e-4 rad on they stand some 1e-4 of the group's size apart
-PAST_MEETING = 1e-4
-
-#: a point within this fraction of the distances from a hint's line (or level with its
-#: point) lies on it, on neither side
-ON_LINE = 1e-9
 
 
 def change_points(sv) -> tuple[tuple[tuple[float, ...], ...], tuple[tuple[float, ...], ...],
@@ -47,7 +39,7 @@ def change_points(sv) -> tuple[tuple[tuple[float, ...], ...], tuple[tuple[float,
     other assembly with a kink in its motion (a parallelogram into an antiparallelogram,
     an isosceles crank-slider's slider to rest on the crank's pivot). The smooth motion
     goes on with the other sign. A minimum of the margin on a grid of the turn is refined
-    (to about 1e-10 rad) and taken when it lies within :data:`plans.kinematics.records.IN_LINE` of 0; one below
+    (to about 1e-10 rad) and taken when it lies within :data:`plans.tolerances.IN_LINE` of 0; one below
     that is a dead point of a linkage that cannot turn there.
 
     Where a group meets an odd number of them a turn, its smooth motion repeats only
@@ -86,7 +78,7 @@ def change_points(sv) -> tuple[tuple[tuple[float, ...], ...], tuple[tuple[float,
         points = []
         for k in np.flatnonzero(low):
             at, least = _lowest(trial, i, grid[k] - step, grid[k] + step)
-            if abs(least) <= IN_LINE:
+            if abs(least) <= tolerances.IN_LINE:
                 points.append((at - sv.branch_at) % (2 * math.pi))
         points.sort()
         found.append(tuple(points))
@@ -150,37 +142,30 @@ def parse_hint(hint: str, names: list[str]) -> tuple[str, list[str]]:
     raise ValueError('a hint reads "above BD", "below BD", "left of C" or "right of C"')
 
 
-#: above and below a vertical line (left and right of a horizontal one) are not defined:
-#: the hint is refused. Only a line vertical to rounding: one a degree off still has a
-#: side that points up, and a table's own hint ("C above BD") passes near vertical as
-#: the crank turns
-UPRIGHT = 1e-9
-
-
 class Ambiguous(ValueError):
     """A hint whose line stands across the sides it names ("above" a vertical line)."""
 
 
 def hint_holds(rel: str, X: complex, refs: list[complex]) -> bool:
     """Whether X lies on the side ``rel`` of the point or line ``refs``; a point on the
-    line (or level with the point) to rounding, :data:`ON_LINE` of the distances, lies
+    line (or level with the point) to rounding, :data:`plans.tolerances.ON_LINE` of the distances, lies
     on neither side: an assembly must not be picked by the sign of rounding."""
     if len(refs) == 1:
         Q = refs[0]
         off = X - Q
         across = off.imag if rel in ("above", "below") else off.real
-        if abs(across) <= ON_LINE * (abs(X) + abs(Q)):
+        if abs(across) <= tolerances.ON_LINE * (abs(X) + abs(Q)):
             return False
         return across > 0 if rel in ("above", "right of") else across < 0
     Q, R = refs
     d = R - Q
     across = d.real if rel in ("above", "below") else d.imag
-    if abs(across) < UPRIGHT * abs(d):
+    if abs(across) < tolerances.UPRIGHT * abs(d):
         raise Ambiguous("vertical" if rel in ("above", "below") else "horizontal")
     if (d.real < 0) if rel in ("above", "below") else (d.imag < 0):
         d = -d
     side = cross(d, X - Q)
-    if abs(side) <= ON_LINE * abs(d) * (abs(X - Q) + abs(d)):
+    if abs(side) <= tolerances.ON_LINE * abs(d) * (abs(X - Q) + abs(d)):
         return False
     return (side > 0) == (rel in ("above", "left of"))
 
@@ -214,7 +199,7 @@ class _Meet(Exception):
 def _read(mech: Mechanism, structure: Structure) -> tuple[tuple[int, ...], float, float]:
     """The signs the hints give, the mechanism's angle, and the angle they were read at:
     the mechanism's own, or, where a group's two assemblies meet there,
-    :data:`PAST_MEETING` on, the way the crank turns (or back, where the linkage does not
+    :data:`plans.tolerances.PAST_MEETING` on, the way the crank turns (or back, where the linkage does not
     close on that side or the hints part nothing there). The change point itself is then
     one the motion passes (a parallelogram given at 0°), and the motion's turn still
     starts at the given angle (:meth:`plans.kinematics.Solver.sigma`)."""
@@ -222,7 +207,7 @@ def _read(mech: Mechanism, structure: Structure) -> tuple[tuple[int, ...], float
     try:
         return _choose(mech, structure), phi, phi
     except _Meet as meet:
-        step = math.copysign(PAST_MEETING, mech.driver.omega)
+        step = math.copysign(tolerances.PAST_MEETING, mech.driver.omega)
         first = None
         for past in (phi + step, phi - step):
             try:
@@ -232,7 +217,7 @@ def _read(mech: Mechanism, structure: Structure) -> tuple[tuple[int, ...], float
             except InputError as exc:  # the hints part nothing there: the other side?
                 first = first or exc
         if first is not None:
-            why = (f" (read {PAST_MEETING:g} rad past {mech.driver.at(phi)}, where the two "
+            why = (f" (read {tolerances.PAST_MEETING:g} rad past {mech.driver.at(phi)}, where the two "
                    f"assemblies of {meet} meet)")
             raise InputError(first.source, [p + why for p in first.problems]) from None
         return _choose(mech, structure, meet=False), phi, phi  # its error, or rounding's pick
@@ -242,7 +227,7 @@ def _same(positions: dict, name: str) -> bool:
     """Whether the two assemblies (``positions`` by sign) put point ``name`` in one place,
     to rounding of the mechanism's size."""
     a, b = (complex(positions[sigma].position[name][0]) for sigma in (1, -1))
-    return abs(a - b) <= 1e-9 * (1.0 + abs(a) + abs(b))
+    return abs(a - b) <= tolerances.SAME_PLACE * (1.0 + abs(a) + abs(b))
 
 
 def _at_both(positions: dict, name: str, joint: str = " and ") -> str:
@@ -319,7 +304,7 @@ def _choose(mech: Mechanism, structure: Structure, meet: bool = True) -> tuple[i
         # on a meeting point to rounding the hints are read past it, unless they part the
         # two assemblies here (a parallelogram given 1e-6 rad short of its change point,
         # its coupler 1e-7 below OD and the other assembly's above: the file's own angle)
-        if (meet and margin is not None and abs(float(np.ravel(margin)[0])) <= IN_LINE
+        if (meet and margin is not None and abs(float(np.ravel(margin)[0])) <= tolerances.IN_LINE
                 and not (mine and len(ok) == 1)):
             raise _Meet(g.label)
         used |= set(mine)

@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from plans import tolerances
 from plans.kinematics import kernels
 from plans.kinematics.kernels import record
 from plans.kinematics.records import (
@@ -61,7 +62,7 @@ def _closure(closes, margin, scale):
     far inside its limit the group is, in metres, negative where it misses; ``scale``:
     the group's size, which the recorded margin is a fraction of."""
     gap = np.maximum(-margin, 0.0)
-    return closes, gap, ~closes & (gap <= 1e-9 * scale), margin * (1.0 / scale)
+    return closes, gap, ~closes & (gap <= tolerances.DEAD_GAP * scale), margin * (1.0 / scale)
 
 
 def _never_misses(closes, shape):

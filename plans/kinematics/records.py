@@ -13,49 +13,21 @@ from typing import NamedTuple
 
 import numpy as np
 
+from plans import tolerances
 from plans.errors import AssemblyError, PlansError, SingularPlanError
-from plans.kinematics.kernels import (
-    SINGULAR_SINE,
-    record,
-)
+from plans.kinematics.kernels import record
 from plans.model.structure import DyadKind, Group
-
-#: below this |sin| (about 2°) a position is reported as near-singular
-WARN_SINE = 0.035
-
-#: the relative error of a plan's velocities and accelerations where its lines meet at
-#: sine s is within about LOSS·ε/s² (κ²·ε, κ = 1/s: the position's error tilts the lines
-#: it intersects): 11 on the stiff scenes (README); at a crank's limit position, against
-#: the 30-digit reference, 0.7 (1.5e-3 at s = 3.3e-7)
-LOSS = 11.0
-
 
 def plan_error(sine: float) -> float | None:
     """How far off, at most and relative to the largest of them, a plan's velocities and
-    accelerations may be where its lines' sine is ``sine``; None where it is below half a
-    unit of the fourth digit a report prints (5e-5).
+    accelerations may be where its lines' sine is ``sine`` (:data:`plans.tolerances.LOSS`);
+    None where it is below what a report prints (:data:`plans.tolerances.PRINTED`).
 
     >>> plan_error(0.03), f"{plan_error(3.3e-7):.1e}", plan_error(1e-9) > 1
     (None, '2.2e-02', True)
     """
-    err = LOSS * float(np.finfo(float).eps) / (sine * sine)
-    return err if err > 5e-5 else None
-
-#: beside a change point (within :data:`CHANGE_NEAR` rad of one of the group's) a sine
-#: below this makes the position singular: there the acceleration plan's right-hand side
-#: carries the velocities' error (κ²·ε, κ = 1/sin), and the nearly parallel lines
-#: multiply it by κ again; measured on a parallelogram, ε of the rocker was off by
-#: 7·κ³·ε of ω1², 2e-6 at sin = 1e-3 and 1e-3 at sin = 1e-4
-CHANGE_SINE = 1e-3
-#: the same for a slotted link's pivot figure, whose accelerations lose 0.05–0.4·κ³·ε
-#: there (its pivot on the crank circle: 1e-8 at 1.1e-3, 1e-4 at 1.1e-4): about 3e-6 here
-CHANGE_PIVOT = 3e-4
-CHANGE_NEAR = 0.05
-
-#: a group whose margin (a fraction of its size) is within this of 0 has its links in
-#: line to rounding: equal lengths typed in decimal meet to about 1e-16, and Grashof's
-#: equality is judged to 1e-12 as well
-IN_LINE = 1e-12
+    err = tolerances.LOSS * float(np.finfo(float).eps) / (sine * sine)
+    return err if err > tolerances.PRINTED else None
 
 
 
@@ -170,14 +142,14 @@ class GroupSolution(NamedTuple):
     def parallel(self, k: int | None, at: str, source: str = "",
                  below: float | None = None) -> SingularPlanError | None:
         """The error where the two lines of the plans are parallel (|sin| below
-        :data:`SINGULAR_SINE`): a dead point, no unique plan. None elsewhere. ``below``:
-        :data:`CHANGE_SINE` beside a change point."""
-        below = SINGULAR_SINE if below is None else below  # read when called, not when defined
+        :data:`plans.tolerances.SINGULAR_SINE`): a dead point, no unique plan. None elsewhere. ``below``:
+        :data:`plans.tolerances.CHANGE_SINE` beside a change point."""
+        below = tolerances.SINGULAR_SINE if below is None else below
         s = self.sine_at(k)
         if s >= below:
             return None
         r0, r1 = self.velocity.routes
-        if s >= SINGULAR_SINE:
+        if s >= tolerances.SINGULAR_SINE:
             return SingularPlanError(
                 f"{self.group.label} at {at}: the lines {r0.relation} and {r1.relation} "
                 f"meet at {_degrees(s):.3g}° (sin = {s:.3g}), under {below:g} beside a "
@@ -191,11 +163,11 @@ class GroupSolution(NamedTuple):
     def near_parallel(self, k: int | None, at: str, lang: str = "en",
                       below: float | None = None) -> str | None:
         """The warning where the two lines meet at under about 2° (|sin| below
-        :data:`WARN_SINE`), when they are not parallel (``below``, as for
+        :data:`plans.tolerances.WARN_SINE`), when they are not parallel (``below``, as for
         :meth:`parallel`). None elsewhere."""
-        below = SINGULAR_SINE if below is None else below  # read when called, not when defined
+        below = tolerances.SINGULAR_SINE if below is None else below
         s = self.sine_at(k)
-        if not below <= s < WARN_SINE:
+        if not below <= s < tolerances.WARN_SINE:
             return None
         r0, r1 = self.velocity.routes
         err = plan_error(s)  # said where the four digits printed are not all right
@@ -255,13 +227,13 @@ def pivot_ratio(P, Q, O):
 def on_pivot(g: GroupSolution, q: float, at: str, source: str = "",
              below: float | None = None) -> SingularPlanError | None:
     """The error where the block is on the rocker's pivot (``q`` from :func:`pivot_figure`
-    below :data:`SINGULAR_SINE`, or ``below`` beside a change point): the rocker's
+    below :data:`plans.tolerances.SINGULAR_SINE`, or ``below`` beside a change point): the rocker's
     direction, ω and ε are undefined. None elsewhere."""
-    below = SINGULAR_SINE if below is None else below  # read when called, not when defined
+    below = tolerances.SINGULAR_SINE if below is None else below
     if not q < below:
         return None
     P, Q = g.group.P, g.group.Q
-    where = "is on" if q < SINGULAR_SINE else f"is all but on (under {below:g}, beside a change point)"
+    where = "is on" if q < tolerances.SINGULAR_SINE else f"is all but on (under {below:g}, beside a change point)"
     return SingularPlanError(
         f"{g.group.label} at {at}: the block {P} {where} the rocker's pivot {Q} (|{Q}{P}| "
         f"ratio {q:.3g}): the rocker's ω is undefined, {_singular(at)}",
@@ -271,9 +243,9 @@ def on_pivot(g: GroupSolution, q: float, at: str, source: str = "",
 def near_pivot(g: GroupSolution, q: float, at: str, lang: str = "en",
                below: float | None = None) -> str | None:
     """The warning where the block passes close to the rocker's pivot (``q`` under
-    :data:`WARN_SINE`, not on it: ``below`` as for :func:`on_pivot`). None elsewhere."""
-    below = SINGULAR_SINE if below is None else below  # read when called, not when defined
-    if not below <= q < WARN_SINE:
+    :data:`plans.tolerances.WARN_SINE`, not on it: ``below`` as for :func:`on_pivot`). None elsewhere."""
+    below = tolerances.SINGULAR_SINE if below is None else below
+    if not below <= q < tolerances.WARN_SINE:
         return None
     P, Q = g.group.P, g.group.Q
     if lang == "ru":
@@ -290,7 +262,7 @@ def flagged(groups, position: dict, crank_pivot: complex, at, source: str = "",
             below=None) -> tuple:
     """The conditioning figures of one position (groups and positions on Python numbers)
     that call for a word: (group, "lines" or "pivot", figure) for each under
-    :data:`WARN_SINE`, the sine between a group's two lines or a slotted link's pivot
+    :data:`plans.tolerances.WARN_SINE`, the sine between a group's two lines or a slotted link's pivot
     figure. One that is singular raises its error. ``at()`` names the crank angle, asked
     only then; ``below(i)``, the singular figures (lines, pivot) of the i-th group
     (:meth:`plans.kinematics.Solver.singular_figures`). The words, in either language, are
@@ -299,14 +271,14 @@ def flagged(groups, position: dict, crank_pivot: complex, at, source: str = "",
     for i, g in enumerate(groups):
         lines = abs(g.velocity.sine)
         q = pivot_figure(g, position, crank_pivot)
-        if WARN_SINE <= lines < math.inf and (q is None or q >= WARN_SINE):
+        if tolerances.WARN_SINE <= lines < math.inf and (q is None or q >= tolerances.WARN_SINE):
             continue
-        under, under_q = (SINGULAR_SINE, SINGULAR_SINE) if below is None else below(i)
-        if not WARN_SINE <= lines < math.inf:  # NaN, inf: parallel() refuses them
+        under, under_q = (tolerances.SINGULAR_SINE, tolerances.SINGULAR_SINE) if below is None else below(i)
+        if not tolerances.WARN_SINE <= lines < math.inf:  # NaN, inf: parallel() refuses them
             if (err := g.parallel(None, at(), source, under)) is not None:
                 raise err
             out.append((g, "lines", g.sine_at(None)))
-        if q is not None and q < WARN_SINE:
+        if q is not None and q < tolerances.WARN_SINE:
             if (err := on_pivot(g, q, at(), source, under_q)) is not None:
                 raise err
             out.append((g, "pivot", q))
@@ -372,7 +344,7 @@ class Motion:
         if self.groups:  # valid, unless a group misses by more than rounding
             out = np.ones_like(out)
         for g in self.groups:
-            out = out & (g.valid if g.margin is None else g.valid | (g.margin >= -IN_LINE))
+            out = out & (g.valid if g.margin is None else g.valid | (g.margin >= -tolerances.IN_LINE))
         for z in self.position.values():  # a pin exactly on a pivot: the group has no place
             out = out & np.isfinite(z)
         return out

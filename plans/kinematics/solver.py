@@ -26,6 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
+from plans import tolerances
 from plans.errors import SingularPlanError
 from plans.geometry import apart
 from plans.kinematics import kernels, records
@@ -33,11 +34,6 @@ from plans.kinematics.branches import choose_branches, hint_holds, parse_hint
 from plans.kinematics.groups import SOLVERS, ScalarFallback
 from plans.kinematics.kernels import record
 from plans.kinematics.records import (
-    CHANGE_NEAR,
-    CHANGE_PIVOT,
-    CHANGE_SINE,
-    SINGULAR_SINE,
-    WARN_SINE,
     Construction,
     GroupSolution,
     LinkState,
@@ -53,16 +49,10 @@ from plans.model.mechanism import Mechanism
 from plans.model.structure import Structure, analyse
 
 __all__ = [
-    "SINGULAR_SINE", "WARN_SINE", "Construction", "GroupSolution", "LinkState", "Motion",
+    "Construction", "GroupSolution", "LinkState", "Motion",
     "Route", "Solver", "Term", "choose_branches", "coincident_name", "hint_holds",
     "parse_hint",
 ]
-
-#: how far past a change point (rad, in the crank's sense) the points that are nowhere on
-#: it are placed (:meth:`Solver.solve`): the positions are then off by about 1e-9 of the
-#: links' lengths, where rounding alone would leave the rocker's direction 0/0
-LIMIT_STEP = 1e-9
-
 
 def crank_angle(phi) -> float:
     """One crank angle (rad) as a Python float: an array of angles, a complex number or
@@ -177,13 +167,13 @@ class Solver:
 
     def change_point_near(self, phi: float, group: int | None = None) -> float | None:
         """The change point (crank angle, rad from +x) of group ``group`` (of any: None)
-        nearest to ``phi``, if one is within :data:`plans.kinematics.records.CHANGE_NEAR`."""
+        nearest to ``phi``, if one is within :data:`plans.tolerances.CHANGE_NEAR`."""
         turn = (phi - self.branch_at) % (2 * math.pi)
         best = None
         for i, points in enumerate(self.changes):
             if group is None or i == group:
                 for f in points:
-                    if (d := apart(turn, f)) < CHANGE_NEAR and (best is None or d < best[0]):
+                    if (d := apart(turn, f)) < tolerances.CHANGE_NEAR and (best is None or d < best[0]):
                         best = (d, f)
         return None if best is None else self.branch_at + best[1]
 
@@ -191,16 +181,16 @@ class Solver:
         """Whether the crank angle ``phi`` (rad from +x) is a change point, to 1e-9 rad:
         the positions stand there, the plans are singular."""
         near = self.change_point_near(phi)
-        return near is not None and apart(phi, near) < 1e-9
+        return near is not None and apart(phi, near) < tolerances.AT_CHANGE_POINT
 
     def singular_figures(self, group: int, phi: float) -> tuple[float, float]:
         """Below which figures (the lines' sine, a slotted link's pivot figure) group
-        ``group``'s plans are singular at ``phi``: :data:`plans.kinematics.records.SINGULAR_SINE`, or
-        beside one of its change points :data:`plans.kinematics.records.CHANGE_SINE` and
-        :data:`plans.kinematics.records.CHANGE_PIVOT`."""
+        ``group``'s plans are singular at ``phi``: :data:`plans.tolerances.SINGULAR_SINE`, or
+        beside one of its change points :data:`plans.tolerances.CHANGE_SINE` and
+        :data:`plans.tolerances.CHANGE_PIVOT`."""
         if self.change_point_near(phi, group) is None:
-            return records.SINGULAR_SINE, records.SINGULAR_SINE  # read now, as records does
-        return CHANGE_SINE, CHANGE_PIVOT
+            return tolerances.SINGULAR_SINE, tolerances.SINGULAR_SINE
+        return tolerances.CHANGE_SINE, tolerances.CHANGE_PIVOT
 
     def trusted(self, m) -> np.ndarray:
         """Where the plans of ``m`` can be built: every group closes and its figures, the
@@ -221,13 +211,13 @@ class Solver:
         for i, (sine, q) in enumerate(figures):
             beside = np.zeros(phi.shape, dtype=bool)
             for f in self.changes[i]:
-                beside |= apart(turn, f) < CHANGE_NEAR
+                beside |= apart(turn, f) < tolerances.CHANGE_NEAR
             with np.errstate(invalid="ignore"):
                 sine = np.abs(np.asarray(sine, dtype=float))
                 ok &= np.where(np.isfinite(sine), sine, 0.0) >= np.where(
-                    beside, CHANGE_SINE, records.SINGULAR_SINE)
+                    beside, tolerances.CHANGE_SINE, tolerances.SINGULAR_SINE)
                 if q is not None:
-                    ok &= q >= np.where(beside, CHANGE_PIVOT, records.SINGULAR_SINE)
+                    ok &= q >= np.where(beside, tolerances.CHANGE_PIVOT, tolerances.SINGULAR_SINE)
         return ok
 
     def at(self, phi: float, lang: str = "en") -> str:
@@ -240,7 +230,7 @@ class Solver:
         near = self.change_point_near(phi)
         if near is None or lang != "en":
             return words
-        if apart(phi, near) < 1e-9:
+        if apart(phi, near) < tolerances.AT_CHANGE_POINT:
             return words + " (a change point: the two assemblies of a group meet there)"
         return (words + f" (beside the change point at {self._at(near, lang)}, where the "
                 "two assemblies of a group meet)")
@@ -291,7 +281,7 @@ class Solver:
         """``m`` with the points that are nowhere on a change point placed where the
         motion puts them: a slotted link's rocker when the block is exactly on its pivot,
         whose direction 0/0 leaves undetermined, is where it stands an instant later
-        (:data:`LIMIT_STEP` on, in the crank's sense), as the turn from there goes on.
+        (:data:`plans.tolerances.LIMIT_STEP` on, in the crank's sense), as the turn from there goes on.
         The plans there stay singular; only positions and the links' poses are filled."""
         placed = m.placed
         if placed.all():
@@ -301,7 +291,7 @@ class Solver:
                         if self.on_change_point(float(flat[k]))], dtype=int)
         if not idx.size:
             return m
-        on = flat[idx] + math.copysign(LIMIT_STEP, self.mech.driver.omega)
+        on = flat[idx] + math.copysign(tolerances.LIMIT_STEP, self.mech.driver.omega)
         later = self._solve(kernels.ARRAY, on, np.zeros_like(on), np.exp(1j * on))
 
         def filled(now, then):

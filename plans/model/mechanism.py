@@ -23,6 +23,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
+from plans import tolerances
 from plans.errors import InputError
 from plans.geometry import cross
 from plans.model.fileformat import (
@@ -284,7 +285,7 @@ SPEED = (1e-6, MAX_ABS)  # rad/s, rpm
 #: the slowest crank in rpm: the slowest in rad/s (1e-6 rpm had passed as 1e-7 rad/s)
 RPM_MIN = SPEED[0] * 30.0 / math.pi
 SCALE = (1e-9, MAX_ABS)  # μl m/mm, μv (m/s)/mm, μa (m/s²)/mm
-SAME = 1e-12  # m: two points of one link closer than this are the same place
+SAME = tolerances.SAME  # m: two points of one link closer than this are the same place
 
 
 def load(path: str | Path) -> Mechanism:
@@ -811,7 +812,7 @@ FIXED_NAMES = ("x-x", "y-y", "z-z", "u-u", "w-w")
 
 
 def _parallel(a: complex, b: complex) -> bool:
-    return abs(cross(a, b)) <= 1e-12
+    return abs(cross(a, b)) <= tolerances.AXIAL
 
 
 def _free_name(candidates, taken: dict[str, complex], direction: complex) -> str:
@@ -827,7 +828,7 @@ def _name_fixed_guides(sliders: list[Slider]) -> list[Slider]:
     of another direction is already called so: then the first free of
     :data:`FIXED_NAMES`."""
     def inclined(d: complex) -> bool:
-        return abs(d.real) > 1e-12 and abs(d.imag) > 1e-12
+        return abs(d.real) > tolerances.AXIAL and abs(d.imag) > tolerances.AXIAL
 
     renamed = [i for i, s in enumerate(sliders)
                if s.guide.named_by_tool and s.guide.link == 0 and inclined(s.guide.direction)]
@@ -934,7 +935,7 @@ def _guide(body, where, pr: Problems, links, frame, bad_links, slides: str | Non
             point = _pair(through, where + ".through", pr)
             if point is None:
                 return None
-        default_label = "y-y" if abs(direction.real) < 1e-12 else "x-x"
+        default_label = "y-y" if abs(direction.real) < tolerances.AXIAL else "x-x"
     else:
         link = links[gl]
         if link.axis is None:
@@ -958,8 +959,8 @@ def _guide(body, where, pr: Problems, links, frame, bad_links, slides: str | Non
         axis = "".join(link.axis)
         on = [n for n, q in link.points.items()
               if n != slides and abs(((q - point) * direction.conjugate()).imag) < SAME]
-        default_label = (axis if abs(direction.imag) < 1e-12 else f"⊥ {axis}"
-                         if abs(direction.real) < 1e-12
+        default_label = (axis if abs(direction.imag) < tolerances.AXIAL else f"⊥ {axis}"
+                         if abs(direction.real) < tolerances.AXIAL
                          else f"{on[0]}{slides}" if on and slides else f"x{gl}-x{gl}")
     if label is not None and (not isinstance(label, str) or len(label) > 20):
         pr.add(where + ".label", f'must be a short text (at most 20 characters), e.g. "x-x", got {quote(label)}')

@@ -1,8 +1,6 @@
 """One crank position: the plans with every construction recorded."""
 
 from .solution import (
-    IN_LINE,
-    NOISE,
     Plan,
     PlanLine,
     PlanPoint,
@@ -16,8 +14,6 @@ from .solution import (
 )
 
 __all__ = [
-    "IN_LINE",
-    "NOISE",
     "Plan",
     "PlanLine",
     "PlanPoint",

@@ -20,6 +20,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from plans import tolerances
 from plans.kinematics.kernels import record
 from plans.kinematics.records import flag_words, flagged, frozen
 from plans.kinematics.solver import Motion, Solver, crank_angle
@@ -43,11 +44,6 @@ class PlanLine(NamedTuple):
     unknown: str  # the term the line carries, e.g. "a^t_A3B"
 
 
-#: |Im| of a similarity ratio below which the point is in line with its two bases
-#: (:attr:`Source.in_line`): its step is then worded as a ratio of lengths
-IN_LINE = 1e-12
-
-
 class Source(NamedTuple):
     """How a plan point was obtained.
 
@@ -69,7 +65,7 @@ class Source(NamedTuple):
     def in_line(self) -> bool:
         """A similarity point in line with its two bases (``ratio`` real): found on the
         line of their image by the ratio of lengths, not by a similar triangle."""
-        return abs(self.ratio.imag) < IN_LINE
+        return abs(self.ratio.imag) < tolerances.RATIO_IN_LINE
 
 
 class PlanPoint(NamedTuple):
@@ -102,7 +98,7 @@ class Plan(NamedTuple):
     segments: Mapping[str, float] = MappingProxyType({})
     #: the same segments' ends: name → (from, to), plan point names or the pole
     ends: Mapping[str, tuple[str, str]] = MappingProxyType({})
-    #: m/s or m/s²: a vector no longer than this is rounding of 0 (:data:`NOISE` of the
+    #: m/s or m/s²: a vector no longer than this is rounding of 0 (:data:`plans.tolerances.NOISE` of the
     #: plan's longest vector), at any μ
     tiny: float = 0.0
 
@@ -251,7 +247,8 @@ def _rates(states, links, crank_omega: float) -> tuple[dict[int, float], dict[in
             big_w = abs(w)
         if abs(e) > big_e:
             big_e = abs(e)
-    return _rounded_off(omega, NOISE * big_w), _rounded_off(epsilon, NOISE * big_e)
+    tiny = tolerances.NOISE
+    return _rounded_off(omega, tiny * big_w), _rounded_off(epsilon, tiny * big_e)
 
 
 def _rounded_off(values: dict[int, float], tiny: float) -> dict[int, float]:
@@ -335,15 +332,6 @@ def _segment_pairs(mech: Mechanism, motion: Motion):
 
 _POLE, _VALUE, _TERM, _CROSS, _SIMILAR, _FIGURE = range(6)
 _POLE_SOURCE = Source("pole")
-
-#: a plan's segment shorter than this share of its longest vector is 0: rounding left by
-#: two equal vectors subtracted (a relative acceleration that is 0, a translating link's
-#: points) is a few 1e-16 of them, and at an extreme position, after a group's fifty
-#: operations, up to 1.2e-14 (variant 3's rocker at rest: pc = 1.6e-12 mm of 137 mm),
-#: never a length to draw, measure or print. It is below what the engine can resolve
-#: (2.6e-15 at worst against the 30-digit reference, a few ulps per step). A real small
-#: value (a^n = V²/l 1e-4° from the press's extreme position, 4.5e-13 of the plan) stays.
-NOISE = 1e-13
 
 
 class _Recipe(NamedTuple):
@@ -429,7 +417,7 @@ def _work_out(mech: Mechanism, m: Motion, kind: str) -> _Recipe:
                 if name in own and b0 in own and b1 in own:
                     # three points of the rigid figure: the ratio is the figure's own
                     ratio = (own[name] - own[b0]) / (own[b1] - own[b0])
-                    src = Source("similarity", eqs[abs(ratio.imag) >= IN_LINE], (), n0, n1, ratio)
+                    src = Source("similarity", eqs[abs(ratio.imag) >= tolerances.RATIO_IN_LINE], (), n0, n1, ratio)
                     steps.append((_FIGURE, nx, n0, n1, ratio, src, absolute(name)))
                 else:  # a coincident point: where it is on the link changes with φ
                     steps.append((_SIMILAR, nx, name, b0, b1, n0, n1, eqs, absolute(name)))
@@ -562,7 +550,7 @@ def _compile(kind: str, pole: str, tip: str, steps, ends):
             body.append(f"q{i} = (pos[{name!r}] - pos[{b0!r}]) / (pos[{b1!r}] - pos[{b0!r}])")
             body.append(f"{v} = {var[n0]} + q{i} * ({var[n1]} - {var[n0]})")
             rec = (f"record(PlanPoint, ({pn!r}, {v}, record(Source, ('similarity', "
-                   f"{k(eqs)}[abs(q{i}.imag) >= {IN_LINE!r}], (), {n0!r}, {n1!r}, q{i}, 1.0, ''))))")
+                   f"{k(eqs)}[abs(q{i}.imag) >= {tolerances.RATIO_IN_LINE!r}], (), {n0!r}, {n1!r}, q{i}, 1.0, ''))))")
         elif op == _TERM:
             _, _, start, gi, ri, ti, src, vec = step
             term = f"cons[{gi}].routes[{ri}].terms[{ti}].value"
@@ -589,7 +577,7 @@ def _compile(kind: str, pole: str, tip: str, steps, ends):
         points.append((pn, v, rec))
         absolute(v, vec)
     values = ", ".join({pn: v for pn, v, _ in points}.values())  # as the plan keeps them
-    # each length 0 up to ``tiny`` (see NOISE), in the one dict display
+    # each length 0 up to ``tiny`` (see plans.tolerances.NOISE), in the one dict display
     segments = ", ".join(
         f"{key!r}: (m_ if (m_ := abs({var[b]} - {var[a]}) / mu) > tiny_mm else 0.0)" if var[a] != "0j"
         else f"{key!r}: (m_ if (m_ := abs({var[b]}) / mu) > tiny_mm else 0.0)" for key, (a, b) in ends.items())
@@ -611,7 +599,7 @@ def _compile(kind: str, pole: str, tip: str, steps, ends):
         f"        {k(ends)}, tiny))",
     ])
     scope = {"record": record, "Plan": Plan, "PlanPoint": PlanPoint, "Source": Source,
-             "PlanLine": PlanLine, "choose_mu": choose_mu, "NOISE": NOISE}
+             "PlanLine": PlanLine, "choose_mu": choose_mu, "NOISE": tolerances.NOISE}
     scope.update((f"K{j}", c) for j, c in enumerate(consts))
     # named by its text, so that a traceback through it shows the generated line, and one
     # mechanism solved again and again keeps one entry in linecache
