@@ -13,7 +13,7 @@ from support import NON_GRASHOF, run
 from plans.cycle.analysis import analyse_cycle
 from plans.kinematics.solver import Solver
 from plans.tolerances import WARN_SINE
-from plans.model import mechanism
+from plans.model import from_dict, load
 from plans.plan.solution import solve_position
 
 PRESS = "samples/press.toml"
@@ -52,7 +52,7 @@ def test_press_json_agrees_with_the_plan_of_each_position(capsys):
     code, out, err = run(capsys, "cycle", PRESS, "--json", "--positions", "8")
     assert code == 0, err
     data = json.loads(out)
-    mech = mechanism.load(PRESS)
+    mech = load(PRESS)
     solver = Solver(mech)
     cyc = analyse_cycle(mech, n_positions=8, solver=solver)
     assert data["positions"] == 8 and len(data["rows"]) == 8
@@ -143,7 +143,7 @@ def test_csv_names_the_conditioning_figures_as_json_and_the_sweep_do(capsys):
     for r, j in zip(rows, data, strict=True):
         for key in keys:
             assert float(r[key]) == j["conditioning"]["figures"][key]
-    sw = Solver(mechanism.load(PRESS)).sweep(np.radians([r["phi_deg"] for r in data]))
+    sw = Solver(load(PRESS)).sweep(np.radians([r["phi_deg"] for r in data]))
     assert set(keys) == set(sw.sine) | set(sw.pivot)
 
 
@@ -177,7 +177,7 @@ def test_a_linkage_that_cannot_turn_fully_has_its_positions_inside_its_exact_lim
     data = json.loads(out)
     assert data["cycle"]["full_turn"] is False
     assert "cannot make a full turn" in data["numbering"]
-    mech = mechanism.load(FOURBAR)
+    mech = load(FOURBAR)
     a, ad = mech.driver.length, abs(mech.frame["D"] - mech.frame["A"])
     bc = abs(mech.links[2].points["C"] - mech.links[2].points["B"])
     cd = abs(mech.links[3].points["C"] - mech.links[3].points["D"])
@@ -242,7 +242,7 @@ def test_json_is_written_row_by_row_as_one_object():
     from plans.cli.cycle import compute, json_chunks
 
     for n in (1, 2, 7):
-        chunks = list(json_chunks(compute(mechanism.load(PRESS), n)))
+        chunks = list(json_chunks(compute(load(PRESS), n)))
         assert len(chunks) == n + 2  # the head, a row each, the tail
         text = "".join(chunks)
         data = json.loads(text)
@@ -293,17 +293,19 @@ def test_cycle_pays_for_no_heavy_import(tmp_path):
     assert _modules_after(tmp_path, runs, heavy) == "[]"
 
 
-def test_solve_imports_neither_the_other_commands_nor_what_only_errors_need(tmp_path):
+def test_solve_imports_neither_the_other_commands_nor_the_drawing(tmp_path):
     """``plans solve`` is end-to-end time (README: ≤ 0.3 s), most of it imports: it
-    configures its own command only, and leaves the look-ups of a misspelt key (difflib),
-    the built-in variant table (importlib.resources) and a cryptographic hash (hashlib,
-    for a plan recipe's name) to the runs that need them."""
+    configures its own command only, and imports neither the drawing nor a package that
+    draws, plots or computes symbolically. (The standard library's modules an engine
+    module needs are imported at its top, as any other import: difflib, for a misspelt
+    key, costs some 2 ms.)"""
     from pathlib import Path
 
     press = str(Path(__file__).resolve().parent.parent / PRESS)
     runs = [["solve", press, "--json", "-o", str(tmp_path / "s.json")]]
     unpaid = ("plans.cli.report", "plans.cli.check", "plans.cli.bench", "plans.cli.sheet",
-              "difflib", "importlib.resources", "hashlib")
+              "plans.cli.check_batch", "drawing", "matplotlib", "shapely",
+              "svgwrite", "cairosvg", "sympy", "mpmath")
     assert _modules_after(tmp_path, runs, unpaid) == "[]"
 
 
@@ -314,7 +316,7 @@ def test_cycle_text_gives_every_crank_angle_in_the_files_convention(capsys):
 
     code, out, _ = run(capsys, "cycle", PRESS)
     assert code == 0
-    mech = mechanism.load(PRESS)
+    mech = load(PRESS)
     c = analyse_cycle(mech, 12)
     (line,) = [ln for ln in out.splitlines() if ln.startswith("extreme positions at φ1 = ")]
     shown = [float(x) for x in re.findall(r"([\d.]+)°", line.split(";")[0])]
@@ -333,7 +335,7 @@ def test_an_extreme_on_the_given_angle_is_one_turning_point(angle):
     from plans.model.scenes import SCENES
 
     text = SCENES["crank_slider_central"].toml.replace("angle_deg = 45", f"angle_deg = {angle}")
-    mech = mechanism.from_dict(__import__("tomllib").loads(text), "<central>")
+    mech = from_dict(__import__("tomllib").loads(text), "<central>")
     cyc = analyse_cycle(mech)
     assert not cyc.notes
     assert cyc.stroke == pytest.approx(0.2, abs=1e-12)  # H = 2R
@@ -434,7 +436,7 @@ def test_parallel_guides_end_the_cranks_range_wherever_the_samples_fall(given):
     from plans.model.scenes import SCENES
 
     toml = SCENES["tangent"].toml.replace("angle_deg = 25", f"angle_deg = {given}", 1)
-    mech = mechanism.from_dict(__import__("tomllib").loads(toml))
+    mech = from_dict(__import__("tomllib").loads(toml))
     c = analyse_cycle(mech)
     assert not c.full_turn
     # to within 1e-10 rad: a sine under SINGULAR_SINE (1e-10) is parallel, C at 2e9 m
@@ -449,8 +451,8 @@ def test_two_moving_guides_limit_the_crank_where_they_turn_parallel():
     toml = SCENES["prp_two_moving"].toml
     got = []
     for shift in (0.0, 0.05, 0.0137):
-        mech = mechanism.from_dict(__import__("tomllib").loads(toml))
-        mech = mechanism.from_dict(__import__("tomllib").loads(toml.replace(
+        mech = from_dict(__import__("tomllib").loads(toml))
+        mech = from_dict(__import__("tomllib").loads(toml.replace(
             f"angle_deg = {math.degrees(mech.driver.phi):g}",
             f"angle_deg = {math.degrees(mech.driver.phi) + shift:g}", 1)))
         c = analyse_cycle(mech)
@@ -481,7 +483,7 @@ def test_a_sine_is_never_above_one(capsys, tmp_path):
     code, out, _ = run(capsys, "cycle", path, "--json", "--positions", "360")
     figures = [v for r in json.loads(out)["rows"] for v in r["conditioning"]["figures"].values()]
     assert max(figures) == 1.0
-    mech = mechanism.from_dict(__import__("tomllib").loads(SCENES["slotted_oscillating"].toml))
+    mech = from_dict(__import__("tomllib").loads(SCENES["slotted_oscillating"].toml))
     sw = Solver(mech).sweep(np.radians(np.arange(0.0, 360.0, 1.0)))
     assert max(float(s.max()) for s in sw.sine.values()) == 1.0
     assert max(Solver(mech).solve_one(math.radians(a)).groups[0].sine_at() for a in range(360)) == 1.0
@@ -622,7 +624,7 @@ def test_csv_converts_its_rows_a_stretch_at_a_time():
 
     from plans.cli.cycle import compute, csv_chunks
 
-    t = compute(mechanism.load(PRESS), 6000)
+    t = compute(load(PRESS), 6000)
     whole = "".join(csv_chunks(t, rows=6000))
     tracemalloc.start()
     try:

@@ -24,8 +24,8 @@ from plans.errors import (
     StructureError,
 )
 from plans.kinematics.solver import Solver
-from plans.model import fileformat, mechanism
-from plans.model.mechanism import from_dict, load
+from plans import model
+from plans.model import fileformat, from_dict, load
 from plans.model.variants import load_table, variant, variant_numbers
 from plans.plan.solution import solve_position
 
@@ -381,9 +381,9 @@ def test_a_tables_designation_pattern_names_each_variants_sheet(tmp_path, capsys
 
 def test_public_api_is_unchanged():
     for name in ("load", "from_dict", "Mechanism", "Link", "Guide", "Slider", "Driver"):
-        assert hasattr(mechanism, name)
-    assert mechanism.REFERENCES == {"+x": 0.0, "+y": 90.0, "-x": 180.0, "-y": 270.0}
-    assert mechanism.SENSES == {"ccw": 1.0, "cw": -1.0}
+        assert hasattr(model, name)
+    assert model.REFERENCES == {"+x": 0.0, "+y": 90.0, "-x": 180.0, "-y": 270.0}
+    assert model.SENSES == {"ccw": 1.0, "cw": -1.0}
     m = from_dict(tomllib.loads(FOURBAR), "f")
     assert m.assembly == {"C": "above BD"} and m.output == "C" and m.trace == ("E",)
 
@@ -632,7 +632,7 @@ def test_above_a_vertical_line_is_refused_and_left_of_it_does_not_depend_on_the_
         assert isinstance(err, InputError)
         assert (f"assembly.B: '{hint}': the line {hint[-2:]} is vertical at "
                 f"φ1 = 0°, so {hint.split()[0]} it names no side: write \"left of") in str(err)
-    spots = {h: Solver(mechanism.from_dict(tomllib.loads(text.replace("HINT", h)), "<t>"))
+    spots = {h: Solver(from_dict(tomllib.loads(text.replace("HINT", h)), "<t>"))
              .solve_one(0.0).position["B"] for h in ("left of OD", "left of DO", "right of OD")}
     assert spots["left of OD"] == spots["left of DO"] and spots["left of OD"].real < 0
     assert spots["right of OD"].real > 0

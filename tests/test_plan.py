@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from plans.model.mechanism import load
+from plans.model import load
 from plans.model.variants import variant
 from plans.plan.solution import solve_position
 
@@ -187,7 +187,7 @@ def test_a_guide_on_a_link_that_only_translates_has_no_coriolis_term():
     import numpy as np
 
     from plans.kinematics.solver import Solver
-    from plans.model.mechanism import from_dict
+    from plans.model import from_dict
 
     mech = from_dict(tomllib.loads(_yoke_and_rocker()), "yoke_rocker")
     assert mech.translating() == {0, 2, 3, 5}  # the yoke and the blocks in its slots
@@ -254,7 +254,7 @@ def test_a_real_small_segment_is_not_taken_for_rounding():
     """1e-4° from the press's extreme position V_A3B is 5e-6 m/s and a^n_A3B = V²/l is
     6.6e-11 m/s²: tiny but real, not two equal vectors subtracted. The plan keeps it, so
     the note's a^n and its segment bn1 agree."""
-    from plans.model.mechanism import load
+    from plans.model import load
 
     mech = load("samples/press.toml").at_file_angle(250.06763)
     sol = solve_position(mech)

@@ -19,7 +19,7 @@ from drawing.scene import Text
 from drawing.sheet.layout import share_covered
 from drawing.svg import to_svg
 from plans.cli.sheet import build_sheet
-from plans.model.mechanism import load
+from plans.model import load
 from plans.model.scenes import SCENES
 from plans.model.variants import variant, variant_numbers
 
@@ -521,7 +521,7 @@ def test_a_point_named_like_a_centre_of_mass_but_carrying_a_pair_stays_on_the_ba
     import tomllib
 
     from drawing.views import views as V
-    from plans.model.mechanism import from_dict
+    from plans.model import from_dict
     from plans.model.scenes import SCENES
 
     text = SCENES["scotch_yoke"].toml.replace('"D"', '"S4"')

@@ -24,7 +24,7 @@ from plans.cli.cycle import compute, conditioning
 from plans.cycle.analysis import analyse_cycle, summary
 from plans.kinematics.solver import Solver
 from plans.tolerances import WARN_SINE
-from plans.model.mechanism import from_dict, load
+from plans.model import from_dict, load
 from plans.model.scenes import SAMPLES, SCENES
 from plans.verify import reference
 

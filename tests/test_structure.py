@@ -5,7 +5,7 @@ from pathlib import Path
 import pytest
 
 from plans.errors import StructureError
-from plans.model.mechanism import from_dict, load
+from plans.model import from_dict, load
 from plans.model.structure import DyadKind, analyse
 from plans.model.variants import variant
 

@@ -215,7 +215,7 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
               text: str | None = None, solvers: Solvers | None = None) -> Measurement:
     """Build a :class:`Measurement` from parsed TOML (the mechanism is loaded and solved,
     with the solver ``solvers`` has for it, if given)."""
-    from plans.model import mechanism as mechmod
+    from plans.model import load as load_mechanism
 
     problems = Problems(source, text)
     if why := other_kind(data, source, "measurement"):
@@ -312,7 +312,7 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
         if isinstance(mech, int):
             m = rows.variant(mech)
         else:
-            m = mechmod.load(mech)
+            m = load_mechanism(mech)
         if angle is not None:
             m = m.at_file_angle(angle)
         sol = solve_position(m, mu=dict(mu), solver=None if solvers is None else solvers(m))

@@ -72,7 +72,7 @@ def mechanism_from(args, table=None):
     """
     import re
 
-    from plans.model import mechanism, variants
+    from plans.model import load, variants
 
     if (args.file is None) == (args.variant is None):
         raise InputError("command line", "give a mechanism FILE or --variant N (one of them)")
@@ -94,7 +94,7 @@ def mechanism_from(args, table=None):
             for line in t.others(int(text)):
                 warn(args.command, line)
     else:
-        mech = mechanism.load(args.file)
+        mech = load(args.file)
     return mech if angle is None else mech.at_file_angle(angle)
 
 

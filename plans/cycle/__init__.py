@@ -1,19 +1,16 @@
 """The whole turn: extremes, stroke, θ and K, the positions drawn, and the words for angles."""
 
+from plans.model.outputs import Output, find_output, no_output, output_of, outputs
+
 from .analysis import (
     SHOWN_FROM,
     TWO_PI,
     Cycle,
-    Output,
     analyse_cycle,
     at_rest,
     change_angles,
     file_range,
-    find_output,
     grashof_class,
-    no_output,
-    output_of,
-    outputs,
     outside,
     outside_range,
     reachable,

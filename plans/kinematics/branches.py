@@ -14,12 +14,10 @@ import numpy as np
 
 from plans import tolerances
 from plans.errors import AssemblyError, InputError, SingularPlanError
-from plans.geometry import cross
 from plans.kinematics.records import coincident_name
+from plans.model.hints import Ambiguous, hint_holds, parse_hint
 from plans.model.mechanism import Mechanism
 from plans.model.structure import DyadKind, Structure
-
-RELATIONS = ("above", "below", "left of", "right of")
 
 #: samples of the turn searched for change points
 CHANGE_SAMPLES = 3600
@@ -121,53 +119,6 @@ def _lowest(sv, i: int, lo: float, hi: float) -> tuple[float, float]:
     if bend > 0 and abs(left - right) < 2 * bend:  # the vertex lies within h of ``at``
         at += h * (left - right) / (2 * bend)
     return at, float(margin[j])
-
-
-def parse_hint(hint: str, names: list[str]) -> tuple[str, list[str]]:
-    """``"above BD"`` → ("above", ["B", "D"]); ``"right of C"`` → ("right of", ["C"])."""
-    text = " ".join(hint.strip().split())
-    for rel in RELATIONS:
-        if text.startswith(rel + " "):
-            rest = text[len(rel) + 1 :].replace("line ", "").replace("-", "").replace(" ", "")
-            refs: list[str] = []
-            while rest:
-                match = max((n for n in names if rest.startswith(n)), key=len, default=None)
-                if match is None:
-                    raise ValueError(f'"{rest}" is not a point name')
-                refs.append(match)
-                rest = rest[len(match) :]
-            if len(refs) not in (1, 2):
-                raise ValueError("name one point or a line through two points")
-            return rel, refs
-    raise ValueError('a hint reads "above BD", "below BD", "left of C" or "right of C"')
-
-
-class Ambiguous(ValueError):
-    """A hint whose line stands across the sides it names ("above" a vertical line)."""
-
-
-def hint_holds(rel: str, X: complex, refs: list[complex]) -> bool:
-    """Whether X lies on the side ``rel`` of the point or line ``refs``; a point on the
-    line (or level with the point) to rounding, :data:`plans.tolerances.ON_LINE` of the distances, lies
-    on neither side: an assembly must not be picked by the sign of rounding."""
-    if len(refs) == 1:
-        Q = refs[0]
-        off = X - Q
-        across = off.imag if rel in ("above", "below") else off.real
-        if abs(across) <= tolerances.ON_LINE * (abs(X) + abs(Q)):
-            return False
-        return across > 0 if rel in ("above", "right of") else across < 0
-    Q, R = refs
-    d = R - Q
-    across = d.real if rel in ("above", "below") else d.imag
-    if abs(across) < tolerances.UPRIGHT * abs(d):
-        raise Ambiguous("vertical" if rel in ("above", "below") else "horizontal")
-    if (d.real < 0) if rel in ("above", "below") else (d.imag < 0):
-        d = -d
-    side = cross(d, X - Q)
-    if abs(side) <= tolerances.ON_LINE * abs(d) * (abs(X - Q) + abs(d)):
-        return False
-    return (side > 0) == (rel in ("above", "left of"))
 
 
 def choose_branches(mech: Mechanism,

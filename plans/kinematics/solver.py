@@ -30,7 +30,7 @@ from plans import tolerances
 from plans.errors import SingularPlanError
 from plans.geometry import apart
 from plans.kinematics import kernels, records
-from plans.kinematics.branches import choose_branches, hint_holds, parse_hint
+from plans.kinematics.branches import choose_branches
 from plans.kinematics.groups import SOLVERS, ScalarFallback
 from plans.kinematics.kernels import record
 from plans.kinematics.records import (
@@ -50,8 +50,7 @@ from plans.model.structure import Structure, analyse
 
 __all__ = [
     "Construction", "GroupSolution", "LinkState", "Motion",
-    "Route", "Solver", "Term", "choose_branches", "coincident_name", "hint_holds",
-    "parse_hint",
+    "Route", "Solver", "Term", "coincident_name",
 ]
 
 def crank_angle(phi) -> float:

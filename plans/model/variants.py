@@ -37,7 +37,9 @@ from plans.model.fileformat import (
     read_number,
     read_toml,
 )
-from plans.model.mechanism import MIN_LINK, RPM_MIN, SENSES, SPEED, Mechanism, from_dict
+from plans.model.load import from_dict
+from plans.model.mechanism import SENSES, Mechanism
+from plans.model.parts import MIN_LINK, RPM_MIN, SPEED
 
 BUILTIN = "Table 2 (built in)"
 #: :data:`BUILTIN` in Russian, for the reports in Russian that name a variant's source
