@@ -11,7 +11,7 @@ import pytest
 from test_stability import crank_slider, fourbar, mech_of, slotted
 
 from plans import Solver, analyse_cycle
-from plans.cycle.analysis import summary
+from plans.cycle import summary
 from plans.cycle.positions import drawn
 
 A, B_, D = 0.05, 0.2, 0.2  # crank, coupler, frame: a parallelogram with c = a

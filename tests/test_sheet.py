@@ -452,19 +452,22 @@ def test_the_plan_of_positions_is_sized_by_what_it_draws(name, low, high):
     from plans.cycle.positions import drawn
     from plans.kinematics.solver import Solver
     from plans.model.scenes import SCENES
-    from plans.plan.solution import cycle_extent, solve_position
+    from plans.plan.solution import solve_position
     from plans.scales import choose_mu_l
 
     mech = SCENES[name].mechanism()
     solver = Solver(mech)
-    extent = drawn(solver, analyse_cycle(mech, 12, solver=solver)).extent
+    cycle = analyse_cycle(mech, 12, solver=solver)
+    extent = drawn(solver, cycle).extent
     m = solver.solve(mech.driver.phi + np.linspace(0, 2 * np.pi, 720))
     z = np.concatenate([np.asarray(v)[m.valid] for v in m.position.values()])
     whole = max(np.ptp(z.real), np.ptp(z.imag))
     assert low * whole <= extent <= high * whole
     assert np.isfinite(extent) and extent > 0
-    assert cycle_extent(solver) == extent
-    assert solve_position(mech).mu_l == mech.scales.get("mu_l", choose_mu_l(extent))
+    # solve sizes the plan of positions of the cycle it is given as the sheet does
+    assert drawn(Solver(mech), analyse_cycle(mech)).extent == extent
+    assert (solve_position(mech, cycle=analyse_cycle(mech)).mu_l
+            == mech.scales.get("mu_l", choose_mu_l(extent)))
 
 
 def test_solve_sizes_the_tangent_mechanism_as_the_sheet_does(capsys):

@@ -21,7 +21,7 @@ import numpy as np
 import pytest
 
 from plans.cli.cycle import compute, conditioning
-from plans.cycle.analysis import analyse_cycle, summary
+from plans.cycle import analyse_cycle, summary
 from plans.kinematics.solver import Solver
 from plans.tolerances import WARN_SINE
 from plans.model import from_dict, load

@@ -261,7 +261,7 @@ def to_text(result, lang: str = "en") -> str:
         out.append(f"  {meas.title}")
     out.append(f"{w['mech']}: {mech.name_in(lang)} ({mech.source_in(lang)}), "
                f"{mech.driver.phi_sym} = "
-               f"{mech.driver.both(sol.phi, lang, lo=sol.solver.shown_from())}")
+               f"{mech.driver.both(sol.phi, lang, lo=sol.shown_from)}")
     mu = meas.mu
     from plans.check.measured import MU_KEY, MU_SYMBOL
     from plans.note.report import UNITS

@@ -109,18 +109,20 @@ def angle_field(args, mech) -> tuple[str, float]:
 
 
 def solved_position(args, mech):
-    """(solver, solution) of ``mech`` at its crank angle, as solve and report need it;
+    """(cycle, solution) of ``mech`` at its crank angle, as solve and report need them:
+    the cycle first, which sizes the plan of positions and words the solution's angles;
     where it does not assemble there, the error names the field the angle came from
     (:func:`angle_field`) and the crank's range where it does
     (:func:`plans.cycle.outside_range`)."""
-    from plans.cycle.analysis import outside_range
+    from plans.cycle import analyse_cycle, outside_range
     from plans.errors import AssemblyError
     from plans.kinematics.solver import Solver
     from plans.plan.solution import solve_position
 
     try:
         solver = Solver(mech)
-        return solver, solve_position(mech, solver=solver)
+        cycle = analyse_cycle(mech, solver=solver)
+        return cycle, solve_position(mech, solver=solver, cycle=cycle)
     except AssemblyError as exc:
         raise outside_range(mech, exc, *angle_field(args, mech)) from None
 

@@ -103,7 +103,7 @@ class CycleTable:
 def run(args) -> int:
     import sys
 
-    from plans.cycle.analysis import outside, reachable_cycle
+    from plans.cycle import outside, reachable_cycle, shown_from
     from plans.errors import AssemblyError
 
     n = args.positions
@@ -117,7 +117,8 @@ def run(args) -> int:
         turned, solver, c = got
         # the hints read where the range is (the file's own angle does not close), or at
         # the file's angle (--angle beyond the range of a file whose angle closes)
-        read = (", assembled as the hints ask at " + solver.at(solver.branch_at)
+        read = (", assembled as the hints ask at "
+                + solver.at(solver.branch_at, "en", shown_from(c, turned.driver))
                 if solver.branch_at == turned.driver.phi else "")
         warn("cycle", f"{outside(*angle_field(args, mech), c, mech.driver)}: the cycle runs "
                       f"over that range{read}", mech.source)
@@ -155,7 +156,7 @@ def run(args) -> int:
 def compute(mech, n_positions: int, solver=None) -> CycleTable:
     import numpy as np
 
-    from plans.cycle.analysis import analyse_cycle, table_angle
+    from plans.cycle import analyse_cycle, shown_from, table_angle
     from plans.kinematics.solver import Solver
 
     solver = solver or Solver(mech)
@@ -163,7 +164,7 @@ def compute(mech, n_positions: int, solver=None) -> CycleTable:
     phi = np.array(cycle.positions, dtype=float)
     with np.errstate(all="ignore"):
         motion = solver.solve(phi)
-        status = conditioning(mech, motion, solver)
+        status = conditioning(mech, motion, solver, shown_from(cycle, mech.driver))
         out_values = None
         if cycle.output is not None:
             out_values = cycle.output.value(motion, mech)
@@ -180,13 +181,14 @@ def figure_labels(t: CycleTable) -> list[str]:
     return list(dict.fromkeys(key for st in t.status for key in st.figures))
 
 
-def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
+def conditioning(mech, motion, solver=None, lo: float = 0.0) -> tuple[Status, ...]:
     """Per position: the figures of every group, warnings and errors (see the module doc);
-    ``solver``, the motion's, names the change points among the angles."""
+    ``solver``, the motion's, names the change points among the angles; ``lo``: the turn
+    the angles are written in (:func:`plans.cycle.shown_from` of the motion's cycle)."""
     import numpy as np
 
     from plans import tolerances
-    from plans.kinematics.records import (
+    from plans.kinematics.conditioning import (
         is_pivot,
         near_pivot,
         on_pivot,
@@ -206,7 +208,8 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
         q = None if pivot is None else np.where(np.isfinite(pivot), pivot, 0.0).tolist()
         cols.append((g, g.group.label, valid.tolist(), s.tolist(), (s < tolerances.WARN_SINE).tolist(), q))
     phis = np.asarray(motion.phi, dtype=float).tolist()
-    at_ = solver.at if solver is not None else mech.driver.at
+    at_ = ((lambda phi: solver.at(phi, "en", lo)) if solver is not None else
+           (lambda phi: mech.driver.at(phi, "en", lo)))
     at = functools.cache(lambda k: at_(phis[k]))  # words only where flagged, once
     placed = np.broadcast_to(np.asarray(motion.placed, dtype=bool), (n,)).tolist()
     plain = (tolerances.SINGULAR_SINE, tolerances.SINGULAR_SINE)
@@ -477,7 +480,7 @@ def _table(title: str, head: list[str], rows: list[list[str]]) -> list[str]:
 def to_text(t: CycleTable) -> str:
     import numpy as np
 
-    from plans.kinematics.records import is_pivot
+    from plans.kinematics.conditioning import is_pivot
 
     m, mech, c = t.motion, t.mechanism, t.cycle
     d = mech.driver
@@ -495,7 +498,7 @@ def to_text(t: CycleTable) -> str:
         lines.append(
             f"ψ_{c.output.point}: degrees of link {c.output.link} from +x, measured ccw"
         )
-    from plans.cycle.analysis import summary
+    from plans.cycle import summary
 
     lines += summary(c, d)
     moving = [p for p in t.points if p not in mech.frame]
@@ -641,7 +644,7 @@ def table_degrees(deg: float, lo: float = 0.0) -> str:
 
 def _short(label: str) -> str:
     """'group 2–3 (RPR)' → 'sin 2–3'; 'group 2–3 (RPR) pivot' → 'QP 2–3'."""
-    from plans.kinematics.records import is_pivot
+    from plans.kinematics.conditioning import is_pivot
 
     parts = label.split()
     links = parts[1] if len(parts) > 1 else label

@@ -12,12 +12,11 @@ def configure(p) -> None:
 
 
 def run(args) -> int:
-    from plans.cycle.analysis import analyse_cycle
     from plans.note.report import note
 
     mech = mechanism_from(args)
-    solver, sol = solved_position(args, mech)
-    write_output(args.output, note(sol, args.lang, analyse_cycle(mech, solver=solver)))
+    cycle, sol = solved_position(args, mech)
+    write_output(args.output, note(sol, args.lang, cycle))
     for w in sol.warnings:
         warn("report", w)
     return 0

@@ -161,7 +161,7 @@ def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
     # not size a plan of positions of its own
     mu0 = {"mu_l": mech.scales.get("mu_l") or choose_mu_l(fixed.shown.extent)}
     try:
-        given = solve_position(mech, solver=solver, mu=mu0)
+        given = solve_position(mech, solver=solver, mu=mu0, cycle=cycle)
     except SingularPlanError as exc:  # its structure, μl and title block's scale are read off it
         why = ("the sheet draws the given position" if chosen is None else
                "the sheet solves the given position for its scale even with --plans")
@@ -221,9 +221,10 @@ class _Sheet1:
         got = self._sols.get(key)
         if got is None:
             if self.chosen is None:
-                got = [solve_position(self.mech, solver=self.solver, mu=mu)]
+                got = [solve_position(self.mech, solver=self.solver, mu=mu, cycle=self.cycle)]
             else:
-                got = [solve_position(self.mech, self.cycle.positions[k], solver=self.solver, mu=mu)
+                got = [solve_position(self.mech, self.cycle.positions[k], solver=self.solver, mu=mu,
+                                      cycle=self.cycle)
                        for k in self.chosen]
             self._sols[key] = got
         return got
@@ -307,7 +308,8 @@ class _Sheet1:
             from plans.plan.solution import solve_position
 
             # the positions of the plans heavy (--plans), else the given one
-            return [V.positions_view(solve_position(self.mech, solver=self.solver, mu=mu),
+            return [V.positions_view(solve_position(self.mech, solver=self.solver, mu=mu,
+                                                    cycle=self.cycle),
                                      self.cycle, self.lang, sizing=sizing, heavy=self.chosen)]
         kind = "velocity" if key == "mu_v" else "acceleration"
         return [V.plan_view(sol, kind, tag, self.lang, label, sizing=sizing)
@@ -448,7 +450,7 @@ def _compose(mech, sheet, cycle, mu, lang, title, placed, sols):
     from plans.plan.solution import solve_position
     from plans.scales import gost_scale
 
-    given = solve_position(mech, solver=sols[0][2].solver, mu=mu)
+    given = solve_position(mech, solver=sols[0][2].solver, mu=mu, cycle=cycle)
     tb = _title_block(mech, sheet, title, gost_scale(given.mu_l, lang), lang)
     scene = frame_scene(sheet, tb, lang=lang)
     scene = scene + Scene((Layer("views", tuple(p.group() for p in placed)),))

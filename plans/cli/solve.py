@@ -15,11 +15,8 @@ def configure(p) -> None:
 
 
 def run(args) -> int:
-    from plans.cycle.analysis import analyse_cycle
-
     mech = mechanism_from(args)
-    solver, sol = solved_position(args, mech)
-    cycle = analyse_cycle(mech, solver=solver)
+    cycle, sol = solved_position(args, mech)
     if args.json:
         text = json.dumps(to_json(sol, cycle), ensure_ascii=False, indent=2) + "\n"
     else:
@@ -90,7 +87,7 @@ def to_text(sol, cycle=None) -> str:
     # the file's own convention too, the one --angle and the cycle's lines below use
     out.append(
         f"Crank: link {d.link}, l_{d.pivot}{d.tip} = {num(d.length)} m, "
-        f"{d.phi_sym} = {d.both(sol.phi, lo=sol.solver.shown_from())}, "
+        f"{d.phi_sym} = {d.both(sol.phi, lo=sol.shown_from)}, "
         f"{d.omega_sym} = {num(abs(d.omega))} rad/s{_sense(d.omega)}"
     )
     out.append(
@@ -122,7 +119,7 @@ def to_text(sol, cycle=None) -> str:
         )
     if cycle is not None:
         out.append("")
-        from plans.cycle.analysis import summary
+        from plans.cycle import summary
 
         out.append("Cycle")
         out += [f"  {line}" for line in summary(cycle, d)]

@@ -3,20 +3,14 @@
 from plans.model.outputs import Output, find_output, no_output, output_of, outputs
 
 from .analysis import (
-    SHOWN_FROM,
     TWO_PI,
     Cycle,
     analyse_cycle,
     at_rest,
-    change_angles,
-    file_range,
     grashof_class,
-    outside,
     outside_range,
     reachable,
     reachable_cycle,
-    shown_from,
-    summary,
     table_angle,
 )
 from .positions import (
@@ -27,21 +21,34 @@ from .positions import (
     reach,
     trajectory_angles,
 )
+from .words import (
+    WORDS,
+    change_angles,
+    change_points,
+    file_range,
+    no_full_turn,
+    outside,
+    shown_from,
+    summary,
+    worded,
+)
 
 __all__ = [
     "FAR",
-    "SHOWN_FROM",
     "TWO_PI",
+    "WORDS",
     "Cycle",
     "Drawn",
     "Output",
     "analyse_cycle",
     "at_rest",
     "change_angles",
+    "change_points",
     "drawn",
     "file_range",
     "find_output",
     "grashof_class",
+    "no_full_turn",
     "no_output",
     "output_of",
     "outputs",
@@ -55,4 +62,5 @@ __all__ = [
     "summary",
     "table_angle",
     "trajectory_angles",
+    "worded",
 ]

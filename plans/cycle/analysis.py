@@ -7,6 +7,7 @@ faster (return) stroke; θ is the crank angle between the extreme positions' lin
 
 from __future__ import annotations
 
+import itertools
 import math
 import numbers
 from dataclasses import dataclass
@@ -14,9 +15,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from plans import tolerances
-from plans.errors import InputError, PlansError
-from plans.fmt import angle, from_x
+from plans.cycle.words import change_angles, outside, shown_from, worded
+from plans.errors import AssemblyError, InputError, PlansError, PositionError
+from plans.fmt import angle
 from plans.geometry import apart
+from plans.kinematics.setup import Setup
 from plans.kinematics.solver import Motion, Solver
 from plans.model.mechanism import Mechanism
 from plans.model.outputs import Output, find_output
@@ -79,88 +82,20 @@ class Cycle:
         return (min(lo, hi), max(lo, hi))
 
 
-def file_range(c: Cycle, driver=None) -> tuple[float, float]:
-    """The crank range of ``c`` (where it cannot make a full turn) in the convention of
-    ``driver`` (degrees; without one, counter-clockwise from +x) as it is written: from
-    the smaller angle to the larger, the first one negative where it runs through 0°
-    ("from −128.8° to 128.8°"; in the crank's own order, a clockwise crank's "from 128.8°
-    to 231.2°" named the very angles where it does not assemble)."""
-    lo, hi = c.ccw_range
-    deg = driver.file_angle if driver else from_x
-    a, b = deg(lo), deg(hi)
-    if driver is not None and driver.measured == "cw":  # that convention counts the other way
-        a, b = b, a
-    b = 0.0 if b > 360.0 - 1e-9 else b  # 359.99999999999 is 0, as angle() writes it
-    a = a - 360.0 if a > b else a
-    a = 0.0 if abs(a) < 1e-9 else a  # a limit found to 1e-13 rad: −5.7e−14° is 0
-    return a, b
-
-
-def shown_from(c: Cycle | None, driver=None) -> float:
-    """Where the turn the output writes crank angles in begins (degrees, in the
-    convention of ``driver``): 0, for [0°, 360°), unless the crank cannot make a full
-    turn and its range is written through 0° (:func:`file_range`, "from −99.72° to
-    99.72°"); then the turn centred on that range, so that an angle compared with it
-    reads −99.7°, not 260.3° (:func:`plans.fmt.angle`)."""
-    if c is None or c.full_turn or c.crank_range is None:
-        return 0.0
-    a, b = file_range(c, driver)
-    return 0.0 if a >= 0.0 else (a + b) / 2 - 180.0
-
-
-def summary(c: Cycle, driver=None) -> list[str]:
-    """The cycle in a few lines, as ``plans solve`` and ``plans cycle`` print it: the
-    four-bar's Grashof class, the crank range where it cannot make a full turn, the notes,
-    the stroke H or swing ψ, the extreme positions, θ and K.
-
-    Angles are in the convention of ``driver`` (the file's), which they name (" (from +y,
-    cw)"); without one, counter-clockwise from +x."""
-    from plans.fmt import angle, num
-    from plans.note.report import no_full_turn
-
-    deg = driver.file_angle if driver else from_x
-    convention = driver.convention() if driver else ""
-    lines = [f"four-bar: {c.grashof}"] if c.grashof else []
-    if not c.full_turn:
-        lines.append(no_full_turn(c, "en", driver))
-    lines += c.notes
-    if c.stroke is not None and c.output is not None:
-        if c.output.kind == "linear":
-            lines.append(f"stroke of {c.output.point}: H = {num(c.stroke)} m")
-        else:
-            lines.append(f"swing of link {c.output.link}: ψ = {num(math.degrees(c.stroke))}°")
-        lines.append(
-            f"extreme positions at {driver.phi_sym if driver else 'φ1'} = "
-            + ", ".join(f"{angle(deg(x))}°" for x in c.extremes) + convention
-            + f"; θ = {num(math.degrees(c.theta))}°, K = {num(c.K)}")
-    return lines
-
-
 def analyse_cycle(mech: Mechanism, n_positions: int = 12, solver: Solver | None = None,
                   samples: int = 3600) -> Cycle:
-    """The cycle of ``mech`` (see :class:`Cycle`); kept by the solver, which solves one
-    mechanism only, so that solve, its μl and its summary share one analysis.
+    """The cycle of ``mech`` (see :class:`Cycle`), solved by ``solver`` (one of ``mech``,
+    made here where it is not given). Whoever needs the cycle more than once keeps it:
+    it is a value, worked out anew at each call.
+
+    Where the mechanism does not close at its own crank angle (and so has no cycle from
+    there) this raises the error solving there raises, its angle written as the nearest
+    range where it does close writes it (:func:`plans.cycle.words.worded`).
 
     ``n_positions``: how many crank positions (:attr:`Cycle.positions`), at least 1;
     ``samples``: how many angles a turn is searched at, at least 2."""
     _whole(n_positions, "n_positions", 1)
     _whole(samples, "samples", 2)
-    if solver is not None and solver.mech is mech:
-        key = ("cycle", n_positions, samples)
-        got = solver.cache.get(key)
-        if got is None:
-            # the turn the solver's messages write angles in (Solver.at): [0°, 360°) while
-            # the cycle is found, then the cycle's own (shown_from)
-            fresh = SHOWN_FROM not in solver.cache
-            if fresh:
-                solver.cache[SHOWN_FROM] = 0.0
-            try:
-                got = solver.cache[key] = _analyse_cycle(mech, n_positions, solver, samples)
-            finally:
-                if fresh:
-                    del solver.cache[SHOWN_FROM]
-            solver.cache.setdefault(SHOWN_FROM, shown_from(got, mech.driver))
-        return got
     return _analyse_cycle(mech, n_positions, solver or Solver(mech), samples)
 
 
@@ -172,28 +107,20 @@ def _whole(value, name: str, least: int) -> None:
                          f"got {value!r}")
 
 
-#: the solver's cache key of :func:`shown_from` for its cycle (:meth:`Solver.at`)
-SHOWN_FROM = "shown from"
-
-
 def reachable(mech: Mechanism, samples: int = 3600) -> Mechanism | None:
     """Where the crank angle of ``mech`` does not assemble on any assembly: ``mech`` with
     its crank turned to the middle of the nearest range of angles where it does, as
     ``--angle`` turns it (:meth:`Mechanism.at_file_angle`: the hints are read at the
     file's own angle where the mechanism closes there, else at the new one). None where
     its angle assembles (on some assembly), or no angle does."""
-    import itertools
-
-    from plans.model.structure import analyse
-
-    structure = analyse(mech)
-    n = len(structure.groups)
+    setup = Setup.of(mech)
+    n = len(setup.structure.groups)
     grid = mech.driver.phi + np.linspace(0.0, TWO_PI, samples, endpoint=False)
     closes = np.zeros(samples, dtype=bool)
     # on every assembly: a later group may close on one of an earlier group's only
     for sigmas in itertools.islice(itertools.product((1, -1), repeat=n), 64):
         with np.errstate(all="ignore"):
-            closes |= Solver(mech, structure, sigmas, ((),) * n).solve(grid).placed
+            closes |= Solver(mech, None, sigmas, ((),) * n, setup=setup).solve(grid).placed
     if closes[0] or not closes.any():
         return None
     got = np.flatnonzero(closes)
@@ -227,8 +154,6 @@ def outside_range(mech: Mechanism, exc: PlansError, field: str, given: float) ->
     that gave it (``driver.angle_deg``, ``--angle``) and its value ``given``, the crank's
     range where it does, in the file's convention, and the group that cannot close;
     ``exc`` itself where there is no such range."""
-    from plans.errors import AssemblyError, InputError
-
     if not isinstance(exc, AssemblyError) or (got := reachable_cycle(mech)) is None:
         return exc
     _, solver, c = got
@@ -243,22 +168,6 @@ def outside_range(mech: Mechanism, exc: PlansError, field: str, given: float) ->
             break
     return InputError(mech.source, f"{outside(field, given, c, d)}, where the mechanism "
                                    f"assembles{why}")
-
-
-def outside(field: str, given: float, c: Cycle, driver) -> str:
-    """"driver.angle_deg = 150 is outside the crank's range, φ1 from −99.72° to 99.72°":
-    the field that gave a crank angle, its value as given, and the range of ``c``, in the
-    convention of ``driver``; ``field`` "" for "150° is outside …", the field named
-    before it (a measurement file's located problem)."""
-    from plans.fmt import angle as written
-
-    lo = shown_from(c, driver)
-    a, b = file_range(c, driver)
-    head = (f"{given:g}°" if not field else
-            f"{field}{' ' if field.startswith('--') else ' = '}{given:g}")
-    return (f"{head} is outside the crank's range, {driver.phi_sym} from "
-            f"{written(a, 4, 'en', lo)}° to {written(b, 4, 'en', lo)}°"
-            f"{driver.convention()}")
 
 
 def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: int) -> Cycle:
@@ -310,7 +219,11 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
     out = find_output(mech)
     if not full:  # the range is worded where it is shown (report.no_full_turn)
         if not closes[0]:  # the given angle itself does not close: say why, as solve does
-            solver.solve_one(phi0)
+            try:
+                solver.solve_one(phi0)
+            except PositionError as err:  # in the turn of the nearest range, if any
+                got = reachable_cycle(mech)
+                raise worded(err, solver, None if got is None else got[2]) from None
         lo, hi = _limits(solver, *_interval_around(grid, closes), grid[1] - grid[0],
                          {label: side[0] for label, side in sides.items()})
         span = lo + (hi - lo) * (np.arange(n_positions) + 0.5) / n_positions
@@ -357,12 +270,6 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
     pos = tuple(start + sense * TWO_PI * i / n_positions for i in range(n_positions))
     return Cycle(out, True, tuple(extremes), stroke, theta, K, pos, grashof, tuple(notes),
                  change_points=changes)
-
-
-def change_angles(changes, driver, lang: str = "en") -> list[str]:
-    """Change points (rad from +x) as the file's angles, written to 1e-6°: they are found to
-    about 1e-10 rad, and 0° is not to read 5.7e-09°."""
-    return [angle(round(driver.file_angle(x), 6), 4, lang) for x in changes]
 
 
 def at_rest(mech: Mechanism, linear: bool, order: int = 1) -> float:

@@ -14,6 +14,7 @@ import numpy as np
 
 from plans import tolerances
 from plans.errors import AssemblyError, InputError, SingularPlanError
+from plans.kinematics.dyads import DYADS
 from plans.kinematics.records import coincident_name
 from plans.model.hints import Ambiguous, hint_holds, parse_hint
 from plans.model.mechanism import Mechanism
@@ -63,7 +64,7 @@ def change_points(sv) -> tuple[tuple[tuple[float, ...], ...], tuple[tuple[float,
         last = first + int(np.argmin(gap[first:])) - 1 if not gap[first:].all() else len(gap) - 1
         seam = 0.5 * (first + last) * step
     for i, g in enumerate(sv.structure.groups):
-        if g.kind in (DyadKind.PRP, DyadKind.RPP):  # no assemblies to meet
+        if not DYADS[g.kind].assemblies:  # no assemblies to meet
             found.append(())
             flips.append(())
             continue
@@ -121,8 +122,8 @@ def _lowest(sv, i: int, lo: float, hi: float) -> tuple[float, float]:
     return at, float(margin[j])
 
 
-def choose_branches(mech: Mechanism,
-                    structure: Structure) -> tuple[tuple[int, ...], float, float]:
+def choose_branches(mech: Mechanism, structure: Structure,
+                    trial) -> tuple[tuple[int, ...], float, float]:
     """Turn the file's hints into a sign per group, evaluated at the file's crank angle
     (``mech.hints_at`` when the crank was turned from it, :meth:`Mechanism.at_file_angle`);
     returns the signs, that angle and the one they were read at (rad from +x): the same,
@@ -133,21 +134,24 @@ def choose_branches(mech: Mechanism,
     position the cycle passes through at 180°, not whichever assembly the hint's words
     would pick there. Where the mechanism does not close at the file's angle, the hints
     are read at the angle asked for instead.
+
+    ``trial(phi, sigmas, count)``: the motion of the first ``count`` groups at crank angle
+    ``phi`` on the signs ``sigmas``, none flipping (an array of one angle): the solver's.
     """
     at = mech.hints_at
     if at is not None and at != mech.driver.phi:
         try:
-            return _read(mech.with_phi(at), structure)
+            return _read(mech.with_phi(at), structure, trial)
         except (AssemblyError, SingularPlanError):
             pass
-    return _read(mech, structure)
+    return _read(mech, structure, trial)
 
 
 class _Meet(Exception):
     """A group's two assemblies meet at the angle the hints are read at."""
 
 
-def _read(mech: Mechanism, structure: Structure) -> tuple[tuple[int, ...], float, float]:
+def _read(mech: Mechanism, structure: Structure, trial) -> tuple[tuple[int, ...], float, float]:
     """The signs the hints give, the mechanism's angle, and the angle they were read at:
     the mechanism's own, or, where a group's two assemblies meet there,
     :data:`plans.tolerances.PAST_MEETING` on, the way the crank turns (or back, where the linkage does not
@@ -156,13 +160,13 @@ def _read(mech: Mechanism, structure: Structure) -> tuple[tuple[int, ...], float
     starts at the given angle (:meth:`plans.kinematics.Solver.sigma`)."""
     phi = mech.driver.phi
     try:
-        return _choose(mech, structure), phi, phi
+        return _choose(mech, structure, trial), phi, phi
     except _Meet as meet:
         step = math.copysign(tolerances.PAST_MEETING, mech.driver.omega)
         first = None
         for past in (phi + step, phi - step):
             try:
-                return _choose(mech.with_phi(past), structure), phi, past
+                return _choose(mech.with_phi(past), structure, trial), phi, past
             except (AssemblyError, SingularPlanError, _Meet):
                 continue
             except InputError as exc:  # the hints part nothing there: the other side?
@@ -171,7 +175,7 @@ def _read(mech: Mechanism, structure: Structure) -> tuple[tuple[int, ...], float
             why = (f" (read {tolerances.PAST_MEETING:g} rad past {mech.driver.at(phi)}, where the two "
                    f"assemblies of {meet} meet)")
             raise InputError(first.source, [p + why for p in first.problems]) from None
-        return _choose(mech, structure, meet=False), phi, phi  # its error, or rounding's pick
+        return _choose(mech, structure, trial, meet=False), phi, phi  # its error, or rounding's pick
 
 
 def _same(positions: dict, name: str) -> bool:
@@ -199,11 +203,9 @@ def _parting(g, mech: Mechanism, positions: dict) -> str:
     return g.C or next(iter(mech.links[g.b].points))
 
 
-def _choose(mech: Mechanism, structure: Structure, meet: bool = True) -> tuple[int, ...]:
+def _choose(mech: Mechanism, structure: Structure, trial, meet: bool = True) -> tuple[int, ...]:
     """The sign of each group by the hints at the mechanism's angle; ``meet``: raise
     :class:`_Meet` where a group's two assemblies meet there (to rounding)."""
-    from plans.kinematics.solver import Solver  # it calls back here: imported when first needed
-
     names = mech.point_names()
     hints = {}
     for key, text in mech.assembly.items():
@@ -214,7 +216,7 @@ def _choose(mech: Mechanism, structure: Structure, meet: bool = True) -> tuple[i
     used = set()
     sigmas: list[int] = []
     for i, g in enumerate(structure.groups):
-        if g.kind in (DyadKind.PRP, DyadKind.RPP):
+        if not DYADS[g.kind].assemblies:
             sigmas.append(1)
             continue
         group_points = set(mech.links[g.a].points) | set(mech.links[g.b].points)
@@ -222,9 +224,7 @@ def _choose(mech: Mechanism, structure: Structure, meet: bool = True) -> tuple[i
         ok = []
         positions = {}
         for sigma in (1, -1):
-            trial = Solver(mech, structure, tuple(sigmas) + (sigma,) + (1,) * (len(structure.groups) - i - 1),
-                           ((),) * len(structure.groups))
-            motion = trial._solve_upto(i + 1)
+            motion = trial(mech.driver.phi, (*sigmas, sigma), i + 1)
             positions[sigma] = motion
             for k, (_, refs) in mine.items():
                 if later := [r for r in refs if r not in motion.position]:
@@ -272,7 +272,7 @@ def _choose(mech: Mechanism, structure: Structure, meet: bool = True) -> tuple[i
                 asked = ", ".join(f"{k} = {mech.assembly[k]!r}" for k in earlier)
                 note = f" (the groups before it are assembled as the hints {asked} ask: is one of them wrong?)"
             raise positions[1].groups[i].failure(0, mech.driver.at(mech.driver.phi), note,
-                                                 source=mech.source)
+                                                 source=mech.source, phi=mech.driver.phi)
         new = g.C or coincident_name(g.P, g.b)
         key = _parting(g, mech, positions)
         if mine and key not in mine and all(

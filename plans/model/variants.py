@@ -22,7 +22,9 @@ from __future__ import annotations
 
 import operator
 from dataclasses import replace
+from importlib import resources
 from pathlib import Path
+from string import Formatter
 from typing import NamedTuple
 
 from plans.errors import InputError
@@ -133,9 +135,6 @@ class Table(NamedTuple):
 def read_table(path: str | Path | None = None) -> Table:
     """The table at ``path`` (None: the built-in Table 2), read once."""
     if path is None:
-        # imported only here: it costs a tenth of what `plans solve` imports
-        from importlib import resources
-
         text = resources.files("plans").joinpath("data/table2.toml").read_text("utf-8")
         source = BUILTIN
         data = parse_toml(text, source)
@@ -241,8 +240,6 @@ def read_table(path: str | Path | None = None) -> Table:
 def _bad_pattern(pattern: str) -> str | None:
     """What is wrong with a table's designation pattern, None if nothing: it must name the
     variant ``{n}`` (else every sheet would carry one designation) and nothing else."""
-    from string import Formatter
-
     try:
         fields = [f for _, f, _, _ in Formatter().parse(pattern) if f is not None]
         pattern.format(n=7)

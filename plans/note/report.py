@@ -12,8 +12,9 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from plans.fmt import SENSE, angle, notation_in, num
-from plans.kinematics.records import flag_words
+from plans.cycle.words import change_points, no_full_turn
+from plans.fmt import SENSE, notation_in, num
+from plans.kinematics.conditioning import flag_words
 from plans.plan.solution import Solution, plan_name
 
 T = {
@@ -37,10 +38,6 @@ T = {
         "stroke": "Stroke of the output point {p}:",
         "swing": "Swing of the output link {l}:",
         "kth": "Crank angle between the extreme positions, θ, and the time ratio K, from the crank's turn over the working stroke φ_w (from the extreme position ′ to ″ in the sense of ω{d}) and over the return stroke φ_r:",
-        "change": "At {phi} = {at}°{conv}, {what}, the links of a group lie on one line and its two assemblies meet: the plans there are singular.",
-        "change1": "a change point",
-        "changes": "change points",
-        "noturn": "The input link {d} cannot make a full turn (it rocks, it is not a crank): the mechanism assembles only for {phi} from {lo}° to {hi}°{conv}, a swing of {span}°.",
         "velocities": "Velocity plan",
         "va": "Velocity of point {t} of the input link, ⊥ {p}{t} in the sense of {w}:",
         "muv": "Scale factor of the velocity plan, with p{t} = {mm} mm:",
@@ -87,10 +84,6 @@ T = {
         "stroke": "Ход выходной точки {p}:",
         "swing": "Угол размаха выходного звена {l}:",
         "kth": "Угол между положениями кривошипа в крайних положениях механизма θ и коэффициент изменения средней скорости K — по углам поворота кривошипа за рабочий ход φ_рх (от крайнего положения ′ до ″ в сторону ω{d}) и за холостой ход φ_хх:",
-        "change": "При {phi} = {at}°{conv} ({what}) звенья группы лежат на одной прямой и обе её сборки совпадают: планы скоростей и ускорений там не строятся.",
-        "change1": "точка смены сборки",
-        "changes": "точки смены сборки",
-        "noturn": "Начальное звено {d} не может сделать полный оборот (это коромысло, а не кривошип): механизм собирается только при {phi} от {lo}° до {hi}°{conv}, угол качания {span}°.",
         "velocities": "План скоростей механизма",
         "va": "Скорость точки {t} начального звена, ⊥ {p}{t} в сторону вращения {w}:",
         "muv": "Масштабный коэффициент плана скоростей при p{t} = {mm} мм:",
@@ -265,41 +258,8 @@ def warnings(sol: Solution, lang: str = "en") -> list[str]:
     same figures (``sol.flags``) worded again in Russian."""
     if lang == "en":
         return list(sol.warnings)
-    at = sol.solver.at(sol.phi, lang)  # written as the crank's range is (Solver.at)
+    at = sol.solver.at(sol.phi, lang, sol.shown_from)  # written as the crank's range is
     return [flag_words(f, at, lang) for f in sol.flags]
-
-
-def change_points(cycle, lang: str, driver) -> str:
-    """The sentence naming the cycle's change points, in the file's convention."""
-    from plans.cycle.analysis import change_angles  # the cycle words its summary from here
-
-    t = T[lang]
-    joined = {"en": " and ", "ru": " и "}.get(lang, ", ")
-    at = joined.join(change_angles(cycle.change_points, driver, lang))
-    what = t["change1"] if len(cycle.change_points) == 1 else t["changes"]
-    return t["change"].format(at=at, conv=driver.convention(lang), what=what, phi=driver.phi_sym)
-
-
-def no_full_turn(cycle, lang: str = "en", driver=None) -> str:
-    """The sentence for a crank that cannot make a full turn, with its range in the
-    convention of ``driver`` (:class:`plans.model.mechanism.Driver`), which it names; without
-    one, counter-clockwise from +x, and the input link is link 1.
-
-    The range reads as the convention counts, from the smaller angle to the larger, the
-    first one negative where it runs through 0°: "from −128.8° to 128.8°" (in the crank's
-    own order, a clockwise crank's "from 128.8° to 231.2°" named the very angles where it
-    does not assemble).
-    """
-    from plans.cycle.analysis import file_range
-
-    lo, hi = cycle.ccw_range
-    a, b = file_range(cycle, driver)
-    return T[lang]["noturn"].format(
-        d=driver.link if driver else 1, phi=driver.phi_sym if driver else "φ1",
-        lo=num(a, 4, lang).replace("-", "−"), hi=angle(b, 4, lang),
-        conv=driver.convention(lang) if driver else "",
-        span=num(math.degrees(abs(hi - lo)), 4, lang),
-    )
 
 
 def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") -> list[str]:

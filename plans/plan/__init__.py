@@ -1,16 +1,15 @@
 """One crank position: the plans with every construction recorded."""
 
-from .solution import (
+from .recipe import Recipe, recipes
+from .solution import Solution, solve_position
+from .values import (
     Plan,
     PlanLine,
     PlanPoint,
     PlanVector,
-    Solution,
     Source,
-    cycle_extent,
     image_sides,
     plan_name,
-    solve_position,
 )
 
 __all__ = [
@@ -18,10 +17,11 @@ __all__ = [
     "PlanLine",
     "PlanPoint",
     "PlanVector",
+    "Recipe",
     "Solution",
     "Source",
-    "cycle_extent",
     "image_sides",
     "plan_name",
+    "recipes",
     "solve_position",
 ]
