@@ -347,11 +347,11 @@ def test_an_extreme_on_the_given_angle_is_one_turning_point(angle):
 
 
 def test_a_velocity_that_touches_zero_is_no_turning_point():
-    from plans.cycle.analysis import _signs
+    from plans.cycle import rate_signs
 
-    assert _signs(np.array([1.0, 0.0, 1.0, -1.0, 0.0, 0.0, -1.0, 0.0])).tolist() == [
+    assert rate_signs(np.array([1.0, 0.0, 1.0, -1.0, 0.0, 0.0, -1.0, 0.0])).tolist() == [
         1, 1, 1, -1, -1, -1, -1, 1]
-    assert _signs(np.zeros(4)).tolist() == [0, 0, 0, 0]
+    assert rate_signs(np.zeros(4)).tolist() == [0, 0, 0, 0]
 
 
 def test_a_cycle_from_an_angle_that_does_not_close_says_why(capsys, tmp_path):

@@ -237,7 +237,7 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
         # no sign where it is singular, nor where the rate is rounding of 0 (1e-9 of the
         # crank's ω1, or of its pin's speed): an output at rest does not turn back
         still = at_rest(mech, out.kind == "linear")
-        sgn = _signs(np.where(near | (np.abs(rate) < still), 0.0, rate))
+        sgn = rate_signs(np.where(near | (np.abs(rate) < still), 0.0, rate))
         if not sgn.any():
             notes.append(f"the output {out.point} does not move")
         idx = np.nonzero(sgn != np.roll(sgn, -1))[0]
@@ -294,7 +294,7 @@ def _change_points(solver: Solver, grid: np.ndarray) -> tuple[tuple[float, ...],
     return tuple(angles), near
 
 
-def _signs(rate: np.ndarray) -> np.ndarray:
+def rate_signs(rate: np.ndarray) -> np.ndarray:
     """The sign of the output's velocity at each sample, a sample where it is exactly 0
     taking the sign of the next one that is not (round the turn): an extreme that falls on
     a sample (the central crank-slider at φ1 = 0) is then one change of sign, between the
