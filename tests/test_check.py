@@ -25,7 +25,7 @@ from support import NON_GRASHOF, run
 from plans.check import verdict as ck
 from plans.errors import InputError
 from plans.kinematics.solver import Solver
-from plans.model import from_dict, load
+from plans.model import load
 from plans.model.scenes import SCENES
 from plans.plan.solution import solve_position
 

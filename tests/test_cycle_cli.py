@@ -12,9 +12,9 @@ from support import NON_GRASHOF, run
 
 from plans.cycle.analysis import analyse_cycle
 from plans.kinematics.solver import Solver
-from plans.tolerances import WARN_SINE
 from plans.model import from_dict, load
 from plans.plan.solution import solve_position
+from plans.tolerances import WARN_SINE
 
 PRESS = "samples/press.toml"
 FOURBAR = "samples/fourbar.toml"

@@ -308,7 +308,8 @@ def mutated(draw, seeds=SEED_TEXTS):
                 lines[i] = f'{k}= "{v.strip()}"'
         elif op == "swap":
             a, b = draw(st.sampled_from(names)), draw(st.sampled_from(names))
-            lines[i] = lines[i].replace(f'"{a}"', '"\0"').replace(f'"{b}"', f'"{a}"').replace('"\0"', f'"{b}"')
+            lines[i] = (lines[i].replace(f'"{a}"', '"\0"').replace(f'"{b}"', f'"{a}"')
+                        .replace('"\0"', f'"{b}"'))
             lines[i] = lines[i].replace(f"{a} =", "\0").replace(f"{b} =", f"{a} =").replace("\0", f"{b} =")
         text = "\n".join(lines)
         if op == "truncate":

@@ -267,7 +267,7 @@ def test_plan_recipe_is_worked_out_again_where_a_similarity_base_degenerates():
     steps = list(recipe.steps)
     k = next(i for i, st in enumerate(steps) if st[0] == SIMILAR)
     st = steps[k]
-    steps[k] = (st[0], st[1], st[2], st[3], st[3]) + st[5:]  # base b1 := b0: divides by 0
+    steps[k] = (st[0], st[1], st[2], st[3], st[3], *st[5:])  # base b1 := b0: divides by 0
     broken = compile_steps(recipe.kind, recipe.pole, recipe.tip, steps, recipe.ends)
     recipes(sv, "velocity")[:] = [recipe._replace(steps=tuple(steps), follow=broken)]
     again = solve_position(mech, 0.3, solver=sv)
@@ -377,7 +377,7 @@ def test_the_sweep_gives_each_slotted_links_pivot_figure_as_the_cycle_does(name)
         np.testing.assert_allclose(sw.pivot[key], [r.figures[key] for r in rows], rtol=1e-14)
         g = next(g for g in sv.structure.groups if f"{g.label} pivot" == key)
         P, Q = sw.position[g.P], sw.position[g.Q]
-        O = mech.frame[mech.driver.pivot]
-        by_hand = np.abs(P - Q) / (np.abs(Q - O) + np.abs(P - O))
+        crank = mech.frame[mech.driver.pivot]
+        by_hand = np.abs(P - Q) / (np.abs(Q - crank) + np.abs(P - crank))
         np.testing.assert_allclose(sw.pivot[key], by_hand, rtol=1e-15)
         assert 0 < sw.pivot[key].min() < sw.pivot[key].max() <= 1 + 1e-15  # the triangle OPQ

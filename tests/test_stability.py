@@ -23,9 +23,9 @@ import pytest
 from plans.cli.cycle import compute, conditioning
 from plans.cycle import analyse_cycle, summary
 from plans.kinematics.solver import Solver
-from plans.tolerances import WARN_SINE
 from plans.model import from_dict, load
 from plans.model.scenes import SAMPLES, SCENES
+from plans.tolerances import WARN_SINE
 from plans.verify import reference
 
 EPS = np.finfo(float).eps

@@ -199,7 +199,8 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
         # the plans are singular at the change points, not where two turns meet (a seam
         # elsewhere): said beside them, not after the seam's angle at the end
         notes.append(
-                f"change points at {mech.driver.phi_sym} = " + ", ".join(f"{x}°" for x in change_angles(changes, mech.driver))
+                f"change points at {mech.driver.phi_sym} = "
+            + ", ".join(f"{x}°" for x in change_angles(changes, mech.driver))
             + mech.driver.convention() + f": the links of a group lie in line there and the "
             f"plans are singular; there {how}")
     closes = valid | (near & m.placed)  # a sample on a change point closes to rounding
@@ -256,7 +257,7 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
             slow, fast = max(span, TWO_PI - span), min(span, TWO_PI - span)
             theta = (slow - fast) / 2
             K = slow / fast
-            if abs(theta) < tolerances.EQUAL_STROKES:  # equal strokes, as the tie below: θ = 0 and K = 1 exactly
+            if abs(theta) < tolerances.EQUAL_STROKES:  # equal strokes, as the tie below: θ = 0, K = 1
                 theta, K = 0.0, 1.0
             # position 0 starts the slower (working) stroke; on a tie, the lower output value
             if abs(span - (TWO_PI - span)) < tolerances.EQUAL_STROKES:
@@ -425,8 +426,8 @@ def grashof_class(a: float, b: float, c: float, d: float) -> str:
         if isinstance(x, bool) or not isinstance(x, numbers.Real) or not 0 < x < math.inf:
             raise ValueError(f"grashof_class: {name} must be a positive length (m), got {x!r}")
     lengths = sorted((a, b, c, d))
-    s, l, p, q = lengths[0], lengths[3], lengths[1], lengths[2]
-    lhs, rhs = s + l, p + q
+    s, longest, p, q = lengths[0], lengths[3], lengths[1], lengths[2]
+    lhs, rhs = s + longest, p + q
     tag = f"{lhs:.6g} {'≤' if lhs <= rhs else '>'} {rhs:.6g}"
     if math.isclose(lhs, rhs, rel_tol=1e-12):
         return f"change-point linkage (Grashof equality: {tag}): its links come in line at change points"

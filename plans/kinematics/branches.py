@@ -270,7 +270,8 @@ def _choose(mech: Mechanism, structure: Structure, trial, meet: bool = True) -> 
             note = ""
             if earlier:
                 asked = ", ".join(f"{k} = {mech.assembly[k]!r}" for k in earlier)
-                note = f" (the groups before it are assembled as the hints {asked} ask: is one of them wrong?)"
+                note = (f" (the groups before it are assembled as the hints {asked} ask: is one of "
+                        "them wrong?)")
             raise positions[1].groups[i].failure(0, mech.driver.at(mech.driver.phi), note,
                                                  source=mech.source, phi=mech.driver.phi)
         new = g.C or coincident_name(g.P, g.b)

@@ -75,10 +75,10 @@ def is_pivot(key: str) -> bool:
     return key.endswith(PIVOT)
 
 
-def pivot_ratio(P, Q, O):
+def pivot_ratio(P, Q, crank):
     """|QP| / (|OQ| + |OP|) of a block P, a rocker's pivot Q and the crank's pivot O
-    (arrays or Python numbers); 0 where all three coincide."""
-    loop = abs(Q - O) + abs(P - O)
+    (``crank``; arrays or Python numbers); 0 where all three coincide."""
+    loop = abs(Q - crank) + abs(P - crank)
     if isinstance(loop, float):  # the one-angle path, on Python numbers
         return abs(P - Q) / loop if loop > 0 else 0.0
     with np.errstate(all="ignore"):

@@ -7,7 +7,6 @@ whichever it solved. Everything here is immutable.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from typing import NamedTuple
 
@@ -17,7 +16,8 @@ from plans import tolerances
 from plans.errors import PositionError, SingularPlanError
 from plans.kinematics import conditioning
 from plans.kinematics.kernels import record
-from plans.model.structure import DyadKind, Group
+from plans.model.structure import Group
+
 
 class LinkState(NamedTuple):
     """Pose and motion of a link: its origin point and orientation (unit complex),

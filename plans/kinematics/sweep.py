@@ -77,8 +77,8 @@ class Sweep:
         its block P is from the rocker's pivot Q, |QP| / (|OQ| + |OP|), O the crank's pivot
         (:func:`plans.kinematics.conditioning.pivot_figure`). Near 0 the rocker's ω = V / |QP| loses its
         digits while the lines' sine stays 1. Worked out when asked for."""
-        return {key: pivot_ratio(self.position[P], self.position[Q], O)
-                for key, P, Q, O in self.slots}
+        return {key: pivot_ratio(self.position[P], self.position[Q], crank)
+                for key, P, Q, crank in self.slots}
 
 
 def sweep(sv, phi, block: int = BLOCK, into: Sweep | None = None) -> Sweep:

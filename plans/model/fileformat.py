@@ -45,7 +45,8 @@ def read_toml(path: str | Path, typical: str = "") -> tuple[dict, str]:
         raise InputError(source, f"cannot read the file: {exc.strerror or exc}") from None
     if len(raw) > MAX_FILE:
         raise InputError(
-            source, f"the file is larger than {MAX_FILE // 1_000_000} MB" + (f"; {typical}" if typical else "")
+            source,
+            f"the file is larger than {MAX_FILE // 1_000_000} MB" + (f"; {typical}" if typical else "")
         )
     nul = raw.find(b"\x00")
     if nul >= 0:
@@ -72,7 +73,8 @@ def parse_toml(text: str, source: str) -> dict:
     except RecursionError:
         deep = re.search(r"[\[{](?:\s*[\[{]){50}", text)
         at = f"line {text.count(chr(10), 0, deep.start()) + 1}: " if deep else ""
-        raise InputError(source, f"{at}TOML nested too deeply: these files need three levels at most") from None
+        raise InputError(source, f"{at}TOML nested too deeply: these files need three levels at "
+                                 "most") from None
     except (ValueError, OverflowError, MemoryError) as exc:  # e.g. an integer of 5000 digits
         long = re.search(r"\d{4000,}", text)
         at = f"line {text.count(chr(10), 0, long.start()) + 1}: " if long else ""
@@ -80,7 +82,8 @@ def parse_toml(text: str, source: str) -> dict:
         raise InputError(source, f"{at}TOML value out of range: {what}") from None
 
 
-_TOML_AT = re.compile(r"^(?P<msg>.*?)\s*\((?:at line (?P<line>\d+), column (?P<col>\d+)|at end of document)\)$", re.S)
+_TOML_AT = re.compile(r"^(?P<msg>.*?)\s*\((?:at line (?P<line>\d+), column (?P<col>\d+)|at end of "
+                      r"document)\)$", re.S)
 _TOML_HINTS = (
     ("Invalid value", "a value is a number, \"text\" in double quotes, [a, list] or { a = table }"),
     ("Cannot overwrite a value", "a name given twice: each key once"),

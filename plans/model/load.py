@@ -110,7 +110,8 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
     bad_links: set[int] = set()  # links with a problem of their own: no follow-up messages
     raw_links = data.get("links")
     if not isinstance(raw_links, dict) or not raw_links:
-        what = "missing" if raw_links is None else f"must be a table of numbered links, got {quote(raw_links)}"
+        what = ("missing" if raw_links is None else
+                f"must be a table of numbered links, got {quote(raw_links)}")
         pr.add("links", f'{what}: the moving links, e.g. [links.1] axis = ["O", "A"]')
         raw_links = {}
     if len(raw_links) > MAX_LINKS:
@@ -128,7 +129,8 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
             continue
         lid = int(key)
         if not isinstance(body, dict):
-            pr.add(where, f'must be a table with axis and points, e.g. [links.{lid}] axis = ["B", "C"], got {quote(body)}')
+            pr.add(where, f'must be a table with axis and points, e.g. [links.{lid}] axis = ["B", "C"], got '
+                          f'{quote(body)}')
             bad_links.add(lid)
             continue
         check_keys(body, {"name", "axis", "points"}, where, pr)
@@ -145,7 +147,8 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
     sliders: list[Slider] = []
     raw_sliders = data.get("sliders", [])
     if not isinstance(raw_sliders, list):
-        pr.add("sliders", f"must be an array of tables, [[sliders]] link = … guide = {{…}}, got {quote(raw_sliders)}")
+        pr.add("sliders", "must be an array of tables, [[sliders]] link = … guide = {…}, got "
+                          f"{quote(raw_sliders)}")
         raw_sliders = []
     if len(raw_sliders) > MAX_ITEMS:
         pr.add("sliders", f"{len(raw_sliders)} sliders: at most {MAX_ITEMS}")
@@ -163,9 +166,11 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
         if lid is None or lid not in links:
             if lid not in bad_links:
                 if raw_lid is None:
-                    pr.add(where + ".link", f"missing: the number of the sliding link (moving links: {link_ids(links)})")
+                    pr.add(where + ".link", "missing: the number of the sliding link (moving links: "
+                                            f"{link_ids(links)})")
                 else:
-                    pr.add(where + ".link", not_a_link(raw_lid, "a moving link", f"moving links: {link_ids(links)}"))
+                    pr.add(where + ".link", not_a_link(raw_lid, "a moving link", "moving links: "
+                                                                                 f"{link_ids(links)}"))
             continue
         if lid in sliding:
             pr.add(
@@ -192,10 +197,12 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
         if guide is None or point is None:
             continue
         if guide.link == lid:
-            pr.add(where + ".guide.link", f"link {lid} cannot slide on its own guide: name the link that carries the guide (0 = frame)")
+            pr.add(where + ".guide.link", f"link {lid} cannot slide on its own guide: name the link that "
+                                          "carries the guide (0 = frame)")
             continue
         if link.axis is None and link.points.get(point, 0j) != 0j:
-            pr.add(f"links.{lid}.points.{point}", "the sliding point of a link without an axis is its origin: 0")
+            pr.add(f"links.{lid}.points.{point}", "the sliding point of a link without an axis is its "
+                                                  "origin: 0")
             continue
         sliders.append(Slider(lid, guide, point))
     sliders = name_slots(name_fixed_guides(sliders))
@@ -249,7 +256,8 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
             pr.add(where, unknown_point(k, all_points))
             continue
         on = [lid for lid, link in links.items() if k in link.points]
-        fixed = "a fixed point" if k in frame else "on the crank only" if drv is not None and on == [drv] else ""
+        fixed = ("a fixed point" if k in frame else
+                 "on the crank only" if drv is not None and on == [drv] else "")
         if fixed:
             pr.add(where, f"{k} is {fixed}: it has one position; a hint names the new point of a "
                    "group that closes two ways (the end of a coupler, a slider)")
@@ -273,7 +281,8 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
     scales = {}
     raw_scales = data.get("scales", {})
     if not isinstance(raw_scales, dict):
-        pr.add("scales", f"must be a table: [scales] mu_l = 0.01, mu_v = …, mu_a = …, got {quote(raw_scales)}")
+        pr.add("scales", "must be a table: [scales] mu_l = 0.01, mu_v = …, mu_a = …, got "
+                         f"{quote(raw_scales)}")
         raw_scales = {}
     check_keys(raw_scales, {"mu_l", "mu_v", "mu_a"}, "scales", pr)
     for key in ("mu_l", "mu_v", "mu_a"):
@@ -284,7 +293,8 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
                 scales[key] = val
     trace = data.get("trace", [])
     if not isinstance(trace, list) or len(trace) > MAX_ITEMS:
-        pr.add("trace", f'must be a list of at most {MAX_ITEMS} point names, e.g. ["C", "S3"], got {quote(trace)}')
+        pr.add("trace", f'must be a list of at most {MAX_ITEMS} point names, e.g. ["C", "S3"], got '
+                        f'{quote(trace)}')
         trace = []
     for i, t in enumerate(trace):
         if not isinstance(t, str):
@@ -343,7 +353,8 @@ def _coincident(points: dict[str, complex], joints: set[str], where: str, what: 
             key = (round(z.real / tol), round(z.imag / tol))
             if key in cells:
                 pr.add(f"{where}.{n}" if where == "frame" else where,
-                       f'{what} "{cells[key]}" and "{n}" are at the same place {xy_text(z)}: one joint has one name')
+                       f'{what} "{cells[key]}" and "{n}" are at the same place {xy_text(z)}: one joint has '
+                       'one name')
             cells.setdefault(key, n)
         return
     for i, a in enumerate(names):
@@ -382,7 +393,8 @@ def _connections(frame, links, pairs, drv, bad_links, pr: Problems) -> None:
         others = {n for n, c in carriers.items() if c != [lid]}
         what = (f"link {lid} is not connected to anything" if not pairs
                 else f"link {lid} is attached by one pair only ({pairs[0]})")
-        need = "a link of a mechanism is attached by at least two pairs (joints named on two links, or a slider)"
+        need = ("a link of a mechanism is attached by at least two pairs (joints named on two links, "
+                "or a slider)")
         if link.axis and link.axis[0] in free:
             why = f"it is on no other link and not in [frame], so {what}"
             pr.add(f"links.{lid}.axis[0]", unknown_point(link.axis[0], others, why))

@@ -32,7 +32,8 @@ def quote(value: Any, limit: int = 40) -> str:
     if isinstance(value, list):
         return f"a list of {len(value)}"
     if isinstance(value, int) and not isinstance(value, bool) and abs(value) > 10**15:
-        return f"{'-' if value < 0 else ''}an integer of {len(str(abs(value))) if abs(value) < 10**4000 else 'thousands of'} digits"
+        digits = len(str(abs(value))) if abs(value) < 10**4000 else "thousands of"
+        return f"{'-' if value < 0 else ''}an integer of {digits} digits"
     if isinstance(value, bool):
         return "true" if value else "false"  # as the file spells it
     if isinstance(value, datetime.date | datetime.time):

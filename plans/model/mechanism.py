@@ -124,8 +124,10 @@ class Driver:
         file's own.
 
         >>> d = Driver(1, "O", "A", 0.1, math.radians(60), 1.0, 30.0, "+y", "cw")
-        >>> d.both(math.radians(60)), d.both(math.radians(60), "ru")
-        ('60° from +x (30° from +y, cw, as the file gives it)', '60° от +x (30° от +y, по часовой стрелке, как задано в файле)')
+        >>> d.both(math.radians(60))
+        '60° from +x (30° from +y, cw, as the file gives it)'
+        >>> d.both(math.radians(60), "ru")
+        '60° от +x (30° от +y, по часовой стрелке, как задано в файле)'
         >>> replace(d, reference="+x", measured="ccw").both(math.radians(60))
         '60° from +x'
         """

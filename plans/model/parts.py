@@ -123,13 +123,15 @@ def read_link(lid: int, lname: str, body: dict, where: str, pr: Problems, named:
             named |= {a for a in (a0, a1) if a}
             axis = (a0, a1) if a0 and a1 else None
             if axis and a0 == a1:
-                pr.add(where + ".axis", f'zero-length link: both ends of the axis are "{a0}"; an axis runs between two points')
+                pr.add(where + ".axis", f'zero-length link: both ends of the axis are "{a0}"; an axis runs '
+                                        'between two points')
                 axis = None
             if axis:
                 points[a0] = 0j
     raw_points = body.get("points", {})
     if not isinstance(raw_points, dict):
-        pr.add(where + ".points", f"must be a table, e.g. points = {{ C = 0.75, S3 = [0.25, 0.02] }}, got {quote(raw_points)}")
+        pr.add(where + ".points", "must be a table, e.g. points = { C = 0.75, S3 = [0.25, 0.02] }, got "
+                                  f"{quote(raw_points)}")
         raw_points = {}
     if len(raw_points) > MAX_LINK_POINTS:
         pr.add(where + ".points", f"{len(raw_points)} points on one link: at most {MAX_LINK_POINTS}")
@@ -182,13 +184,17 @@ def read_link(lid: int, lname: str, body: dict, where: str, pr: Problems, named:
             end = points[a1]
             pw = f"{where}.points.{a1}"
             if end == 0:
-                pr.add(pw, f'zero-length link: the axis end "{a1}" is at the origin "{a0}"; give the length {a0}{a1} in metres')
+                pr.add(pw, f'zero-length link: the axis end "{a1}" is at the origin "{a0}"; give the length '
+                           f'{a0}{a1} in metres')
             elif end.imag != 0:
-                pr.add(pw, f'the axis end "{a1}" must lie on the axis: give its distance, {a1} = {abs(end):g}, not {xy_text(end)}')
+                pr.add(pw, f'the axis end "{a1}" must lie on the axis: give its distance, {a1} = '
+                           f'{abs(end):g}, not {xy_text(end)}')
             elif end.real < 0:
-                pr.add(pw, f"negative length {end.real:g}: the length {a0}{a1} is positive (write {a1} = {-end.real:g})")
+                pr.add(pw, f"negative length {end.real:g}: the length {a0}{a1} is positive (write {a1} = "
+                           f"{-end.real:g})")
             elif end.real < MIN_LINK:
-                pr.add(pw, f"link length {end.real:g} m: zero or too short, a link is at least {MIN_LINK:g} m")
+                pr.add(pw, f"link length {end.real:g} m: zero or too short, a link is at least "
+                           f"{MIN_LINK:g} m")
     if not points and not failed and len(pr.items) == before:
         pr.add(where, 'has no points: give axis = ["B", "C"] and points = { C = 0.3 }')
     return Link(lid, lname, points, axis), len(pr.items) == before
@@ -260,7 +266,8 @@ def read_guide(body, where, pr: Problems, links, frame, bad_links, slides: str |
     """
     if not isinstance(body, dict):
         got = "missing" if body is None else f"must be a table, got {quote(body)}"
-        pr.add(where, f"{got}: e.g. guide = {{ link = 0, through = [0, 0.35], angle_deg = 0 }} or {{ link = 3 }}")
+        pr.add(where, f"{got}: e.g. guide = {{ link = 0, through = [0, 0.35], angle_deg = 0 }} or {{ link = "
+                      "3 }")
         return None
     check_keys(body, {"link", "through", "angle_deg", "direction", "offset", "label"}, where, pr)
     raw = body.get("link", 0)
@@ -279,7 +286,8 @@ def read_guide(body, where, pr: Problems, links, frame, bad_links, slides: str |
         if d is None:
             return None
         if abs(d) < tolerances.SAME:
-            pr.add(where + ".direction", f"guide direction of zero length {xy_text(d)}: give a vector along the guide, e.g. [1, 0]")
+            pr.add(where + ".direction", f"guide direction of zero length {xy_text(d)}: give a vector along "
+                                         "the guide, e.g. [1, 0]")
             return None
         direction = d / abs(d)
     else:
@@ -295,7 +303,8 @@ def read_guide(body, where, pr: Problems, links, frame, bad_links, slides: str |
     if gl == 0:
         if isinstance(through, str):
             if through not in frame:
-                pr.add(where + ".through", f"{quote(through)} is not a fixed point (fixed points: {name_list(frame)}); or give [x, y]")
+                pr.add(where + ".through", f"{quote(through)} is not a fixed point (fixed points: "
+                                           f"{name_list(frame)}); or give [x, y]")
                 return None
             point = frame[through]
         elif through is None:
@@ -309,11 +318,13 @@ def read_guide(body, where, pr: Problems, links, frame, bad_links, slides: str |
     else:
         link = links[gl]
         if link.axis is None:
-            pr.add(where + ".link", f"link {gl} has no axis to carry a guide: give it an axis, or let the guide be on another link")
+            pr.add(where + ".link", f"link {gl} has no axis to carry a guide: give it an axis, or let the "
+                                    "guide be on another link")
             return None
         if isinstance(through, str):
             if through not in link.points:
-                pr.add(where + ".through", f"{quote(through)} is not a point of link {gl} (its points: {name_list(link.points)})")
+                pr.add(where + ".through", f"{quote(through)} is not a point of link {gl} (its points: "
+                                           f"{name_list(link.points)})")
                 return None
             point = link.points[through]
         elif through is None:
@@ -333,7 +344,8 @@ def read_guide(body, where, pr: Problems, links, frame, bad_links, slides: str |
                          if abs(direction.real) < tolerances.AXIAL
                          else f"{on[0]}{slides}" if on and slides else f"x{gl}-x{gl}")
     if label is not None and (not isinstance(label, str) or len(label) > 20):
-        pr.add(where + ".label", f'must be a short text (at most 20 characters), e.g. "x-x", got {quote(label)}')
+        pr.add(where + ".label", 'must be a short text (at most 20 characters), e.g. "x-x", got '
+                                 f'{quote(label)}')
         label = None
     return Guide(gl, point, direction, label or default_label, named_by_tool=not label)
 
@@ -357,13 +369,15 @@ def read_driver(body, pr: Problems, links, frame, bad_links, frame_names) -> Dri
     link = links[lid]
     if link.axis is None:
         if lid not in bad_links:
-            pr.add(f"links.{lid}.axis", f'missing: the crank (link {lid}) needs an axis from its fixed pivot to its pin, e.g. ["O", "A"]')
+            pr.add(f"links.{lid}.axis", f'missing: the crank (link {lid}) needs an axis from its fixed pivot '
+                                        'to its pin, e.g. ["O", "A"]')
         return None
     pivot, tip = link.axis
     if frame_names is None or (pivot in frame_names and pivot not in frame):
         pass  # [frame] missing, or the pivot's coordinates are wrong: said already
     elif pivot not in frame:
-        swapped = f' (the axis runs from the fixed pivot to the pin: ["{tip}", "{pivot}"]?)' if tip in frame else ""
+        swapped = (f' (the axis runs from the fixed pivot to the pin: ["{tip}", "{pivot}"]?)'
+                   if tip in frame else "")
         pr.add(
             f"links.{lid}.axis[0]",
             f'the crank turns about "{pivot}", which is not a fixed point in [frame] '
@@ -384,7 +398,8 @@ def read_driver(body, pr: Problems, links, frame, bad_links, frame_names) -> Dri
         ref = "+x"
     measured = body.get("measured", "ccw")
     if not isinstance(measured, str) or measured not in SENSES:
-        pr.add(where + ".measured", f'{quote(measured, 20)}: must be "ccw" (counter-clockwise) or "cw" (clockwise)')
+        pr.add(where + ".measured", f'{quote(measured, 20)}: must be "ccw" (counter-clockwise) or "cw" '
+                                    '(clockwise)')
         measured = "ccw"
     sense = body.get("sense", "ccw")
     if not isinstance(sense, str) or sense not in SENSES:

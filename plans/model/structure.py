@@ -126,7 +126,8 @@ def _analyse(mech: Mechanism) -> Structure:
     p5 = len(all_edges)
     W = 3 * n - 2 * p5
     if W != 1:
-        what = "over-constrained (a structure or a locked chain)" if W < 1 else "under-constrained: more inputs than one crank"
+        what = ("over-constrained (a structure or a locked chain)" if W < 1 else
+                "under-constrained: more inputs than one crank")
         raise StructureError(
             f"{chebyshev(n, p5)}: the chain is {what}; "
             "a mechanism with one crank needs W = 1"

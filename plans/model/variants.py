@@ -166,7 +166,8 @@ def read_table(path: str | Path | None = None) -> Table:
     rows = data.get("variant")
     if not isinstance(rows, list) or not rows:
         got = "" if rows is None else f" (got {quote(rows)})"
-        pr.add("variant", f"missing: the table needs [[variant]] rows with n, AB, BC, CD, AD, phi_deg, rpm{got}")
+        pr.add("variant", "missing: the table needs [[variant]] rows with n, AB, BC, CD, AD, phi_deg, "
+                          f"rpm{got}")
         return done()
     if len(rows) > MAX_ROWS:
         pr.add("variant", f"{len(rows)} rows: at most {MAX_ROWS}")
@@ -185,15 +186,19 @@ def read_table(path: str | Path | None = None) -> Table:
         rp = bad.setdefault(n, Problems(source, text))
         for key in row:
             if key not in ROW_KEYS:
-                rp.add(f"{where}.{key_text(key)}", f"unknown column (variant {n}) — {close_match(key, ROW_KEYS)}known: {', '.join(sorted(ROW_KEYS))}")
+                rp.add(f"{where}.{key_text(key)}", f"unknown column (variant {n}) — "
+                                                   f"{close_match(key, ROW_KEYS)}known: "
+                                                   f"{', '.join(sorted(ROW_KEYS))}")
         if n in first:
-            rp.add(where + ".n", f"variant {n} appears twice (first as variant[{first[n]}]): each number once")
+            rp.add(where + ".n",
+                   f"variant {n} appears twice (first as variant[{first[n]}]): each number once")
             table.pop(n, None)
             continue
         first[n] = i
         kind = row.get("kind", "crank-slider" if n % 2 == 0 else "four-bar")
         if kind not in KINDS:
-            rp.add(where + ".kind", f'must be "crank-slider" or "four-bar", got {quote(kind, 30)} (variant {n})')
+            rp.add(where + ".kind", f'must be "crank-slider" or "four-bar", got {quote(kind, 30)} (variant '
+                                    f'{n})')
             continue
         need = COLUMNS if kind == "four-bar" else ("AB", "BC", "phi_deg", "rpm")
         if "kind" not in row and kind == "four-bar" and not {"CD", "AD"} & row.keys():

@@ -182,16 +182,21 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
     val = abs(plan.value(tip))
     if acc:
         out += [t["aa"].format(t=d.tip, p=d.pivot, w=d.omega_sym), ""]
-        out.append(Step(f"a_{d.tip} = {d.omega_sym}²·l_{d.pivot}{d.tip}", f"{n(w1, 5)}²·{n(d.length, 5)}", n(val), unit).markdown())
+        out.append(Step(f"a_{d.tip} = {d.omega_sym}²·l_{d.pivot}{d.tip}",
+                        f"{n(w1, 5)}²·{n(d.length, 5)}", n(val), unit).markdown())
         out += ["", t["mua"].format(mm=n(val / mu), t=tip), ""]
-        out.append(Step(f"μa = a_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu), u["mu_a"]).markdown())
+        out.append(Step(f"μa = a_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu),
+                        u["mu_a"]).markdown())
     else:
         out += [t["va"].format(t=d.tip, p=d.pivot, w=d.omega_sym), ""]
         if d.rpm:
-            out.append(Step(f"{d.omega_sym} = π·n{d.link} / 30", f"{n(math.pi, 5)}·{n(d.rpm)} / 30", n(w1), u["rad/s"]).markdown())
-        out.append(Step(f"V_{d.tip} = {d.omega_sym}·l_{d.pivot}{d.tip}", f"{n(w1, 5)}·{n(d.length, 5)}", n(val), unit).markdown())
+            out.append(Step(f"{d.omega_sym} = π·n{d.link} / 30", f"{n(math.pi, 5)}·{n(d.rpm)} / 30",
+                            n(w1), u["rad/s"]).markdown())
+        out.append(Step(f"V_{d.tip} = {d.omega_sym}·l_{d.pivot}{d.tip}",
+                        f"{n(w1, 5)}·{n(d.length, 5)}", n(val), unit).markdown())
         out += ["", t["muv"].format(mm=n(val / mu), t=tip), ""]
-        out.append(Step(f"μv = V_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu), u["mu_v"]).markdown())
+        out.append(Step(f"μv = V_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu),
+                        u["mu_v"]).markdown())
     out.append("")
     # the input link's other points (its centre of mass, a point a guide slides past)
     sims = [p for p in plan.points.values() if p.source.kind == "similarity"
@@ -223,10 +228,11 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
                 a_, b_ = term.about
                 rel = vplan.mm(plan_name(b_), plan_name(a_)) * vplan.mu  # 0 where it is rounding
                 if term.kind == "normal":
-                    l = abs(sol.positions[a_] - sol.positions[b_])
+                    span = abs(sol.positions[a_] - sol.positions[b_])
                     out.append(f"- {t['normal'].format(x=a_, y=b_)}")
                     out.append("  " + Step(f"{term.label} = V_{a_}{b_}² / l_{a_}{b_}",
-                                           f"{n(rel, 5)}² / {n(l, 5)}", n(rel**2 / l), unit).markdown()[2:])
+                                           f"{n(rel, 5)}² / {n(span, 5)}", n(rel**2 / span),
+                                           unit).markdown()[2:])
                 else:
                     owner = m.point_link.get(a_) if a_ in m.coincident else m.point_link.get(b_)
                     w = abs(sol.omega[owner])
@@ -287,7 +293,7 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
             link = m.point_link.get(A) if A in m.coincident else _common_link(mech, A, B)
             if link is None:
                 continue
-            l = abs(sol.positions[A] - sol.positions[B])
+            span = abs(sol.positions[A] - sol.positions[B])
             mag = abs(r.param)
             mag = mag if mag > plan.tiny else 0.0  # rounding, as the plan's segments
             val = (sol.epsilon if acc else sol.omega)[link]
@@ -295,8 +301,10 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
             key = "eps" if acc else "omega"
             out += [t[key].format(i=link), ""]
             w = "ε" if acc else "ω"
-            out.append(Step(f"{w}{link} = {r.unknown} / l_{A}{B}", f"{n(mag, 5)} / {n(l, 5)}",
-                            n(mag / l), (u["rad/s²"] if acc else u["rad/s"]) + (f", {sense}" if sense else "")).markdown())
+            out.append(Step(f"{w}{link} = {r.unknown} / l_{A}{B}", f"{n(mag, 5)} / {n(span, 5)}",
+                            n(mag / span),
+                            (u["rad/s²"] if acc else u["rad/s"]) + (f", {sense}" if sense else ""))
+                       .markdown())
             out.append("")
     return out
 

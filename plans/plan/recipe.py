@@ -142,7 +142,8 @@ def work_out(mech: Mechanism, m: Motion, kind: str) -> Recipe:
                 if name in own and b0 in own and b1 in own:
                     # three points of the rigid figure: the ratio is the figure's own
                     ratio = (own[name] - own[b0]) / (own[b1] - own[b0])
-                    src = Source("similarity", eqs[abs(ratio.imag) >= tolerances.RATIO_IN_LINE], (), n0, n1, ratio)
+                    off_line = abs(ratio.imag) >= tolerances.RATIO_IN_LINE
+                    src = Source("similarity", eqs[off_line], (), n0, n1, ratio)
                     steps.append((FIGURE, nx, n0, n1, ratio, src, absolute(name)))
                 else:  # a coincident point: where it is on the link changes with φ
                     steps.append((SIMILAR, nx, name, b0, b1, n0, n1, eqs, absolute(name)))
@@ -275,7 +276,8 @@ def compile_steps(kind: str, pole: str, tip: str, steps, ends):
             body.append(f"q{i} = (pos[{name!r}] - pos[{b0!r}]) / (pos[{b1!r}] - pos[{b0!r}])")
             body.append(f"{v} = {var[n0]} + q{i} * ({var[n1]} - {var[n0]})")
             rec = (f"record(PlanPoint, ({pn!r}, {v}, record(Source, ('similarity', "
-                   f"{k(eqs)}[abs(q{i}.imag) >= {tolerances.RATIO_IN_LINE!r}], (), {n0!r}, {n1!r}, q{i}, 1.0, ''))))")
+                   f"{k(eqs)}[abs(q{i}.imag) >= {tolerances.RATIO_IN_LINE!r}], (), {n0!r}, {n1!r}, q{i}, "
+                   "1.0, ''))))")
         elif op == TERM:
             _, _, start, gi, ri, ti, src, vec = step
             term = f"cons[{gi}].routes[{ri}].terms[{ti}].value"
@@ -305,7 +307,8 @@ def compile_steps(kind: str, pole: str, tip: str, steps, ends):
     # each length 0 up to ``tiny`` (see plans.tolerances.NOISE), in the one dict display
     segments = ", ".join(
         f"{key!r}: (m_ if (m_ := abs({var[b]} - {var[a]}) / mu) > tiny_mm else 0.0)" if var[a] != "0j"
-        else f"{key!r}: (m_ if (m_ := abs({var[b]}) / mu) > tiny_mm else 0.0)" for key, (a, b) in ends.items())
+        else f"{key!r}: (m_ if (m_ := abs({var[b]}) / mu) > tiny_mm else 0.0)"
+        for key, (a, b) in ends.items())
     unit = "m/s²" if kind == "acceleration" else "m/s"
     source = "\n".join([
         "def follow(store, cons, pos, mu):",
