@@ -2,6 +2,8 @@
 
 from plans.tolerances import LIMIT_STEP, SINGULAR_SINE, WARN_SINE
 
+from .dyads import DYADS, Dyad
+from .setup import Setup
 from .solver import (
     Construction,
     GroupSolution,
@@ -19,13 +21,16 @@ from .sweep import (
 
 __all__ = [
     "BLOCK",
+    "DYADS",
     "LIMIT_STEP",
     "SINGULAR_SINE",
     "WARN_SINE",
     "Construction",
+    "Dyad",
     "GroupSolution",
     "LinkState",
     "Route",
+    "Setup",
     "Solver",
     "Sweep",
     "Term",

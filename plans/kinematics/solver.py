@@ -257,7 +257,7 @@ class Solver:
         with np.errstate(all="ignore"):
             phi = np.atleast_1d(np.asarray(phi, dtype=float))
             zero = np.zeros_like(phi)
-            m = self._motion(ARRAY, phi, zero, np.exp(1j * phi), self._signs(phi))
+            m = self._motion(ARRAY, phi, zero, np.exp(1j * phi), self.signs(phi))
             return self._placed_on_change_points(m) if any(self.changes) else m
 
     def _placed_on_change_points(self, m: Motion) -> Motion:
@@ -275,7 +275,7 @@ class Solver:
         if not idx.size:
             return m
         on = flat[idx] + math.copysign(tolerances.LIMIT_STEP, self.mech.driver.omega)
-        later = self._motion(ARRAY, on, np.zeros_like(on), np.exp(1j * on), self._signs(on))
+        later = self._motion(ARRAY, on, np.zeros_like(on), np.exp(1j * on), self.signs(on))
 
         def filled(now, then):
             out = np.array(now, copy=True)
@@ -306,7 +306,7 @@ class Solver:
         phi = crank_angle(phi)
         try:
             return self._motion(SCALAR, phi, 0.0, complex(math.cos(phi), math.sin(phi)),
-                                self._signs(phi))
+                                self.signs(phi))
         except (ScalarFallback, ArithmeticError, ValueError):
             pass
         m = self.solve(np.array([phi]))
@@ -322,8 +322,10 @@ class Solver:
         raise SingularPlanError(  # pragma: no cover - every fallback above is a failure
             f"at {at}: the plan has no unique solution", source=source, phi=phi, at=at)
 
-    def _signs(self, phi):
-        """Group i's sign at the angles ``phi`` (:meth:`sigma`), for the group loop."""
+    def signs(self, phi):
+        """Each group's sign at the angles ``phi``, as a function of the group's index
+        (:meth:`sigma`, the same at every angle where the group never flips): what the
+        group loop (:func:`plans.kinematics.assemble.assemble`) asks."""
         flips = self.flips
         sigmas = self.sigmas
         return lambda i: self.sigma(i, phi) if flips[i] else sigmas[i]
@@ -342,7 +344,3 @@ class Solver:
             at = np.array([phi], dtype=float)
             return self._motion(ARRAY, at, np.zeros_like(at), np.exp(1j * at),
                                 lambda i: sigmas[i], count)
-
-    def local(self, lid: int, point: str) -> complex:
-        """The own coordinates of ``point`` on link ``lid``."""
-        return self.mech.links[lid].points[point]

@@ -116,13 +116,11 @@ def sweep(sv, phi, block: int = BLOCK, into: Sweep | None = None) -> Sweep:
             out, omega, epsilon, sine, valid, own = _allocate(sv.setup.layout, n)
             own[...] = phi  # the sweep owns its angles: a later into= overwrites them
             phi = own
-        flips = sv.flips
         for i in range(0, n, block):
             j = min(i + block, n)
             dest = {kind: {name: o[i:j] for name, o in outs.items() if o.flags.writeable}
                     for kind, outs in out.items()}
-            part = assemble(Block(sv.setup, phi[i:j], dest), sv.setup,
-                            _signs(sv, flips, phi[i:j]))
+            part = assemble(Block(sv.setup, phi[i:j], dest), sv.setup, sv.signs(phi[i:j]))
             for kind, outs in dest.items():
                 got = getattr(part, kind)
                 for name, o in outs.items():
@@ -169,12 +167,6 @@ def _blank(bad: np.ndarray, out: dict, *stores: dict) -> None:
         for a in arrays.values():
             if a.flags.writeable:
                 a[bad] = np.nan
-
-
-def _signs(sv, flips, phi):
-    """Group i's sign over the angles ``phi``: the solver's, flipped at its change points
-    where its sign flips (:meth:`plans.kinematics.Solver.sigma`)."""
-    return lambda i: sv.sigma(i, phi) if flips[i] else sv.sigmas[i]
 
 
 def layout(setup):
