@@ -79,14 +79,16 @@ def recipes(solver: Solver, kind: str) -> list[Recipe]:
     return kept(solver).recipes[kind]
 
 
-def plan(solver: Solver, motion: Motion, kind: str, mu) -> Plan:
+def plan(solver: Solver, motion: Motion, kind: str, mu,
+         kinds: list[Recipe] | None = None) -> Plan:
     """The plan of ``kind`` of the solved ``motion`` at scale ``mu`` (None: chosen), by one
-    of the solver's recipes, the last one used first. A recipe does not hold where a
+    of the solver's recipes (``kinds``: :func:`recipes`, where the caller has them), the
+    last one used first. A recipe does not hold where a
     similarity base's two points have met (caught by its division by zero) or where two
     points that coincided when it was made no longer do; where none holds, one is worked
     out here and kept too. A mechanism whose points meet at some angles only (a Scotch
     yoke) so keeps two recipes, instead of compiling one anew at each change."""
-    kinds = recipes(solver, kind)
+    kinds = recipes(solver, kind) if kinds is None else kinds
     pos = motion.position
     for i, recipe in enumerate(kinds):
         if recipe.same and any(abs(pos[b] - pos[a]) > 0 for a, b in recipe.same):

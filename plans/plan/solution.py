@@ -14,6 +14,7 @@ One position's solve goes down only: the mechanism (model), its motion at the an
 
 from __future__ import annotations
 
+import math
 import sys
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -137,10 +138,13 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
         if "mu_l" not in scales:  # the drawing is sized only when μl is to be chosen
             extent = _extent(motion.position) if cycle is None else drawn(solver, cycle).extent
             scales["mu_l"] = choose_mu_l(extent)
-    vplan = plan(solver, motion, "velocity", scales.get("mu_v"))
-    aplan = plan(solver, motion, "acceleration", scales.get("mu_a"))
+    keep = kept(solver)
+    vplan = plan(solver, motion, "velocity", scales.get("mu_v"), keep.recipes["velocity"])
+    aplan = plan(solver, motion, "acceleration", scales.get("mu_a"), keep.recipes["acceleration"])
     positions = dict(motion.position)
-    lengths = _position_segments(solver, motion, positions)
+    if keep.segments is None:
+        keep.segments = _segment_pairs(solver.mech, motion)
+    lengths = _position_segments(keep.segments, positions)
     mu_l = scales["mu_l"]
     segments = {k: v / mu_l for k, v in lengths.items()}
     segments.update(vplan.segments)
@@ -159,9 +163,19 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
 def _extent(position: dict[str, complex]) -> float:
     """The larger side (m) of the box round one position's points, as
     :attr:`plans.cycle.Drawn.extent` measures the plan of positions."""
-    xs = [z.real for z in position.values()]
-    ys = [z.imag for z in position.values()]
-    return max(max(xs) - min(xs), max(ys) - min(ys), 1e-9)
+    x0 = y0 = math.inf
+    x1 = y1 = -math.inf
+    for z in position.values():  # one pass of comparisons: this runs at every angle
+        x, y = z.real, z.imag
+        if x < x0:
+            x0 = x
+        if x > x1:
+            x1 = x
+        if y < y0:
+            y0 = y
+        if y > y1:
+            y1 = y
+    return max(x1 - x0, y1 - y0, 1e-9)
 
 
 def _given_scales(mu) -> dict[str, float] | None:
@@ -216,13 +230,11 @@ def _rounded_off(values: dict[int, float], tiny: float) -> dict[int, float]:
 
 
 
-def _position_segments(solver: Solver, motion: Motion, pos: dict[str, complex]) -> dict[str, float]:
+def _position_segments(pairs, pos: dict[str, complex]) -> dict[str, float]:
     """Lengths (m) on the plan of positions: between fixed points, from each link's first
-    point to its others (constant, worked out once), and to the coincident points."""
-    got = kept(solver)
-    if got.segments is None:
-        got.segments = _segment_pairs(solver.mech, motion)
-    fixed, moving = got.segments
+    point to its others (constant, worked out once: ``pairs``, :func:`_segment_pairs`), and
+    to the coincident points."""
+    fixed, moving = pairs
     out = dict(fixed)
     for key, a, b in moving:
         out[key] = abs(pos[b] - pos[a])
