@@ -25,10 +25,12 @@ def assemble(path, setup, sigma: Callable[[int], object], count: int | None = No
     """Solve ``setup``'s mechanism on ``path``: every group, or its first ``count``;
     ``sigma(i)`` is the i-th group's sign (a number, or an array of the path's angles).
     Returns ``path``."""
-    path.fill(setup.mech.driver.link)
+    step, fill, coincide = path.step, path.fill, path.coincide  # read once: one angle's
+    fill(setup.mech.driver.link)                                  # plan runs this loop
     for i, (g, dyad, own) in enumerate(setup.steps[:count]):
-        found = path.step(dyad, g, own, sigma(i))
-        path.fill(g.a)
-        path.fill(g.b)
-        path.coincide(found)
+        found = step(dyad, g, own, sigma(i))
+        fill(g.a)
+        fill(g.b)
+        if found:
+            coincide(found)
     return path

@@ -13,7 +13,6 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import cached_property
-from types import MappingProxyType
 
 from plans.kinematics import sweep
 from plans.kinematics.dyads import DYADS, Dyad
@@ -72,4 +71,4 @@ def _todo(mech: Mechanism, steps) -> Mapping[int, tuple[tuple[str, complex], ...
         fill(g.a)
         fill(g.b)
         placed.update(own[key] for key in dyad.coincident if own[key])
-    return MappingProxyType(todo)
+    return todo

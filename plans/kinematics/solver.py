@@ -328,6 +328,8 @@ class Solver:
         group loop (:func:`plans.kinematics.assemble.assemble`) asks."""
         flips = self.flips
         sigmas = self.sigmas
+        if not any(flips):  # the signs chosen, at every angle (read by index, in C)
+            return sigmas.__getitem__
         return lambda i: self.sigma(i, phi) if flips[i] else sigmas[i]
 
     def _motion(self, xp, phi, zero, rotor, sigma, count: int | None = None) -> Motion:

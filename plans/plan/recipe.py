@@ -51,26 +51,34 @@ class Recipe(NamedTuple):
 
 class Kept:
     """What the plan layer keeps of one solver's mechanism, worked out at its first plans:
-    the recipes of each kind of plan, the last one used first (:func:`plan`); and the
-    plan of positions' segments, (fixed lengths, moving pairs) (:mod:`plans.plan.solution`)."""
+    the recipes of each kind of plan, the last one used first (:func:`plan`); the plan of
+    positions' segments, (fixed lengths, moving pairs), and the links in order
+    (:mod:`plans.plan.solution`)."""
 
-    __slots__ = ("recipes", "segments")
+    __slots__ = ("links", "recipes", "segments")
 
-    def __init__(self):
+    def __init__(self, links: list[int]):
         self.recipes: dict[str, list[Recipe]] = {"velocity": [], "acceleration": []}
         self.segments: tuple | None = None
+        self.links = links
 
 
-#: per solver, what the plan layer keeps of it: held here, as long as the solver lives
-_KEPT: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+#: per solver (by its id), a weak reference to it and what the plan layer keeps of it:
+#: held here as long as the solver lives (the reference's callback lets go of it). A
+#: plain dict read by a number, not a WeakKeyDictionary, whose look-up is Python code:
+#: this is read at every plan.
+_KEPT: dict[int, tuple[weakref.ref, Kept]] = {}
 
 
 def kept(solver: Solver) -> Kept:
     """What the plan layer keeps for ``solver`` (:class:`Kept`); made at its first plans."""
-    got = _KEPT.get(solver)
-    if got is None:
-        got = _KEPT[solver] = Kept()
-    return got
+    got = _KEPT.get(id(solver))
+    if got is not None and got[0]() is solver:
+        return got[1]
+    key = id(solver)
+    keep = Kept(sorted(solver.mech.links))
+    _KEPT[key] = (weakref.ref(solver, lambda _, key=key: _KEPT.pop(key, None)), keep)
+    return keep
 
 
 def recipes(solver: Solver, kind: str) -> list[Recipe]:

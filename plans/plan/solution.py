@@ -149,7 +149,7 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     segments = {k: v / mu_l for k, v in lengths.items()}
     segments.update(vplan.segments)
     segments.update(aplan.segments)
-    omega, epsilon = _rates(motion.links, sorted(mech.links), mech.driver.omega)
+    omega, epsilon = _rates(motion.links, keep.links, mech.driver.omega)
     return frozen(
         Solution,
         mechanism=mech, structure=solver.structure, phi=phi, solver=solver,
