@@ -112,11 +112,12 @@ class Recorded:
     arrays; ``rotor``: the crank's, e^{iφ}.
     """
 
-    __slots__ = ("acc", "coincident", "owner", "phi", "pos", "setup", "solutions", "states",
-                 "valid", "vel", "xp", "zero")
+    __slots__ = ("acc", "coincident", "owner", "phi", "pos", "scalar", "solutions", "states",
+                 "todo", "translating", "valid", "vel", "xp")
 
     def __init__(self, setup, xp, phi, zero, rotor):
-        self.setup, self.xp, self.phi, self.zero = setup, xp, phi, zero
+        self.xp, self.phi, self.scalar = xp, phi, xp.scalar
+        self.todo, self.translating = setup.todo, setup.translating
         if xp.scalar:  # the frame's part is the same at every angle: copied, not rebuilt
             frame_state, pos, vel, acc, owner = setup.scalar_frame
         else:
@@ -135,9 +136,9 @@ class Recorded:
         """Group ``g`` by its dyad's recorded step; the points it found on another link
         (coincident points), as (name, link, base point, velocity, acceleration)."""
         sol, extra = dyad.recorded(self.xp, g, own, sigma, self.states, self.pos, self.vel,
-                                   self.acc, self.setup.translating)
+                                   self.acc, self.translating)
         self.solutions.append(sol)
-        if not self.xp.scalar:
+        if not self.scalar:
             self.valid &= sol.valid
         return extra
 
@@ -145,7 +146,7 @@ class Recorded:
         """The points of link ``lid`` that no link solved before it has placed (a group's
         new hinge is placed again here, from the first of its two links): which those are
         follows from the order of the groups alone (:attr:`plans.kinematics.setup.Setup.todo`)."""
-        todo = self.setup.todo[lid]
+        todo = self.todo[lid]
         if not todo:
             return
         origin, rotor, v, w, a, e = self.states[lid]
