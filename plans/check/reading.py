@@ -9,7 +9,7 @@ import re
 from typing import Any
 
 from plans.model.fileformat import DECIMAL, MAX_ABS, Problems, decimal, quote, read_number
-from plans.model.mechanism import SCALE
+from plans.model import SCALE
 
 #: the sense of an ω, an ε or a moment as a student writes it after the magnitude, +1 ccw,
 #: −1 cw

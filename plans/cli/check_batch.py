@@ -246,7 +246,7 @@ def mechanism_cell(meas, lang: str) -> str:
             source = source[len(prefix) + 2:]
     sol = meas.solution
     deg = mech.driver.file_angle(sol.phi)
-    return f"{source}, {mech.driver.phi_sym} = {angle(deg, 4, lang, sol.solver.shown_from())}°"
+    return f"{source}, {mech.driver.phi_sym} = {angle(deg, 4, lang, sol.shown_from)}°"
 
 
 def verdict_cell(row: Row, lang: str, tol=None) -> str:

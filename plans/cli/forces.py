@@ -8,7 +8,6 @@ import json
 import math
 
 from plans.cli.common import EXIT_OK, add_source, mechanism_from, solved_position, warn
-from plans.cycle.analysis import analyse_cycle
 from plans.fmt import columns, from_x, json_angle, num
 from plans.forces.summary import Forces, rpm_of, solve_forces
 from plans.forces.words import words
@@ -25,8 +24,8 @@ def configure(p) -> None:
 
 def run(args) -> int:
     mech = mechanism_from(args)
-    solver, sol = solved_position(args, mech)
-    cycle = analyse_cycle(mech, solver=solver)
+    cycle, sol = solved_position(args, mech)
+    solver = sol.solver
     F = solve_forces(sol, solver, cycle)
     if args.json:
         text = json.dumps(to_json(F), ensure_ascii=False, indent=2) + "\n"
@@ -168,7 +167,7 @@ def to_text(F: Forces, lang: str = "en") -> str:
     out = [w["title"].format(name=mech.name_in(lang)), ""]
     out.append(
         w["position"].format(
-            phi=f"{d.phi_sym} = {d.both(sol.phi, lang, sol.solver.shown_from())}",
+            phi=f"{d.phi_sym} = {d.both(sol.phi, lang, sol.shown_from)}",
             omega_sym=d.omega_sym,
             omega=n(abs(d.omega)),
             sense=_sense(d.omega, w),

@@ -24,24 +24,18 @@ and every segment in mm at the plan's μF (N/mm, a standard value).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from types import MappingProxyType
 from typing import NamedTuple
 
 from plans.errors import SingularPlanError
 from plans.forces import kernels as K
+from plans.forces.fplans import NOISE, closed_plan, vector_plan, yoke_plan
 from plans.forces.loads import Load, Stroke, at_position
 from plans.geometry import cross
+from plans.model import Mechanism
 from plans.model.loads import Loads
-from plans.model.mechanism import Mechanism
 from plans.model.structure import DyadKind, Group
 from plans.plan.solution import Plan as VectorPlan
-from plans.plan.solution import PlanLine, PlanPoint, PlanVector, Solution, Source
-from plans.scales import choose_mu
-
-#: the force plan's longest vector is at most this long (mm) at the μF chosen
-FORCE_PLAN_MM = 150.0
-#: below this share of a plan's largest force, a force is rounding of 0 (as a plan's NOISE)
-NOISE = 1e-13
+from plans.plan.solution import Solution
 
 
 class Reaction(NamedTuple):
@@ -306,7 +300,7 @@ def _recorded(mech, step: Step, mu_F, sol) -> GroupForces:
             _equation(A, g.a, g.C, C, RP.name + "^τ", P, 1j * r.e_a, r.tau_a),
             _equation(B, g.b, g.C, C, RQ.name + "^τ", Q, 1j * r.e_b, r.tau_b),
         )
-        plan = _closed_plan(
+        plan = closed_plan(
             [
                 (RP.name + "^τ", "tangential", 1j * r.tau_a * r.e_a),
                 *_vectors(A),
@@ -332,7 +326,7 @@ def _recorded(mech, step: Step, mu_F, sol) -> GroupForces:
         RC = Reaction(_name(g.b, g.a), g.b, g.a, "revolute", g.C, C, r.R_C)
         RCb = Reaction(_name(g.a, g.b), g.a, g.b, "revolute", g.C, C, -r.R_C)
         eqs = (_equation(A, g.a, g.C, C, RP.name + "^τ", P, 1j * r.e_a, r.tau_a),)
-        plan = _closed_plan(
+        plan = closed_plan(
             [(RP.name + "^τ", "tangential", 1j * r.tau_a * r.e_a), *_vectors(A), *_vectors(B)],
             (RN.name, r.w, f"⊥ {guide.label}", r.N),
             (RP.name + "^n", r.e_a, f"∥ {g.P}{g.C}", r.n_a * r.e_a),
@@ -353,7 +347,7 @@ def _recorded(mech, step: Step, mu_F, sol) -> GroupForces:
         RN = Reaction(_name(g.b, g.a), g.b, g.a, "prismatic", None, at, r.N)
         RNb = Reaction(_name(g.a, g.b), g.a, g.b, "prismatic", None, at, -r.N)
         eqs = (_group_equation(A, B, g, Q, P, r.w, r.nu),)
-        plan = _vector_plan(
+        plan = vector_plan(
             [(RP.name, "reaction", r.R_P), *_vectors(A), *_vectors(B)], (RQ.name, r.R_Q), mu_F, RN, A
         )
         return GroupForces(g, {g.a: A, g.b: B}, (RP, RN, RNb, RQ), eqs, plan, 1.0)
@@ -369,7 +363,7 @@ def _recorded(mech, step: Step, mu_F, sol) -> GroupForces:
         )
         RC = Reaction(_name(g.b, g.a), g.b, g.a, "revolute", g.C, C, r.R_C)
         RCb = Reaction(_name(g.a, g.b), g.a, g.b, "revolute", g.C, C, -r.R_C)
-        plan = _closed_plan(
+        plan = closed_plan(
             [*_vectors(A), *_vectors(B)],
             (R2.name, r.w2, f"⊥ {g2.label}", r.N2),
             (R1.name, r.w1, f"⊥ {g1.label}", r.N1),
@@ -388,7 +382,7 @@ def _recorded(mech, step: Step, mu_F, sol) -> GroupForces:
     RN1 = Reaction(_name(g.b, g.a), g.b, g.a, "prismatic", None, _contact(P, us, r.m_a, r.nu1), r.N_ba)
     RN1b = Reaction(_name(g.a, g.b), g.a, g.b, "prismatic", None, RN1.at, -r.N_ba)
     RN2 = Reaction(_name(k, g.b), k, g.b, "prismatic", None, _contact(B0, u, -r.couple, r.nu2), r.N_kb)
-    plan = _yoke_plan(
+    plan = yoke_plan(
         _vectors(B),
         (RN2.name, r.w, f"⊥ {gout.label}", r.N_kb),
         (RN1b.name, r.ws, f"⊥ {gin.label}", -r.N_ba),
@@ -449,143 +443,6 @@ def _group_equation(A, B, g, Q, P, w, nu) -> Equation:
     terms = tuple(_arm(ld.name, Q, ld.at, ld.force, ld.moment) for ld in B)
     terms += tuple(_arm(ld.name, P, ld.at, ld.force, ld.moment) for ld in A)
     return Equation(g.b, g.Q, terms, "N", cross(P - Q, w), nu)
-
-
-_LETTERS = "abcdefghijklmnopqrstuvwxyz"
-
-
-def _letters():
-    """a, b, … z, then a1, b1 …: a force plan's points."""
-    n = 0
-    while True:
-        yield _LETTERS[n % 26] + (str(n // 26) if n >= 26 else "")
-        n += 1
-
-
-def _laid(vectors, names):
-    """Vectors laid end to end from the pole: (points, plan vectors, segment ends, end)."""
-    pole = next(names)
-    at, here = 0j, pole
-    points = {pole: PlanPoint(pole, 0j, Source("pole"))}
-    out, ends = [], {}
-    for label, comp, value in vectors:
-        nxt = next(names)
-        at = at + value
-        points[nxt] = PlanPoint(nxt, at, Source("component", base=here, label=label))
-        out.append(PlanVector(here, nxt, comp, label))
-        ends[label] = (here, nxt)
-        here = nxt
-    return pole, points, out, ends, here
-
-
-def _finish(pole, points, vectors, ends, mu_F) -> VectorPlan:
-    big = max(
-        [abs(p.value) for p in points.values()]
-        + [abs(points[b].value - points[a].value) for a, b in ends.values()]
-        + [0.0]
-    )
-    mu = mu_F or choose_mu(big, big, FORCE_PLAN_MM, FORCE_PLAN_MM)
-    tiny = NOISE * big
-    segments = {}
-    for label, (a, b) in ends.items():
-        size = abs(points[b].value - points[a].value)
-        segments[label] = size / mu if size > tiny else 0.0
-    return VectorPlan(
-        "force",
-        pole,
-        points,
-        tuple(vectors),
-        mu,
-        "N",
-        MappingProxyType(segments),
-        MappingProxyType(dict(ends)),
-        tiny,
-    )
-
-
-def _closed_plan(known, last, first, sine, mu_F, wholes, inner, A) -> VectorPlan:
-    """A polygon of ``known`` vectors closed by two lines: ``last`` (name, direction,
-    relation, its value) through the end, ``first`` through the pole; the reactions
-    ``wholes`` (their two components' sums) and the inner reaction ``inner`` drawn as the
-    resultants they are."""
-    names = _letters()
-    pole, points, vectors, ends, end = _laid(known, names)
-    meet = next(names)
-    value = points[end].value + last[3]
-    eq = " + ".join([v.label for v in vectors] + [last[0], first[0]]) + " = 0"
-    lines = (PlanLine(end, last[1], last[2], last[0]), PlanLine(pole, first[1], first[2], first[0]))
-    points[meet] = PlanPoint(
-        meet, value, Source("intersection", equation=eq, lines=lines, sine=float(abs(sine)))
-    )
-    vectors += [PlanVector(end, meet, "closing", last[0]), PlanVector(meet, pole, "closing", first[0])]
-    ends[last[0]] = (end, meet)
-    ends[first[0]] = (meet, pole)
-    _resultants(points, vectors, ends, wholes, inner, A, pole, meet)
-    return _finish(pole, points, vectors, ends, mu_F)
-
-
-def _resultants(points, vectors, ends, wholes, inner, A, pole, meet):
-    """Each reaction found as two components, drawn whole (from the start of its first
-    component to the end of its second), and the inner reaction closing link a's own
-    polygon."""
-    for r in wholes:
-        if r.tangential is None:
-            continue
-        t0, t1 = ends[r.name + "^τ"]
-        n0, n1 = ends[r.name + "^n"]
-        a, b = (n0, t1) if n1 == t0 else (t0, n1)
-        vectors.append(PlanVector(a, b, "reaction", r.name))
-        ends[r.name] = (a, b)
-    # link a's loads run from the end of its first reaction's component on
-    a_labels = [ld.name for ld in A if ld.force != 0]
-    if a_labels:
-        start = ends[a_labels[-1]][1]
-    else:
-        start = ends[wholes[0].name + "^τ"][1] if wholes[0].tangential is not None else pole
-    vectors.append(PlanVector(start, meet, "reaction", inner.name))
-    ends[inner.name] = (start, meet)
-
-
-def _vector_plan(known, closing, mu_F, inner, A) -> VectorPlan:
-    """A polygon of known vectors closed by one vector back to the pole (the slotted
-    link's frame reaction), and the block's own polygon closed by ``inner``."""
-    names = _letters()
-    pole, points, vectors, ends, end = _laid(known, names)
-    vectors.append(PlanVector(end, pole, "closing", closing[0]))
-    ends[closing[0]] = (end, pole)
-    a_labels = [ld.name for ld in A if ld.force != 0]
-    start = ends[a_labels[-1]][1] if a_labels else ends[known[0][0]][1]
-    vectors.append(PlanVector(start, pole, "reaction", inner.name))
-    ends[inner.name] = (start, pole)
-    return _finish(pole, points, vectors, ends, mu_F)
-
-
-def _yoke_plan(b_vectors, outer, inner_b, a_vectors, RP, sine, mu_F) -> VectorPlan:
-    """RPP: link b's polygon F_b + N_kb + N_ab = 0 closed by lines ⊥ the outer and ⊥ the
-    inner guide; then the block's: N_ba + F_a + R_Pa = 0 from the meeting point."""
-    names = _letters()
-    pole, points, vectors, ends, end = _laid(b_vectors, names)
-    meet = next(names)
-    value = points[end].value + outer[3]
-    eq = " + ".join([v.label for v in vectors] + [outer[0], inner_b[0]]) + " = 0"
-    lines = (PlanLine(end, outer[1], outer[2], outer[0]), PlanLine(pole, inner_b[1], inner_b[2], inner_b[0]))
-    points[meet] = PlanPoint(
-        meet, value, Source("intersection", equation=eq, lines=lines, sine=float(abs(sine)))
-    )
-    vectors += [PlanVector(end, meet, "closing", outer[0]), PlanVector(meet, pole, "closing", inner_b[0])]
-    ends[outer[0]] = (end, meet)
-    ends[inner_b[0]] = (meet, pole)
-    here, at = pole, 0j
-    for label, comp, v in a_vectors:  # the block's loads from the pole: N_ba = pole → meet reversed
-        nxt = next(names)
-        at = at + v
-        points[nxt] = PlanPoint(nxt, at, Source("component", base=here, label=label))
-        vectors.append(PlanVector(here, nxt, comp, label))
-        ends[label] = (here, nxt)
-        here = nxt
-    vectors.append(PlanVector(here, meet, "closing", RP.name))
-    ends[RP.name] = (here, meet)
-    return _finish(pole, points, vectors, ends, mu_F)
 
 
 def residual(fa: ForceAnalysis) -> float:

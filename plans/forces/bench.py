@@ -12,7 +12,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from plans.cycle.analysis import analyse_cycle
+from plans.cycle import analyse_cycle
 from plans.forces.analysis import analyse
 from plans.forces.loads import stroke_of
 from plans.forces.reference import global_solve

@@ -16,8 +16,8 @@ from typing import NamedTuple
 import numpy as np
 
 from plans.errors import InputError
+from plans.model import Mechanism
 from plans.model.loads import Loads
-from plans.model.mechanism import Mechanism
 
 
 class Load(NamedTuple):
