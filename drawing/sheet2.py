@@ -230,7 +230,8 @@ def build_sheet2(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
     cycle = analyse_cycle(mech, n_positions, solver=solver)
     try:
         given = {k: scales[k] for k in ("mu_v", "mu_a") if k in scales}
-        sol = solve_position(mech, solver=solver, mu={"mu_l": scales.get("mu_l", 0.001), **given}, cycle=cycle)
+        sol = solve_position(mech, solver=solver, mu={"mu_l": scales.get("mu_l", 0.001), **given},
+                             cycle=cycle)
         forces = solve_forces(sol, solver, cycle)
     except SingularPlanError as exc:
         raise SingularPlanError(f"{exc} (sheet 2 draws the force analysis of the given position: "

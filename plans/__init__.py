@@ -24,8 +24,8 @@ from plans.errors import (
 )
 from plans.kinematics.solver import Motion, Solver
 from plans.kinematics.sweep import Sweep
-from plans.model.load import from_dict, load
 from plans.model import Mechanism
+from plans.model.load import from_dict, load
 from plans.model.structure import DyadKind, Structure, analyse
 from plans.model.variants import variant
 from plans.plan.solution import Plan, PlanPoint, PlanVector, Solution, Source, solve_position

@@ -44,7 +44,8 @@ LAYERS = (
 )
 #: third-party packages that may be imported inside a function: optional or heavy, paid only
 #: by the command that needs them
-LAZY = {"cairosvg", "sympy", "mpmath", "ezdxf", "matplotlib", "docx", "fpdf", "pylinkage", "numba", "fontTools"}
+LAZY = {"cairosvg", "sympy", "mpmath", "ezdxf", "matplotlib", "docx", "fpdf", "pylinkage", "numba",
+        "fontTools"}
 
 
 def _modules() -> dict[str, Path]:

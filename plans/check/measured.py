@@ -30,8 +30,8 @@ from plans.check.replay import reading_pairs
 from plans.cycle import analyse_cycle, outside, reachable_cycle
 from plans.errors import AssemblyError, InputError, PlansError
 from plans.kinematics.solver import Solver
+from plans.model import MU_UNIT, Mechanism, variants
 from plans.model import load as load_mechanism
-from plans.model import variants
 from plans.model.fileformat import (
     LOOKALIKES,
     Problems,
@@ -43,7 +43,6 @@ from plans.model.fileformat import (
     read_toml,
     type_in_latin,
 )
-from plans.model import MU_UNIT, Mechanism
 from plans.plan.solution import Plan, Solution, plan_name, solve_position
 
 # ---------------------------------------------------------------------------------------

@@ -16,8 +16,8 @@ from plans import tolerances
 from plans.errors import AssemblyError, InputError, SingularPlanError
 from plans.kinematics.dyads import DYADS
 from plans.kinematics.records import coincident_name
-from plans.model.hints import Ambiguous, hint_holds, parse_hint
 from plans.model import Mechanism
+from plans.model.hints import Ambiguous, hint_holds, parse_hint
 from plans.model.structure import DyadKind, Structure
 
 #: samples of the turn searched for change points

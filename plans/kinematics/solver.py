@@ -48,8 +48,8 @@ from plans.kinematics.records import (
 )
 from plans.kinematics.setup import Setup
 from plans.kinematics.words import WARNINGS
-from plans.model.fileformat import one_line
 from plans.model import Mechanism
+from plans.model.fileformat import one_line
 from plans.model.structure import Structure
 
 __all__ = [

@@ -20,8 +20,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field, replace
 
-from plans.model.loads import Drive, Loads
 from plans.fmt import angle
+from plans.model.loads import Drive, Loads
 from plans.model.words import WORDS
 
 #: the unit of each scale factor, as an error message asks for it

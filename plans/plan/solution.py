@@ -29,8 +29,8 @@ from plans.errors import PositionError
 from plans.kinematics.conditioning import flag_words, flagged
 from plans.kinematics.records import frozen
 from plans.kinematics.solver import Motion, Solver, crank_angle
-from plans.model.fileformat import Problems, check_keys, read_number
 from plans.model import MU_UNIT, Mechanism
+from plans.model.fileformat import Problems, check_keys, read_number
 from plans.model.structure import Structure
 from plans.plan.recipe import kept, plan
 from plans.plan.values import (
