@@ -545,7 +545,9 @@ def test_an_inertia_moment_shifts_the_inertia_force_where_the_file_asks(capsys, 
     from support import run
 
     path = tmp_path / "press.toml"
-    path.write_text(open("samples/press.toml", encoding="utf-8").read().replace(
+    from pathlib import Path
+
+    path.write_text(Path("samples/press.toml").read_text("utf-8").replace(
         'couples = "pair"', 'couples = "shift"'), "utf-8")
     code, out, err = run(capsys, "report", path)
     assert code == 0, err
