@@ -478,6 +478,7 @@ def cross_slides(draw):
     link, at random offsets and angles."""
     r = draw(st.floats(0.05, 0.15))
     b = draw(st.floats(1.5 * r, 4 * r))
+    slant, across = draw(st.floats(60, 120)), draw(st.floats(0.2, 0.8)) * r
     text = f"""
 [frame]
 O = [0.0, 0.0]
@@ -504,7 +505,7 @@ guide = {{ link = 3 }}
 [[sliders]]
 link = 4
 point = "G"
-guide = {{ link = 1, angle_deg = {draw(st.floats(60, 120))!r}, through = [{draw(st.floats(0.2, 0.8)) * r!r}, 0.0] }}
+guide = {{ link = 1, angle_deg = {slant!r}, through = [{across!r}, 0.0] }}
 [[sliders]]
 link = 5
 point = "G"
