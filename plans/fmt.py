@@ -118,7 +118,7 @@ def cut_start(text: str, limit: int) -> str:
     """``text`` in at most ``limit`` columns, cut at its start where it is wider: a file's
     path keeps its name, the part a reader looks for.
 
-    >>> cut_start("/a/long/path/to/ivanov.toml", 14)
+    >>> cut_start("/a/long/path/to/ivanov.toml", 13)
     '…/ivanov.toml'
     """
     if width(text) <= limit:
