@@ -109,7 +109,7 @@ def conditioning(mech, motion, solver=None, lo: float = 0.0) -> tuple[Status, ..
     ``solver``, the motion's, names the change points among the angles; ``lo``: the turn
     the angles are written in (:func:`plans.cycle.shown_from` of the motion's cycle)."""
     n = len(motion.phi)
-    crank_pivot = mech.frame[mech.driver.pivot]
+    crank_pivot = mech.driver.origin
     # read here, not bound at import: a test moves the thresholds to exercise the error path
     warn_sine, singular_sine = tolerances.WARN_SINE, tolerances.SINGULAR_SINE
     per_group = [(g, pivot_figure(g, motion.position, crank_pivot)) for g in motion.groups]
