@@ -34,6 +34,7 @@ import numpy as np
 
 from plans import tolerances
 from plans.cycle.analysis import analyse_cycle, table_angle
+from plans.cycle.transmission import transmission
 from plans.cycle.words import shown_from
 from plans.kinematics.conditioning import (
     is_pivot,
@@ -44,6 +45,7 @@ from plans.kinematics.conditioning import (
     sine_figure,
 )
 from plans.kinematics.solver import Solver
+from plans.kinematics.transmission import gamma as angle_of
 
 
 @dataclass(frozen=True)
@@ -77,6 +79,11 @@ class CycleTable:
     points: tuple[str, ...]
     links: tuple[int, ...]
     output_values: object | None  # array: s (m) or ψ (rad) of the output, or None
+    #: per group (by its label) its transmission angle γ at each position (rad, NaN where
+    #: the group does not close), and the transmission over the whole cycle
+    #: (:func:`plans.cycle.transmission.transmission`)
+    gamma: dict | None = None
+    transmission: object | None = None
 
 
 def compute(mech, n_positions: int, solver=None) -> CycleTable:
@@ -95,7 +102,12 @@ def compute(mech, n_positions: int, solver=None) -> CycleTable:
                 out_values = table_angle(out_values, cycle.full_turn)
     points = tuple(motion.position)
     links = tuple(sorted(lid for lid in motion.links if lid != 0))
-    return CycleTable(mech, cycle, motion, status, points, links, out_values)
+    placed = np.broadcast_to(np.asarray(motion.placed, dtype=bool), phi.shape)
+    gamma = {g.group.label: np.where(placed & np.asarray(g.valid, dtype=bool),
+                                     np.broadcast_to(angle_of(g), phi.shape), np.nan)
+             for g in motion.groups}
+    return CycleTable(mech, cycle, motion, status, points, links, out_values, gamma,
+                      transmission(solver, cycle))
 
 
 def figure_labels(t: CycleTable) -> list[str]:

@@ -97,12 +97,8 @@ def guide_motion(guide: Guide, states, translating: frozenset[int]):
 
 def driver_inputs(mech: Mechanism, x):
     """Each driver's (q, q′, q″) where the mechanism is at ``x`` (its solver's parameter:
-    the crank's angle or the slider's travel, at the file's rates; or, timed, the instant,
-    each driver by its law)."""
-    if mech.timing is None:
-        d = mech.driver
-        return ((x, d.omega, d.epsilon),)
-    return tuple(d.law.at(x) for d in mech.drivers)
+    :meth:`plans.model.Mechanism.inputs_at`)."""
+    return mech.inputs_at(x)
 
 
 def driver_state(d, q, dq, ddq, zc, zero, xp) -> LinkState:

@@ -238,6 +238,15 @@ class Mechanism:
         (rad from +x; a slider's travel, m), or the instant (s) of a timed mechanism."""
         return self.timing.time if self.timing is not None else self.driver.phi
 
+    def inputs_at(self, x):
+        """Each driver's (q, q′, q″) where the mechanism is at ``x`` (as :attr:`param` is):
+        the crank's angle, ω and ε (a slider's travel, velocity and acceleration) as the
+        file gives its rates, or at the instant ``x`` by each driver's law."""
+        if self.timing is None:
+            d = self.driver
+            return ((x, d.omega, d.epsilon),)
+        return tuple(d.law.at(x) for d in self.drivers)
+
     def at(self, x: float, lang: str = "en", lo: float = 0.0) -> str:
         """The place ``x`` (as :attr:`param` is) in words: "φ1 = 330° (from +y, cw)"
         (:meth:`Driver.at`), or "t = 0.05 s" for a timed mechanism."""
