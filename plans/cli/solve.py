@@ -270,6 +270,9 @@ def _inputs(sol, t, lang: str) -> list[str]:
         out.append(f"{t['time']}: t = {n(sol.phi)} {t['s']} ({t['law']}: {laws})")
     for d, (q, dq, ddq) in zip(mech.drivers, rates, strict=True):
         q, dq, ddq = float(q), float(dq), float(ddq)
+        if d.linear:  # sin π of a harmonic law is 1.2e-16: a travel or a rate that is rounding
+            big = max(abs(q), abs(dq), abs(ddq))
+            q, dq, ddq = (0.0 if abs(x) <= 1e-12 * big else x for x in (q, dq, ddq))
         if d.linear:
             out.append(f"{t['input']}: {t['link']} {d.link}, {t['slider']} {d.guide.label}, "
                        f"{d.phi_sym} = {n(q)} {t['m']} {t['along']} {d.guide.label}, "

@@ -102,6 +102,8 @@ def transmission(solver: Solver, cycle, samples: int = SAMPLES) -> Transmission:
     for i, g in enumerate(m.groups):
         gam = np.where(placed & np.asarray(g.valid, dtype=bool), gamma(g), np.nan)
         dead, change = _dead(solver, cycle, i)
+        if cycle.kind == "time":
+            dead += _limits_in_time(solver, grid, placed & np.asarray(g.valid, dtype=bool), i)
         zero = dead + change
         if not np.isfinite(gam).any():
             out.append(GroupAngle(g.group, math.nan, math.nan, dead, change=change))
@@ -141,6 +143,24 @@ def _dead(solver: Solver, cycle, i: int) -> tuple[tuple[float, ...], tuple[float
     return tuple(found), tuple(change)
 
 
+def _limits_in_time(solver: Solver, grid, ok, i: int) -> tuple[float, ...]:
+    """The instants where group ``i`` stops (or starts) closing within the interval
+    ``grid`` samples (``ok``: where it closes): each found by bisection to 1e-13 of the
+    interval, the last instant it closes. Its links lie in line there: a dead point."""
+    span = float(grid[-1] - grid[0]) or 1.0
+    found = []
+    for k in np.flatnonzero(ok[:-1] != ok[1:]):
+        good, bad = (float(grid[k]), float(grid[k + 1])) if ok[k] else (float(grid[k + 1]), float(grid[k]))
+        while abs(bad - good) > 1e-13 * span:
+            mid = (good + bad) / 2
+            with np.errstate(all="ignore"):
+                m = solver.solve(np.array([mid]))
+            closes = bool(np.ravel(m.placed)[0]) and bool(np.ravel(m.groups[i].valid)[0])
+            good, bad = (mid, bad) if closes else (good, mid)
+        found.append(good)
+    return tuple(found)
+
+
 def _golden(solver: Solver, i: int, lo: float, hi: float, best: float, at: float
             ) -> tuple[float, float]:
     """Where in [lo, hi] group ``i``'s γ is least, and that γ: golden-section search to
@@ -148,7 +168,8 @@ def _golden(solver: Solver, i: int, lo: float, hi: float, best: float, at: float
     refuses: beside a limit)."""
     def f(x: float) -> float:
         try:
-            return gamma(solver.solve_one(x).groups[i])
+            with np.errstate(all="ignore"):
+                return gamma(solver.solve_one(x).groups[i])
         except (PlansError, ArithmeticError, ValueError):
             with np.errstate(all="ignore"):
                 g = solver.solve(np.array([x])).groups[i]
