@@ -11,6 +11,7 @@ the plans: the positions in closed form, differentiated in time by mpmath at 30 
 
 from __future__ import annotations
 
+import json
 import math
 import tomllib
 
@@ -411,3 +412,45 @@ def test_gamma_is_in_solve_and_cycle(capsys):
     assert code == 0 and "pressure angle α = 90° − γ" in out
     code, out, _ = run(capsys, "cycle", "samples/fourbar.toml", "--csv")
     assert code == 0 and "gamma_deg group 2–3 (RRR)" in out.splitlines()[0]
+
+
+def _grashof_support() -> str:
+    """The sample with seed 003's conditions holding: l1 = 0.05, l2 = 0.2, l3 = 0.15, the
+    support 0.2 ± 0.01 m from A, the cycle over the laws' whole period."""
+    text = _sample()
+    for old, new in (("points = { B = 0.0625 }", "points = { B = 0.05 }"),
+                     ("points = { C = 0.21 }", "points = { C = 0.2 }"),
+                     ("points = { C = 0.1025 }", "points = { C = 0.15 }"),
+                     ("through = [-0.135, 0.0]", "through = [-0.2, 0.0]"),
+                     ("span = [0.216, 0.51]\n", "")):
+        assert text.count(old) == 1, old
+        text = text.replace(old, new)
+    return text
+
+
+def test_seed_003s_crank_existence_conditions_over_the_supports_range(capsys, tmp_path):
+    from support import run
+
+    from plans.cycle.existence import support_conditions
+
+    mech = load(SAMPLE)
+    solver = Solver(mech)
+    c = support_conditions(mech, solver, analyse_cycle(mech, solver=solver))
+    # seed 001's lengths: l1 + l2 < l3 + l4 needs l4 > 0.17 m, and l4 is 0.135 ± 0.01 m
+    assert (c.l1, c.l2, c.l3) == (0.0625, 0.21, 0.1025)
+    assert c.l4 == pytest.approx((0.125, 0.145), abs=1e-8)
+    assert c.lower == pytest.approx(0.17) and c.upper == pytest.approx(0.25)
+    assert not c.first and c.second and c.never
+    path = tmp_path / "grashof.toml"
+    path.write_text(_grashof_support(), "utf-8")
+    mech = load(path)
+    solver = Solver(mech)
+    c = support_conditions(mech, solver, analyse_cycle(mech, solver=solver))
+    assert c.l4 == pytest.approx((0.19, 0.21), abs=1e-8) and c.hold
+    code, out, err = run(capsys, "cycle", path)
+    assert code == 0, err
+    assert "both hold over the support's whole range: link 1 turns fully" in out
+    code, out, _ = run(capsys, "solve", SAMPLE, "--json")
+    assert code == 0 and json.loads(out)["crank_conditions"]["hold"] is False
+    assert support_conditions(load("samples/fourbar.toml"), Solver(load("samples/fourbar.toml")),
+                              None) is None

@@ -33,7 +33,7 @@ from plans.cli.common import (
     warn,
 )
 from plans.cli.output import picture_format
-from plans.cycle import outside, reachable_cycle, shown_from, summary
+from plans.cycle import existence, outside, reachable_cycle, shown_from, summary
 from plans.cycle.table import CycleTable, compute, figure_labels
 from plans.cycle.transmission import lines as transmission_lines
 from plans.errors import AssemblyError
@@ -99,11 +99,10 @@ def run(args) -> int:
     plot = None
     if plot_format is not None:  # drawn before anything is written: all outputs or none
         angle_deg, panels = plot_panels(table)
-        x_label = (f"{mech.driver.phi_sym}, degrees turned from position 0"
-                   if table.cycle.kind == "turn" else "t, s" if table.cycle.kind == "time"
-                   else f"{mech.driver.phi_sym}, m along {mech.driver.guide.label}")
-        plot = charts.cycle_chart(angle_deg, panels, title=mech.name, fmt=plot_format,
-                                  x_label=x_label)
+        kind, d = table.cycle.kind, mech.driver
+        x_label = (f"{d.phi_sym}, degrees turned from position 0" if kind == "turn" else "t, s"
+                   if kind == "time" else f"{d.phi_sym}, m along {d.guide.label}")
+        plot = charts.cycle_chart(angle_deg, panels, title=mech.name, fmt=plot_format, x_label=x_label)
     args.run_files.write(args.output, text)
     if plot is not None:
         args.run_files.write(args.plot, plot)
@@ -193,7 +192,8 @@ def _ok(x) -> float | None:
 
 
 def _cycle_summary(t: CycleTable) -> dict:
-    return cycle_json(t.cycle) | {"transmission": _transmission_head(t)}
+    return cycle_json(t.cycle) | {"transmission": _transmission_head(t)} | (
+        {} if t.conditions is None else {"crank_conditions": existence.as_json(t.conditions)})
 
 
 def _numbering(t: CycleTable) -> str:
@@ -440,8 +440,9 @@ def to_text(t: CycleTable) -> str:
         )
 
     lines += summary(c, d)
-    lines += transmission_lines(t.transmission, mech, mech_groups(t), None, "en", shown_from(c, d),
-                                c.output.point if c.output is not None else "")
+    lines += existence.lines(t.conditions)
+    lines += transmission_lines(t.transmission, mech, [g.group for g in t.motion.groups], None, "en",
+                                shown_from(c, d), c.output.point if c.output is not None else "")
     moving = [p for p in t.points if p not in mech.frame]
     fixed = [p for p in t.points if p in mech.frame]
     if fixed:
@@ -575,11 +576,6 @@ def to_text(t: CycleTable) -> str:
             lines.append("singular: on or beside a change point, where a group's two "
                          "assemblies meet: the positions stand, the plans cannot be built")
     return "\n".join(lines) + "\n"
-
-
-def mech_groups(t: CycleTable) -> list:
-    """The groups of the table's mechanism, in their order of attachment."""
-    return [g.group for g in t.motion.groups]
 
 
 def table_degrees(deg: float, lo: float = 0.0) -> str:

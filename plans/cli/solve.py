@@ -16,7 +16,7 @@ from plans.cli.common import (
     warn,
 )
 from plans.cli.output import terminal
-from plans.cycle import summary
+from plans.cycle import existence, summary
 from plans.cycle.transmission import WORDS as WORDS_T
 from plans.cycle.transmission import lines as transmission_lines
 from plans.cycle.transmission import transmission
@@ -130,7 +130,9 @@ def to_json(sol, cycle=None, lang: str = "en", trans=None) -> dict:
         },
         **_place(sol),
         "warnings": warnings(sol, lang),
-    } | ({} if cycle is None else {"cycle": cycle_json(cycle)}) | _transmission_json(sol, trans)
+    } | ({} if cycle is None else {"cycle": cycle_json(cycle)}) | _transmission_json(sol, trans) | (
+        {} if (cond := None if cycle is None else existence.support_conditions(
+            sol.mechanism, sol.solver, cycle)) is None else {"crank_conditions": existence.as_json(cond)})
 
 
 def _place(sol) -> dict:
@@ -248,6 +250,8 @@ def to_text(sol, cycle=None, lang: str = "en", trans=None) -> str:
         out.append("")
         out.append(t["cycle"])
         out += [f"  {line}" for line in (summary(cycle, d) if lang == "en" else _cycle_ru(cycle, d))]
+        out += [f"  {line}" for line in existence.lines(
+            existence.support_conditions(mech, sol.solver, cycle), lang)]
     for w in warnings(sol, lang):
         out.append(f"{t['warning']}: {w}")
     return "\n".join(out) + "\n"

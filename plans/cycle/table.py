@@ -34,6 +34,7 @@ import numpy as np
 
 from plans import tolerances
 from plans.cycle.analysis import analyse_cycle, table_angle
+from plans.cycle.existence import support_conditions
 from plans.cycle.transmission import transmission
 from plans.cycle.words import shown_from
 from plans.kinematics.conditioning import (
@@ -84,6 +85,9 @@ class CycleTable:
     #: (:func:`plans.cycle.transmission.transmission`)
     gamma: dict | None = None
     transmission: object | None = None
+    #: a moving rocker support's crank-existence conditions
+    #: (:func:`plans.cycle.existence.support_conditions`), None for other mechanisms
+    conditions: object | None = None
 
 
 def compute(mech, n_positions: int, solver=None) -> CycleTable:
@@ -107,7 +111,7 @@ def compute(mech, n_positions: int, solver=None) -> CycleTable:
                                      np.broadcast_to(angle_of(g), phi.shape), np.nan)
              for g in motion.groups}
     return CycleTable(mech, cycle, motion, status, points, links, out_values, gamma,
-                      transmission(solver, cycle))
+                      transmission(solver, cycle), support_conditions(mech, solver, cycle))
 
 
 def figure_labels(t: CycleTable) -> list[str]:
