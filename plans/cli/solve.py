@@ -6,6 +6,8 @@ from __future__ import annotations
 import json
 import math
 
+import numpy as np
+
 from plans.cli.common import (
     EXIT_OK,
     add_source,
@@ -16,12 +18,15 @@ from plans.cli.common import (
     warn,
 )
 from plans.cli.output import terminal
-from plans.cycle import existence, summary
+from plans.cycle import analyse_cycle, existence, shown_from, summary
+from plans.cycle.table import conditioning
 from plans.cycle.transmission import WORDS as WORDS_T
 from plans.cycle.transmission import lines as transmission_lines
 from plans.cycle.transmission import transmission
 from plans.cycle.words import time_lines
+from plans.errors import SingularPlanError
 from plans.fmt import angle, from_x, json_angle, num
+from plans.kinematics.solver import Solver
 from plans.kinematics.transmission import between, gammas
 from plans.note.report import change_points, no_full_turn, warnings
 
@@ -42,6 +47,9 @@ WORDS = {
             "uniform": "uniform", "accelerated": "uniformly accelerated", "harmonic": "harmonic",
             "table": "a table"},
         "ms": "m/s", "ms2": "m/s²", "s": "s",
+        "singular_at": "Position at {at}: the plans are singular here",
+        "positions_head": "Positions (m)           x            y",
+        "singular": "The velocity and acceleration plans are not built: {why}",
     },
     "ru": {
         "structure": "Строение", "class": "класс", "kind": "вид", "crank": "Кривошип",
@@ -60,6 +68,9 @@ WORDS = {
             "uniform": "равномерный", "accelerated": "равноускоренный", "harmonic": "гармонический",
             "table": "таблица"},
         "ms": "м/с", "ms2": "м/с²", "s": "с",
+        "singular_at": "Положение при {at}: планы здесь вырождены",
+        "positions_head": "Положения (м)           x            y",
+        "singular": "Планы скоростей и ускорений не строятся: {why}",
     },
 }
 
@@ -75,8 +86,11 @@ def configure(p) -> None:
 
 def run(args) -> int:
     mech = mechanism_from(args)
-    cycle, sol = solved_position(args, mech)
     lang = getattr(args, "lang", "en")
+    try:
+        cycle, sol = solved_position(args, mech)
+    except SingularPlanError as exc:  # a change point or a dead point: the positions stand
+        return _singular(args, mech, exc, lang)
     if args.json:
         text = json.dumps(to_json(sol, cycle, lang), ensure_ascii=False, indent=2) + "\n"
     else:
@@ -84,6 +98,40 @@ def run(args) -> int:
     args.run_files.write(args.output, text)
     for w in sol.warnings:
         warn("solve", w)
+    return EXIT_OK
+
+
+def _singular(args, mech, exc: SingularPlanError, lang: str) -> int:
+    """The positions where the plans are singular (a change point, a dead point), and why
+    the velocity and acceleration plans are not built there: the exit status as the
+    cycle's row there would give (0 where the row is "singular", 2 where it is an error)."""
+    solver = Solver(mech)
+    cycle = analyse_cycle(mech, solver=solver)
+    x = mech.param
+    with np.errstate(all="ignore"):
+        m = solver.solve(np.array([x]))
+    (st,) = conditioning(mech, m, solver, shown_from(cycle, mech.driver))
+    if not st.placed or st.errors:  # no change point: refused, as the cycle's row is an error
+        raise exc
+    pos = {p: complex(np.ravel(z)[0]) for p, z in m.position.items()}
+    big = max((abs(z) for z in pos.values()), default=0.0)
+    pos = {p: complex(*(0.0 if abs(c) <= 1e-12 * big else c for c in (z.real, z.imag)))
+           for p, z in pos.items()}  # y of a pin at 180° is l·sin π = 6e-18 m: 0
+    why = str(exc).split(": ", 1)[-1] if str(exc).startswith(mech.source) else str(exc)
+    if args.json:
+        text = json.dumps({"points": {p: {"position": _xy(z)} for p, z in pos.items()},
+                           "structure": {"W": solver.structure.W},
+                           **place_json(mech, x), "singular": why, "plans": None},
+                          ensure_ascii=False, indent=2) + "\n"
+    else:
+        t = WORDS[lang]
+        at = mech.at(x, lang, shown_from(cycle, mech.driver))
+        out = [mech.name, "", t["singular_at"].format(at=at), "", t["positions_head"]]
+        out += [f"  {p:<6} {num(z.real + 0.0, 6, lang):>12} {num(z.imag + 0.0, 6, lang):>12}"
+                for p, z in pos.items()]
+        out += ["", t["singular"].format(why=why)]
+        text = "\n".join(out) + "\n"
+    args.run_files.write(args.output, text)
     return EXIT_OK
 
 
