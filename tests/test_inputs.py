@@ -454,3 +454,45 @@ def test_seed_003s_crank_existence_conditions_over_the_supports_range(capsys, tm
     assert code == 0 and json.loads(out)["crank_conditions"]["hold"] is False
     assert support_conditions(load("samples/fourbar.toml"), Solver(load("samples/fourbar.toml")),
                               None) is None
+
+
+def test_an_accelerating_crank_changes_the_inertia_loads_and_m_y_stays_balanced():
+    """ε1 = 30 rad/s² on seed 001's four-bar: the crank's inertia force is −m1·a_S1 with
+    a_S1's tangential part ε1·l_AS1, and M_у by the groups, by virtual power and by the
+    global solve agree as they do for a uniform crank."""
+    from plans.forces.summary import solve_forces
+
+    def forces(text):
+        mech = mech_of(text)
+        solver = Solver(mech)
+        cyc = analyse_cycle(mech, solver=solver)
+        return solve_forces(solve_position(mech, solver=solver, cycle=cyc), solver, cyc)
+
+    with open("samples/fourbar.toml", encoding="utf-8") as f:
+        text = f.read()
+    uni = forces(text)
+    acc = forces(text.replace('sense = "ccw"\n', 'sense = "ccw"\nepsilon = 30\n', 1))
+    m1 = 0.3125
+    a = acc.analysis.solution.scalar.acceleration["S1"]
+    w1 = acc.analysis.solution.mechanism.driver.omega
+    s1 = acc.analysis.solution.scalar.position["S1"]
+    assert abs(a - (-w1 * w1 + 30j) * s1) <= 1e-12 * abs(a)  # a_S1 = (−ω1² + iε1)·AS1
+    (phi1,) = [ld for ld in acc.analysis.loads if ld.kind == "inertia" and ld.link == 1]
+    assert abs(phi1.force + m1 * a) <= 1e-12 * abs(m1 * a)
+    for f in (uni, acc):
+        M = f.analysis.M_y
+        assert abs(f.M_y_power - M) <= 1e-9 * abs(M) and abs(f.M_y_global - M) <= 1e-9 * abs(M)
+    assert abs(acc.analysis.M_y - uni.analysis.M_y) > 1e-3
+
+
+def test_the_force_analysis_refuses_two_inputs_in_one_line(capsys, tmp_path):
+    from support import run
+
+    with open("samples/fourbar.toml", encoding="utf-8") as f:
+        loads = f.read().partition("[loads]")[2]
+    path = tmp_path / "two.toml"
+    path.write_text(_sample() + "\n[loads]" + loads.replace('"S1"', '"B"').replace('"S2"', '"C"')
+                    .replace('"S3"', '"C"').replace('point = "E"', 'point = "C"'), "utf-8")
+    code, out, err = run(capsys, "forces", path)
+    assert code == 2 and out == "" and len(err.strip().splitlines()) == 1
+    assert "two inputs (link 1 and link 4), and each would need a balancing load" in err
