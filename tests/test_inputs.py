@@ -496,3 +496,23 @@ def test_the_force_analysis_refuses_two_inputs_in_one_line(capsys, tmp_path):
     code, out, err = run(capsys, "forces", path)
     assert code == 2 and out == "" and len(err.strip().splitlines()) == 1
     assert "two inputs (link 1 and link 4), and each would need a balancing load" in err
+
+
+def test_the_check_knows_an_accelerating_cranks_tangential_acceleration(capsys, tmp_path):
+    """A hand-drawn acceleration plan of a crank with ε1: drawn right, it is within
+    tolerance; drawn with a_A = a^n_AO only, the diagnosis names the missing a^t_AO."""
+    from support import run
+
+    (tmp_path / "eps.toml").write_text(FOURBAR.format(phi=60, eps="epsilon = 30"), "utf-8")
+    head = 'mechanism = "eps.toml"\n[scales]\nmu_l = 0.002\nmu_v = 0.01\nmu_a = 0.1\n'
+    right = tmp_path / "right.toml"
+    right.write_text(head + '[segments.acceleration]\n"πa" = 52.2\n"πn1" = 50\nn1a = 15\n'
+                     '"πb" = 45.9\n[values]\n"a^t_AO" = 1.5\n', "utf-8")
+    code, out, err = run(capsys, "check", right)
+    assert code == 0, err + out
+    assert "Overall: all 5 items within tolerance." in out
+    left_out = tmp_path / "left_out.toml"
+    left_out.write_text(head + '[segments.acceleration]\n"πa" = 50\n"πb" = 54\n"πe" = 60.4\n', "utf-8")
+    code, out, _ = run(capsys, "check", left_out)
+    assert code == 1
+    assert "Diagnosis: the crank's tangential acceleration a^t_AO is missing." in out

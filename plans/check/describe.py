@@ -46,6 +46,9 @@ def mistake_words(mk, lang: str = "en") -> tuple[str, str]:
     elif k == "normal-reversed":
         key = "normal-reversed-crank" if g("driver") else k
         fields["x"] = plan_name(g("X"))
+    elif k in ("crank-tangential-omitted", "crank-tangential-reversed"):
+        key = k
+        fields["x"] = plan_name(g("X"))
     elif k == "normal-length":
         key = k
         fields["own"] = num(float(g("own")), 4, lang)
