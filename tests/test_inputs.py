@@ -516,3 +516,24 @@ def test_the_check_knows_an_accelerating_cranks_tangential_acceleration(capsys, 
     code, out, _ = run(capsys, "check", left_out)
     assert code == 1
     assert "Diagnosis: the crank's tangential acceleration a^t_AO is missing." in out
+
+
+def test_the_note_lays_off_an_accelerating_cranks_two_components_and_gives_gamma(capsys, tmp_path):
+    from support import run
+
+    path = tmp_path / "eps.toml"
+    path.write_text(FOURBAR.format(phi=60, eps="epsilon = 30"), "utf-8")
+    code, out, err = run(capsys, "report", path)
+    assert code == 0, err
+    assert "- `a^n_AO = ω1²·l_OA = 10²·0.05 = 5 m/s²`" in out
+    assert "- `a^τ_AO = ε1·l_OA = 30·0.05 = 1.5 m/s²`" in out
+    assert "- `a_A = √((a^n_AO)² + (a^τ_AO)²) = √(5² + 1.5²) = 5.22 m/s²`" in out
+    assert "(ω1 = const)" not in out
+    assert "Transmission angles γ and pressure angles α = 90° − γ of the groups:" in out
+    path = tmp_path / "piston.toml"
+    path.write_text(PISTON_ROCKER, "utf-8")
+    code, out, err = run(capsys, "report", path)
+    assert code == 0, err
+    assert ("Velocity of point B of the input slider 1, along its guide x-x, given:\n\n"
+            "- `V_B = 0.4 m/s`") in out
+    assert "- `a_B = 1.5 m/s²`" in out and "l_B / B" not in out
