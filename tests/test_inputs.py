@@ -537,3 +537,47 @@ def test_the_note_lays_off_an_accelerating_cranks_two_components_and_gives_gamma
     assert ("Velocity of point B of the input slider 1, along its guide x-x, given:\n\n"
             "- `V_B = 0.4 m/s`") in out
     assert "- `a_B = 1.5 m/s²`" in out and "l_B / B" not in out
+
+
+SLOTTED = """
+name = "oscillating slotted link, seed 004"
+[frame]
+A = [0.0, 0.0]
+C = [0.0, -0.06]
+[driver]
+link = 1
+angle_deg = 30
+omega = 10
+[links.1]
+axis = ["A", "B"]
+points = {{ B = 0.04 }}
+[links.2]
+points = {{ B = 0 }}
+[links.3]
+axis = ["C", "D"]
+points = {{ D = 0.1 }}
+[[sliders]]
+link = 2
+guide = {{ link = 3{offset} }}
+"""
+
+
+@pytest.mark.parametrize("e", [0.0, 0.01])
+def test_seed_004s_slotted_link_gamma_is_constant_without_offset_and_varies_with_it(e):
+    """Seed 004 (problem 6): l_AB = 40 mm drives, the slot offset e = 10 mm from the
+    pivot C, l_AC = 60 mm > l_AB + e; with e = 0 γ = 90° at every position (the slot runs
+    through C: the block pushes along the slot point's motion), with e > 0 it varies:
+    sin α = e/|CB|, least at |CB| = l_AC − l_AB, γmin = 90° − asin(0.01/0.02) = 60°."""
+    mech = mech_of(SLOTTED.format(offset=f", offset = {e}" if e else ""))
+    solver = Solver(mech)
+    (g,) = transmission(solver, analyse_cycle(mech, solver=solver)).groups
+    for phi in (0.0, 1.0, 2.0, 4.5):
+        m = solve_position(mech, phi).scalar
+        cb = abs(m.position["B"] - m.position["C"])
+        want = math.pi / 2 - math.asin(e / cb)
+        assert abs(gammas(m)["group 2–3 (RPR)"] - want) <= 1e-12
+    if e == 0:
+        assert g.constant and abs(g.gamma_min - math.pi / 2) <= 1e-12
+    else:
+        assert not g.constant and abs(g.gamma_min - math.radians(60.0)) <= 1e-12
+        assert abs(math.remainder(g.at - (-math.pi / 2), 2 * math.pi)) <= 1e-6  # B towards C

@@ -8,8 +8,9 @@ them, the pressure angle its complement:
 * RRR (a coupler PC and a rocker QC): γ between the coupler and the rocker, at C;
 * RRP (a rod PC driving a slider along its guide): γ between the rod and the guide's
   normal; α between the rod and the guide, the angle the slider is pushed at;
-* RPR (a block sliding in a slotted link about Q): γ between the slot's normal, along
-  which the block pushes, and the normal to QP, along which the slot's point moves;
+* RPR (a block sliding in a slotted link about Q): γ between the slot and the normal to
+  QP, along which the slot's point moves; α between the slot's normal, along which the
+  block pushes, and that motion (90° where the slot runs through Q);
 * PRP, RPP (two slides): γ between the two guides.
 
 Each is the acute angle between the two lines the group's velocity plan intersects
@@ -35,14 +36,14 @@ BETWEEN = {
     "en": {
         DyadKind.RRR: "link {a} and link {b} at {C}",
         DyadKind.RRP: "the rod {a} and the normal to the guide {guide}",
-        DyadKind.RPR: "the normal to the guide {guide} of link {b} and the normal to {Q}{P}",
+        DyadKind.RPR: "the guide {guide} of link {b} and the normal to {Q}{P}",
         DyadKind.PRP: "the guides {guide} and {guide2}",
         DyadKind.RPP: "the guides {guide} and {guide2}",
     },
     "ru": {
         DyadKind.RRR: "между звеньями {a} и {b} в шарнире {C}",
         DyadKind.RRP: "между шатуном {a} и нормалью к направляющей {guide}",
-        DyadKind.RPR: "между нормалью к направляющей {guide} звена {b} и нормалью к {Q}{P}",
+        DyadKind.RPR: "между направляющей {guide} звена {b} и нормалью к {Q}{P}",
         DyadKind.PRP: "между направляющими {guide} и {guide2}",
         DyadKind.RPP: "между направляющими {guide} и {guide2}",
     },
