@@ -581,3 +581,29 @@ def test_seed_004s_slotted_link_gamma_is_constant_without_offset_and_varies_with
     else:
         assert not g.constant and abs(g.gamma_min - math.radians(60.0)) <= 1e-12
         assert abs(math.remainder(g.at - (-math.pi / 2), 2 * math.pi)) <= 1e-6  # B towards C
+
+
+def test_the_sheet_draws_the_inputs_as_such_and_marks_gamma(tmp_path):
+    """The plan of positions: a crank's ω (and ε where it accelerates) as arcs about its
+    pivot, a slider input's V beside its guide, and γ of the group whose γ falls lowest
+    marked at its joint with that γmin."""
+    from drawing.views.inputs import gamma_marks, input_marks
+    from drawing.views.positions import to_sheet
+
+    mech = mech_of(FOURBAR.format(phi=60, eps="epsilon = 30"))
+    solver = Solver(mech)
+    cyc = analyse_cycle(mech, solver=solver)
+    sol = solve_position(mech, solver=solver, cycle=cyc)
+    items, labels = input_marks(sol, sol.positions, to_sheet, "en")
+    assert len(items) == 4  # two arcs, each a polyline and its arrowhead
+    assert [lb.text for lb in labels] == ["ω_{1}", "ε_{1}"]
+    _, labels = gamma_marks(sol, cyc, sol.positions, to_sheet, "en")
+    a, b, c, d = 0.05, 0.2, 0.15, 0.2
+    want = math.degrees(math.acos((b * b + c * c - (d - a) ** 2) / (2 * b * c)))
+    here = math.degrees(gammas(sol.scalar)["group 2–3 (RRR)"])
+    (lb,) = labels
+    assert lb.text == f"γ = {here:.4g}° (γmin = {want:.4g}°)"
+    piston = mech_of(PISTON_ROCKER)
+    sol = solve_position(piston)
+    _, labels = input_marks(sol, sol.positions, to_sheet, "en")
+    assert [lb.text for lb in labels] == ["V_{B}"]
