@@ -4,8 +4,9 @@ Each input is drawn as such at its heavy position: a crank's ω as an arc arrow 
 pivot in the sense it turns (and ε, where it accelerates, as a second arc in the sense of
 ε); a slider input's velocity as an arrow beside its guide from its point. The group whose
 transmission angle falls lowest over the cycle has γ marked at its middle joint (an RRR
-group: the arc between the coupler and the rocker), valued with its γmin over the cycle
-(where it occurs the note and solve say).
+group: the arc between the coupler and the rocker; a slider on a fixed guide: between the
+rod and the guide's normal), valued with its γmin over the cycle (where it occurs the
+note and solve say).
 """
 
 from __future__ import annotations
@@ -82,9 +83,14 @@ def gamma_marks(sol, cycle, pos: dict[str, complex], to_sheet, lang: str
     deg = math.degrees(least.gamma_min)
     items: list[Item] = []
     labels: list[LabelRequest] = []
+    u2 = None
     if g.kind is DyadKind.RRR and all(p in pos for p in (g.P, g.C, g.Q)):
+        u2 = pos[g.Q] - pos[g.C]
+    elif g.kind is DyadKind.RRP and g.s1 is not None and g.s1.guide.link == 0 and g.P in pos and g.C in pos:
+        u2 = 1j * g.s1.guide.direction  # a slider on a fixed guide: γ between the rod and its normal
+    if u2 is not None:
         c = pos[g.C]
-        u1, u2 = pos[g.P] - c, pos[g.Q] - c
+        u1 = pos[g.P] - c
         a1, a2 = math.atan2(u1.imag, u1.real), math.atan2(u2.imag, u2.real)
         sweep = math.remainder(a2 - a1, 2 * math.pi)
         if abs(sweep) > math.pi / 2:  # γ is the acute angle: between CP and QC produced
