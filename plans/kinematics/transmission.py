@@ -22,7 +22,7 @@ loses half its digits near 90°, an arccos near 0°).
 
 >>> import math
 >>> round(math.degrees(acute(1j, complex(math.cos(1.0), math.sin(1.0)))), 6)
-32.704225
+32.70422
 """
 
 from __future__ import annotations
