@@ -17,6 +17,7 @@ from drawing.scene import Arrow, Circle, Hatch, Item, Polyline, Segment, Text, s
 from drawing.styles import LineType
 from drawing.text import text_width
 from drawing.views.common import JOINT_R, LETTER, WORDS, View, finish, shared_points
+from drawing.views.inputs import gamma_marks, input_marks
 from plans.cycle.positions import drawn
 from plans.fmt import num
 
@@ -288,6 +289,11 @@ def positions_view(sol, cycle, lang: str = "ru", sizing: bool = False,
         # close to its point even among the other positions' lines, which break for it
         labels.insert(0, LabelRequest(xy, shared_label(names), LETTER, "nw",
                                       blank=True))
+    # the inputs drawn as such, γ marked where it falls lowest (drawing/views/inputs.py)
+    marks, marked = input_marks(sol, pos, to_sheet, lang)
+    gamma_items, gamma_labels = gamma_marks(sol, cycle, pos, to_sheet, lang)
+    items += marks + gamma_items
+    labels += marked + gamma_labels
     # stroke H of a linear output
     out = cycle.output
     w = WORDS[lang]
