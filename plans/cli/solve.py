@@ -126,6 +126,8 @@ def _singular(args, mech, exc: SingularPlanError, lang: str) -> int:
     else:
         t = WORDS[lang]
         at = mech.at(x, lang, shown_from(cycle, mech.driver))
+        if exc.words is not None:  # the reason in the report's language
+            why = exc.words(solver.at(x, lang, shown_from(cycle, mech.driver)), lang)
         out = [mech.name, "", t["singular_at"].format(at=at), "", t["positions_head"]]
         out += [f"  {p:<6} {num(z.real + 0.0, 6, lang):>12} {num(z.imag + 0.0, 6, lang):>12}"
                 for p, z in pos.items()]
