@@ -40,6 +40,7 @@ from plans.model.fileformat import (
     read_toml,
 )
 from plans.model.load import from_dict
+from plans.model.locate import FileIndex
 from plans.model.mechanism import SENSES, Mechanism
 from plans.model.parts import MIN_LINK, RPM_MIN, SPEED
 
@@ -74,7 +75,7 @@ class Table(NamedTuple):
     that a typo in variant 3 does not stop variant 5 (nor the sheets of the others)."""
 
     source: str
-    text: str
+    index: FileIndex  # the text, read for its lines once, where a problem is said
     path: str | None  # the file, None for the built-in table
     problems: Problems  # of the table as a whole: no row can be read while there are any
     rows: dict[int, dict]  # the rows that can be read, by their number
@@ -95,7 +96,7 @@ class Table(NamedTuple):
     def located(self, n: int | None, every: bool = False) -> Problems:
         """The problems of the rows without a number and of row ``n`` (``every``: of every
         row but ``n``), in one list, so that they are located and capped once."""
-        out = Problems(self.source, self.text)
+        out = Problems(self.source, self.index)
         out.items = list(self.loose) + [it for m, items in sorted(self.rows_problems.items())
                                         if (m != n if every else m == n) for it in items]
         return out
@@ -110,7 +111,7 @@ class Table(NamedTuple):
                                           "of a row, e.g. 3") from None
         self.numbers  # noqa: B018 - raises where the table cannot be used at all
         if n in self.rows_problems:
-            own = Problems(self.source, self.text)
+            own = Problems(self.source, self.index)
             own.items = list(self.rows_problems[n])
             own.raise_if_any()
         if n not in self.rows:
@@ -144,13 +145,14 @@ def read_table(path: str | Path | None = None) -> Table:
     else:
         source = str(path)
         data, text = read_toml(path, "a variant table is a few KB")
-    pr = Problems(source, text)
-    loose = Problems(source, text)
+    index = FileIndex(text)  # one for every row: the text is located once, if ever
+    pr = Problems(source, index)
+    loose = Problems(source, index)
     table: dict[int, dict] = {}
     bad: dict[int, Problems] = {}
 
     def done() -> Table:
-        return Table(source, text, None if path is None else str(path), pr, table,
+        return Table(source, index, None if path is None else str(path), pr, table,
                      {n: p.items for n, p in bad.items() if p}, loose.items,
                      pattern if isinstance(pattern, str) else DESIGNATION, rules)
     pattern = data.get("designation", DESIGNATION)
@@ -189,7 +191,7 @@ def read_table(path: str | Path | None = None) -> Table:
             got = "missing" if n is None else f"got {quote(n, 20)}"
             loose.add(where + ".n", f"the variant number must be a whole number 0…999999, {got}")
             continue
-        rp = bad.setdefault(n, Problems(source, text))
+        rp = bad.setdefault(n, Problems(source, index))
         for key in row:
             if key not in ROW_KEYS:
                 rp.add(f"{where}.{key_text(key)}", f"unknown column (variant {n}) — "
