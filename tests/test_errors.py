@@ -383,6 +383,30 @@ def test_a_tables_designation_pattern_names_each_variants_sheet(tmp_path, capsys
         assert why in err
 
 
+def test_a_designations_width_is_read_before_it_is_formatted(tmp_path, capsys):
+    """designation = "{n:>2000000000}" had made a string of 2 GB (8e9: MemoryError, exit
+    3): a width, a precision, a nested field or the whole pattern past 200 characters is
+    one located line, exit 2, before anything is formatted."""
+    import tracemalloc
+
+    row = '[[variant]]\nn = {}\nAB = 0.05\nBC = 0.15\nCD = 0.1\nAD = 0.1\nphi_deg = 15\nrpm = 100\n'
+    path = tmp_path / "t.toml"
+    for bad, why in (('"{n:>2000000000}"', "2000000000 characters wide"),
+                     ('"ПМ.{n:0>8000000000}"', "8000000000 characters wide"),
+                     ('"{n:.2000000000}"', "2000000000 characters wide"),
+                     ('"{n:{n}}"', "no other field"),
+                     ('"{n:>150}.{n:>150}"', "characters formatted"),
+                     (f'"{"Я" * 300}{{n}}"', "a designation is at most 200")):
+        path.write_text(f"designation = {bad}\n" + row.format(999999))
+        tracemalloc.start()
+        code, out, err = run(capsys, "solve", "--variant", "999999", "--table", str(path))
+        peak = tracemalloc.get_traced_memory()[1]
+        tracemalloc.stop()
+        assert code == 2 and out == "" and peak < 50e6
+        assert err.count("\n") == 1 and f"{path}: line 1: designation: " in err, err
+        assert why in err
+
+
 def test_public_api_is_unchanged():
     for name in ("load", "from_dict", "Mechanism", "Link", "Guide", "Slider", "Driver"):
         assert hasattr(model, name)

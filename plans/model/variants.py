@@ -21,6 +21,7 @@ variant 7); the default is :data:`DESIGNATION`.
 from __future__ import annotations
 
 import operator
+import re
 from dataclasses import replace
 from importlib import resources
 from pathlib import Path
@@ -30,6 +31,7 @@ from typing import NamedTuple
 from plans.errors import InputError
 from plans.model.fileformat import (
     MAX_ABS,
+    MAX_TEXT,
     Problems,
     close_match,
     key_text,
@@ -301,19 +303,39 @@ def _row_loads(row: dict, rules: dict) -> tuple[dict, dict]:
     return loads, drive
 
 
+#: a format field's width and precision ("{n:>12.3}"), read before formatting
+_SPEC = re.compile(r"(?:.?[<>=^])?[-+ ]?z?#?0?(?P<width>\d*)[,_]?(?:\.(?P<precision>\d+))?[a-zA-Z%]?")
+
+
 def _bad_pattern(pattern: str) -> str | None:
     """What is wrong with a table's designation pattern, None if nothing: it must name the
-    variant ``{n}`` (else every sheet would carry one designation) and nothing else."""
+    variant ``{n}`` (else every sheet would carry one designation) and nothing else, and
+    be at most :data:`MAX_TEXT` characters formatted. Its widths are read before it is
+    formatted: "{n:>2000000000}" had made a string of 2 GB."""
     try:
-        fields = [f for _, f, _, _ in Formatter().parse(pattern) if f is not None]
-        pattern.format(n=7)
-    except (ValueError, KeyError, IndexError, AttributeError, TypeError):
+        fields = [(f, spec) for _, f, spec, _ in Formatter().parse(pattern) if f is not None]
+    except (ValueError, TypeError):
         fields = None
-    if fields is None or any(f != "n" for f in fields):
+    if fields is None or any(f != "n" or "{" in (spec or "") for f, spec in fields):
         return ('must hold the variant number as {n} and no other field in braces, '
                 'as "ТММ.КП.{n:02d}"')
     if not fields:
         return 'must hold the variant number as {n} (as "ТММ.КП.{n:02d}"): each sheet its own'
+    for _, spec in fields:
+        m = _SPEC.fullmatch(spec or "")
+        if m and max(int(m["width"] or 0), int(m["precision"] or 0)) > MAX_TEXT:
+            wide = max(int(m["width"] or 0), int(m["precision"] or 0))
+            return (f"a field {quote('{n:' + spec + '}', 30)} {wide} characters wide: a designation "
+                    f"is at most {MAX_TEXT} characters")
+    if len(pattern) > MAX_TEXT:
+        return f"{len(pattern)} characters: a designation is at most {MAX_TEXT}"
+    try:
+        text = pattern.format(n=7)
+    except (ValueError, KeyError, IndexError, AttributeError, TypeError):
+        return ('must hold the variant number as {n} and no other field in braces, '
+                'as "ТММ.КП.{n:02d}"')
+    if len(text) > MAX_TEXT:
+        return f"{len(text)} characters formatted: a designation is at most {MAX_TEXT}"
     return None
 
 
