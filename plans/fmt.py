@@ -114,6 +114,20 @@ def cut(text: str, limit: int) -> str:
     return text + "…"
 
 
+def cut_start(text: str, limit: int) -> str:
+    """``text`` in at most ``limit`` columns, cut at its start where it is wider: a file's
+    path keeps its name, the part a reader looks for.
+
+    >>> cut_start("/a/long/path/to/ivanov.toml", 13)
+    '…/ivanov.toml'
+    """
+    if width(text) <= limit:
+        return text
+    while text and width(text) + 1 > limit:
+        text = text[1:]
+    return "…" + text
+
+
 def notation_in(text: str, lang: str) -> str:
     """The method's notation as ``lang``'s textbooks write it: the engine's ``a^t_CB``
     (tangential, as English and Chinese texts write it) is ``a^τ_CB`` in Russian.

@@ -433,3 +433,126 @@ def test_a_mechanism_without_loads_is_told_what_to_add(capsys, tmp_path):
     # the kinematic commands do not need them
     code, out, _ = run(capsys, "solve", path)
     assert code == 0 and "Force" not in out
+
+
+@st.composite
+def scotch_yokes(draw):
+    """A crank driving a block in a yoke's slot (RPP): the yoke slides on a fixed guide at
+    a random angle, its slot at a random angle to it (not parallel)."""
+    r = draw(st.floats(0.02, 0.2))
+    gamma = draw(st.floats(-60, 60))
+    slot = draw(st.floats(30, 150))
+    e = draw(st.floats(-0.5, 0.5)) * r
+    omega = draw(st.floats(1, 50))
+    u = np.exp(1j * math.radians(gamma))
+    G = 1j * u * e
+    text = f"""
+[frame]
+O = [0.0, 0.0]
+[driver]
+link = 1
+angle_deg = {draw(st.floats(0, 359))!r}
+omega = {omega!r}
+[links.1]
+axis = ["O", "A"]
+points = {{ A = {r!r} }}
+[links.2]
+points = {{ A = 0 }}
+[links.3]
+axis = ["D", "E"]
+points = {{ E = {3 * r!r}, S3 = [{1.5 * r!r}, {0.3 * r!r}] }}
+[[sliders]]
+link = 2
+guide = {{ link = 3, angle_deg = {slot!r} }}
+[[sliders]]
+link = 3
+point = "D"
+guide = {{ link = 0, through = [{float(G.real)!r}, {float(G.imag)!r}], angle_deg = {gamma!r} }}
+"""
+    return _hyp_mech(text)
+
+
+@st.composite
+def cross_slides(draw):
+    """A cross-slide (PRP) whose two guides both move: one on the crank, one on a slotted
+    link, at random offsets and angles."""
+    r = draw(st.floats(0.05, 0.15))
+    b = draw(st.floats(1.5 * r, 4 * r))
+    slant, across = draw(st.floats(60, 120)), draw(st.floats(0.2, 0.8)) * r
+    text = f"""
+[frame]
+O = [0.0, 0.0]
+B = [0.0, {-b!r}]
+[driver]
+link = 1
+angle_deg = {draw(st.floats(0, 359))!r}
+omega = {draw(st.floats(1, 30))!r}
+[links.1]
+axis = ["O", "A"]
+points = {{ A = {r!r} }}
+[links.2]
+points = {{ A = 0 }}
+[links.3]
+axis = ["B", "C"]
+points = {{ C = {5 * r!r} }}
+[links.4]
+points = {{ G = 0 }}
+[links.5]
+points = {{ G = 0 }}
+[[sliders]]
+link = 2
+guide = {{ link = 3 }}
+[[sliders]]
+link = 4
+point = "G"
+guide = {{ link = 1, angle_deg = {slant!r}, through = [{across!r}, 0.0] }}
+[[sliders]]
+link = 5
+point = "G"
+guide = {{ link = 3, offset = {draw(st.floats(-0.3, 0.3)) * r!r} }}
+"""
+    return _hyp_mech(text)
+
+
+def _hyp_mech(text: str):
+    import tomllib
+
+    from plans.model import from_dict
+
+    try:
+        mech = from_dict(tomllib.loads(text), "<hypothesis>")
+        Solver(mech)
+    except (InputError, SingularPlanError, ValueError):
+        assume(False)
+    return mech
+
+
+@HYP
+@given(scotch_yokes(), st.integers(0, 10**6))
+def test_random_scotch_yokes_force_plans(mech, seed):
+    """RPP: random yokes, their slot at any angle to their guide."""
+    _hyp_check(mech, seed)
+
+
+@HYP
+@given(cross_slides(), st.integers(0, 10**6))
+def test_random_cross_slides_force_plans(mech, seed):
+    """PRP: a cross-slide on two moving guides, at random offsets and angles."""
+    _hyp_check(mech, seed)
+
+
+def test_an_inertia_moment_shifts_the_inertia_force_where_the_file_asks(capsys, tmp_path):
+    """couples = "shift": the note takes M_Φ with Φ, its line shifted by h = M_Φ/Φ."""
+    from support import run
+
+    path = tmp_path / "press.toml"
+    from pathlib import Path
+
+    path.write_text(Path("samples/press.toml").read_text("utf-8").replace(
+        'couples = "pair"', 'couples = "shift"'), "utf-8")
+    code, out, err = run(capsys, "report", path)
+    assert code == 0, err
+    sol = solve_position(load(path))
+    h3 = 0.4 * abs(sol.epsilon[3]) / (10 * abs(sol.scalar.acceleration["S3"]))
+    assert f"h = M_Φ3 / Φ3 = 8.2749 / 77.8 = {h3:.4f} m" in out
+    assert "P_Φ3" not in out

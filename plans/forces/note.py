@@ -27,6 +27,8 @@ T = {
         "a_read": "a_{S} = π{s}·μa = {mm}·{mu} = {a} m/s²",
         "phi_moment": "Inertia moment of link {i}, against ε{i} ({sense}):",
         "pair": "Replaced by a couple of two forces ⊥ {a}{b} at {a} and {b}:",
+        "shift": "Taken with the inertia force: its line shifted from {S} by h, on the side that "
+                 "turns it about {S} as M_Φ{i} does:",
         "zero_phi": "The centre of mass of link {i} is on its fixed pivot {S}: its inertia force is zero.",
         "no_moments": "As the task asks, only the inertia forces are taken (no inertia moments).",
         "resistance": "Useful resistance",
@@ -90,6 +92,8 @@ T = {
         "a_read": "a_{S} = π{s}·μa = {mm}·{mu} = {a} м/с²",
         "phi_moment": "Главный момент сил инерции звена {i}, противоположно ε{i} ({sense}):",
         "pair": "Заменяем парой сил, приложенных в точках {a} и {b} ⊥ {a}{b}:",
+        "shift": "Учитываем вместе с силой инерции: её линию действия смещаем от {S} на h в ту "
+                 "сторону, чтобы её момент относительно {S} совпадал с M_Φ{i}:",
         "zero_phi": "Центр масс звена {i} совпадает с неподвижной точкой {S}: главный вектор сил инерции "
                     "равен нулю.",
         "no_moments": "По условию учитываются только силы инерции (без моментов сил инерции).",
@@ -222,7 +226,13 @@ def force_note(F: Forces, lang: str = "en", section: int = 1) -> str:
             unit = "N·m" if lang == "en" else "Н·м"
             item(f"M_Φ{lid} = J_S{lid}·ε{lid} = {c(ms.J)}·{c(abs(eps))} = {n(abs(ld.moment))} {unit}")
             ends = joints(mech, lid)
-            if loads.couples == "pair" and ends is not None:
+            phi_force = by_name.get(f"Φ{lid}")
+            if loads.couples == "shift" and phi_force is not None and abs(phi_force.force) > 0:
+                para(t["shift"].format(S=S, i=lid))
+                size = abs(phi_force.force)
+                item(f"h = M_Φ{lid} / Φ{lid} = {c(abs(ld.moment))} / {c(size)} = "
+                     f"{n(abs(ld.moment) / size)} {'m' if lang == 'en' else 'м'}")
+            elif loads.couples == "pair" and ends is not None:
                 a, b = ends
                 length = abs(m.position[b] - m.position[a])
                 para(t["pair"].format(a=a, b=b))
