@@ -135,7 +135,7 @@ def test_report_russian_uses_decimal_comma(capsys):
     code, out, _ = run(capsys, "report", "samples/press.toml", "--lang", "ru")
     assert code == 0
     assert "`a^k_A3A = 2·ω3·V_A3A = 2·4,8217·1,1482 = 11,07 м/с²`" in out
-    assert "`μv = V_A / pa = 3 / 60 = 0,05 (м/с)/мм`" in out
+    assert "`μv = 0,05 (м/с)/мм`\n- `pa = V_A / μv = 3 / 0,05 = 60 мм`" in out  # μv taken, then pa
     assert "`pc = pa3·BC / BA3 = 55,432·75 / 57,482 = 72,33 мм`" in out
     assert "`πc = πa3·BC / BA3 = 17,888·75 / 57,482 = 23,34 мм`" in out  # b is π: no point b
     assert "bc =" not in out
@@ -150,7 +150,7 @@ def test_no_number_in_a_russian_note_has_a_decimal_point(capsys, path):
     assert code == 0
     assert re.findall(r"\d\.\d", out) == []
     if "fourbar" in path:  # its file gives n1 in rpm, the press ω1
-        assert "`ω1 = π·n1 / 30 = 3,1416·149,2 / 30 = 15,62 рад/с`" in out
+        assert "`ω1 = π·n1 / 30 = 3,141593·149,2 / 30 = 15,6242 рад/с`" in out
 
 
 def test_report_english(capsys):
@@ -166,7 +166,7 @@ def test_russian_note_says_the_crank_range_in_russian(capsys):
     assert code == 0
     assert ("Начальное звено 1 не может сделать полный оборот (это коромысло, а не кривошип): "
             "механизм собирается только при φ1 от −128,8° до 128,8°, угол качания 257,6°.") in out
-    assert "кривошипа" not in out.split("## 3.")[1]  # the input link is not called a crank
+    assert "кривошипа" not in out.split("## 4.")[1]  # the input link is not called a crank
     assert "cannot" not in out
 
 
@@ -266,7 +266,7 @@ def test_the_note_finds_every_point_of_the_input_link_it_uses(capsys, tmp_path):
     path = tmp_path / "tangent.toml"
     path.write_text(SCENES["tangent"].toml, "utf-8")
     _code, out, _ = run(capsys, "report", path, "--lang", "ru")
-    velocity = out.split("## 3.")[1].split("## 4.")[0]
+    velocity = out.split("## 4.")[1].split("## 5.")[0]
     assert velocity.index("- `pc1 = pa·OC1 / OA = ") < velocity.index("Через точку c1")
     assert "- `V_C1 = pc1·μv = " in velocity
 
@@ -618,3 +618,30 @@ def test_a_courses_table_gives_an_offset_omega_and_a_clockwise_crank(tmp_path, c
     assert c.theta == pytest.approx(math.asin(e / (rod - r)) - math.asin(e / (rod + r)), rel=1e-9)
     code, out, _ = run(capsys, "solve", "--variant", "4", "--table", str(table))
     assert code == 0 and "ω1 = 10.5 rad/s cw" in out, out
+
+
+def test_the_note_opens_with_the_initial_data_and_names_the_position_in_every_plan(capsys):
+    """Seed 000 §1.1 opens with the initial data; the note began with the structure and
+    never said at which crank position its plans stand. Now every length the file gives
+    (the frame's OB, a fixed guide's offset e, a four-bar coupler's CE), the masses and
+    J_S, ω1 (n1 where the file gives rpm) and φ1 as the file gives it and from +x; and
+    each plan section names its position."""
+    code, out, _ = run(capsys, "report", "samples/press.toml", "--lang", "ru")
+    assert code == 0
+    first = out.split("## 1. Исходные данные")[1].split("## 2. Структурный анализ механизма")[0]
+    for row in ("| `l_OA` | 0,15 м |", "| `l_OB` | 0,44 м |", "| `l_BC` | 0,75 м |", "| `l_CS4` | 0,1 м |",
+                "| `e` | 0,35 м (смещение направляющей x-x от O) |", "| `m3` | 10 кг |",
+                "| `J_S3` | 0,4 кг·м² |", "| `ω1` | 20 рад/с, против часовой стрелки |",
+                "| `φ1` | 60° от +x (30° от +y, по часовой стрелке, как задано в файле) |"):
+        assert row in first, row
+    said = "Положение механизма: φ1 = 60° от +x (30° от +y, по часовой стрелке, как задано в файле)."
+    for head in ("## 4. План скоростей механизма", "## 5. План ускорений механизма"):
+        assert out.split(head)[1].lstrip().startswith(said)
+    code, out, _ = run(capsys, "report", "--variant", "1", "--angle", "70")
+    first = out.split("## 1. Initial data")[1].split("## 2.")[0]
+    for row in ("| `l_CE` | 0.08 m |", "| `l_BE` | 0.24 m |", "| `l_AD` | 0.11 m |", "| `n1` | 115 rpm |",
+                "| `φ1` | 70° from +x |"):
+        assert row in first, row
+    assert out.count("Position of the mechanism: φ1 = 70° from +x.") == 2
+    code, out, _ = run(capsys, "report", "--variant", "0")
+    assert "| `e` | 0 m (offset of the guide x-x from A) |" in out

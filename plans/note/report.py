@@ -8,7 +8,9 @@ beyond products and quotients of values the plans already hold.
 
 from __future__ import annotations
 
+import itertools
 import math
+import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -50,8 +52,9 @@ def note(sol: Solution, lang: str = "en", cycle=None,
     mech, st = sol.mechanism, sol.structure
     d = mech.driver
     out = [f"# {t['title']}: {mech.name_in(lang)}", ""]
+    out += initial_data(sol, lang)
     # structure ----------------------------------------------------------------------
-    out += [f"## 1. {t['structure']}", "", t["cheb"], ""]
+    out += [f"## 2. {t['structure']}", "", t["cheb"], ""]
     out.append(f"- `{st.chebyshev()}`")
     dash = t["dash"]  # «n = 5 — число подвижных звеньев»
     out.append(f"  (n = {st.n}{dash} {t['n']}, p5 = {st.p5}{dash} {t['p5']}, p4 = 0{dash} {t['p4']})")
@@ -64,7 +67,7 @@ def note(sol: Solution, lang: str = "en", cycle=None,
     # positions ----------------------------------------------------------------------
     mu_l = sol.mu_l
     crank_mm = d.length / mu_l
-    out += [f"## 2. {t['positions']}", "", t["mul"], ""]
+    out += [f"## 3. {t['positions']}", "", t["mul"], ""]
     out.append(Step(f"μl = l_{d.pivot}{d.tip} / {d.pivot}{d.tip}", f"{n(d.length)} / {n(crank_mm)}",
                     n(mu_l), u["mu_l"]).markdown())
     # with plans of other positions, the plan of positions draws theirs heavy (not the
@@ -136,7 +139,7 @@ def note(sol: Solution, lang: str = "en", cycle=None,
             out.append(Step("K = (180° + θ) / (180° − θ)", f"(180° + {n(th)}°) / (180° − {n(th)}°)",
                             n(cycle.K), "").markdown())
     out.append("")
-    number = 3
+    number = 4
     for title, s in plans or [("", sol)]:
         for plan in (s.velocity, s.acceleration):
             out += _plan_section(s, plan, lang, number, title)
@@ -144,6 +147,87 @@ def note(sol: Solution, lang: str = "en", cycle=None,
         for w in warnings(s, lang):
             out += [f"> {t['warn']}: {w}", ""]
     return notation_in("\n".join(out).rstrip() + "\n", lang)
+
+
+def initial_data(sol: Solution, lang: str = "en") -> list[str]:
+    """The note's first section, as a course's note opens (seed 000, §1.1): every length
+    the file gives (each link's points from its first one, the joints of a link of three
+    or more from one another: a ternary link's CE; the frame's points from one another;
+    a fixed guide's offset e from the crank's pivot), the masses and J_S where the file
+    gives loads, ω1 (and n1 where the file gives rpm) and the position, φ1 in the file's
+    convention and from +x. A table of quantity and value, in Markdown."""
+    t, u = T[lang], UNITS[lang]
+    mech, d = sol.mechanism, sol.mechanism.driver
+
+    def n(x):
+        return num(x, 6, lang)
+
+    rows: list[tuple[str, str]] = []
+    seen: set[frozenset[str]] = set()
+
+    def length(a: str, b: str, value: float) -> None:
+        if value > 0 and frozenset((a, b)) not in seen:
+            seen.add(frozenset((a, b)))
+            rows.append((f"l_{a}{b}", f"{n(value)} {u['m']}"))
+
+    frame = list(mech.frame)
+    for i, a in enumerate(frame):
+        for b in frame[i + 1:]:
+            length(a, b, abs(mech.frame[b] - mech.frame[a]))
+    centres = {m.centre for m in mech.loads.masses.values()} if mech.loads is not None else set()
+    centres |= {p for p in mech.point_names() if re.fullmatch(r"S\d+", p)}
+    joints = {p for p in mech.point_names() if len(mech.links_of(p)) >= 2 or p in mech.frame}
+    for lid in sorted(mech.links):
+        link = mech.links[lid]
+        pts = link.points
+        if not pts:
+            continue
+        first = link.axis[0] if link.axis else next(iter(pts))
+        for p in pts:
+            if p != first:
+                length(first, p, abs(pts[p] - pts[first]))
+        # a point off the link's axis is given by two lengths: from its second point too
+        # (a ternary link BCE: CE); the joints of a link without an axis, from one another
+        second = link.axis[1] if link.axis else None
+        if second is not None:
+            line = pts[second] - pts[first]
+            along = []  # the points on the axis, centres of mass aside, in order along it
+            for p in pts:
+                across = ((pts[p] - pts[first]) * line.conjugate())
+                if abs(across.imag) > 0:
+                    length(second, p, abs(pts[p] - pts[second]))
+                elif p not in centres:
+                    along.append((across.real, p))
+            along.sort()
+            for (_, a), (_, b) in itertools.pairwise(along):  # B, C, E in line: CE too
+                length(a, b, abs(pts[b] - pts[a]))
+        else:
+            others = [p for p in pts if p != first and p in joints]
+            for i, a in enumerate(others):
+                for b in others[i + 1:]:
+                    length(a, b, abs(pts[b] - pts[a]))
+    pivot = mech.frame[d.pivot]
+    fixed = [s.guide for s in mech.sliders if s.guide.link == 0]
+    for g in dict.fromkeys(fixed):
+        e = abs(((pivot - g.point) * g.direction.conjugate()).imag)
+        name = "e" if len(fixed) == 1 else f"e_{g.label}"
+        rows.append((name, f"{n(e)} {u['m']} ({t['offset'].format(p=d.pivot, g=g.label)})"))
+    loads = mech.loads
+    if loads is not None:
+        for lid in sorted(loads.masses):
+            ms = loads.masses[lid]
+            if ms.mass:
+                rows.append((f"m{lid}", f"{n(ms.mass)} {u['kg']}"))
+            if ms.J:
+                rows.append((f"J_{ms.centre}", f"{n(ms.J)} {u['kgm2']}"))
+    sense = t["sense"][1 if d.omega > 0 else -1 if d.omega < 0 else 0]
+    rows.append((d.omega_sym, f"{n(abs(d.omega))} {u['rad/s']}" + (f", {sense}" if sense else "")))
+    if d.rpm:
+        rows.append((f"n{d.link}", f"{n(d.rpm)} {u['rpm']}"))
+    rows.append((d.phi_sym, d.both(sol.phi, lang, sol.shown_from)))
+    out = [f"## 1. {t['initial']}", "", t["given"], "", f"| {t['quantity']} | {t['value']} |", "|---|---|"]
+    out += [f"| `{k}` | {v} |" for k, v in rows]
+    return [*out, ""]
 
 
 def _letter(plan, name: str) -> str:
@@ -177,26 +261,30 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
     pole = plan.pole
     head = t["accelerations"] if acc else t["velocities"]
     out = [f"## {number}. {head}" + (f" ({title})" if title else ""), ""]
+    out += [t["position"].format(phi=d.phi_sym, at=d.both(sol.phi, lang, sol.shown_from)), ""]
     tip = plan_name(d.tip)
     w1 = abs(d.omega)
     val = abs(plan.value(tip))
     if acc:
         out += [t["aa"].format(t=d.tip, p=d.pivot, w=d.omega_sym), ""]
         out.append(Step(f"a_{d.tip} = {d.omega_sym}²·l_{d.pivot}{d.tip}",
-                        f"{n(w1, 5)}²·{n(d.length, 5)}", n(val), unit).markdown())
-        out += ["", t["mua"].format(mm=n(val / mu), t=tip), ""]
-        out.append(Step(f"μa = a_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu),
-                        u["mu_a"]).markdown())
+                        f"{n(w1, 6)}²·{n(d.length, 5)}", n(val, 5), unit).markdown())
+        # the classroom's order: a round μa taken, then the vector's length from it
+        out += ["", t["mua"].format(t=tip), ""]
+        out.append(Step("μa", "", n(mu), u["mu_a"]).markdown())
+        out.append(Step(f"{pole}{tip} = a_{d.tip} / μa", f"{n(val, 5)} / {n(mu)}", n(val / mu),
+                        u["mm"]).markdown())
     else:
         out += [t["va"].format(t=d.tip, p=d.pivot, w=d.omega_sym), ""]
         if d.rpm:
-            out.append(Step(f"{d.omega_sym} = π·n{d.link} / 30", f"{n(math.pi, 5)}·{n(d.rpm)} / 30",
-                            n(w1), u["rad/s"]).markdown())
+            out.append(Step(f"{d.omega_sym} = π·n{d.link} / 30", f"{n(math.pi, 7)}·{n(d.rpm)} / 30",
+                            n(w1, 6), u["rad/s"]).markdown())
         out.append(Step(f"V_{d.tip} = {d.omega_sym}·l_{d.pivot}{d.tip}",
-                        f"{n(w1, 5)}·{n(d.length, 5)}", n(val), unit).markdown())
-        out += ["", t["muv"].format(mm=n(val / mu), t=tip), ""]
-        out.append(Step(f"μv = V_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu),
-                        u["mu_v"]).markdown())
+                        f"{n(w1, 6)}·{n(d.length, 5)}", n(val, 5), unit).markdown())
+        out += ["", t["muv"].format(t=tip), ""]
+        out.append(Step("μv", "", n(mu), u["mu_v"]).markdown())
+        out.append(Step(f"{pole}{tip} = V_{d.tip} / μv", f"{n(val, 5)} / {n(mu)}", n(val / mu),
+                        u["mm"]).markdown())
     out.append("")
     # the input link's other points (its centre of mass, a point a guide slides past)
     sims = [p for p in plan.points.values() if p.source.kind == "similarity"
