@@ -759,3 +759,28 @@ def test_solve_position_takes_any_positive_scale_factor():
     assert (sol.mu_v, sol.mu_a) == (1e-12, 5e8)
     with pytest.raises(InputError, match=r"mu\.mu_a: inf is out of range"):
         solve_position(mech, mu={"mu_a": float("inf")})
+
+
+@pytest.mark.parametrize("scene", ["crank_slider_offset", "crank_rocker", "press"])
+def test_the_missing_hint_error_suggests_a_hint_that_works(capsys, tmp_path, scene):
+    """A slider on a horizontal guide was told to add 'B = "above A"': B's two assemblies
+    are level with A, so that hint fails in its turn. The hint suggested now parts the
+    two assemblies, and the file with it is solved."""
+    import re
+
+    from plans.model.scenes import SCENES
+
+    text = SCENES[scene].toml or (ROOT / "samples" / "press.toml").read_text("utf-8")
+    bare = re.sub(r"\[assembly\]\n[^\n]*\n", "", text)
+    assert bare != text
+    path = tmp_path / "bare.toml"
+    path.write_text(bare, "utf-8")
+    code, _, err = run(capsys, "solve", path)
+    assert code == 2
+    m = re.search(r"add a hint such as \[assembly\] (\w+) = (\"[^\"]+\")", err)
+    assert m, err
+    if scene == "crank_slider_offset":
+        assert m.group(2) in ('"right of A"', '"left of A"')
+    path.write_text(bare + f"\n[assembly]\n{m.group(1)} = {m.group(2)}\n", "utf-8")
+    code, _, err = run(capsys, "solve", path)
+    assert code == 0, err
