@@ -226,8 +226,15 @@ def test_a_file_larger_than_a_megabyte_is_not_read(tmp_path):
 
 
 @pytest.mark.skipif(not Path("/dev/zero").exists(), reason="no /dev/zero")
-def test_an_endless_input_is_not_read_to_its_end():
+def test_an_endless_input_is_not_read_to_its_end(tmp_path):
+    """/dev/zero is a device, and says so (it was read to the limit and called larger
+    than 1 MB); a file of a terabyte is not read to its end either."""
     err = _quick(lambda: load("/dev/zero"))
+    assert "is a device" in err.problems[0]
+    big = tmp_path / "big.toml"
+    with big.open("wb") as f:
+        f.truncate(10**12)  # sparse: no disk taken
+    err = _quick(lambda: load(big))
     assert "larger than 1 MB" in err.problems[0]
 
 
