@@ -35,7 +35,7 @@ from plans.cli.output import picture_format
 from plans.cycle import outside, reachable_cycle, shown_from, summary
 from plans.cycle.table import CycleTable, compute, figure_labels
 from plans.errors import AssemblyError
-from plans.fmt import from_x, in_turn, num
+from plans.fmt import from_x, in_turn, json_angle, num
 from plans.kinematics.conditioning import is_pivot
 from plans.tolerances import NOISE
 
@@ -235,8 +235,8 @@ def _json_rows(t: CycleTable):
         good = st.ok
         row = {
             "index": k,
-            "phi_deg": from_x(phi),
-            "angle_deg": mech.driver.file_angle(phi),
+            "phi_deg": json_angle(from_x(phi)),  # to 1e-9°: 180, not 179.99999999999855
+            "angle_deg": json_angle(mech.driver.file_angle(phi)),
             "solved": good,
             "placed": st.placed,  # the positions stand (where not solved: a change point)
             "conditioning": {
@@ -327,8 +327,8 @@ def csv_chunks(t: CycleTable, rows: int = 1000):
         out = None if out_all is None else out_all[lo:hi].tolist()
         for j, st in enumerate(t.status[lo:hi]):
             good = st.ok
-            row = [lo + j, f(from_x(phis[j])), f(mech.driver.file_angle(phis[j])), int(good),
-                   int(st.placed), f(st.min_sine)]
+            row = [lo + j, f(json_angle(from_x(phis[j]))), f(json_angle(mech.driver.file_angle(phis[j]))),
+                   int(good), int(st.placed), f(st.min_sine)]
             row += [f(st.figures.get(x, math.nan)) for x in labels]
             if out is not None:
                 row.append(f(out[j]) if st.placed else "")
