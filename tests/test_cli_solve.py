@@ -645,3 +645,31 @@ def test_the_note_opens_with_the_initial_data_and_names_the_position_in_every_pl
     assert out.count("Position of the mechanism: φ1 = 70° from +x.") == 2
     code, out, _ = run(capsys, "report", "--variant", "0")
     assert "| `e` | 0 m (offset of the guide x-x from A) |" in out
+
+
+def test_user_text_is_no_markup_in_the_note_and_no_bidi_on_the_sheet(capsys, tmp_path):
+    """A name with HTML, Markdown and a line break became markup and a forged section in
+    the note; a guide's label with a backtick broke the step's code span; a bidi control
+    (U+202E) turned the sheet's text around it. Now the note escapes what it writes of the
+    file's text, and the sheet drops the bidi controls."""
+    text = (ROOT / "samples" / "press.toml").read_text("utf-8")
+    name = '<script>x</script> **Press**\\n## 9. Forged\\u202e'
+    text = text.replace('name = { en = "Slotted-link press for briquetting", ru = '
+                        '"Кулисный механизм пресса для брикетирования" }', f'name = "{name}"')
+    text = text.replace("angle_deg = 0 }", 'angle_deg = 0, label = "x`|<i>" }')
+    path = tmp_path / "hostile.toml"
+    path.write_text(text, "utf-8")
+    for lang in ("ru", "en"):
+        code, out, err = run(capsys, "report", path, "--lang", lang)
+        assert code == 0, err
+        lines = out.splitlines()
+        prose = re.sub(r"(?<!\\)`[^`]*`", "", out)  # a code span's text is literal: markup only outside one
+        assert lines[0].startswith("# ") and "<script>" not in out and "<i>" not in prose
+        assert "\\<script\\>x\\</script\\> \\*\\*Press\\*\\* \\#\\# 9. Forged" in lines[0]
+        assert not any(ln.startswith("## 9.") for ln in lines) and "\u202e" not in out
+        assert all(ln.count("`") % 2 == ln.count("\\`") % 2 for ln in lines)  # every code span closed
+        assert "∥ xˋ|<i>`" in out  # in a step's code span
+    svg = tmp_path / "s.svg"
+    code, _, err = run(capsys, "sheet", path, "-o", svg)
+    assert code == 0, err
+    assert "\u202e" not in svg.read_text("utf-8")

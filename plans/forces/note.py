@@ -12,7 +12,7 @@ from __future__ import annotations
 import cmath
 import math
 
-from plans.fmt import num
+from plans.fmt import md_code, md_text, num
 from plans.forces.lever import joints
 from plans.forces.summary import Forces, rpm_of
 
@@ -183,7 +183,7 @@ def force_note(F: Forces, lang: str = "en", section: int = 1) -> str:
     def item(text):
         if out and out[-1] and not out[-1].startswith("- "):
             out.append("")  # a paragraph, then its list
-        out.append(f"- `{text}`")
+        out.append(f"- `{md_code(text)}`")  # a load's name is the file's: no markup
 
     def para(text):
         if out and out[-1]:
@@ -347,8 +347,8 @@ def _group(out, t, g, lang, item, n, N, sol):
     if len(closing) == 2:
         lines = [pt for pt in plan.points.values() if pt.source.kind == "intersection"]
         src = lines[0].source if lines else None
-        l0, l1 = (src.lines[0].relation, src.lines[1].relation) if src else ("", "")
-        _para(out, t["closes"].format(eq=f"`{src.equation}`" if src else "", l0=l0, l1=l1))
+        l0, l1 = (md_text(src.lines[0].relation), md_text(src.lines[1].relation)) if src else ("", "")
+        _para(out, t["closes"].format(eq=f"`{md_code(src.equation)}`" if src else "", l0=l0, l1=l1))
     else:
         _para(out, t["closes1"].format(R=closing[0].label))
     for r in g.reactions:

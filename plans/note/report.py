@@ -15,7 +15,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from plans.cycle.words import change_points, no_full_turn
-from plans.fmt import notation_in, num
+from plans.fmt import md_code, md_text, notation_in, num
 from plans.kinematics.conditioning import flag_words
 from plans.note.words import UNITS, T
 from plans.plan.solution import Solution, plan_name
@@ -33,7 +33,7 @@ class Step:
     def markdown(self) -> str:
         mid = f" = {self.substitution}" if self.substitution else ""
         unit = "" if not self.unit else self.unit if self.unit == "°" else f" {self.unit}"
-        return f"- `{self.formula}{mid} = {self.result}{unit}`"
+        return f"- `{md_code(f'{self.formula}{mid} = {self.result}{unit}')}`"
 
 
 def note(sol: Solution, lang: str = "en", cycle=None,
@@ -51,7 +51,7 @@ def note(sol: Solution, lang: str = "en", cycle=None,
 
     mech, st = sol.mechanism, sol.structure
     d = mech.driver
-    out = [f"# {t['title']}: {mech.name_in(lang)}", ""]
+    out = [f"# {t['title']}: {md_text(mech.name_in(lang))}", ""]
     out += initial_data(sol, lang)
     # structure ----------------------------------------------------------------------
     out += [f"## 2. {t['structure']}", "", t["cheb"], ""]
@@ -210,8 +210,8 @@ def initial_data(sol: Solution, lang: str = "en") -> list[str]:
     fixed = [s.guide for s in mech.sliders if s.guide.link == 0]
     for g in dict.fromkeys(fixed):
         e = abs(((pivot - g.point) * g.direction.conjugate()).imag)
-        name = "e" if len(fixed) == 1 else f"e_{g.label}"
-        rows.append((name, f"{n(e)} {u['m']} ({t['offset'].format(p=d.pivot, g=g.label)})"))
+        name = "e" if len(fixed) == 1 else f"e_{md_code(g.label, cell=True)}"
+        rows.append((name, f"{n(e)} {u['m']} ({t['offset'].format(p=d.pivot, g=md_text(g.label))})"))
     loads = mech.loads
     if loads is not None:
         for lid in sorted(loads.masses):
@@ -299,11 +299,11 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
         x = cons.point
         px = plan_name(x)
         pt = plan.points[px]
-        out += [t["eqs"].format(x=x), "", f"- `{cons.equation}`"]
+        out += [t["eqs"].format(x=x), "", f"- `{md_code(cons.equation)}`"]
         for sl in (g.group.s1, g.group.s2):  # a slot the tool named x3-x3: say what it is
             if (sl is not None and sl.guide.named_by_tool and sl.guide.link
                     and sl.guide.label.startswith(f"x{sl.guide.link}")):
-                out.append(f"- {t['xk'].format(x=sl.guide.label, k=sl.guide.link)}")
+                out.append(f"- {t['xk'].format(x=md_text(sl.guide.label), k=sl.guide.link)}")
         if acc:  # a block on a guide whose link translates: no Coriolis term, and why
             for sl in (g.group.s1, g.group.s2):
                 if sl is not None and sl.guide.link and sl.guide.link in sol.solver.translating:
@@ -336,10 +336,11 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
                     mm = plan.mm(s0, s1)
                     out.append("  " + Step(f"{s0}{s1} = {term.label} / {mus}", f"{n(mm * mu, 5)} / {n(mu)}",
                                            n(mm), u["mm"]).markdown()[2:])
-            out.append(f"- {r.unknown}: {t['dir']} {r.relation}" + (f"; {', '.join(parts)}" if parts else ""))
+            out.append(f"- {r.unknown}: {t['dir']} {md_text(r.relation)}"
+                       + (f"; {', '.join(parts)}" if parts else ""))
         lines = pt.source.lines
-        out += ["", t["build"].format(l0=_letter(plan, lines[0].through), r0=lines[0].relation,
-                                      l1=_letter(plan, lines[1].through), r1=lines[1].relation,
+        out += ["", t["build"].format(l0=_letter(plan, lines[0].through), r0=md_text(lines[0].relation),
+                                      l1=_letter(plan, lines[1].through), r1=md_text(lines[1].relation),
                                       x=px), ""]
         # similarity points of the group's links, then values; a link that translates
         # has one velocity and one acceleration for all its points
