@@ -682,20 +682,20 @@ def test_the_notes_plan_of_positions_is_the_heavy_one(tmp_path):
             "φ1 = 349,9°), выделены основными линиями, остальные положения — тонкими.") in section2
     first = section2.split("в положении, для которого ниже построены планы (положение 1, "
                            "φ1 = 79,93°):")[1]
-    assert "- `BA3 = l_BA3 / μl = 0,48906 / 0,01 = 48,91 мм`" in first.split("(положение 4,")[0]
+    assert "- `BA3 = l_BA3 / μl = 0,48906 / 0,01 = 48,906 мм`" in first.split("(положение 4,")[0]
     # in English, one position: the same, in the singular
     assert main(["sheet", str(ROOT / "samples" / "press.toml"), "--plans", "4", "--lang", "en",
                  "-o", str(tmp_path / "p.svg"), "--note", str(md)]) == 0
     section2 = md.read_text("utf-8").split("## 3.")[1].split("## 4.")[0]
     assert ("The position of the plans below (position 4, φ1 = 349.9°) is drawn in heavy lines, "
             "the other positions in thin lines.") in section2
-    assert "- `BA3 = l_BA3 / μl = 0.58827 / 0.01 = 58.83 mm`" in section2
+    assert "- `BA3 = l_BA3 / μl = 0.58827 / 0.01 = 58.827 mm`" in section2
     assert "given" not in section2 and "57.48" not in section2
     # without --plans the given position is the heavy one, its plans the note's own
     assert main(["sheet", str(ROOT / "samples" / "press.toml"), "-o", str(tmp_path / "p.svg"),
                  "--note", str(md)]) == 0
     section2 = md.read_text("utf-8").split("## 3.")[1].split("## 4.")[0]
-    assert "- `BA3 = l_BA3 / μl = 0,57482 / 0,01 = 57,48 мм`" in section2
+    assert "- `BA3 = l_BA3 / μl = 0,57482 / 0,01 = 57,482 мм`" in section2
     assert "основными" not in section2
 
 
@@ -715,8 +715,8 @@ def test_the_notes_plan_of_positions_gives_the_segments_of_each_position_drawn(t
     at = section2.split("Длины отрезков, изображающих звенья на чертеже, ")[1].split(
         "построены планы (положение ")[1:]
     assert [a.split(",")[0] for a in at] == ["1", "4"]
-    assert "- `BA3 = l_BA3 / μl = 0,48906 / 0,01 = 48,91 мм`" in at[0]
-    assert "- `BA3 = l_BA3 / μl = 0,58827 / 0,01 = 58,83 мм`" in at[1]
+    assert "- `BA3 = l_BA3 / μl = 0,48906 / 0,01 = 48,906 мм`" in at[0]
+    assert "- `BA3 = l_BA3 / μl = 0,58827 / 0,01 = 58,827 мм`" in at[1]
     assert at[1].startswith("4, φ1 = 349,9°):")  # changes from position 1's
     assert "BC / BA3 = 27,839·75 / 48,906 = " in text.split("## 4.")[1].split("## 5.")[0]
     assert "BC / BA3 = 59,485·75 / 58,827 = " in text.split("## 6.")[1].split("## 7.")[0]
