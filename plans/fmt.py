@@ -257,13 +257,12 @@ def md_text(text: str) -> str:
     return _MD_SPECIAL.sub(r"\\\1", plain(text))
 
 
-def md_code(text: str, cell: bool = False) -> str:
+def md_code(text: str) -> str:
     """Text for inside one of the note's code spans (a step): its control characters
     gone and a backtick (which would close the span) written ˋ; nothing else is markup
-    there. In a table's cell a bar would end the cell: ``cell=True`` writes it ¦.
+    there.
 
-    >>> md_code("F`1"), md_code("|x|", cell=True)
-    ('Fˋ1', '¦x¦')
+    >>> md_code("F`1")
+    'Fˋ1'
     """
-    text = plain(text).replace("`", "ˋ")
-    return text.replace("|", "¦") if cell else text
+    return plain(text).replace("`", "ˋ")

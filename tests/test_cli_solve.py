@@ -657,22 +657,22 @@ def test_the_note_opens_with_the_initial_data_and_names_the_position_in_every_pl
     code, out, _ = run(capsys, "report", "samples/press.toml", "--lang", "ru")
     assert code == 0
     first = out.split("## 1. Исходные данные")[1].split("## 2. Структурный анализ механизма")[0]
-    for row in ("| `l_OA` | 0,15 м |", "| `l_OB` | 0,44 м |", "| `l_BC` | 0,75 м |", "| `l_CS4` | 0,1 м |",
-                "| `e` | 0,35 м (смещение направляющей x-x от O) |", "| `m3` | 10 кг |",
-                "| `J_S3` | 0,4 кг·м² |", "| `ω1` | 20 рад/с, против часовой стрелки |",
-                "| `φ1` | 60° от +x (30° от +y, по часовой стрелке, как задано в файле) |"):
+    for row in ("- `l_OA = 0,15 м`;", "- `l_OB = 0,44 м`;", "- `l_BC = 0,75 м`;", "- `l_CS4 = 0,1 м`;",
+                "- `e = 0,35 м`, смещение направляющей x-x от O;", "- `m3 = 10 кг`;",
+                "- `J_S3 = 0,4 кг·м²`;", "- `ω1 = 20 рад/с`, против часовой стрелки;",
+                "- `φ1 = 60°` от +x (30° от +y, по часовой стрелке, как задано в файле)."):
         assert row in first, row
     said = "Положение механизма: φ1 = 60° от +x (30° от +y, по часовой стрелке, как задано в файле)."
     for head in ("## 4. План скоростей механизма", "## 5. План ускорений механизма"):
         assert out.split(head)[1].lstrip().startswith(said)
     code, out, _ = run(capsys, "report", "--variant", "1", "--angle", "70")
     first = out.split("## 1. Initial data")[1].split("## 2.")[0]
-    for row in ("| `l_CE` | 0.08 m |", "| `l_BE` | 0.24 m |", "| `l_AD` | 0.11 m |", "| `n1` | 115 rpm |",
-                "| `φ1` | 70° from +x |"):
+    for row in ("- `l_CE = 0.08 m`;", "- `l_BE = 0.24 m`;", "- `l_AD = 0.11 m`;", "- `n1 = 115 rpm`;",
+                "- `φ1 = 70°` from +x."):
         assert row in first, row
     assert out.count("Position of the mechanism: φ1 = 70° from +x.") == 2
     code, out, _ = run(capsys, "report", "--variant", "0")
-    assert "| `e` | 0 m (offset of the guide x-x from A) |" in out
+    assert "- `e = 0 m`, offset of the guide x-x from A;" in out
 
 
 def test_user_text_is_no_markup_in_the_note_and_no_bidi_on_the_sheet(capsys, tmp_path):

@@ -160,20 +160,21 @@ def initial_data(sol: Solution, lang: str = "en") -> list[str]:
     or more from one another: a ternary link's CE; the frame's points from one another;
     a fixed guide's offset e from the crank's pivot), the masses and J_S where the file
     gives loads, ω1 (and n1 where the file gives rpm) and the position, φ1 in the file's
-    convention and from +x. A table of quantity and value, in Markdown."""
+    convention and from +x: an enumeration of steps, each with the words it needs (the
+    note's PDF had run a table's cells together)."""
     t, u = T[lang], UNITS[lang]
     mech, d = sol.mechanism, sol.mechanism.driver
 
     def n(x):
         return num(x, 6, lang)
 
-    rows: list[tuple[str, str]] = []
+    rows: list[tuple[str, str, str]] = []  # (quantity, value, the words after it)
     seen: set[frozenset[str]] = set()
 
     def length(a: str, b: str, value: float) -> None:
         if value > 0 and frozenset((a, b)) not in seen:
             seen.add(frozenset((a, b)))
-            rows.append((f"l_{a}{b}", f"{n(value)} {u['m']}"))
+            rows.append((f"l_{a}{b}", f"{n(value)} {u['m']}", ""))
 
     frame = list(mech.frame)
     for i, a in enumerate(frame):
@@ -215,23 +216,26 @@ def initial_data(sol: Solution, lang: str = "en") -> list[str]:
     fixed = [s.guide for s in mech.sliders if s.guide.link == 0]
     for g in dict.fromkeys(fixed):
         e = abs(((pivot - g.point) * g.direction.conjugate()).imag)
-        name = "e" if len(fixed) == 1 else f"e_{md_code(g.label, cell=True)}"
-        rows.append((name, f"{n(e)} {u['m']} ({t['offset'].format(p=d.pivot, g=md_text(g.label))})"))
+        name = "e" if len(fixed) == 1 else f"e_{g.label}"
+        rows.append((name, f"{n(e)} {u['m']}", ", " + t["offset"].format(p=d.pivot, g=md_text(g.label))))
     loads = mech.loads
     if loads is not None:
         for lid in sorted(loads.masses):
             ms = loads.masses[lid]
             if ms.mass:
-                rows.append((f"m{lid}", f"{n(ms.mass)} {u['kg']}"))
+                rows.append((f"m{lid}", f"{n(ms.mass)} {u['kg']}", ""))
             if ms.J:
-                rows.append((f"J_{ms.centre}", f"{n(ms.J)} {u['kgm2']}"))
+                rows.append((f"J_{ms.centre}", f"{n(ms.J)} {u['kgm2']}", ""))
     sense = t["sense"][1 if d.omega > 0 else -1 if d.omega < 0 else 0]
-    rows.append((d.omega_sym, f"{n(abs(d.omega))} {u['rad/s']}" + (f", {sense}" if sense else "")))
+    rows.append((d.omega_sym, f"{n(abs(d.omega))} {u['rad/s']}", f", {sense}" if sense else ""))
     if d.rpm:
-        rows.append((f"n{d.link}", f"{n(d.rpm)} {u['rpm']}"))
-    rows.append((d.phi_sym, d.both(sol.phi, lang, sol.shown_from)))
-    out = [f"## 1. {t['initial']}", "", t["given"], "", f"| {t['quantity']} | {t['value']} |", "|---|---|"]
-    out += [f"| `{k}` | {v} |" for k, v in rows]
+        rows.append((f"n{d.link}", f"{n(d.rpm)} {u['rpm']}", ""))
+    at, _, conv = d.both(sol.phi, lang, sol.shown_from).partition(" ")
+    rows.append((d.phi_sym, at, f" {conv}"))
+    out = [f"## 1. {t['initial']}", "", t["given"], ""]
+    # an enumeration, as the seed writes its data: each item ends in ";", the last in "."
+    out += [f"- `{md_code(f'{k} = {v}')}`{what}{';' if i < len(rows) - 1 else '.'}"
+            for i, (k, v, what) in enumerate(rows)]
     return [*out, ""]
 
 

@@ -17,7 +17,6 @@ T = {
         "initial": "Initial data",
         "given": "The mechanism's dimensions, loads, input speed and the position studied, as the file "
                  "gives them:",
-        "quantity": "quantity", "value": "value",
         "offset": "offset of the guide {g} from {p}",
         "position": "Position of the mechanism: {phi} = {at}.",
         "structure": "Structural analysis",
@@ -82,7 +81,6 @@ T = {
         "initial": "Исходные данные",
         "given": "Размеры звеньев, нагрузки, угловая скорость начального звена и исследуемое положение "
                  "механизма:",
-        "quantity": "величина", "value": "значение",
         "offset": "смещение направляющей {g} от {p}",
         "position": "Положение механизма: {phi} = {at}.",
         "structure": "Структурный анализ механизма",
