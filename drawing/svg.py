@@ -64,7 +64,9 @@ def _pts(points: tuple[Point, ...] | list[Point]) -> list[tuple[str, str]]:
 
 
 def _clean(text: str) -> str:
-    return _XML_INVALID.sub("\ufffd", text)
+    """Text as SVG may hold it: XML's invalid characters as U+FFFD, and the bidi controls
+    (U+202E, U+2066 …: a name could turn the drawn text around it) dropped."""
+    return re.sub("[\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069]", "", _XML_INVALID.sub("\ufffd", text))
 
 
 @cache

@@ -8,6 +8,7 @@ notation of the method, the senses of a turn.
 from __future__ import annotations
 
 import math
+import re
 import unicodedata
 
 #: the decimal mark, by language
@@ -239,3 +240,47 @@ def signed(x: float, lang: str = "en", decimals: int | None = None) -> str:
     if float(s) != 0:
         s = ("+" if x > 0 else "−") + s
     return decimal(s, lang)
+
+
+#: Markdown's and HTML's own characters, escaped in user text the note writes (a name
+#: "<script>" or "**x**" had become markup; a name with a line break, forged lines)
+_MD_SPECIAL = re.compile(r"([\\`*_\[\]<>|&~#])")
+
+
+def plain(text: str) -> str:
+    """User text without its control and format characters: a line break or tab is a
+    space, and bidi controls (U+202E …), zero-width and other format characters are
+    dropped, so that a name can neither forge a line nor turn the text around it.
+
+    >>> plain("Press\\nfor\\u202ebriquettes\\u200b")
+    'Press forbriquettes'
+    """
+    out = []
+    for ch in text:
+        cat = unicodedata.category(ch)
+        if cat == "Cc":
+            out.append(" ")
+        elif cat != "Cf":
+            out.append(ch)
+    return "".join(out)
+
+
+def md_text(text: str) -> str:
+    """User text (a mechanism's name, a guide's label) for the Markdown note's prose: its
+    control characters gone (:func:`plain`) and Markdown's and HTML's characters escaped.
+
+    >>> md_text("<b>Press</b> *1*")
+    '\\\\<b\\\\>Press\\\\</b\\\\> \\\\*1\\\\*'
+    """
+    return _MD_SPECIAL.sub(r"\\\1", plain(text))
+
+
+def md_code(text: str) -> str:
+    """Text for inside one of the note's code spans (a step): its control characters
+    gone and a backtick (which would close the span) written ˋ; nothing else is markup
+    there.
+
+    >>> md_code("F`1")
+    'Fˋ1'
+    """
+    return plain(text).replace("`", "ˋ")

@@ -134,10 +134,10 @@ def test_unreachable_variant_position_names_the_variant(capsys, tmp_path):
 def test_report_russian_uses_decimal_comma(capsys):
     code, out, _ = run(capsys, "report", "samples/press.toml", "--lang", "ru")
     assert code == 0
-    assert "`a^k_A3A = 2·ω3·V_A3A = 2·4,8217·1,1482 = 11,07 м/с²`" in out
-    assert "`μv = V_A / pa = 3 / 60 = 0,05 (м/с)/мм`" in out
-    assert "`pc = pa3·BC / BA3 = 55,432·75 / 57,482 = 72,33 мм`" in out
-    assert "`πc = πa3·BC / BA3 = 17,888·75 / 57,482 = 23,34 мм`" in out  # b is π: no point b
+    assert "`a^k_A3A = 2·ω3·V_A3A = 2·4,8217·1,1482 = 11,073 м/с²`" in out
+    assert "`μv = 0,05 (м/с)/мм`\n- `pa = V_A / μv = 3 / 0,05 = 60 мм`" in out  # μv taken, then pa
+    assert "`pc = pa3·BC / BA3 = 55,432·75 / 57,482 = 72,325 мм`" in out
+    assert "`πc = πa3·BC / BA3 = 17,888·75 / 57,482 = 23,339 мм`" in out  # b is π: no point b
     assert "bc =" not in out
 
 
@@ -150,14 +150,14 @@ def test_no_number_in_a_russian_note_has_a_decimal_point(capsys, path):
     assert code == 0
     assert re.findall(r"\d\.\d", out) == []
     if "fourbar" in path:  # its file gives n1 in rpm, the press ω1
-        assert "`ω1 = π·n1 / 30 = 3,1416·149,2 / 30 = 15,62 рад/с`" in out
+        assert "`ω1 = π·n1 / 30 = 3,1415927·149,2 / 30 = 15,62419 рад/с`" in out
 
 
 def test_report_english(capsys):
     code, out, _ = run(capsys, "report", "samples/press.toml")
     assert code == 0
-    assert "`a^n_A3B = V_A3B² / l_A3B = 2.7716² / 0.57482 = 13.36 m/s²`" in out
-    assert "`ε3 = a^t_A3B / l_A3B = 11.891 / 0.57482 = 20.69 rad/s², counter-clockwise`" in out
+    assert "`a^n_A3B = V_A3B² / l_A3B = 2.7716² / 0.57482 = 13.364 m/s²`" in out
+    assert "`ε3 = a^t_A3B / l_A3B = 11.891 / 0.57482 = 20.686 rad/s², counter-clockwise`" in out
     assert "Through point k draw a line ∥ BC and through point n1 a line ⊥ BA3; they meet at point a3." in out
 
 
@@ -166,7 +166,7 @@ def test_russian_note_says_the_crank_range_in_russian(capsys):
     assert code == 0
     assert ("Начальное звено 1 не может сделать полный оборот (это коромысло, а не кривошип): "
             "механизм собирается только при φ1 от −128,8° до 128,8°, угол качания 257,6°.") in out
-    assert "кривошипа" not in out.split("## 3.")[1]  # the input link is not called a crank
+    assert "кривошипа" not in out.split("## 4.")[1]  # the input link is not called a crank
     assert "cannot" not in out
 
 
@@ -262,11 +262,11 @@ def test_the_note_finds_every_point_of_the_input_link_it_uses(capsys, tmp_path):
     w1 = 149.2 * math.pi / 30
     v, a = w1 * 0.03125, w1 * w1 * 0.03125
     assert f"- `V_S1 = ps1·μv = 24,413·0,02 = {v:.4f} м/с`".replace(".", ",") in out
-    assert "a_S1 = πs1·μa = " in out and f"= {a:.3f} м/с²`".replace(".", ",") in out
+    assert "a_S1 = πs1·μa = " in out and f"= {a:.4f} м/с²`".replace(".", ",") in out
     path = tmp_path / "tangent.toml"
     path.write_text(SCENES["tangent"].toml, "utf-8")
     _code, out, _ = run(capsys, "report", path, "--lang", "ru")
-    velocity = out.split("## 3.")[1].split("## 4.")[0]
+    velocity = out.split("## 4.")[1].split("## 5.")[0]
     assert velocity.index("- `pc1 = pa·OC1 / OA = ") < velocity.index("Через точку c1")
     assert "- `V_C1 = pc1·μv = " in velocity
 
@@ -328,8 +328,10 @@ def _notes():
 def test_every_substitution_in_the_note_gives_its_result_by_hand(capsys, tmp_path, lang):
     """A teacher redoes the arithmetic: 'a_B = 15,62²·0,0625 = 15,26' gives 15,25 by
     hand. Every step whose substitution is plain arithmetic must give its printed result
-    to within half a unit of its last digit (values carried with one digit more)."""
-    checked = 0
+    to within half a unit of its last digit (values carried with one digit more), the force
+    section's steps too; and a number carried from one step into another is the number
+    the first printed (carried_otherwise)."""
+    checked = forces = 0
     for name, text in _notes():
         path = tmp_path / f"{name}.toml"
         path.write_text(text, "utf-8")
@@ -349,7 +351,33 @@ def test_every_substitution_in_the_note_gives_its_result_by_hand(capsys, tmp_pat
             decimals = len(res.split(".")[1]) if "." in res else 0
             assert abs(got - float(res)) <= 0.6 * 10 ** -decimals, (name, line, got)
             checked += 1
+        assert not carried_otherwise(out), name
+        forces += out.count("## 6.") and sum(1 for ln in out.split("## 6.")[1].splitlines() if " = " in ln)
     assert checked > 200
+    assert forces > 60  # the force section's steps are redone too
+
+
+_OPS = r"[·/+−()²°\s]+"
+
+
+def carried_otherwise(text: str) -> list[tuple[str, str, str, str]]:
+    """The steps of a note that carry a number otherwise than an earlier step printed it:
+    each step's quantities (its formula's right-hand side) against its substitution, term
+    by term, where both have the same terms. 'V_CB = 0,4', then '0,39997 / 0,18' (more
+    digits than printed) or 'a_S3 = 7,7798', then '10·7,78' (fewer) is one."""
+    printed, bad = {}, []
+    for line in text.splitlines():
+        m = re.fullmatch(r"\s*(?:- )?`(.+) = ([^=`]+) = (-?[\d.,]+)(?:°| [^`]*)?`", line)
+        if not m:
+            continue
+        formula, sub, res = m.groups()
+        names = [x for x in re.split(_OPS, formula.split(" = ")[-1]) if x]
+        values = [x for x in re.split(_OPS, sub) if x]
+        if len(names) == len(values):
+            bad += [(line, k, printed[k], v) for k, v in zip(names, values, strict=True)
+                    if k in printed and printed[k] != v]
+        printed[formula.split(" = ")[0]] = res
+    return bad
 
 
 def test_every_point_of_a_yoke_is_an_output_and_a_slider_link_says_so(capsys, tmp_path):
@@ -373,7 +401,7 @@ def test_a_fixed_point_is_the_pole_everywhere_in_the_note(capsys):
     'pc = pa3·BC/BA3'. Every step now writes p (π)."""
     _code, out, _ = run(capsys, "report", "samples/press.toml")
     assert "Through point a draw a line ∥ BC and through point p a line ⊥ BA3; they meet at point a3." in out
-    assert "- `V_A3B = pa3·μv = 55.432·0.05 = 2.772 m/s`" in out
+    assert "- `V_A3B = pa3·μv = 55.432·0.05 = 2.7716 m/s`" in out
     assert "through b " not in out and "ba3·μ" not in out
 
 
@@ -566,7 +594,7 @@ def test_the_tangential_component_is_a_tau_in_russian(capsys):
     ones): the Russian note had written a^t_A3B among its Russian words."""
     code, out, _ = run(capsys, "report", "samples/press.toml", "--lang", "ru")
     assert code == 0
-    assert "`ε3 = a^τ_A3B / l_A3B = 11,891 / 0,57482 = 20,69 рад/с², против часовой стрелки`" in out
+    assert "`ε3 = a^τ_A3B / l_A3B = 11,891 / 0,57482 = 20,686 рад/с², против часовой стрелки`" in out
     assert "a^t" not in out
     code, out, _ = run(capsys, "report", "samples/press.toml")
     assert "a^τ" not in out and "ε3 = a^t_A3B / l_A3B" in out
@@ -618,3 +646,58 @@ def test_a_courses_table_gives_an_offset_omega_and_a_clockwise_crank(tmp_path, c
     assert c.theta == pytest.approx(math.asin(e / (rod - r)) - math.asin(e / (rod + r)), rel=1e-9)
     code, out, _ = run(capsys, "solve", "--variant", "4", "--table", str(table))
     assert code == 0 and "ω1 = 10.5 rad/s cw" in out, out
+
+
+def test_the_note_opens_with_the_initial_data_and_names_the_position_in_every_plan(capsys):
+    """Seed 000 §1.1 opens with the initial data; the note began with the structure and
+    never said at which crank position its plans stand. Now every length the file gives
+    (the frame's OB, a fixed guide's offset e, a four-bar coupler's CE), the masses and
+    J_S, ω1 (n1 where the file gives rpm) and φ1 as the file gives it and from +x; and
+    each plan section names its position."""
+    code, out, _ = run(capsys, "report", "samples/press.toml", "--lang", "ru")
+    assert code == 0
+    first = out.split("## 1. Исходные данные")[1].split("## 2. Структурный анализ механизма")[0]
+    for row in ("- `l_OA = 0,15 м`;", "- `l_OB = 0,44 м`;", "- `l_BC = 0,75 м`;", "- `l_CS4 = 0,1 м`;",
+                "- `e = 0,35 м`, смещение направляющей x-x от O;", "- `m3 = 10 кг`;",
+                "- `J_S3 = 0,4 кг·м²`;", "- `ω1 = 20 рад/с`, против часовой стрелки;",
+                "- `φ1 = 60°` от +x (30° от +y, по часовой стрелке, как задано в файле)."):
+        assert row in first, row
+    said = "Положение механизма: φ1 = 60° от +x (30° от +y, по часовой стрелке, как задано в файле)."
+    for head in ("## 4. План скоростей механизма", "## 5. План ускорений механизма"):
+        assert out.split(head)[1].lstrip().startswith(said)
+    code, out, _ = run(capsys, "report", "--variant", "1", "--angle", "70")
+    first = out.split("## 1. Initial data")[1].split("## 2.")[0]
+    for row in ("- `l_CE = 0.08 m`;", "- `l_BE = 0.24 m`;", "- `l_AD = 0.11 m`;", "- `n1 = 115 rpm`;",
+                "- `φ1 = 70°` from +x."):
+        assert row in first, row
+    assert out.count("Position of the mechanism: φ1 = 70° from +x.") == 2
+    code, out, _ = run(capsys, "report", "--variant", "0")
+    assert "- `e = 0 m`, offset of the guide x-x from A;" in out
+
+
+def test_user_text_is_no_markup_in_the_note_and_no_bidi_on_the_sheet(capsys, tmp_path):
+    """A name with HTML, Markdown and a line break became markup and a forged section in
+    the note; a guide's label with a backtick broke the step's code span; a bidi control
+    (U+202E) turned the sheet's text around it. Now the note escapes what it writes of the
+    file's text, and the sheet drops the bidi controls."""
+    text = (ROOT / "samples" / "press.toml").read_text("utf-8")
+    name = '<script>x</script> **Press**\\n## 9. Forged\\u202e'
+    text = text.replace('name = { en = "Slotted-link press for briquetting", ru = '
+                        '"Кулисный механизм пресса для брикетирования" }', f'name = "{name}"')
+    text = text.replace("angle_deg = 0 }", 'angle_deg = 0, label = "x`|<i>" }')
+    path = tmp_path / "hostile.toml"
+    path.write_text(text, "utf-8")
+    for lang in ("ru", "en"):
+        code, out, err = run(capsys, "report", path, "--lang", lang)
+        assert code == 0, err
+        lines = out.splitlines()
+        prose = re.sub(r"(?<!\\)`[^`]*`", "", out)  # a code span's text is literal: markup only outside one
+        assert lines[0].startswith("# ") and "<script>" not in out and "<i>" not in prose
+        assert "\\<script\\>x\\</script\\> \\*\\*Press\\*\\* \\#\\# 9. Forged" in lines[0]
+        assert not any(ln.startswith("## 9.") for ln in lines) and "\u202e" not in out
+        assert all(ln.count("`") % 2 == ln.count("\\`") % 2 for ln in lines)  # every code span closed
+        assert "∥ xˋ|<i>`" in out  # in a step's code span
+    svg = tmp_path / "s.svg"
+    code, _, err = run(capsys, "sheet", path, "-o", svg)
+    assert code == 0, err
+    assert "\u202e" not in svg.read_text("utf-8")

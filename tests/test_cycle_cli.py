@@ -773,3 +773,18 @@ def test_plot_and_table_are_written_both_or_neither(capsys, monkeypatch, tmp_pat
     code, _, err = run(capsys, "cycle", PRESS, "-o", tmp_path / "same.png", "--plot",
                        tmp_path / "same.png")
     assert code == 2 and "-o and --plot are both" in err
+
+
+def test_the_cycles_crank_angles_are_given_to_1e_9_degrees(capsys):
+    """The crank-slider's cycle starts at its extreme position, 180° from +x, found to
+    rounding: phi_deg printed 179.99999999999855 (and 74.99999999999999 elsewhere). JSON
+    and CSV give crank angles to 1e-9°, as the README says."""
+    code, out, _ = run(capsys, "cycle", "--variant", "4", "--json")
+    assert code == 0
+    data = json.loads(out)
+    angles = [p["phi_deg"] for p in data["rows"]] + [p["angle_deg"] for p in data["rows"]]
+    angles += data["cycle"]["extremes_phi_deg"]
+    assert angles and all(round(a, 9) == a for a in angles)
+    assert data["rows"][0]["phi_deg"] == 180.0
+    _, out, _ = run(capsys, "cycle", "--variant", "4", "--csv")
+    assert out.splitlines()[1].startswith("0,180.0,180.0,")

@@ -107,10 +107,10 @@ def test_every_character_of_every_step_reaches_the_formula():
 def test_sections_are_numbered_as_gost_numbers_them():
     doc = parse_note(note("press", "ru"), "ru")
     heads = [(b.number, b.pieces[0].text) for b in doc.blocks if isinstance(b, Heading)]
-    assert heads[:5] == [("1", "Структурный анализ механизма"), ("2", "План положений механизма"),
-                         ("3", "План скоростей механизма"), ("4", "План ускорений механизма"),
-                         ("5", "Силовой анализ")]
-    assert ("5.1", "Массы и силы тяжести звеньев") in heads
+    assert heads[:6] == [("1", "Исходные данные"), ("2", "Структурный анализ механизма"),
+                         ("3", "План положений механизма"), ("4", "План скоростей механизма"),
+                         ("5", "План ускорений механизма"), ("6", "Силовой анализ")]
+    assert ("6.1", "Массы и силы тяжести звеньев") in heads
     assert doc.title.startswith("Кинематический анализ")
     kinds = {type(b).__name__ for b in doc.blocks}
     assert {"Heading", "Paragraph", "Formula"} <= kinds
@@ -138,9 +138,12 @@ def _docx_text(data: bytes) -> list[tuple[str, str]]:
     alike, a space between two runs."""
     d = docx.Document(io.BytesIO(data))
     out = []
-    for p in d.paragraphs:
-        texts = [el.text or "" for el in p._p.iter() if el.tag in (f"{W}t", f"{M}t")]
-        out.append((p.style.name, " ".join(texts)))
+    for item in d.iter_inner_content():  # a table's cells row by row, where it stands
+        cells = ([(p, c) for row in item.rows for c in row.cells for p in c.paragraphs]
+                 if isinstance(item, docx.table.Table) else [(item, None)])
+        for p, _ in cells:
+            texts = [el.text or "" for el in p._p.iter() if el.tag in (f"{W}t", f"{M}t")]
+            out.append((p.style.name, " ".join(texts)))
     return out
 
 
@@ -163,7 +166,7 @@ def test_the_docx_opens_with_python_docx_and_holds_formulas():
     assert d.sections[0].page_width.mm == pytest.approx(210, abs=0.05)
     assert d.sections[0].left_margin.mm == pytest.approx(30, abs=0.05)
     heads = [p.text for p in d.paragraphs if p.style.name == "Heading 1"]
-    assert heads[0] == "1 Структурный анализ механизма"
+    assert heads[:2] == ["1 Исходные данные", "2 Структурный анализ механизма"]
     xml = d.element.xml
     assert xml.count("<m:f>") > 50 and "<m:acc>" in xml and "<m:sSub>" in xml and "<m:rad>" in xml
     assert "`" not in "".join(p.text for p in d.paragraphs)  # no code spans left

@@ -226,8 +226,15 @@ def test_a_file_larger_than_a_megabyte_is_not_read(tmp_path):
 
 
 @pytest.mark.skipif(not Path("/dev/zero").exists(), reason="no /dev/zero")
-def test_an_endless_input_is_not_read_to_its_end():
+def test_an_endless_input_is_not_read_to_its_end(tmp_path):
+    """/dev/zero is a device, and says so (it was read to the limit and called larger
+    than 1 MB); a file of a terabyte is not read to its end either."""
     err = _quick(lambda: load("/dev/zero"))
+    assert "is a device" in err.problems[0]
+    big = tmp_path / "big.toml"
+    with big.open("wb") as f:
+        f.truncate(10**12)  # sparse: no disk taken
+    err = _quick(lambda: load(big))
     assert "larger than 1 MB" in err.problems[0]
 
 
@@ -379,6 +386,30 @@ def test_a_tables_designation_pattern_names_each_variants_sheet(tmp_path, capsys
         path.write_text(f"designation = {bad}\n" + row.format(7))
         code, out, err = run(capsys, "solve", "--variant", "7", "--table", str(path))
         assert code == 2 and out == ""
+        assert err.count("\n") == 1 and f"{path}: line 1: designation: " in err, err
+        assert why in err
+
+
+def test_a_designations_width_is_read_before_it_is_formatted(tmp_path, capsys):
+    """designation = "{n:>2000000000}" had made a string of 2 GB (8e9: MemoryError, exit
+    3): a width, a precision, a nested field or the whole pattern past 200 characters is
+    one located line, exit 2, before anything is formatted."""
+    import tracemalloc
+
+    row = '[[variant]]\nn = {}\nAB = 0.05\nBC = 0.15\nCD = 0.1\nAD = 0.1\nphi_deg = 15\nrpm = 100\n'
+    path = tmp_path / "t.toml"
+    for bad, why in (('"{n:>2000000000}"', "2000000000 characters wide"),
+                     ('"ПМ.{n:0>8000000000}"', "8000000000 characters wide"),
+                     ('"{n:.2000000000}"', "2000000000 characters wide"),
+                     ('"{n:{n}}"', "no other field"),
+                     ('"{n:>150}.{n:>150}"', "characters formatted"),
+                     (f'"{"Я" * 300}{{n}}"', "a designation is at most 200")):
+        path.write_text(f"designation = {bad}\n" + row.format(999999))
+        tracemalloc.start()
+        code, out, err = run(capsys, "solve", "--variant", "999999", "--table", str(path))
+        peak = tracemalloc.get_traced_memory()[1]
+        tracemalloc.stop()
+        assert code == 2 and out == "" and peak < 50e6
         assert err.count("\n") == 1 and f"{path}: line 1: designation: " in err, err
         assert why in err
 
@@ -735,3 +766,28 @@ def test_solve_position_takes_any_positive_scale_factor():
     assert (sol.mu_v, sol.mu_a) == (1e-12, 5e8)
     with pytest.raises(InputError, match=r"mu\.mu_a: inf is out of range"):
         solve_position(mech, mu={"mu_a": float("inf")})
+
+
+@pytest.mark.parametrize("scene", ["crank_slider_offset", "crank_rocker", "press"])
+def test_the_missing_hint_error_suggests_a_hint_that_works(capsys, tmp_path, scene):
+    """A slider on a horizontal guide was told to add 'B = "above A"': B's two assemblies
+    are level with A, so that hint fails in its turn. The hint suggested now parts the
+    two assemblies, and the file with it is solved."""
+    import re
+
+    from plans.model.scenes import SCENES
+
+    text = SCENES[scene].toml or (ROOT / "samples" / "press.toml").read_text("utf-8")
+    bare = re.sub(r"\[assembly\]\n[^\n]*\n", "", text)
+    assert bare != text
+    path = tmp_path / "bare.toml"
+    path.write_text(bare, "utf-8")
+    code, _, err = run(capsys, "solve", path)
+    assert code == 2
+    m = re.search(r"add a hint such as \[assembly\] (\w+) = (\"[^\"]+\")", err)
+    assert m, err
+    if scene == "crank_slider_offset":
+        assert m.group(2) in ('"right of A"', '"left of A"')
+    path.write_text(bare + f"\n[assembly]\n{m.group(1)} = {m.group(2)}\n", "utf-8")
+    code, _, err = run(capsys, "solve", path)
+    assert code == 0, err

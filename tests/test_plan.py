@@ -1,5 +1,6 @@
 """The single-position plans: seed numbers, recorded constructions and invariants."""
 
+import json
 import math
 
 import numpy as np
@@ -410,3 +411,43 @@ def test_a_file_name_given_for_a_mechanism_is_told_to_be_loaded():
             call("samples/press.toml")
     with pytest.raises(TypeError, match=r"is needed, not None$"):
         Solver(None)
+
+
+def test_a_yoke_whose_points_meet_to_rounding_is_no_similarity_base(capsys, tmp_path):
+    """A Scotch yoke at angle_deg = 1e-308 has its D and the block's A3 1.7e-311 m apart:
+    the similarity △a3de ∼ △A3DE took them as its base, its ratio was infinite, πe
+    printed 0 (all of the yoke's points have one acceleration, 50 mm) and the sheet
+    crashed on NaN. Two points within rounding of the mechanism's size are one place,
+    for a recipe worked out there and for one kept from another angle alike."""
+    from support import run
+
+    from plans.kinematics.solver import Solver
+    from plans.model.scenes import SCENES
+
+    text = SCENES["scotch_yoke"].toml.replace("angle_deg = 35", "angle_deg = 1e-308", 1)
+    path = tmp_path / "yoke.toml"
+    path.write_text(text, "utf-8")
+    mech = load(path)
+    kept = Solver(mech)
+    solve_position(mech, math.radians(35), solver=kept)  # a recipe kept from 35°
+    for solver in (Solver(mech), kept):
+        sol = solve_position(mech, solver=solver)
+        a = sol.acceleration
+        assert a.segments["πe"] == pytest.approx(50.0, rel=1e-12)
+        assert a.segments["πe"] == a.segments["πd"] == a.segments["πa3"]
+        assert all(math.isfinite(p.value.real) and math.isfinite(p.value.imag) for p in a.points.values())
+        assert sol.lengths["DA3"] == 0.0
+    code, out, err = run(capsys, "solve", path)
+    assert code == 0 and "DA3" not in out and "e-3" not in out
+    code, _, err = run(capsys, "sheet", path, "-o", tmp_path / "y.svg")
+    assert code == 0, err
+
+
+def test_a_segment_of_no_length_is_not_listed(capsys):
+    """The slider's centre of mass S3 is at C: solve listed "CS3 0 0"."""
+    from support import run
+
+    code, out, _ = run(capsys, "solve", "--variant", "0")
+    assert code == 0 and "CS3" not in out
+    code, out, _ = run(capsys, "solve", "--variant", "0", "--json")
+    assert "CS3" not in json.loads(out)["segments"]

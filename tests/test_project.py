@@ -51,7 +51,7 @@ def test_a_project_holds_the_sheet_the_note_and_the_results(variant3):
 def test_the_note_is_the_sheets_and_goes_on_with_the_forces(variant3):
     folder = variant3[0]
     md = (folder / "note.md").read_text(encoding="utf-8")
-    assert md.startswith("# Кинематический анализ") and "## 5. Силовой анализ" in md
+    assert md.startswith("# Кинематический анализ") and "## 6. Силовой анализ" in md
     results = json.loads((folder / "results.json").read_text(encoding="utf-8"))
     # the note's scale factors are the sheet's, and the JSON's
     mu_v = results["scales"]["mu_v"]

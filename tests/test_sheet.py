@@ -592,7 +592,7 @@ def test_a_gost_scale_has_a_decimal_comma_on_a_russian_sheet():
 def _mu_lines(text: str) -> list[str]:
     """The scale factors a note (its 'μl = l_AB / AB = … = 0,001 м/мм' steps) or a
     sheet (its captions' 'μl = 0,001 м/мм') states, as 'μl = 0,001' strings."""
-    steps = re.findall(r"^- `(μ[lva]) = .* = ([\d,]+) ", text, re.M)
+    steps = re.findall(r"^- `(μ[lva]) = (?:.* = )?([\d,]+) ", text, re.M)
     captions = re.findall(r"(μ[lva]) = ([\d,]+) ", text) if not steps else []
     return sorted({f"{k} = {v}" for k, v in steps + captions})
 
@@ -607,11 +607,11 @@ def test_the_sheets_note_states_the_sheets_scales_for_each_plan(capsys, tmp_path
     assert main(["sheet", "--variant", "3", "-o", str(svg), "--note", str(md), "--plans", "1,4"]) == 0
     note, (_, texts) = md.read_text("utf-8"), _texts(svg.read_text("utf-8"))
     heads = [ln for ln in note.splitlines() if ln.startswith("## ")]
-    assert [h.split(" (")[0] for h in heads[2:]] == [
-        "## 3. План скоростей механизма", "## 4. План ускорений механизма",
-        "## 5. План скоростей механизма", "## 6. План ускорений механизма"]
-    assert heads[2].endswith("(положение 1, φ1 = 296,2°)")
-    assert heads[4].startswith("## 5. План скоростей механизма (положение 4,")
+    assert [h.split(" (")[0] for h in heads[3:]] == [
+        "## 4. План скоростей механизма", "## 5. План ускорений механизма",
+        "## 6. План скоростей механизма", "## 7. План ускорений механизма"]
+    assert heads[3].endswith("(положение 1, φ1 = 296,2°)")
+    assert heads[5].startswith("## 6. План скоростей механизма (положение 4,")
     sheet_mu = _mu_lines(" ".join(t for t in texts if t.startswith("План ")))
     assert len(sheet_mu) == 3 and _mu_lines(note) == sheet_mu
     # the given position, in English: the same rule
@@ -676,26 +676,26 @@ def test_the_notes_plan_of_positions_is_the_heavy_one(tmp_path):
     md = tmp_path / "p.md"
     assert main(["sheet", str(ROOT / "samples" / "press.toml"), "--plans", "1,4", "-o",
                  str(tmp_path / "p.svg"), "--note", str(md)]) == 0
-    section2 = md.read_text("utf-8").split("## 2.")[1].split("## 3.")[0]
+    section2 = md.read_text("utf-8").split("## 3.")[1].split("## 4.")[0]
     assert "57,48" not in section2 and "заданном" not in section2
     assert ("Положения, для которых ниже построены планы (положение 1, φ1 = 79,93°; положение 4, "
             "φ1 = 349,9°), выделены основными линиями, остальные положения — тонкими.") in section2
     first = section2.split("в положении, для которого ниже построены планы (положение 1, "
                            "φ1 = 79,93°):")[1]
-    assert "- `BA3 = l_BA3 / μl = 0,48906 / 0,01 = 48,91 мм`" in first.split("(положение 4,")[0]
+    assert "- `BA3 = l_BA3 / μl = 0,48906 / 0,01 = 48,906 мм`" in first.split("(положение 4,")[0]
     # in English, one position: the same, in the singular
     assert main(["sheet", str(ROOT / "samples" / "press.toml"), "--plans", "4", "--lang", "en",
                  "-o", str(tmp_path / "p.svg"), "--note", str(md)]) == 0
-    section2 = md.read_text("utf-8").split("## 2.")[1].split("## 3.")[0]
+    section2 = md.read_text("utf-8").split("## 3.")[1].split("## 4.")[0]
     assert ("The position of the plans below (position 4, φ1 = 349.9°) is drawn in heavy lines, "
             "the other positions in thin lines.") in section2
-    assert "- `BA3 = l_BA3 / μl = 0.58827 / 0.01 = 58.83 mm`" in section2
+    assert "- `BA3 = l_BA3 / μl = 0.58827 / 0.01 = 58.827 mm`" in section2
     assert "given" not in section2 and "57.48" not in section2
     # without --plans the given position is the heavy one, its plans the note's own
     assert main(["sheet", str(ROOT / "samples" / "press.toml"), "-o", str(tmp_path / "p.svg"),
                  "--note", str(md)]) == 0
-    section2 = md.read_text("utf-8").split("## 2.")[1].split("## 3.")[0]
-    assert "- `BA3 = l_BA3 / μl = 0,57482 / 0,01 = 57,48 мм`" in section2
+    section2 = md.read_text("utf-8").split("## 3.")[1].split("## 4.")[0]
+    assert "- `BA3 = l_BA3 / μl = 0,57482 / 0,01 = 57,482 мм`" in section2
     assert "основными" not in section2
 
 
@@ -711,15 +711,15 @@ def test_the_notes_plan_of_positions_gives_the_segments_of_each_position_drawn(t
     assert main(["sheet", str(ROOT / "samples" / "press.toml"), "--plans", "1,4", "-o",
                  str(tmp_path / "p.svg"), "--note", str(md)]) == 0
     text = md.read_text("utf-8")
-    section2 = text.split("## 2.")[1].split("## 3.")[0]
+    section2 = text.split("## 3.")[1].split("## 4.")[0]
     at = section2.split("Длины отрезков, изображающих звенья на чертеже, ")[1].split(
         "построены планы (положение ")[1:]
     assert [a.split(",")[0] for a in at] == ["1", "4"]
-    assert "- `BA3 = l_BA3 / μl = 0,48906 / 0,01 = 48,91 мм`" in at[0]
-    assert "- `BA3 = l_BA3 / μl = 0,58827 / 0,01 = 58,83 мм`" in at[1]
+    assert "- `BA3 = l_BA3 / μl = 0,48906 / 0,01 = 48,906 мм`" in at[0]
+    assert "- `BA3 = l_BA3 / μl = 0,58827 / 0,01 = 58,827 мм`" in at[1]
     assert at[1].startswith("4, φ1 = 349,9°):")  # changes from position 1's
-    assert "BC / BA3 = 27,839·75 / 48,906 = " in text.split("## 3.")[1].split("## 4.")[0]
-    assert "BC / BA3 = 59,485·75 / 58,827 = " in text.split("## 5.")[1].split("## 6.")[0]
+    assert "BC / BA3 = 27,839·75 / 48,906 = " in text.split("## 4.")[1].split("## 5.")[0]
+    assert "BC / BA3 = 59,485·75 / 58,827 = " in text.split("## 6.")[1].split("## 7.")[0]
 
 
 @pytest.mark.parametrize("scene", ["yoke_inclined", "crank_slider_offset"])
@@ -1497,7 +1497,7 @@ def test_positions_whose_segments_are_those_above_are_named_in_one_sentence(tmp_
     md = tmp_path / "v2.md"
     assert main(["sheet", "--variant", "2", "-o", str(tmp_path / "v2.svg"), "--note", str(md),
                  "--plans", "1,4,7"]) == 0
-    section2 = md.read_text("utf-8").split("## 2.")[1].split("## 3.")[0]
+    section2 = md.read_text("utf-8").split("## 3.")[1].split("## 4.")[0]
     assert "длины отрезков те же" in section2
     assert [ln for ln in section2.splitlines() if "те же" in ln] == [
         "В положениях, для которых ниже построены планы (положение 4, φ1 = 300°; "

@@ -328,7 +328,7 @@ def test_both_sheets_in_one_run_put_sheet_2_beside_sheet_1(capsys, tmp_path):
 
     assert numbers(one) == ("1", "2") and numbers(two) == ("2", "2")
     note = (out / "press.md").read_text(encoding="utf-8")
-    assert "## 5. Силовой анализ" in note and "## 4. План ускорений" in note
+    assert "## 6. Силовой анализ" in note and "## 5. План ускорений" in note
 
 
 def test_sheet_2_alone_is_written_where_o_says_and_its_note_is_the_whole_analysis(capsys, tmp_path):

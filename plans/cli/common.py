@@ -25,7 +25,7 @@ from plans.cli.output import (
 )
 from plans.cycle import analyse_cycle, outside_range
 from plans.errors import AssemblyError, InputError, PlansError
-from plans.fmt import from_x
+from plans.fmt import from_x, json_angle
 from plans.kinematics.solver import Solver
 from plans.model import load, variants
 from plans.model.fileformat import MAX_ABS
@@ -182,14 +182,14 @@ def cycle_json(c) -> dict:
         if c.output is None
         else {"point": c.output.point, "kind": c.output.kind, "link": c.output.link,
               "unit": "m" if c.output.kind == "linear" else "rad"},
-        "extremes_phi_deg": [from_x(x) for x in c.extremes],
+        "extremes_phi_deg": [json_angle(from_x(x)) for x in c.extremes],
         "stroke": c.stroke,
         "theta_deg": None if c.theta is None else math.degrees(c.theta),
         "K": c.K,
         "grashof": c.grashof,
         # counter-clockwise from the first angle to the second: in the crank's order a
         # clockwise crank's range named the arc that does not assemble
-        "crank_range_phi_deg": None if c.ccw_range is None else [from_x(x) for x in c.ccw_range],
+        "crank_range_phi_deg": None if c.ccw_range is None else [json_angle(from_x(x)) for x in c.ccw_range],
         "notes": list(c.notes),
     }
 

@@ -37,7 +37,7 @@ from plans.cycle import existence, outside, reachable_cycle, shown_from, summary
 from plans.cycle.table import CycleTable, compute, figure_labels
 from plans.cycle.transmission import lines as transmission_lines
 from plans.errors import AssemblyError
-from plans.fmt import from_x, in_turn, num
+from plans.fmt import from_x, in_turn, json_angle, num
 from plans.kinematics.conditioning import is_pivot
 from plans.tolerances import NOISE
 
@@ -262,13 +262,14 @@ def _place_cols(t: CycleTable, x: float) -> dict:
     input's travel; an instant and each input's coordinate."""
     mech = t.mechanism
     if t.cycle.kind == "turn":
-        return {"phi_deg": from_x(x), "angle_deg": mech.driver.file_angle(x)}
+        # to 1e-9°: 180, not 179.99999999999855
+        return {"phi_deg": json_angle(from_x(x)), "angle_deg": json_angle(mech.driver.file_angle(x))}
     if t.cycle.kind == "range":
         return {"s": x}
     out = {"t": x}
     for d, (q, _, _) in zip(mech.drivers, mech.inputs_at(x), strict=True):
         out[f"{d.phi_sym}_m" if d.linear else f"{d.phi_sym}_deg"] = (
-            float(q) if d.linear else d.file_angle(float(q)))
+            float(q) if d.linear else json_angle(d.file_angle(float(q))))
     return out
 
 

@@ -108,12 +108,13 @@ def build(mech, args) -> list[tuple[str, str | bytes]]:
     files.append(("sheet-1.dxf", dxf.to_dxf(info["scene"], info["sheet"], title=mech.name_in(args.lang),
                                             lang=args.lang)))
     _progress(4, steps, "the explanatory note")
-    text = note(given, args.lang, cycle, plain_titles(sols) if sols[0][0] != "g" else ())
+    numbers: dict = {}  # what the plans printed, for the force section to carry on as printed
+    text = note(given, args.lang, cycle, plain_titles(sols) if sols[0][0] != "g" else (), numbers)
     F = None
     if mech.loads is not None:  # the note goes on with the force analysis
         F = solve_forces(given, given.solver, cycle)
         section = sum(line.startswith("## ") for line in text.splitlines()) + 1
-        text = text.rstrip("\n") + "\n\n" + force_note(F, args.lang, section)
+        text = text.rstrip("\n") + "\n\n" + force_note(F, args.lang, section, numbers)
     files.append(("note.md", text))
     doc = parse_note(text, args.lang)
     tb = title_block(mech, args.title_block, args.lang)

@@ -43,10 +43,12 @@ def markdown(args, mech) -> tuple[str, list[str]]:
     """(the note's Markdown, the warnings of its position)."""
     cycle, sol = solved_position(args, mech)
     solver = sol.solver
-    text = note(sol, args.lang, cycle)
+    numbers: dict = {}  # what the plans printed, for the force section to carry on as printed
+    text = note(sol, args.lang, cycle, numbers=numbers)
     if mech.loads is not None:  # the note goes on with the force analysis, section after section
         section = sum(line.startswith("## ") for line in text.splitlines()) + 1
-        text = text.rstrip("\n") + "\n\n" + force_note(solve_forces(sol, solver, cycle), args.lang, section)
+        text = text.rstrip("\n") + "\n\n" + force_note(solve_forces(sol, solver, cycle), args.lang, section,
+                                                         numbers)
     return text, list(sol.warnings)
 
 

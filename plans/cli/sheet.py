@@ -155,7 +155,9 @@ def render(mech, args, numbers: tuple[str, str] | None = None) -> tuple[str, str
         titles = plain_titles(sols)
         # the structure and μl from the given position; with --plans the plan of
         # positions draws theirs heavy, and the note says so and gives their segments
-        text = note(info["given"], args.lang, info["cycle"], titles if sols[0][0] != "g" else ())
+        info["numbers"] = {}  # what the plans printed, for the force section to carry on
+        text = note(info["given"], args.lang, info["cycle"], titles if sols[0][0] != "g" else (),
+                    info["numbers"])
     return svg, text, info
 
 
@@ -254,10 +256,11 @@ def render_all(mech, args, sheets: tuple[int, ...]) -> list[tuple[str | None, st
             files.append((beside(args.dxf) if both else args.dxf, drawn))
         if getattr(args, "note", None):
             forces = info2["forces"]
+            numbers = info.get("numbers", {}) if text is not None else {}
             if text is None:  # the note of the position sheet 2 draws, then its forces
-                text = note(info2["solution"], args.lang, info2["cycle"])
+                text = note(info2["solution"], args.lang, info2["cycle"], numbers=numbers)
             section = sum(line.startswith("## ") for line in text.splitlines()) + 1
-            text = text.rstrip("\n") + "\n\n" + force_note(forces, args.lang, section)
+            text = text.rstrip("\n") + "\n\n" + force_note(forces, args.lang, section, numbers)
     if text is not None:
         files.append((args.note, text))
     return files

@@ -269,7 +269,8 @@ def to_text(sol, cycle=None, lang: str = "en", trans=None) -> str:
     out.append(t["positions"])
     out.append(f"  {t['segment']:10s} {t['mm']:>9s} {t['m']:>11s}")
     for k, v in sol.lengths.items():
-        out.append(f"  {k:10s} {n(v / sol.mu_l):>9s} {n(v):>11s}")
+        if v:  # a coincident point at its link's first point (a block over its pivot): no segment
+            out.append(f"  {k:10s} {n(v / sol.mu_l):>9s} {n(v):>11s}")
     for plan, unit in ((sol.velocity, u["m/s"]), (sol.acceleration, u["m/s²"])):
         out.append("")
         out.append(f"{t[plan.kind]} ({t['pole']} {plan.pole}, μ = {n(plan.mu)} ({unit})/{t['mm']})")

@@ -12,7 +12,7 @@ from __future__ import annotations
 import cmath
 import math
 
-from plans.fmt import decimal, num
+from plans.fmt import decimal, md_code, md_text, num
 from plans.forces.lever import joints
 from plans.forces.summary import Forces, rpm_of
 from plans.plan.values import plan_name
@@ -164,11 +164,26 @@ def _deg(z) -> float:
     return math.degrees(cmath.phase(complex(z))) % 360.0
 
 
-def force_note(F: Forces, lang: str = "en", section: int = 1) -> str:
-    """The force section of the note, numbered from ``section`` (Markdown)."""
+def _shown(text: str) -> float:
+    """A number as a step printed it (a decimal comma, a true minus), as a reader takes it."""
+    try:
+        return float(text.replace(",", ".").replace("−", "-"))
+    except ValueError:
+        return math.nan
+
+
+def force_note(F: Forces, lang: str = "en", section: int = 1, numbers: dict | None = None) -> str:
+    """The force section of the note, numbered from ``section`` (Markdown). ``numbers``:
+    what the kinematic sections printed (:func:`plans.note.report.note`'s), by (φ, μa):
+    the accelerations, ε and V of this position are carried on as they were printed, and
+    each number this section prints and carries on (a weight, an inertia force or moment,
+    M_у, F_у) is carried as printed, with five digits, its result computed from the
+    numbers shown (a teacher redoing a line gets its result)."""
     t = T.get(lang, T["en"])
     fa = F.analysis
     sol = fa.solution
+    kin = (numbers or {}).get((sol.phi, sol.acceleration.mu), {})
+    shown: dict[str, str] = {}  # this section's numbers carried on, by name
     mech = sol.mechanism
     loads = mech.loads
     d = mech.driver
@@ -184,7 +199,7 @@ def force_note(F: Forces, lang: str = "en", section: int = 1) -> str:
     def item(text):
         if out and out[-1] and not out[-1].startswith("- "):
             out.append("")  # a paragraph, then its list
-        out.append(f"- `{text}`")
+        out.append(f"- `{md_code(text)}`")  # a load's name is the file's: no markup
 
     def para(text):
         if out and out[-1]:
@@ -204,7 +219,8 @@ def force_note(F: Forces, lang: str = "en", section: int = 1) -> str:
             continue
         item(t["given_m"].format(i=lid, m=n(ms.mass)))
         para(t["weight"].format(i=lid, S=ms.centre))
-        item(f"G{lid} = m{lid}·g = {c(ms.mass)}·{c(loads.g)} = {n(ms.mass * loads.g)} {N}")
+        shown[f"G{lid}"] = c(_shown(c(ms.mass)) * _shown(c(loads.g)))
+        item(f"G{lid} = m{lid}·g = {c(ms.mass)}·{c(loads.g)} = {shown[f'G{lid}']} {N}")
     heading(t["inertia"])
     mu_a = sol.acceleration.mu
     for lid in sorted(loads.masses):
@@ -218,39 +234,43 @@ def force_note(F: Forces, lang: str = "en", section: int = 1) -> str:
             a = abs(m.acceleration[S])
             para(t["phi_force"].format(i=lid, S=S))
             s = plan_name(S)
-            item(t["a_read"].format(S=S, s=s, mm=c(a / mu_a), mu=c(mu_a), a=n(a)))
-            item(f"Φ{lid} = m{lid}·a_{S} = {c(ms.mass)}·{c(a)} = {n(abs(ld.force))} {N}")
+            mm = kin.get(f"acceleration:π{s}") or c(a / mu_a)  # as the acceleration plan's section gave it
+            a_s = kin.get(f"a_{S}") or c(_shown(mm) * _shown(c(mu_a)))
+            item(t["a_read"].format(S=S, s=s, mm=mm, mu=c(mu_a), a=a_s))
+            shown[f"Φ{lid}"] = c(_shown(c(ms.mass)) * _shown(a_s))
+            item(f"Φ{lid} = m{lid}·a_{S} = {c(ms.mass)}·{a_s} = {shown[f'Φ{lid}']} {N}")
         ld = by_name.get(f"M_Φ{lid}")
         if ld is not None:
             eps = sol.epsilon[lid]
             para(t["phi_moment"].format(i=lid, sense=t["ccw" if ld.moment > 0 else "cw"]))
             unit = "N·m" if lang == "en" else "Н·м"
-            item(f"M_Φ{lid} = J_S{lid}·ε{lid} = {c(ms.J)}·{c(abs(eps))} = {n(abs(ld.moment))} {unit}")
+            es = kin.get(f"ε{lid}") or c(abs(eps))
+            ms_ = shown[f"M_Φ{lid}"] = c(_shown(c(ms.J)) * _shown(es))
+            item(f"M_Φ{lid} = J_S{lid}·ε{lid} = {c(ms.J)}·{es} = {ms_} {unit}")
             ends = joints(mech, lid)
             phi_force = by_name.get(f"Φ{lid}")
             if loads.couples == "shift" and phi_force is not None and abs(phi_force.force) > 0:
                 para(t["shift"].format(S=S, i=lid))
                 size = abs(phi_force.force)
-                item(f"h = M_Φ{lid} / Φ{lid} = {c(abs(ld.moment))} / {c(size)} = "
-                     f"{n(abs(ld.moment) / size)} {'m' if lang == 'en' else 'м'}")
+                fs = shown.get(f"Φ{lid}") or c(size)
+                item(f"h = M_Φ{lid} / Φ{lid} = {ms_} / {fs} = "
+                     f"{n(_shown(ms_) / _shown(fs))} {'m' if lang == 'en' else 'м'}")
             elif loads.couples == "pair" and ends is not None:
                 a, b = ends
                 length = abs(m.position[b] - m.position[a])
                 para(t["pair"].format(a=a, b=b))
-                item(
-                    f"P_Φ{lid} = M_Φ{lid} / l_{a}{b} = {c(abs(ld.moment))} / {c(length)} = "
-                    f"{n(abs(ld.moment) / length)} {N}"
-                )
+                ps = shown[f"P_Φ{lid}"] = c(_shown(ms_) / _shown(c(length)))
+                item(f"P_Φ{lid} = M_Φ{lid} / l_{a}{b} = {ms_} / {c(length)} = {ps} {N}")
     if not loads.inertia_moments:
         para(t["no_moments"])
     forces = [ld for ld in fa.loads if ld.kind in ("force", "resistance")]
     if forces:
         heading(t["resistance"])
         for ld in forces:
-            _resistance(out, t, ld, fa, loads, lang, item, n, N)
+            _resistance(out, t, ld, fa, loads, lang, item, n, N, shown)
     heading(t["groups"])
     for g in fa.groups:
-        _group(out, t, g, lang, item, n, N, sol)
+        _group(out, t, g, lang, item, n, N, sol, shown)
     heading(t["crank"].format(i=d.link))
     pivot = m.position[d.pivot]
     para(t["My"].format(O=d.pivot, i=d.link))
@@ -263,29 +283,34 @@ def force_note(F: Forces, lang: str = "en", section: int = 1) -> str:
             parts.append(("− " if mo > 0 else "+ ") + what)
     expr = " ".join(parts).removeprefix("+ ") or "0"
     unit = "N·m" if lang == "en" else "Н·м"
-    item(f"M_у = −ΣM_{d.pivot}(F) = {expr} = {n(fa.M_y)} {unit}")
+    My = c(fa.M_y)
+    item(f"M_у = −ΣM_{d.pivot}(F) = {expr} = {My} {unit}")
     para(t["Fy"].format(t=d.tip, O=d.pivot))
-    item(f"F_у = M_у / l_{d.pivot}{d.tip} = {c(fa.M_y)} / {c(fa.crank_length)} = {n(fa.F_y)} {N}")
+    shown["F_у"] = c(_shown(My) / _shown(c(fa.crank_length)))
+    item(f"F_у = M_у / l_{d.pivot}{d.tip} = {My} / {c(fa.crank_length)} = {shown['F_у']} {N}")
     item(t["R01"].format(i=d.link, F=n(abs(fa.R01))))
     heading(t["lever"])
     lv = F.lever
-    para(t["lever_intro"].format(pb=n(lv.pb)))
+    pbs = kin.get(f"velocity:p{d.tip.lower()}") or c(lv.pb)  # as the velocity plan's section drew it
+    para(t["lever_intro"].format(pb=pbs))
     parts = []
     for term in lv.terms:
         if term.force and round(term.arm, 3):
-            parts.append(("+ " if term.moment > 0 else "− ") + f"{c(abs(term.force))}·{c(term.arm)}")
+            fs = shown.get(term.name) or c(abs(term.force))  # a load as its own line printed it
+            parts.append(("+ " if term.moment > 0 else "− ") + f"{fs}·{c(term.arm)}")
         elif term.moment and not term.force:
             parts.append(("+ " if term.moment > 0 else "− ") + c(abs(term.moment)))
     sense = 1.0 if d.omega > 0 else -1.0
     expr = " ".join(parts).removeprefix("+ ")
-    item(t["lever_eq"].format(expr=expr if sense > 0 else f"−({expr})", pb=c(lv.pb), F=n(lv.F_y)))
+    shown["F_у"] = c(lv.F_y)  # the power below takes the lever's, as printed last
+    item(t["lever_eq"].format(expr=expr if sense > 0 else f"−({expr})", pb=pbs, F=shown["F_у"]))
     item(t["discrepancy"].format(d=n(100 * F.discrepancy, 2)))
     heading(t["power"])
-    _drive(out, t, F, lang, item, n)
+    _drive(out, t, F, lang, item, n, shown.get("F_у"), kin.get(f"V_{d.tip}"))
     return "\n".join(out).replace("\n\n\n", "\n\n") + "\n"
 
 
-def _resistance(out, t, ld, fa, loads, lang, item, n, N):
+def _resistance(out, t, ld, fa, loads, lang, item, n, N, shown: dict[str, str]):
     sol = fa.solution
     p = ld.point
     if ld.kind == "resistance" and fa.stroke is not None:
@@ -294,24 +319,24 @@ def _resistance(out, t, ld, fa, loads, lang, item, n, N):
         _para(
             out, t["graph"].format(s=n(s), H=n(st.H), stroke=t["working" if st.working(sol.phi) else "idle"])
         )
-        item(f"{ld.name} = {n(abs(ld.force))} {N}")
+        shown[ld.name] = n(abs(ld.force), 5)  # carried on into the lever and the group's plan
+        item(f"{ld.name} = {shown[ld.name]} {N}")
         return
     f = next((x for x in loads.forces if x.name == ld.name), None)
     if f is None:
         return
     rule = t[f.rule].format(p=p) if f.rule else t["angle"].format(a=n(math.degrees(f.angle)))
     if f.weight_of is not None:
-        G = loads.masses[f.weight_of].mass * loads.g
-        item(
-            t["times"].format(
-                name=ld.name, k=n(f.times, 5), j=f.weight_of, G=n(G, 5), F=n(abs(ld.force)), p=p, rule=rule
-            )
-        )
+        G = shown.get(f"G{f.weight_of}") or n(loads.masses[f.weight_of].mass * loads.g, 5)
+        shown[ld.name] = n(_shown(n(f.times, 5)) * _shown(G), 5)
+        item(t["times"].format(name=ld.name, k=n(f.times, 5), j=f.weight_of, G=G, F=shown[ld.name], p=p,
+                               rule=rule))
     else:
-        item(t["fixed_force"].format(name=ld.name, F=n(abs(ld.force)), p=p, rule=rule))
+        shown[ld.name] = n(abs(ld.force), 5)
+        item(t["fixed_force"].format(name=ld.name, F=shown[ld.name], p=p, rule=rule))
 
 
-def _group(out, t, g, lang, item, n, N, sol):
+def _group(out, t, g, lang, item, n, N, sol, shown: dict[str, str]):
     grp = g.group
     kind = grp.kind.name if lang == "en" else grp.kind.ru
     out.extend(["", f"**{t['group'].format(a=grp.links[0], b=grp.links[1], kind=kind)}**"])
@@ -324,17 +349,20 @@ def _group(out, t, g, lang, item, n, N, sol):
         )
         total = sum(term.moment for term in eq.terms)
         parts = []
+        got = 0.0  # the sum as the numbers shown give it
         for term in eq.terms:
             if not term.moment:
                 continue
             sign = "+ " if term.moment > 0 else "− "
-            parts.append(
-                sign + (f"{n(term.size, 5)}·{n(term.arm, 5)}" if term.arm else n(abs(term.moment), 5))
-            )
+            part = f"{n(term.size, 5)}·{n(term.arm, 5)}" if term.arm else n(abs(term.moment), 5)
+            parts.append(sign + part)
+            got += math.copysign(math.prod(_shown(x) for x in part.split("·")), term.moment)
         known = " ".join(parts).removeprefix("+ ") or "0"
         expr = f"({known}) / {n(eq.arm, 5)}"
         name = eq.unknown if eq.unknown != "N" else next(r.name for r in g.reactions if r.pair == "prismatic")
-        item(t["unknown"].format(R=name, expr=expr, v=n(eq.value)))
+        value = math.copysign(abs(got / _shown(n(eq.arm, 5))), eq.value) if eq.value else 0.0
+        shown[name] = n(abs(value), 5)  # carried on into the group's plan
+        item(t["unknown"].format(R=name, expr=expr, v=n(value, 5)))
         del total
     plan = g.plan
     _para(out, t["plan_scale"].format(mu=n(plan.mu)))
@@ -344,12 +372,13 @@ def _group(out, t, g, lang, item, n, N, sol):
     for v in known:
         # a load's size as its own line gave it, not as the difference of two plan points
         F = sizes.get(v.label, abs(plan.points[v.end].value - plan.points[v.start].value))
-        item(t["vec"].format(n=v.label, F=n(F, 5), mu=n(plan.mu), mm=n(plan.segments[v.label])))
+        Fs = shown.get(v.label) or n(F, 5)  # as its own line printed it
+        item(t["vec"].format(n=v.label, F=Fs, mu=n(plan.mu), mm=n(_shown(Fs) / _shown(n(plan.mu)))))
     if len(closing) == 2:
         lines = [pt for pt in plan.points.values() if pt.source.kind == "intersection"]
         src = lines[0].source if lines else None
-        l0, l1 = (src.lines[0].relation, src.lines[1].relation) if src else ("", "")
-        _para(out, t["closes"].format(eq=f"`{src.equation}`" if src else "", l0=l0, l1=l1))
+        l0, l1 = (md_text(src.lines[0].relation), md_text(src.lines[1].relation)) if src else ("", "")
+        _para(out, t["closes"].format(eq=f"`{md_code(src.equation)}`" if src else "", l0=l0, l1=l1))
     else:
         _para(out, t["closes1"].format(R=closing[0].label))
     for r in g.reactions:
@@ -359,7 +388,7 @@ def _group(out, t, g, lang, item, n, N, sol):
         item(t["read"].format(R=r.name, mm=n(mm, 5), mu=n(plan.mu), F=n(mm * plan.mu)))
 
 
-def _drive(out, t, F, lang, item, n):
+def _drive(out, t, F, lang, item, n, Fy: str | None = None, V_tip: str | None = None):
     fa = F.analysis
     mech = fa.mechanism
     d = mech.driver
@@ -373,7 +402,8 @@ def _drive(out, t, F, lang, item, n):
     dr, gb = F.drive, F.drive.gearbox
     V = abs(fa.solution.scalar.velocity[d.tip])
     if F.drive_note == "position":
-        item(t["P"].format(t=d.tip, F=n(abs(fa.F_y), 5), V=n(V, 5), P=n(dr.power)))
+        Fs, Vs = Fy or n(abs(fa.F_y), 5), V_tip or n(V, 6)  # as printed above (V_A: six digits)
+        item(t["P"].format(t=d.tip, F=Fs, V=Vs, P=n(_shown(Fs) * _shown(Vs))))
     else:
         item(t["P_mean"].format(i=d.link, P=n(dr.power)))
     item(

@@ -17,7 +17,7 @@ from plans.errors import AssemblyError, InputError, SingularPlanError
 from plans.kinematics.dyads import DYADS
 from plans.kinematics.records import coincident_name
 from plans.model import Mechanism
-from plans.model.hints import Ambiguous, hint_holds, parse_hint
+from plans.model.hints import RELATIONS, Ambiguous, hint_holds, parse_hint
 from plans.model.structure import DyadKind, Structure
 
 #: samples of the turn searched for change points
@@ -206,6 +206,26 @@ def _parting(g, mech: Mechanism, positions: dict) -> str:
     return g.C or next(iter(mech.links[g.b].points))
 
 
+def _suggest(g, key: str, positions: dict) -> str:
+    """A hint on ``key`` that parts group ``g``'s two assemblies, the first assembly's: on
+    the line of the group's known points, or beside one of them. "above C" had been
+    offered for a slider on a horizontal guide, where C's both assemblies are level with
+    C and only "right of C" or "left of C" parts them."""
+    known = [p for p in (g.P, g.Q) if p and p in positions[1].position and p in positions[-1].position]
+    lines = ([known] if len(known) == 2 else []) + [[p] for p in known]
+    for refs in lines:
+        for rel in RELATIONS:
+            try:
+                sides = [hint_holds(rel, complex(positions[sigma].position[key][0]),
+                                    [complex(positions[sigma].position[r][0]) for r in refs])
+                         for sigma in (1, -1)]
+            except Ambiguous:
+                continue
+            if sides == [True, False]:
+                return f'"{rel} {"".join(refs)}"'
+    return f'"above {g.P or ""}{g.Q or ""}"'
+
+
 def _choose(mech: Mechanism, structure: Structure, trial, meet: bool = True) -> tuple[int, ...]:
     """The sign of each group by the hints at the mechanism's angle; ``meet``: raise
     :class:`_Meet` where a group's two assemblies meet there (to rounding)."""
@@ -294,7 +314,7 @@ def _choose(mech: Mechanism, structure: Structure, trial, meet: bool = True) -> 
                 mech.source,
                 f"assembly: {g.label} closes two ways at {mech.at(mech.param)}, with {key} at "
                 f"{_at_both(positions, key, ' or ')}: add a hint such as [assembly] {key} = "
-                f'"above {g.P or ""}{g.Q or ""}"',
+                f"{_suggest(g, key, positions)}",
             )
         hints_ = ", ".join(f"{k} = {mech.assembly[k]!r}" for k in mine)
         if ok:  # both: say where the two are, so that the hint can be chosen between them

@@ -192,6 +192,19 @@ class Recorded:
             self.owner[name] = link
             self.coincident[name] = base
 
+    def copy(self) -> Recorded:
+        """The state so far, apart: groups solved on the copy leave this one as it is
+        (the assemblies a hint chooses between are tried from the groups before it)."""
+        out = object.__new__(Recorded)
+        for name in ("xp", "phi", "scalar", "todo", "translating"):
+            setattr(out, name, getattr(self, name))
+        out.states, out.pos, out.vel, out.acc = (dict(self.states), dict(self.pos), dict(self.vel),
+                                                 dict(self.acc))
+        out.owner, out.coincident = dict(self.owner), dict(self.coincident)
+        out.solutions = list(self.solutions)
+        out.valid = self.valid if self.scalar else self.valid.copy()
+        return out
+
     def motion(self) -> Motion:
         return frozen(Motion, phi=self.phi, links=self.states, position=self.pos,
                       velocity=self.vel, acceleration=self.acc, point_link=self.owner,

@@ -14,13 +14,15 @@ import ast
 import difflib
 import json
 import math
+import os
 import re
+import stat
 import tomllib
 from pathlib import Path
 from typing import Any
 
 from plans.errors import InputError
-from plans.model.locate import BARE, first_duplicate, key_text, line_of, locate, one_line, quote
+from plans.model.locate import BARE, FileIndex, first_duplicate, key_text, one_line, quote
 
 MAX_ABS = 1e6  # metres, rad/s: anything larger is a typo, not a machine
 MAX_FILE = 1_000_000  # bytes: a mechanism file is a few KB
@@ -38,6 +40,11 @@ def read_toml(path: str | Path, typical: str = "") -> tuple[dict, str]:
     source = str(path)
     try:
         with open(path, "rb") as fh:
+            kind = os.fstat(fh.fileno()).st_mode
+            if stat.S_ISCHR(kind) or stat.S_ISBLK(kind) or stat.S_ISSOCK(kind):
+                # /dev/zero had been read to the limit and called "larger than 1 MB"; a pipe
+                # (plans solve <(…)) is read as a file is
+                raise InputError(source, "is a device, not a file")
             raw = fh.read(MAX_FILE + 1)
     except IsADirectoryError:
         raise InputError(source, "is a folder, not a file") from None
@@ -63,9 +70,50 @@ def read_toml(path: str | Path, typical: str = "") -> tuple[dict, str]:
     return parse_toml(text, source), text
 
 
+#: the most dotted parts a key may have: these files need three or four ("links.3.points.C");
+#: tomllib reads a dotted key in time that grows with the square of its parts (a 50,000-part
+#: header took 11 s), so a longer one is refused before it is parsed
+MAX_KEY_PARTS = 256
+#: a dotted chain of key parts, each from its beginning: found whole by one search, so that
+#: the text is scanned once
+_CHAIN = re.compile(r"(?<![A-Za-z0-9_-])(?:(?:[A-Za-z0-9_-]++|\"[^\"\n]*\"|'[^'\n]*')[ \t]*\.[ \t]*)+")
+
+
+def _long_key(text: str) -> str | None:
+    """The located line for a key of more than :data:`MAX_KEY_PARTS` dotted parts, if the
+    text has one outside a string (judged by the quotes before it on its line), else None.
+
+    >>> _long_key("[" + ".".join(["a"] * 300) + "]")[:46]
+    'line 1: TOML key of 300 dotted parts: these fi'
+    >>> _long_key('name = "' + ".".join(["a"] * 300) + '"') is None
+    True
+    """
+    if text.count(".") < MAX_KEY_PARTS:
+        return None
+    # a key is on one line, and only a line of many dots can hold a long one
+    for n, line in enumerate(text.split("\n"), 1):
+        if line.count(".") >= MAX_KEY_PARTS:
+            double = single = seen = 0  # the quotes before a match, counted on from the last
+            for m in _CHAIN.finditer(line):
+                parts = line.count(".", m.start(), m.end())
+                if parts < MAX_KEY_PARTS:
+                    continue
+                double += line.count('"', seen, m.start())
+                single += line.count("'", seen, m.start())
+                seen = m.start()
+                if double % 2 or single % 2:
+                    continue  # inside a string: a value, not a key
+                return (f"line {n}: TOML key of {parts + 1} dotted parts: these files need three "
+                        "levels at most (links.3.points)")
+    return None
+
+
 def parse_toml(text: str, source: str) -> dict:
-    """``tomllib.loads`` with its errors turned into one located line each."""
+    """``tomllib.loads`` with its errors turned into one located line each; a key of more
+    than :data:`MAX_KEY_PARTS` dotted parts is refused before it is parsed."""
     text = text.removeprefix("\ufeff")
+    if why := _long_key(text):
+        raise InputError(source, why)
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
@@ -240,12 +288,21 @@ def name_list(names, limit: int = 20) -> str:
 
 
 class Problems:
-    """Problems found in one file: (key path, message), located when it is raised."""
+    """Problems found in one file: (key path, message), located when they are said.
 
-    def __init__(self, source: str, text: str | None = None):
+    ``text``: the file's text, or its :class:`~plans.model.locate.FileIndex` where several
+    lists of problems share one file (a variant table's rows): the file is read for its
+    lines once, and only when a problem is said.
+    """
+
+    def __init__(self, source: str, text: str | FileIndex | None = None):
         self.source = source
-        self.text = text
+        self.index = text if isinstance(text, FileIndex) else FileIndex(text) if text else None
         self.items: list[tuple[str, str]] = []
+
+    @property
+    def text(self) -> str | None:
+        return self.index.text if self.index is not None else None
 
     def add(self, where: str, what: str) -> None:
         self.items.append((where, what))
@@ -254,10 +311,9 @@ class Problems:
         return bool(self.items)
 
     def lines(self) -> list[str]:
-        index = locate(self.text) if self.text else {}
         located = []
         for n, (where, what) in enumerate(self.items):
-            line = line_of(where, index)
+            line = self.index.line(where) if self.index is not None else None
             text = f"{where}: {what}" if where else what
             if line:
                 text = f"line {line}: {text}"

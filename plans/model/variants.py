@@ -21,6 +21,7 @@ variant 7); the default is :data:`DESIGNATION`.
 from __future__ import annotations
 
 import operator
+import re
 from dataclasses import replace
 from importlib import resources
 from pathlib import Path
@@ -30,6 +31,7 @@ from typing import NamedTuple
 from plans.errors import InputError
 from plans.model.fileformat import (
     MAX_ABS,
+    MAX_TEXT,
     Problems,
     close_match,
     key_text,
@@ -40,6 +42,7 @@ from plans.model.fileformat import (
     read_toml,
 )
 from plans.model.load import from_dict
+from plans.model.locate import FileIndex
 from plans.model.mechanism import SENSES, Mechanism
 from plans.model.parts import MIN_LINK, RPM_MIN, SPEED
 
@@ -74,7 +77,7 @@ class Table(NamedTuple):
     that a typo in variant 3 does not stop variant 5 (nor the sheets of the others)."""
 
     source: str
-    text: str
+    index: FileIndex  # the text, read for its lines once, where a problem is said
     path: str | None  # the file, None for the built-in table
     problems: Problems  # of the table as a whole: no row can be read while there are any
     rows: dict[int, dict]  # the rows that can be read, by their number
@@ -95,7 +98,7 @@ class Table(NamedTuple):
     def located(self, n: int | None, every: bool = False) -> Problems:
         """The problems of the rows without a number and of row ``n`` (``every``: of every
         row but ``n``), in one list, so that they are located and capped once."""
-        out = Problems(self.source, self.text)
+        out = Problems(self.source, self.index)
         out.items = list(self.loose) + [it for m, items in sorted(self.rows_problems.items())
                                         if (m != n if every else m == n) for it in items]
         return out
@@ -110,7 +113,7 @@ class Table(NamedTuple):
                                           "of a row, e.g. 3") from None
         self.numbers  # noqa: B018 - raises where the table cannot be used at all
         if n in self.rows_problems:
-            own = Problems(self.source, self.text)
+            own = Problems(self.source, self.index)
             own.items = list(self.rows_problems[n])
             own.raise_if_any()
         if n not in self.rows:
@@ -144,13 +147,14 @@ def read_table(path: str | Path | None = None) -> Table:
     else:
         source = str(path)
         data, text = read_toml(path, "a variant table is a few KB")
-    pr = Problems(source, text)
-    loose = Problems(source, text)
+    index = FileIndex(text)  # one for every row: the text is located once, if ever
+    pr = Problems(source, index)
+    loose = Problems(source, index)
     table: dict[int, dict] = {}
     bad: dict[int, Problems] = {}
 
     def done() -> Table:
-        return Table(source, text, None if path is None else str(path), pr, table,
+        return Table(source, index, None if path is None else str(path), pr, table,
                      {n: p.items for n, p in bad.items() if p}, loose.items,
                      pattern if isinstance(pattern, str) else DESIGNATION, rules)
     pattern = data.get("designation", DESIGNATION)
@@ -189,7 +193,7 @@ def read_table(path: str | Path | None = None) -> Table:
             got = "missing" if n is None else f"got {quote(n, 20)}"
             loose.add(where + ".n", f"the variant number must be a whole number 0…999999, {got}")
             continue
-        rp = bad.setdefault(n, Problems(source, text))
+        rp = bad.setdefault(n, Problems(source, index))
         for key in row:
             if key not in ROW_KEYS:
                 rp.add(f"{where}.{key_text(key)}", f"unknown column (variant {n}) — "
@@ -299,19 +303,39 @@ def _row_loads(row: dict, rules: dict) -> tuple[dict, dict]:
     return loads, drive
 
 
+#: a format field's width and precision ("{n:>12.3}"), read before formatting
+_SPEC = re.compile(r"(?:.?[<>=^])?[-+ ]?z?#?0?(?P<width>\d*)[,_]?(?:\.(?P<precision>\d+))?[a-zA-Z%]?")
+
+
 def _bad_pattern(pattern: str) -> str | None:
     """What is wrong with a table's designation pattern, None if nothing: it must name the
-    variant ``{n}`` (else every sheet would carry one designation) and nothing else."""
+    variant ``{n}`` (else every sheet would carry one designation) and nothing else, and
+    be at most :data:`MAX_TEXT` characters formatted. Its widths are read before it is
+    formatted: "{n:>2000000000}" had made a string of 2 GB."""
     try:
-        fields = [f for _, f, _, _ in Formatter().parse(pattern) if f is not None]
-        pattern.format(n=7)
-    except (ValueError, KeyError, IndexError, AttributeError, TypeError):
+        fields = [(f, spec) for _, f, spec, _ in Formatter().parse(pattern) if f is not None]
+    except (ValueError, TypeError):
         fields = None
-    if fields is None or any(f != "n" for f in fields):
+    if fields is None or any(f != "n" or "{" in (spec or "") for f, spec in fields):
         return ('must hold the variant number as {n} and no other field in braces, '
                 'as "ТММ.КП.{n:02d}"')
     if not fields:
         return 'must hold the variant number as {n} (as "ТММ.КП.{n:02d}"): each sheet its own'
+    for _, spec in fields:
+        m = _SPEC.fullmatch(spec or "")
+        if m and max(int(m["width"] or 0), int(m["precision"] or 0)) > MAX_TEXT:
+            wide = max(int(m["width"] or 0), int(m["precision"] or 0))
+            return (f"a field {quote('{n:' + spec + '}', 30)} {wide} characters wide: a designation "
+                    f"is at most {MAX_TEXT} characters")
+    if len(pattern) > MAX_TEXT:
+        return f"{len(pattern)} characters: a designation is at most {MAX_TEXT}"
+    try:
+        text = pattern.format(n=7)
+    except (ValueError, KeyError, IndexError, AttributeError, TypeError):
+        return ('must hold the variant number as {n} and no other field in braces, '
+                'as "ТММ.КП.{n:02d}"')
+    if len(text) > MAX_TEXT:
+        return f"{len(text)} characters formatted: a designation is at most {MAX_TEXT}"
     return None
 
 

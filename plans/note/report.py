@@ -8,14 +8,16 @@ beyond products and quotients of values the plans already hold.
 
 from __future__ import annotations
 
+import itertools
 import math
+import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
 from plans.cycle.transmission import lines as transmission_lines
 from plans.cycle.transmission import transmission
 from plans.cycle.words import change_points, no_full_turn
-from plans.fmt import notation_in, num
+from plans.fmt import md_code, md_text, notation_in, num
 from plans.kinematics.conditioning import flag_words
 from plans.kinematics.transmission import gammas
 from plans.note.words import UNITS, T
@@ -34,17 +36,19 @@ class Step:
     def markdown(self) -> str:
         mid = f" = {self.substitution}" if self.substitution else ""
         unit = "" if not self.unit else self.unit if self.unit == "°" else f" {self.unit}"
-        return f"- `{self.formula}{mid} = {self.result}{unit}`"
+        return f"- `{md_code(f'{self.formula}{mid} = {self.result}{unit}')}`"
 
 
 def note(sol: Solution, lang: str = "en", cycle=None,
-         plans: Sequence[tuple[str, Solution]] = ()) -> str:
+         plans: Sequence[tuple[str, Solution]] = (), numbers: dict | None = None) -> str:
     """The whole explanatory note, in Markdown: the structure and the plan of positions,
     then the velocity and acceleration plans of ``sol``'s crank position, or of each of
     ``plans`` instead ((title, solution): the positions a sheet draws plans for, at the
     sheet's scale factors), each titled. With ``plans``, the plan of positions is said to
     draw theirs heavy (as the sheet does) and its segments are theirs; ``sol`` gives the
-    structure and μl."""
+    structure and μl. ``numbers``: where given, the numbers each position's plan sections
+    printed (segments, values, ω and ε, by name) are left there, by (φ, μa), for the force
+    section to carry on as printed (:func:`plans.forces.note.force_note`)."""
     t, u = T[lang], UNITS[lang]
 
     def n(x, d=4):
@@ -52,9 +56,10 @@ def note(sol: Solution, lang: str = "en", cycle=None,
 
     mech, st = sol.mechanism, sol.structure
     d = mech.driver
-    out = [f"# {t['title']}: {mech.name_in(lang)}", ""]
+    out = [f"# {t['title']}: {md_text(mech.name_in(lang))}", ""]
+    out += initial_data(sol, lang)
     # structure ----------------------------------------------------------------------
-    out += [f"## 1. {t['structure']}", "", t["cheb"], ""]
+    out += [f"## 2. {t['structure']}", "", t["cheb"], ""]
     out.append(f"- `{st.chebyshev()}`")
     dash = t["dash"]  # «n = 5 — число подвижных звеньев»
     out.append(f"  (n = {st.n}{dash} {t['n']}, p5 = {st.p5}{dash} {t['p5']}, p4 = 0{dash} {t['p4']})")
@@ -67,7 +72,7 @@ def note(sol: Solution, lang: str = "en", cycle=None,
     # positions ----------------------------------------------------------------------
     mu_l = sol.mu_l
     crank_mm = d.length / mu_l
-    out += [f"## 2. {t['positions']}", "", t["mul"], ""]
+    out += [f"## 3. {t['positions']}", "", t["mul"], ""]
     if d.linear:  # a slider input has no crank: μl from the first link's segment
         k, v = next(((k, v) for k, v in sol.lengths.items() if v > 0), ("", 0.0))
         out.append(Step(f"μl = l_{k} / {k}", f"{n(v)} / {n(v / mu_l)}", n(mu_l), u["mu_l"]).markdown())
@@ -83,8 +88,8 @@ def note(sol: Solution, lang: str = "en", cycle=None,
         out += ["", t["heavy" if len(plans) == 1 else "heavy_all"].format(title=titles)]
     out += ["", t["seg_first"].format(title=plans[0][0]) if plans else t["seg"], ""]
 
-    def segment(k, v):
-        return Step(f"{k} = l_{k} / μl", f"{n(v, 5)} / {n(mu_l)}", n(v / mu_l), u["mm"]).markdown()
+    def segment(k, v):  # five digits: the similarity steps carry them
+        return Step(f"{k} = l_{k} / μl", f"{n(v, 5)} / {n(mu_l)}", _drawn(v, mu_l, lang), u["mm"]).markdown()
 
     for k, v in base.lengths.items():
         if k == d.pivot + d.tip or v == 0:  # the crank is above; a point on another: no segment
@@ -144,18 +149,123 @@ def note(sol: Solution, lang: str = "en", cycle=None,
                             n(cycle.K), "").markdown())
         trans = transmission(sol.solver, cycle)  # γ at the position, γmin over the cycle
         out += ["", t["transmission"], ""]
-        out += [f"  - {line.strip()}" if line.startswith(" ") else f"- {line}" for line in transmission_lines(
-            trans, mech, st.groups, gammas(sol.scalar), lang, sol.shown_from,
-            cycle.output.point if cycle.output is not None else "")]
+        # the lines name the file's guides: its text, escaped as the note's prose is
+        out += [f"  - {md_text(line.strip())}" if line.startswith(" ") else f"- {md_text(line)}"
+                for line in transmission_lines(trans, mech, st.groups, gammas(sol.scalar), lang,
+                                               sol.shown_from,
+                                               cycle.output.point if cycle.output is not None else "")]
     out.append("")
-    number = 3
+    number = 4
     for title, s in plans or [("", sol)]:
+        said: dict[str, str] = {}  # the numbers printed for this position, carried on as printed
+        if numbers is not None:
+            numbers[(s.phi, s.acceleration.mu)] = said
         for plan in (s.velocity, s.acceleration):
-            out += _plan_section(s, plan, lang, number, title)
+            out += _plan_section(s, plan, lang, number, title, said)
             number += 1
         for w in warnings(s, lang):
             out += [f"> {t['warn']}: {w}", ""]
     return notation_in("\n".join(out).rstrip() + "\n", lang)
+
+
+def initial_data(sol: Solution, lang: str = "en") -> list[str]:
+    """The note's first section, as a course's note opens (seed 000, §1.1): every length
+    the file gives (each link's points from its first one, the joints of a link of three
+    or more from one another: a ternary link's CE; the frame's points from one another;
+    a fixed guide's offset e from the crank's pivot), the masses and J_S where the file
+    gives loads, ω1 (and n1 where the file gives rpm) and the position, φ1 in the file's
+    convention and from +x: an enumeration of steps, each with the words it needs (the
+    note's PDF had run a table's cells together)."""
+    t, u = T[lang], UNITS[lang]
+    mech, d = sol.mechanism, sol.mechanism.driver
+
+    def n(x):
+        return num(x, 6, lang)
+
+    rows: list[tuple[str, str, str]] = []  # (quantity, value, the words after it)
+    seen: set[frozenset[str]] = set()
+
+    def length(a: str, b: str, value: float) -> None:
+        if value > 0 and frozenset((a, b)) not in seen:
+            seen.add(frozenset((a, b)))
+            rows.append((f"l_{a}{b}", f"{n(value)} {u['m']}", ""))
+
+    frame = list(mech.frame)
+    for i, a in enumerate(frame):
+        for b in frame[i + 1:]:
+            length(a, b, abs(mech.frame[b] - mech.frame[a]))
+    centres = {m.centre for m in mech.loads.masses.values()} if mech.loads is not None else set()
+    centres |= {p for p in mech.point_names() if re.fullmatch(r"S\d+", p)}
+    joints = {p for p in mech.point_names() if len(mech.links_of(p)) >= 2 or p in mech.frame}
+    for lid in sorted(mech.links):
+        link = mech.links[lid]
+        pts = link.points
+        if not pts:
+            continue
+        first = link.axis[0] if link.axis else next(iter(pts))
+        for p in pts:
+            if p != first:
+                length(first, p, abs(pts[p] - pts[first]))
+        # a point off the link's axis is given by two lengths: from its second point too
+        # (a ternary link BCE: CE); the joints of a link without an axis, from one another
+        second = link.axis[1] if link.axis else None
+        if second is not None:
+            line = pts[second] - pts[first]
+            along = []  # the points on the axis, centres of mass aside, in order along it
+            for p in pts:
+                across = ((pts[p] - pts[first]) * line.conjugate())
+                if abs(across.imag) > 0:
+                    length(second, p, abs(pts[p] - pts[second]))
+                elif p not in centres:
+                    along.append((across.real, p))
+            along.sort()
+            for (_, a), (_, b) in itertools.pairwise(along):  # B, C, E in line: CE too
+                length(a, b, abs(pts[b] - pts[a]))
+        else:
+            others = [p for p in pts if p != first and p in joints]
+            for i, a in enumerate(others):
+                for b in others[i + 1:]:
+                    length(a, b, abs(pts[b] - pts[a]))
+    fixed = [s.guide for s in mech.sliders if s.guide.link == 0] if not d.linear else []
+    pivot = mech.frame[d.pivot] if fixed else 0j  # a guide's offset e from the crank's pivot
+    for g in dict.fromkeys(fixed):
+        e = abs(((pivot - g.point) * g.direction.conjugate()).imag)
+        name = "e" if len(fixed) == 1 else f"e_{g.label}"
+        rows.append((name, f"{n(e)} {u['m']}", ", " + t["offset"].format(p=d.pivot, g=md_text(g.label))))
+    loads = mech.loads
+    if loads is not None:
+        for lid in sorted(loads.masses):
+            ms = loads.masses[lid]
+            if ms.mass:
+                rows.append((f"m{lid}", f"{n(ms.mass)} {u['kg']}", ""))
+            if ms.J:
+                rows.append((f"J_{ms.centre}", f"{n(ms.J)} {u['kgm2']}", ""))
+    # each input's speed (and its acceleration where it has one) at the position studied
+    for dd, (_, dq, ddq) in zip(mech.drivers, mech.inputs_at(sol.phi), strict=True):
+        dq, ddq = float(dq), float(ddq)
+        ddq = 0.0 if abs(ddq) <= 1e-12 * max(abs(dq), abs(ddq)) else ddq  # sin π of a harmonic law
+        if dd.linear:
+            rows.append((f"V_{dd.tip}", f"{n(abs(dq))} {u['m/s']}", ""))
+            if ddq:
+                rows.append((f"a_{dd.tip}", f"{n(abs(ddq))} {u['m/s²']}", ""))
+            continue
+        sense = t["sense"][1 if dq > 0 else -1 if dq < 0 else 0]
+        rows.append((dd.omega_sym, f"{n(abs(dq))} {u['rad/s']}", f", {sense}" if sense else ""))
+        if dd.rpm:
+            rows.append((f"n{dd.link}", f"{n(dd.rpm)} {u['rpm']}", ""))
+        if ddq:
+            sense = t["sense"][1 if ddq > 0 else -1]
+            rows.append((f"ε{dd.link}", f"{n(abs(ddq))} {u['rad/s²']}", f", {sense}"))
+    if mech.timing is not None:  # laws in time: the position is an instant
+        rows.append(("t", f"{n(sol.phi)} {u['s']}", ""))
+    else:
+        at, _, conv = d.both(sol.phi, lang, sol.shown_from).partition(" ")
+        rows.append((d.phi_sym, at, f" {conv}" if conv else ""))
+    out = [f"## 1. {t['initial']}", "", t["given"], ""]
+    # an enumeration, as the seed writes its data: each item ends in ";", the last in "."
+    out += [f"- `{md_code(f'{k} = {v}')}`{what}{';' if i < len(rows) - 1 else '.'}"
+            for i, (k, v, what) in enumerate(rows)]
+    return [*out, ""]
 
 
 def _letter(plan, name: str) -> str:
@@ -221,21 +331,39 @@ def _inputs(sol: Solution, plan, lang: str) -> list[str]:
             out.append(Step(f"a_{d.tip} = √((a^n_{d.tip}{d.pivot})² + (a^τ_{d.tip}{d.pivot})²)",
                             f"√({n(an, 5)}² + {n(at, 5)}²)", n(val), unit).markdown())
         out.append("")
-    d = sol.mechanism.driver
-    tip, mu, pole = plan_name(d.tip), plan.mu, plan.pole
-    val = abs(plan.value(tip))
-    sym, mus = ("a", "μa") if acc else ("V", "μv")
-    out += [t["mua" if acc else "muv"].format(mm=n(val / mu), t=tip), ""]
-    out.append(Step(f"{mus} = {sym}_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu),
-                    u["mu_a" if acc else "mu_v"]).markdown())
     return out
 
 
-def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") -> list[str]:
+def _drawn(length: float, mu_l: float, lang: str) -> str:
+    """A link's segment on the drawing (mm) as the plan of positions prints it, from its
+    length and μl as printed: ``l / μl`` to five digits."""
+    return num(_shown(num(length, 5, lang)) / _shown(num(mu_l, 4, lang)), 5, lang)
+
+
+def _shown(text: str) -> float:
+    """The number a step printed (a decimal comma, a true minus), as a reader takes it."""
+    try:
+        return float(text.replace(",", ".").replace("−", "-"))
+    except ValueError:
+        return math.nan
+
+
+def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "",
+                  said: dict[str, str] | None = None) -> list[str]:
+    """One plan's section. ``said``: the numbers printed so far for this position (a
+    plan's segments by their ends, a relative velocity, a link's ω, a component by its
+    label), shared by its two plans: a later step carries a number as it was printed,
+    and computes its result from the numbers it shows (a teacher redoing a line gets
+    its result; "V_CB = 0,4" had been followed by "0,39997 / 0,18"). A number carried on
+    is printed with five digits, one more than a result."""
     t, u = T[lang], UNITS[lang]
+    said = {} if said is None else said
 
     def n(x, d=4):
         return num(x, d, lang)
+
+    def carry(key: str, value: float) -> str:
+        return said.setdefault(key, n(value, 5))
 
     acc = plan.kind == "acceleration"
     mech, d = sol.mechanism, sol.mechanism.driver
@@ -247,47 +375,59 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
     pole = plan.pole
     head = t["accelerations"] if acc else t["velocities"]
     out = [f"## {number}. {head}" + (f" ({title})" if title else ""), ""]
+    out += [t["position"].format(phi=d.phi_sym, at=d.both(sol.phi, lang, sol.shown_from)), ""]
     tip = plan_name(d.tip)
     w1 = abs(d.omega)
     val = abs(plan.value(tip))
-    if _inputs_said(sol, acc):  # a crank with ε, a slider input, two inputs
+    # the first vector is drawn from ω1: ω1, V_A (a_A) and pa (πa) are carried with a digit
+    # more than a segment (seven, six, six), so that what the plans find from pa keeps its
+    # five digits right (a_S1 of a four-bar had drifted to 7,6284 from 7,6286)
+    w1s = said.setdefault(d.omega_sym, n(w1, 7))
+    ls = n(d.length, 5)
+    if _inputs_said(sol, acc):  # a crank with ε, a slider input, two inputs: their own vectors
         out += _inputs(sol, plan, lang)
+        vs = n(val, 6)
+        out += [t["mua" if acc else "muv"].format(t=tip), ""]
     elif acc:
         out += [t["aa"].format(t=d.tip, p=d.pivot, w=d.omega_sym), ""]
-        out.append(Step(f"a_{d.tip} = {d.omega_sym}²·l_{d.pivot}{d.tip}",
-                        f"{n(w1, 5)}²·{n(d.length, 5)}", n(val), unit).markdown())
-        out += ["", t["mua"].format(mm=n(val / mu), t=tip), ""]
-        out.append(Step(f"μa = a_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu),
-                        u["mu_a"]).markdown())
+        vs = n(_shown(w1s) ** 2 * _shown(ls), 6)
+        out.append(Step(f"a_{d.tip} = {d.omega_sym}²·l_{d.pivot}{d.tip}", f"{w1s}²·{ls}", vs,
+                        unit).markdown())
+        # the classroom's order: a round μa taken, then the vector's length from it
+        out += ["", t["mua"].format(t=tip), ""]
     else:
         out += [t["va"].format(t=d.tip, p=d.pivot, w=d.omega_sym), ""]
         if d.rpm:
-            out.append(Step(f"{d.omega_sym} = π·n{d.link} / 30", f"{n(math.pi, 5)}·{n(d.rpm)} / 30",
-                            n(w1), u["rad/s"]).markdown())
-        out.append(Step(f"V_{d.tip} = {d.omega_sym}·l_{d.pivot}{d.tip}",
-                        f"{n(w1, 5)}·{n(d.length, 5)}", n(val), unit).markdown())
-        out += ["", t["muv"].format(mm=n(val / mu), t=tip), ""]
-        out.append(Step(f"μv = V_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu),
-                        u["mu_v"]).markdown())
+            pis = n(math.pi, 8)
+            w1s = said[d.omega_sym] = n(_shown(pis) * d.rpm / 30, 7)
+            out.append(Step(f"{d.omega_sym} = π·n{d.link} / 30", f"{pis}·{n(d.rpm)} / 30",
+                            w1s, u["rad/s"]).markdown())
+        vs = n(_shown(w1s) * _shown(ls), 6)
+        out.append(Step(f"V_{d.tip} = {d.omega_sym}·l_{d.pivot}{d.tip}", f"{w1s}·{ls}", vs, unit).markdown())
+        out += ["", t["muv"].format(t=tip), ""]
+    said[f"{sym}_{d.tip}"] = vs
+    out.append(Step(mus, "", n(mu), u["mu_a" if acc else "mu_v"]).markdown())
+    ps = said[_seg_key(plan, pole, tip)] = n(_shown(vs) / _shown(n(mu)), 6)
+    out.append(Step(f"{pole}{tip} = {sym}_{d.tip} / {mus}", f"{vs} / {n(mu)}", ps, u["mm"]).markdown())
     out.append("")
     # the input link's other points (its centre of mass, a point a guide slides past)
     sims = [p for p in plan.points.values() if p.source.kind == "similarity"
             and _belongs(m, p.name, (d.link,))]
     if sims:  # headed as a group's points are
-        out += _similar(sol, plan, sims, lang)
+        out += _similar(sol, plan, sims, lang, said)
         out += [t["avalues" if acc else "values"], ""]
-        out += [*_values(sol, plan, [p.name for p in sims], lang), ""]
+        out += [*_values(sol, plan, [p.name for p in sims], lang, said), ""]
     vplan = sol.velocity
     for g in m.groups:
         cons = g.acceleration if acc else g.velocity
         x = cons.point
         px = plan_name(x)
         pt = plan.points[px]
-        out += [t["eqs"].format(x=x), "", f"- `{cons.equation}`"]
+        out += [t["eqs"].format(x=x), "", f"- `{md_code(cons.equation)}`"]
         for sl in (g.group.s1, g.group.s2):  # a slot the tool named x3-x3: say what it is
             if (sl is not None and sl.guide.named_by_tool and sl.guide.link
                     and sl.guide.label.startswith(f"x{sl.guide.link}")):
-                out.append(f"- {t['xk'].format(x=sl.guide.label, k=sl.guide.link)}")
+                out.append(f"- {t['xk'].format(x=md_text(sl.guide.label), k=sl.guide.link)}")
         if acc:  # a block on a guide whose link translates: no Coriolis term, and why
             for sl in (g.group.s1, g.group.s2):
                 if sl is not None and sl.guide.link and sl.guide.link in sol.solver.translating:
@@ -299,12 +439,13 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
             for term in r.terms:
                 a_, b_ = term.about
                 rel = vplan.mm(plan_name(b_), plan_name(a_)) * vplan.mu  # 0 where it is rounding
+                rels = said.get(f"V_{a_}{b_}") or n(rel, 5)  # as the velocity plan's section gave it
                 if term.kind == "normal":
-                    span = abs(sol.positions[a_] - sol.positions[b_])
+                    spans = n(abs(sol.positions[a_] - sol.positions[b_]), 5)
+                    said[term.label] = n(_shown(rels) ** 2 / _shown(spans), 5)
                     out.append(f"- {t['normal'].format(x=a_, y=b_)}")
                     out.append("  " + Step(f"{term.label} = V_{a_}{b_}² / l_{a_}{b_}",
-                                           f"{n(rel, 5)}² / {n(span, 5)}", n(rel**2 / span),
-                                           unit).markdown()[2:])
+                                           f"{rels}² / {spans}", said[term.label], unit).markdown()[2:])
                 else:
                     owner = m.point_link.get(a_) if a_ in m.coincident else m.point_link.get(b_)
                     w = abs(sol.omega[owner])
@@ -312,36 +453,41 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
                     s = mech.slider_of(owner)
                     if s is not None and s.guide.link not in (0, owner):  # slides on a turning link
                         out.append(f"  {t['same_w'].format(i=owner, k=s.guide.link)}")
+                    ws = said.get(f"ω{owner}") or n(w, 5)
+                    said[term.label] = n(2 * _shown(ws) * _shown(rels), 5)
                     out.append("  " + Step(f"{term.label} = 2·ω{owner}·V_{a_}{b_}",
-                                           f"2·{n(w, 5)}·{n(rel, 5)}", n(2 * w * rel), unit).markdown()[2:])
+                                           f"2·{ws}·{rels}", said[term.label], unit).markdown()[2:])
                 seg = _component_segment(plan, term.label)
                 if seg:
                     s0, s1 = seg
-                    mm = plan.mm(s0, s1)
-                    out.append("  " + Step(f"{s0}{s1} = {term.label} / {mus}", f"{n(mm * mu, 5)} / {n(mu)}",
-                                           n(mm), u["mm"]).markdown()[2:])
-            out.append(f"- {r.unknown}: {t['dir']} {r.relation}" + (f"; {', '.join(parts)}" if parts else ""))
+                    ts = said.get(term.label) or n(plan.mm(s0, s1) * mu, 5)
+                    ss = said[_seg_key(plan, s0, s1)] = n(_shown(ts) / _shown(n(mu)), 5)
+                    out.append("  " + Step(f"{s0}{s1} = {term.label} / {mus}", f"{ts} / {n(mu)}",
+                                           ss, u["mm"]).markdown()[2:])
+            out.append(f"- {r.unknown}: {t['dir']} {md_text(r.relation)}"
+                       + (f"; {', '.join(parts)}" if parts else ""))
         lines = pt.source.lines
-        out += ["", t["build"].format(l0=_letter(plan, lines[0].through), r0=lines[0].relation,
-                                      l1=_letter(plan, lines[1].through), r1=lines[1].relation,
+        out += ["", t["build"].format(l0=_letter(plan, lines[0].through), r0=md_text(lines[0].relation),
+                                      l1=_letter(plan, lines[1].through), r1=md_text(lines[1].relation),
                                       x=px), ""]
         # similarity points of the group's links, then values; a link that translates
         # has one velocity and one acceleration for all its points
         moving = tuple(k for k in (g.group.a, g.group.b) if k not in sol.solver.translating)
         sims = [p for p in plan.points.values() if p.source.kind == "similarity"
                 and _belongs(m, p.name, moving)]
-        out += _similar(sol, plan, sims, lang)
+        out += _similar(sol, plan, sims, lang, said)
         out += [t["avalues" if acc else "values"], ""]
-        out += _values(sol, plan, [px] + [p.name for p in sims], lang)
+        out += _values(sol, plan, [px] + [p.name for p in sims], lang, said)
         for r in cons.routes:
             # the unknown read off the plan: from where its line was drawn to the point found
             if r.unknown_kind in ("relative", "tangential") or (
                     r.unknown_kind == "sliding" and r.base is not None):
                 start = next((ln.through for ln in pt.source.lines if ln.unknown == r.unknown),
                              r.base and plan_name(r.base))
-                mm = plan.mm(start, px)
+                mms = carry(_seg_key(plan, start, px), plan.mm(start, px))
+                said[r.unknown] = n(_shown(mms) * _shown(n(mu)), 5)  # carried on: ω, a^n, a^k
                 out.append(Step(f"{r.unknown} = {_letter(plan, start)}{px}·{mus}",
-                                f"{n(mm, 5)}·{n(mu)}", n(mm * mu), unit).markdown())
+                                f"{mms}·{n(mu)}", said[r.unknown], unit).markdown())
         for k in (g.group.a, g.group.b):  # after the values above, as a list of its own
             if k in moving:
                 continue
@@ -353,7 +499,7 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
             if len(names) >= 2:  # a block with one point has nothing to equate
                 eq = " = ".join(f"{sym}_{q}" for q in names)
                 out += ["", t["translates"].format(i=k, eq=eq, what=t["acc" if acc else "vel"]), ""]
-                out += _values(sol, plan, same, lang)
+                out += _values(sol, plan, same, lang, said)
         out.append("")
         # ω or ε of the group's links that turn
         for r in cons.routes:
@@ -365,16 +511,18 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
             link = m.point_link.get(A) if A in m.coincident else _common_link(mech, A, B)
             if link is None:
                 continue
-            span = abs(sol.positions[A] - sol.positions[B])
+            spans = n(abs(sol.positions[A] - sol.positions[B]), 5)
             mag = abs(r.param)
             mag = mag if mag > plan.tiny else 0.0  # rounding, as the plan's segments
+            mags = said.get(r.unknown) or n(mag, 5)
             val = (sol.epsilon if acc else sol.omega)[link]
             sense = t["sense"][int(math.copysign(1, val)) if val else 0]
             key = "eps" if acc else "omega"
             out += [t[key].format(i=link), ""]
             w = "ε" if acc else "ω"
-            out.append(Step(f"{w}{link} = {r.unknown} / l_{A}{B}", f"{n(mag, 5)} / {n(span, 5)}",
-                            n(mag / span),
+            # ω is carried on into the Coriolis terms, ε into the inertia moments
+            said[f"{w}{link}"] = n(_shown(mags) / _shown(spans), 5)
+            out.append(Step(f"{w}{link} = {r.unknown} / l_{A}{B}", f"{mags} / {spans}", said[f"{w}{link}"],
                             (u["rad/s²"] if acc else u["rad/s"]) + (f", {sense}" if sense else ""))
                        .markdown())
             out.append("")
@@ -395,7 +543,7 @@ def _belongs(m, plan_point: str, links) -> bool:
     return False
 
 
-def _similar(sol: Solution, plan, sims, lang: str) -> list[str]:
+def _similar(sol: Solution, plan, sims, lang: str, said: dict[str, str]) -> list[str]:
     """The similarity theorem's steps for the plan points ``sims``: a point on the line
     of two known ones by the ratio of lengths, any other by its similar triangle."""
     if not sims:
@@ -406,36 +554,54 @@ def _similar(sol: Solution, plan, sims, lang: str) -> list[str]:
     for p in sims:
         s = p.source
         if s.in_line:
-            out.append(_side(sol, plan, p.name, s.base, s.other, s.base, lang).markdown())
+            out.append(_side(sol, plan, p.name, s.base, s.other, s.base, lang, said).markdown())
         else:  # the triangle is built on b0b1 from its two other sides, as on paper
             out.append(f"- `{s.equation}`:")
-            out += ["  " + _side(sol, plan, p.name, s.base, s.other, end, lang).markdown()[2:]
+            out += ["  " + _side(sol, plan, p.name, s.base, s.other, end, lang, said).markdown()[2:]
                     for end in (s.base, s.other)]
     return [*out, ""]
 
 
-def _side(sol: Solution, plan, x: str, b0: str, b1: str, end: str, lang: str) -> Step:
+def _side(sol: Solution, plan, x: str, b0: str, b1: str, end: str, lang: str,
+          said: dict[str, str]) -> Step:
     """The similarity theorem's side ``end``–``x`` of a figure on the plan segment b0b1:
-    end·x = b0b1·(END X) / (B0 B1), the link's segments as drawn at μl."""
+    end·x = b0b1·(END X) / (B0 B1), the link's segments as drawn at μl; b0b1 as printed
+    before, and the side as it computes from the numbers shown, kept for the lines after."""
     X, B0, B1, END = (_mech_name(sol, n) for n in (x, b0, b1, end))
     w0, w1, e = (_letter(plan, n) for n in (b0, b1, end))  # a fixed point is the pole
-    l_ex, l_bb = (abs(sol.positions[q] - sol.positions[r]) / sol.mu_l for q, r in ((X, END), (B1, B0)))
-    sub = "·".join(num(v, 5, lang) for v in (plan.mm(b0, b1), l_ex)) + f" / {num(l_bb, 5, lang)}"
-    return Step(f"{e}{x} = {w0}{w1}·{END}{X} / {B0}{B1}", sub, num(plan.mm(end, x), 4, lang),
+    l_ex, l_bb = (_drawn(abs(sol.positions[q] - sol.positions[r]), sol.mu_l, lang)
+                  for q, r in ((X, END), (B1, B0)))
+    bb = said.setdefault(_seg_key(plan, b0, b1), num(plan.mm(b0, b1), 5, lang))
+    side = said.setdefault(_seg_key(plan, end, x),
+                           num(_shown(bb) * _shown(l_ex) / _shown(l_bb), 5, lang))
+    return Step(f"{e}{x} = {w0}{w1}·{END}{X} / {B0}{B1}", f"{bb}·{l_ex} / {l_bb}", side,
                 UNITS[lang]["mm"])
 
 
-def _values(sol: Solution, plan, names, lang: str) -> list[str]:
-    """V_X = pX·μv (a_X = πX·μa) for the plan points ``names``."""
+def _seg_key(plan, a: str, b: str) -> str:
+    """The key of plan segment ab in a section's record of the numbers it printed, its
+    ends as the note writes them (a fixed point's is the pole's)."""
+    return f"{plan.kind}:{_letter(plan, a)}{_letter(plan, b)}"
+
+
+def _values(sol: Solution, plan, names, lang: str, said: dict[str, str]) -> list[str]:
+    """V_X = pX·μv (a_X = πX·μa) for the plan points ``names``, each segment as printed
+    before where it was."""
     u = UNITS[lang]
     acc = plan.kind == "acceleration"
     sym, mus, pole = ("a" if acc else "V"), ("μa" if acc else "μv"), plan.pole
+    loads = sol.mechanism.loads
+    centres = {ms.centre for ms in loads.masses.values()} if loads is not None else set()
     unit = u["m/s²"] if acc else u["m/s"]
     out = []
     for name in names:
-        mm = plan.mm(pole, name)
-        out.append(Step(f"{sym}_{_mech_name(sol, name)} = {pole}{name}·{mus}",
-                        f"{num(mm, 5, lang)}·{num(plan.mu, 4, lang)}", num(mm * plan.mu, 4, lang),
+        mms = said.setdefault(_seg_key(plan, pole, name), num(plan.mm(pole, name), 5, lang))
+        mus_ = num(plan.mu, 4, lang)
+        X = _mech_name(sol, name)
+        # a centre of mass's acceleration is carried on into its inertia force: five digits
+        digits = 5 if acc and X in centres else 4
+        said[f"{sym}_{X}"] = num(_shown(mms) * _shown(mus_), digits, lang)
+        out.append(Step(f"{sym}_{X} = {pole}{name}·{mus}", f"{mms}·{mus_}", said[f"{sym}_{X}"],
                         unit).markdown())
     return out
 

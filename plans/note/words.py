@@ -14,6 +14,11 @@ from plans.fmt import SENSE
 T = {
     "en": {
         "title": "Kinematic analysis",
+        "initial": "Initial data",
+        "given": "The mechanism's dimensions, loads, input speed and the position studied, as the file "
+                 "gives them:",
+        "offset": "offset of the guide {g} from {p}",
+        "position": "Position of the mechanism: {phi} = {at}.",
         "structure": "Structural analysis",
         "cheb": "Degrees of freedom (mobility) by the Chebyshev–Grübler–Kutzbach formula:",
         "n": "moving links", "p5": "one-DOF pairs (revolute and prismatic)", "p4": "two-DOF pairs",
@@ -40,7 +45,8 @@ T = {
                "over the return stroke φ_r:",
         "velocities": "Velocity plan",
         "va": "Velocity of point {t} of the input link, ⊥ {p}{t} in the sense of {w}:",
-        "muv": "Scale factor of the velocity plan, with p{t} = {mm} mm:",
+        "muv": "Take a round scale factor of the velocity plan; the vector p{t} of the input link's "
+               "point is then:",
         "eqs": "Vector equations for point {x}:",
         "known": "known", "dir": "direction",
         "build": "Through point {l0} draw a line {r0} and through point {l1} a line {r1}; they meet at point "
@@ -61,7 +67,8 @@ T = {
                   "component is directed from {t} to {p}, its tangential one ⊥ {p}{t} in the sense of {e}:",
         "vs": "Velocity of point {t} of the input slider {i}, along its guide {g}, given:",
         "as": "Acceleration of point {t} of the input slider {i}, along its guide {g}, given:",
-        "mua": "Scale factor of the acceleration plan, with π{t} = {mm} mm:",
+        "mua": "Take a round scale factor of the acceleration plan; the vector π{t} of the input link's "
+               "point is then:",
         "normal": "Normal component, directed from {x} to {y}:",
         "coriolis": "Coriolis component: V_{x}{y} turned by 90° in the sense of ω{i}:",
         "ontheplan": "on the plan",
@@ -76,6 +83,11 @@ T = {
     },
     "ru": {
         "title": "Кинематический анализ",
+        "initial": "Исходные данные",
+        "given": "Размеры звеньев, нагрузки, угловая скорость начального звена и исследуемое положение "
+                 "механизма:",
+        "offset": "смещение направляющей {g} от {p}",
+        "position": "Положение механизма: {phi} = {at}.",
         "structure": "Структурный анализ механизма",
         "cheb": "Число степеней свободы по формуле П. Л. Чебышева:",
         "n": "число подвижных звеньев", "p5": "число одноподвижных пар", "p4": "число двухподвижных пар",
@@ -103,7 +115,8 @@ T = {
                "′ до ″ в сторону ω{d}) и за холостой ход φ_хх:",
         "velocities": "План скоростей механизма",
         "va": "Скорость точки {t} начального звена, ⊥ {p}{t} в сторону вращения {w}:",
-        "muv": "Масштабный коэффициент плана скоростей при p{t} = {mm} мм:",
+        "muv": "Примем масштабный коэффициент плана скоростей (круглое значение); тогда длина вектора p{t}, "
+               "изображающего скорость точки начального звена:",
         "eqs": "Векторные уравнения для точки {x}:",
         "known": "известна", "dir": "направление",
         "build": "Через точку {l0} проводим прямую {r0}, через точку {l1} — прямую {r1}; их пересечение даёт "
@@ -124,7 +137,8 @@ T = {
                   "составляющая направлена от {t} к {p}, касательная ⊥ {p}{t} в сторону {e}:",
         "vs": "Скорость точки {t} ползуна {i} (начальное звено) вдоль направляющей {g}, задана:",
         "as": "Ускорение точки {t} ползуна {i} (начальное звено) вдоль направляющей {g}, задано:",
-        "mua": "Масштабный коэффициент плана ускорений при π{t} = {mm} мм:",
+        "mua": "Примем масштабный коэффициент плана ускорений (круглое значение); тогда длина вектора π{t}, "
+               "изображающего ускорение точки начального звена:",
         "normal": "Нормальное ускорение направлено от {x} к {y}:",
         "coriolis": "Ускорение Кориолиса: вектор V_{x}{y}, повёрнутый на 90° в сторону ω{i}:",
         "ontheplan": "на плане",
@@ -142,7 +156,9 @@ T = {
 
 UNITS = {
     "en": {"m": "m", "mm": "mm", "m/s": "m/s", "m/s²": "m/s²", "rad/s": "rad/s",
-           "rad/s²": "rad/s²", "mu_l": "m/mm", "mu_v": "(m/s)/mm", "mu_a": "(m/s²)/mm", "deg": "°"},
+           "rad/s²": "rad/s²", "mu_l": "m/mm", "mu_v": "(m/s)/mm", "mu_a": "(m/s²)/mm", "deg": "°",
+           "kg": "kg", "kgm2": "kg·m²", "rpm": "rpm", "s": "s"},
     "ru": {"m": "м", "mm": "мм", "m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с",
-           "rad/s²": "рад/с²", "mu_l": "м/мм", "mu_v": "(м/с)/мм", "mu_a": "(м/с²)/мм", "deg": "°"},
+           "rad/s²": "рад/с²", "mu_l": "м/мм", "mu_v": "(м/с)/мм", "mu_a": "(м/с²)/мм", "deg": "°",
+           "kg": "кг", "kgm2": "кг·м²", "rpm": "об/мин", "s": "с"},
 }

@@ -39,7 +39,10 @@ class Recipe(NamedTuple):
 
     ``same``: pairs of points that coincided when the recipe was made, so that a point
     of their link was taken as it is rather than by similarity; where they no longer
-    coincide, the recipe is worked out again.
+    coincide, the recipe is worked out again. ``near``: the distance (m) within which two
+    points are one place, the mechanism's size times :data:`plans.tolerances.SAME_PLACE`
+    (a Scotch yoke's A3 and D 1.7e-311 m apart at φ1 = 1e-308° had been a similarity
+    base, and its ratio infinite).
     """
 
     kind: str
@@ -47,6 +50,7 @@ class Recipe(NamedTuple):
     tip: str  # the crank's pin, whose vector sets the plan's scale
     steps: tuple
     same: tuple[tuple[str, str], ...]
+    near: float
     ends: Mapping[str, tuple[str, str]]  # every drawn segment: name → (from, to)
     follow: Callable[..., Plan]  # the steps compiled (:func:`compile_steps`)
 
@@ -101,7 +105,7 @@ def plan(solver: Solver, motion: Motion, kind: str, mu,
     kinds = recipes(solver, kind) if kinds is None else kinds
     pos = motion.position
     for i, recipe in enumerate(kinds):
-        if recipe.same and any(abs(pos[b] - pos[a]) > 0 for a, b in recipe.same):
+        if recipe.same and any(abs(pos[b] - pos[a]) > recipe.near for a, b in recipe.same):
             continue
         try:
             got = follow(recipe, motion, mu)
@@ -132,6 +136,11 @@ def work_out(mech: Mechanism, m: Motion, kind: str) -> Recipe:
     for n in m.coincident:
         link_points[m.point_link[n]].append(n)
     pos = m.position
+    # two points within ``near`` of each other are one place: no base for a figure
+    # a slider input has no pivot: the first fixed point
+    origin = mech.frame.get(mech.driver.pivot, next(iter(mech.frame.values()), 0j))
+    near = tolerances.SAME_PLACE * max([abs(z - origin) for z in pos.values()]
+                                       + [getattr(mech.driver, "length", 0.0) or 0.0])
 
     def absolute(name):
         return PlanVector(pole, plan_name(name), "absolute", f"{sym}_{name}")
@@ -144,8 +153,10 @@ def work_out(mech: Mechanism, m: Motion, kind: str) -> Recipe:
                 continue
             nx = plan_name(name)
             own = mech.links[lid].points
-            if len(base) >= 2 and abs(pos[base[1]] - pos[base[0]]) > 0:
-                b0, b1 = base[0], base[1]
+            # the figure's base: the first point found, and the next one apart from it
+            b1 = next((b for b in base[1:] if abs(pos[b] - pos[base[0]]) > near), None)
+            if b1 is not None:
+                b0 = base[0]
                 n0, n1 = plan_name(b0), plan_name(b1)
                 # a fixed point lies at the pole, and is written by the pole's letter
                 w0, w1 = (pole if b in mech.frame else nb for b, nb in ((b0, n0), (b1, n1)))
@@ -160,8 +171,7 @@ def work_out(mech: Mechanism, m: Motion, kind: str) -> Recipe:
                 else:  # a coincident point: where it is on the link changes with φ
                     steps.append((SIMILAR, nx, name, b0, b1, n0, n1, eqs, absolute(name)))
             else:
-                if len(base) >= 2:
-                    same.append((base[0], base[1]))
+                same.extend((base[0], b) for b in base[1:] if (base[0], b) not in same)
                 moves = base[0] if base else "its guide"
                 src = Source("rigid", equation=f"{sym}_{name}: link {lid} moves with {moves}")
                 steps.append((VALUE, nx, name, src, absolute(name)))
@@ -207,8 +217,8 @@ def work_out(mech: Mechanism, m: Motion, kind: str) -> Recipe:
         for lid in (g.group.a, g.group.b):
             similar(lid)
     ends = segments_of(steps, pole)
-    return Recipe(kind, pole, drv.tip, tuple(steps), tuple(same), ends,
-                   compile_steps(kind, pole, drv.tip, steps, ends))
+    return Recipe(kind, pole, drv.tip, tuple(steps), tuple(same), near, ends,
+                   compile_steps(kind, pole, drv.tip, steps, ends, near))
 
 
 def accelerating(d) -> bool:
@@ -272,7 +282,7 @@ def follow(recipe: Recipe, m: Motion, mu) -> Plan:
     return recipe.follow(m.velocity, [g.velocity for g in m.groups], m.position, mu)
 
 
-def compile_steps(kind: str, pole: str, tip: str, steps, ends):
+def compile_steps(kind: str, pole: str, tip: str, steps, ends, near: float = 0.0):
     """The recipe's steps as one Python function ``follow(store, cons, pos, mu, links) -> Plan``
     (``links``: the motion's link states, which a crank's normal component reads its ω from).
 
@@ -285,7 +295,9 @@ def compile_steps(kind: str, pole: str, tip: str, steps, ends):
     * a pole: its constant record, vector 0;
     * the crank's pin or a point of a translating link: the vector solved (``store``);
     * a point of a rigid figure: by its fixed complex ratio to two points found;
-    * a coincident point: by the ratio of where it is on its link at this angle;
+    * a coincident point: by the ratio of where it is on its link at this angle (its base's
+      two points within ``near`` of each other are no base: the recipe does not hold,
+      as where they meet);
     * a known component: from the group's route term (``cons``), laid from its start;
     * an intersection: the vector solved, with the two lines' directions at this angle.
     """
@@ -320,7 +332,9 @@ def compile_steps(kind: str, pole: str, tip: str, steps, ends):
             rec = f"record(PlanPoint, ({pn!r}, {v}, {k(src)}))"
         elif op == SIMILAR:
             _, _, name, b0, b1, n0, n1, eqs, vec = step
-            body.append(f"q{i} = (pos[{name!r}] - pos[{b0!r}]) / (pos[{b1!r}] - pos[{b0!r}])")
+            body.append(f"d{i} = pos[{b1!r}] - pos[{b0!r}]")
+            body.append(f"if abs(d{i}) <= {near!r}: raise ZeroDivisionError")
+            body.append(f"q{i} = (pos[{name!r}] - pos[{b0!r}]) / d{i}")
             body.append(f"{v} = {var[n0]} + q{i} * ({var[n1]} - {var[n0]})")
             rec = (f"record(PlanPoint, ({pn!r}, {v}, record(Source, ('similarity', "
                    f"{k(eqs)}[abs(q{i}.imag) >= {tolerances.RATIO_IN_LINE!r}], (), {n0!r}, {n1!r}, q{i}, "

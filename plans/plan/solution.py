@@ -233,15 +233,21 @@ def _rounded_off(values: dict[int, float], tiny: float) -> dict[int, float]:
 def _position_segments(pairs, pos: dict[str, complex]) -> dict[str, float]:
     """Lengths (m) on the plan of positions: between fixed points, from each link's first
     point to its others (constant, worked out once: ``pairs``, :func:`_segment_pairs`), and
-    to the coincident points."""
-    fixed, moving = pairs
+    to the coincident points, each 0 within rounding of the mechanism's size (a yoke's DA3
+    had been 4.4e-309 mm at φ1 = 1e-308°)."""
+    fixed, moving, near = pairs
     out = dict(fixed)
     for key, a, b in moving:
-        out[key] = abs(pos[b] - pos[a])
+        d = abs(pos[b] - pos[a])
+        out[key] = d if d > near else 0.0
     return out
 
 
 def _segment_pairs(mech: Mechanism, motion: Motion):
+    """The plan of positions' segments: (fixed lengths by name, moving pairs (name, from,
+    to), the distance within which two points are one place). A segment of no length (a
+    point at its link's first point, the slider's centre of mass S3 at C) is not one:
+    "CS3 0 0" was listed."""
     fixed: dict[str, float] = {}
     names = list(mech.frame)
     for i, a in enumerate(names):
@@ -253,12 +259,12 @@ def _segment_pairs(mech: Mechanism, motion: Motion):
         for p in pts:
             if p != origin:
                 fixed[origin + p] = abs(link.points[p] - link.points[origin])
+    near = tolerances.SAME_PLACE * max([mech.driver.length, *fixed.values()])
+    fixed = {k: v for k, v in fixed.items() if v > near}
     moving = []
     for name, base in motion.coincident.items():
         link = mech.links[motion.point_link[name]]
         origin = link.axis[0] if link.axis else next(iter(link.points))
         if origin != base:
             moving.append((origin + name, origin, name))
-    return fixed, tuple(moving)
-
-
+    return fixed, tuple(moving), near
