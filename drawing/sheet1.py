@@ -42,7 +42,7 @@ from drawing.views import (
     retitled,
     segments_table_view,
 )
-from plans.cycle.analysis import analyse_cycle, shown_from
+from plans.cycle import analyse_cycle, shown_from
 from plans.cycle.positions import drawn
 from plans.errors import InputError, SingularPlanError
 from plans.fmt import angle
@@ -190,7 +190,7 @@ def build_sheet(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
     # not size a plan of positions of its own
     mu0 = {"mu_l": mech.scales.get("mu_l") or choose_mu_l(fixed.shown.extent)}
     try:
-        given = solve_position(mech, solver=solver, mu=mu0)
+        given = solve_position(mech, solver=solver, mu=mu0, cycle=cycle)
     except SingularPlanError as exc:  # its structure, μl and title block's scale are read off it
         why = ("the sheet draws the given position" if chosen is None else
                "the sheet solves the given position for its scale even with --plans")
@@ -244,9 +244,10 @@ class Sheet1:
         got = self._sols.get(key)
         if got is None:
             if self.chosen is None:
-                got = [solve_position(self.mech, solver=self.solver, mu=mu)]
+                got = [solve_position(self.mech, solver=self.solver, mu=mu, cycle=self.cycle)]
             else:
-                got = [solve_position(self.mech, self.cycle.positions[k], solver=self.solver, mu=mu)
+                got = [solve_position(self.mech, self.cycle.positions[k], solver=self.solver, mu=mu,
+                                      cycle=self.cycle)
                        for k in self.chosen]
             self._sols[key] = got
         return got
@@ -320,7 +321,7 @@ class Sheet1:
         mu = dict(mu or self.mu0, **{key: value})
         if key == "mu_l":
             # the positions of the plans heavy (--plans), else the given one
-            return [positions_view(solve_position(self.mech, solver=self.solver, mu=mu),
+            return [positions_view(solve_position(self.mech, solver=self.solver, mu=mu, cycle=self.cycle),
                                    self.cycle, self.lang, sizing=sizing, heavy=self.chosen)]
         kind = "velocity" if key == "mu_v" else "acceleration"
         return [plan_view(sol, kind, tag, self.lang, label, sizing=sizing)
@@ -450,7 +451,7 @@ def one_title_size(sheet, placed: list, together=(), keep: bool = False) -> list
 def compose(mech, sheet, cycle, mu, lang, title, placed, sols, numbers=None):
     """(scene, sheet, info): the views ``placed`` in the frame with the title block, its
     scale that of the given position at ``mu`` (``numbers``: :func:`title_fields`)."""
-    given = solve_position(mech, solver=sols[0][2].solver, mu=mu)
+    given = solve_position(mech, solver=sols[0][2].solver, mu=mu, cycle=cycle)
     tb = title_block(mech, sheet, title, gost_scale(given.mu_l, lang), lang, numbers)
     scene = frame_scene(sheet, tb, lang=lang)
     scene = scene + Scene((Layer("views", tuple(p.group() for p in placed)),))

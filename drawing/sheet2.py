@@ -30,10 +30,10 @@ from drawing.views.force_diagrams import moment_diagram_view, resistance_view
 from drawing.views.force_tables import lever_table_view, loads_table_view, reactions_table_view
 from drawing.views.forces import FORCE_WORDS, crank_view, force_plan_view, group_view, mechanism_view
 from drawing.views.lever import lever_view
-from plans.cycle.analysis import analyse_cycle, shown_from
+from plans.cycle import analyse_cycle, shown_from
 from plans.errors import InputError, SingularPlanError
 from plans.fmt import angle
-from plans.forces.analysis import FORCE_PLAN_MM
+from plans.forces.fplans import FORCE_PLAN_MM
 from plans.forces.summary import Forces, solve_forces
 from plans.kinematics.solver import Solver
 from plans.note.report import no_full_turn
@@ -230,7 +230,8 @@ def build_sheet2(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
     cycle = analyse_cycle(mech, n_positions, solver=solver)
     try:
         given = {k: scales[k] for k in ("mu_v", "mu_a") if k in scales}
-        sol = solve_position(mech, solver=solver, mu={"mu_l": scales.get("mu_l", 0.001), **given})
+        sol = solve_position(mech, solver=solver, mu={"mu_l": scales.get("mu_l", 0.001), **given},
+                             cycle=cycle)
         forces = solve_forces(sol, solver, cycle)
     except SingularPlanError as exc:
         raise SingularPlanError(f"{exc} (sheet 2 draws the force analysis of the given position: "
@@ -243,7 +244,8 @@ def build_sheet2(mech, fmt: str = "A1", lang: str = "ru", n_positions: int = 12,
         raise LayoutError(_no_room(mech, sheet, lang, forces, cycle, scales), "--format") from None
     # the solution at the sheet's μl and μv: the note's numbers are those drawn
     mu_a = {"mu_a": scales["mu_a"]} if "mu_a" in scales else {}
-    final = solve_position(mech, solver=solver, mu={"mu_l": full["mu_l"], "mu_v": full["mu_v"], **mu_a})
+    final = solve_position(mech, solver=solver, mu={"mu_l": full["mu_l"], "mu_v": full["mu_v"], **mu_a},
+                           cycle=cycle)
     tb = title_block(mech, sheet, title, gost_scale(full["mu_l"], lang), lang, numbers, subtitle)
     scene = frame_scene(sheet, tb, lang=lang)
     scene = scene + Scene((Layer("views", tuple(p.group() for p in placed)),))

@@ -14,7 +14,7 @@ Over many crank angles at once, without the recorded constructions (``Solver.swe
 (0.5114, 7.764)
 """
 
-from plans.cycle.analysis import Cycle, analyse_cycle, grashof_class
+from plans.cycle import Cycle, analyse_cycle, grashof_class
 from plans.errors import (
     AssemblyError,
     InputError,
@@ -24,7 +24,8 @@ from plans.errors import (
 )
 from plans.kinematics.solver import Motion, Solver
 from plans.kinematics.sweep import Sweep
-from plans.model.mechanism import Mechanism, from_dict, load
+from plans.model import Mechanism
+from plans.model.load import from_dict, load
 from plans.model.structure import DyadKind, Structure, analyse
 from plans.model.variants import variant
 from plans.plan.solution import Plan, PlanPoint, PlanVector, Solution, Source, solve_position

@@ -1,9 +1,33 @@
-"""Numbers as people write them: significant digits, units, a decimal comma in Russian."""
+"""Numbers as people write them: significant digits, units, a decimal comma in Russian.
+
+What differs by language is in tables, one entry per language (a language without one
+writes as English does): the decimal mark, the separator of items that hold numbers, the
+notation of the method, the senses of a turn.
+"""
 
 from __future__ import annotations
 
 import math
 import unicodedata
+
+#: the decimal mark, by language
+DECIMAL_MARK = {"en": ".", "ru": ","}
+#: what separates items that hold numbers: in Russian, whose decimal mark is a comma, a
+#: comma between them would read as one more decimal mark
+ITEM_SEPARATOR = {"en": ", ", "ru": "; "}
+#: the method's notation as each language's textbooks write it: the engine's tangential
+#: a^t_CB is a^τ_CB in Russian
+NOTATION = {"en": {}, "ru": {"a^t_": "a^τ_"}}
+
+
+def decimal(text: str, lang: str) -> str:
+    """``text``, a number written with a decimal point, with ``lang``'s decimal mark.
+
+    >>> decimal("-0.25", "ru"), decimal("2.5", "en")
+    ('-0,25', '2.5')
+    """
+    mark = DECIMAL_MARK.get(lang, ".")
+    return text if mark == "." else text.replace(".", mark)
 
 
 def num(x: float, digits: int = 4, lang: str = "en") -> str:
@@ -26,7 +50,7 @@ def num(x: float, digits: int = 4, lang: str = "en") -> str:
             s = (mant.rstrip("0").rstrip(".") if "." in mant else mant) + "e" + exp
     if s in ("-0",):
         s = "0"
-    return s.replace(".", ",") if lang == "ru" else s
+    return decimal(s, lang)
 
 
 #: the senses of a turn in words, by sign (+1 counter-clockwise)
@@ -44,7 +68,7 @@ def listing(parts, lang: str = "en") -> str:
     >>> listing(["n1a3 +22.1", "πa3 +18.6"]), listing(["n1a3 +22,1", "πa3 +18,6"], "ru")
     ('n1a3 +22.1, πa3 +18.6', 'n1a3 +22,1; πa3 +18,6')
     """
-    return ("; " if lang == "ru" else ", ").join(parts)
+    return ITEM_SEPARATOR.get(lang, ", ").join(parts)
 
 
 def columns(rows, head, right=()) -> list[str]:
@@ -90,6 +114,20 @@ def cut(text: str, limit: int) -> str:
     return text + "…"
 
 
+def cut_start(text: str, limit: int) -> str:
+    """``text`` in at most ``limit`` columns, cut at its start where it is wider: a file's
+    path keeps its name, the part a reader looks for.
+
+    >>> cut_start("/a/long/path/to/ivanov.toml", 13)
+    '…/ivanov.toml'
+    """
+    if width(text) <= limit:
+        return text
+    while text and width(text) + 1 > limit:
+        text = text[1:]
+    return "…" + text
+
+
 def notation_in(text: str, lang: str) -> str:
     """The method's notation as ``lang``'s textbooks write it: the engine's ``a^t_CB``
     (tangential, as English and Chinese texts write it) is ``a^τ_CB`` in Russian.
@@ -97,7 +135,9 @@ def notation_in(text: str, lang: str) -> str:
     >>> notation_in("a_C = a_B + a^n_CB + a^t_CB", "ru")
     'a_C = a_B + a^n_CB + a^τ_CB'
     """
-    return text.replace("a^t_", "a^τ_") if lang == "ru" else text
+    for engine, written in NOTATION.get(lang, {}).items():
+        text = text.replace(engine, written)
+    return text
 
 
 def ru_plural(n: int, one: str, few: str, many: str) -> str:
@@ -180,4 +220,4 @@ def signed(x: float, lang: str = "en", decimals: int | None = None) -> str:
     s = f"{abs(x):.{decimals}f}" if decimals is not None else num(abs(x), 3)
     if float(s) != 0:
         s = ("+" if x > 0 else "−") + s
-    return s.replace(".", ",") if lang == "ru" else s
+    return decimal(s, lang)

@@ -15,6 +15,8 @@ from __future__ import annotations
 
 import math
 
+from plans.fmt import decimal
+
 MANTISSAS = (1.0, 2.0, 2.5, 4.0, 5.0)
 #: GOST 2.302 scales as μl in m/mm (reduction, natural size, enlargement)
 GOST_MU_L = (
@@ -79,4 +81,4 @@ def gost_scale(mu_l: float, lang: str = "en") -> str:
     """
     ratio = mu_l / 0.001
     text = f"1:{ratio:.10g}" if ratio >= 1 else f"{1 / ratio:.10g}:1"
-    return text.replace(".", ",") if lang == "ru" else text
+    return decimal(text, lang)

@@ -11,7 +11,7 @@ import pytest
 from test_stability import crank_slider, fourbar, mech_of, slotted
 
 from plans import Solver, analyse_cycle
-from plans.cycle.analysis import summary
+from plans.cycle import summary
 from plans.cycle.positions import drawn
 
 A, B_, D = 0.05, 0.2, 0.2  # crank, coupler, frame: a parallelogram with c = a
@@ -662,7 +662,7 @@ def test_a_hint_met_only_by_rounding_picks_no_assembly():
     2.8e-13 m), where the crank and coupler fold onto the frame and the rocker stays. "Above
     OD" had picked it by the sign of rounding: 'the output B does not move'. It names the
     other, which swings the rocker 120° with K = 2."""
-    from plans.kinematics.branches import hint_holds
+    from plans.model import hint_holds
 
     c = analyse_cycle(mech_of(fourbar(0.1, 0.1, 0.2, 0.2, angle=180.0)))
     assert c.K == pytest.approx(2.0, abs=1e-9)

@@ -25,7 +25,7 @@ from support import NON_GRASHOF, ascii_name, plan_segments, run, variant_exact
 from plans.check import verdict as ck
 from plans.errors import InputError
 from plans.kinematics.solver import Solver
-from plans.model import mechanism
+from plans.model import load
 from plans.model.scenes import SCENES
 from plans.plan.solution import solve_position
 
@@ -90,7 +90,7 @@ def find(sol, kind, target=None, plan=None, **info) -> ck.Mistake:
 
 @pytest.fixture(scope="module")
 def press():
-    return solve_position(mechanism.load(PRESS), mu=MU_PRESS)
+    return solve_position(load(PRESS), mu=MU_PRESS)
 
 
 # ---------------------------------------------------------------------------------------
@@ -102,7 +102,7 @@ def press():
 def test_replay_without_mistake_is_the_engine_plan(source):
     from plans.model.variants import variant
 
-    mech = variant(int(source.split(":")[1])) if isinstance(source, str) else mechanism.load(source)
+    mech = variant(int(source.split(":")[1])) if isinstance(source, str) else load(source)
     sol = solve_position(mech)
     rep = ck.Replayer(sol)
     st = rep.run(ck.Mistake("term-scale", "acceleration", "no such term", 7.0))
@@ -124,7 +124,7 @@ def test_replay_without_mistake_is_the_engine_plan(source):
 @settings(max_examples=12, deadline=None)
 @given(seed=st.integers(0, 2**32 - 1), which=st.sampled_from([PRESS, FOURBAR]))
 def test_noise_within_tolerance_passes(tmp_path_factory, seed, which):
-    sol = solve_position(mechanism.load(which))
+    sol = solve_position(load(which))
     mu = {"mu_l": sol.mu_l, "mu_v": sol.mu_v, "mu_a": sol.mu_a}
     segs = measured(sol, ck.simulate(sol, None), mu, np.random.default_rng(seed), noise=0.95)
     path = write_meas(tmp_path_factory.mktemp("m") / "m.toml", which, segs, mu)
@@ -357,7 +357,7 @@ def test_injected_mistake_is_named(tmp_path, source, kind, target, plan, info):
     if source == "triangle":
         source = tmp_path / "triangle.toml"
         source.write_text(TRIANGLE, encoding="utf-8")
-    sol = solve_position(mechanism.load(source))
+    sol = solve_position(load(source))
     mu = {"mu_l": sol.mu_l, "mu_v": sol.mu_v, "mu_a": sol.mu_a}
     mk = find(sol, kind, target, plan, **info)
     segs = measured(sol, ck.simulate(sol, mk, mu), mu, np.random.default_rng(6))
@@ -673,7 +673,7 @@ def test_unknown_segment_is_one_line(tmp_path, capsys):
 
 
 def test_variant_and_angle(tmp_path, capsys):
-    sol = solve_position(mechanism.load(FOURBAR))
+    sol = solve_position(load(FOURBAR))
     path = tmp_path / "var.toml"
     path.write_text('variant = 1\nangle_deg = 40\n[scales]\nmu_v = 0.02\n[segments]\npb = 1\n',
                     encoding="utf-8")
@@ -915,7 +915,7 @@ def test_the_crank_taken_the_wrong_way_round_is_named(tmp_path, capsys, which, l
     """ω1 reversed: every velocity negates (the same lengths), every ω turns the other way,
     the accelerations and ε stay. It had been "no single mistake", closest "ω4 taken with
     the wrong sense; it explains ω4 but not ω3"."""
-    sol = solve_position(mechanism.load(which), mu=MU_PRESS if which == PRESS else None)
+    sol = solve_position(load(which), mu=MU_PRESS if which == PRESS else None)
     mu = {"mu_l": sol.mu_l, "mu_v": sol.mu_v, "mu_a": sol.mu_a}
     exact = ck.simulate(sol, None)
     values = {}
@@ -968,7 +968,7 @@ def test_a_look_alike_is_a_segment_the_student_drew(tmp_path, press):
     res = diagnose(tmp_path, PRESS, segs | {"n1a3": 17.11}, MU_PRESS)
     assert res.diagnosis.best is None and res.diagnosis.lookalikes == ()
     # a vector from the pole measured from a joint is still one: the four-bar's pe from b
-    fb = solve_position(mechanism.load(FOURBAR))
+    fb = solve_position(load(FOURBAR))
     mu = {"mu_l": fb.mu_l, "mu_v": fb.mu_v, "mu_a": fb.mu_a}
     segs = {it.name: round(ck.expected(it, ck.simulate(fb, None), mu), 2) for it in plan_segments(fb)}
     be = abs(fb.velocity.value("e") - fb.velocity.value("b")) / fb.mu_v
@@ -976,7 +976,7 @@ def test_a_look_alike_is_a_segment_the_student_drew(tmp_path, press):
     assert [(lk.item, lk.kind, lk.other) for lk in res.diagnosis.lookalikes] == [("pe", "segment", "be")]
     rng = np.random.default_rng(11)
     offers = []
-    for which in (press, solve_position(mechanism.load(FOURBAR))):
+    for which in (press, solve_position(load(FOURBAR))):
         mu = {"mu_l": which.mu_l, "mu_v": which.mu_v, "mu_a": which.mu_a}
         its = plan_segments(which)
         st0 = ck.simulate(which, None)
@@ -1041,7 +1041,7 @@ def test_similarity_from_the_wrong_end_is_named(tmp_path, capsys):
     source = tmp_path / "cs.toml"
     source.write_text(CRANK_SLIDER, encoding="utf-8")
     mu = {"mu_l": 0.004, "mu_v": 0.05, "mu_a": 2.5}
-    sol = solve_position(mechanism.load(source), mu=mu)
+    sol = solve_position(load(source), mu=mu)
     exact = ck.simulate(sol, None)
     segs = {it.name: round(ck.expected(it, exact, mu), 2) for it in plan_segments(sol)}
     for plan, pole, key in ((sol.velocity, "p", "mu_v"), (sol.acceleration, "π", "mu_a")):
@@ -1131,7 +1131,7 @@ def test_russian_words_agree_with_their_numbers(tmp_path, capsys, press):
 
 def test_a_mistake_on_both_plans_is_said_without_an_article(tmp_path, press):
     """"e on the both plans laid off on the wrong side of b": both plans take no article."""
-    sol = solve_position(mechanism.load(FOURBAR))
+    sol = solve_position(load(FOURBAR))
     side = find(sol, "similarity-mirrored", "e", "both", how="side")
     assert side.describe() == "e on both plans laid off on the wrong side of b"
     inverse = find(press, "similarity-ratio", "c", "velocity", how="inverse")
@@ -1151,7 +1151,7 @@ def test_mistakes_that_draw_the_same_plans_are_named_in_order_of_preference(tmp_
     source = tmp_path / "cs.toml"
     source.write_text(CRANK_SLIDER, encoding="utf-8")
     mu = {"mu_l": 0.004, "mu_v": 0.05, "mu_a": 2.5}
-    sol = solve_position(mechanism.load(source), mu=mu)
+    sol = solve_position(load(source), mu=mu)
     exact = ck.simulate(sol, None)
     segs = {it.name: round(ck.expected(it, exact, mu), 2) for it in plan_segments(sol)}
     res = diagnose(tmp_path, source, segs, mu,
@@ -1596,7 +1596,7 @@ def test_a_third_language_is_a_table(monkeypatch):
     monkeypatch.setitem(words.WORDS, "xx", words.EN)
     monkeypatch.setitem(cli_words.WORDS, "xx", cli_words.EN)
     monkeypatch.setitem(fmt.SENSE, "xx", fmt.SENSE["en"])  # the ground's own table
-    sol = solve_position(mechanism.load(PRESS))
+    sol = solve_position(load(PRESS))
     mistakes = ck.hypotheses(sol)
     assert len({m.kind for m in mistakes}) >= 10
     for mk in mistakes:

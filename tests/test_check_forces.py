@@ -23,7 +23,7 @@ from support import run
 from plans.check import forces as cf
 from plans.check import verdict as ck
 from plans.check.force_items import canonical
-from plans.cycle.analysis import analyse_cycle
+from plans.cycle import analyse_cycle
 from plans.errors import InputError
 from plans.forces.analysis import analyse_loads
 from plans.forces.summary import solve_forces

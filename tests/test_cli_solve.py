@@ -577,7 +577,7 @@ def test_the_note_works_out_theta_from_the_cranks_turns_and_names_the_swing(caps
     worked out from the crank's turn over the working and the return stroke, and ψ named
     as the angle between the rocker's extreme positions at its pivot. The turns are the
     cycle's own: φ_рх − 180° = θ."""
-    from plans.cycle.analysis import analyse_cycle
+    from plans.cycle import analyse_cycle
 
     c = analyse_cycle(variant(3))
     th = math.degrees(c.theta)
@@ -603,7 +603,7 @@ def test_a_courses_table_gives_an_offset_omega_and_a_clockwise_crank(tmp_path, c
     sense, the offset crank-slider r = 0.1, l = 0.4, e = 0.05 m has the closed forms'
     stroke H = √((l+r)² − e²) − √((l−r)² − e²) and θ = asin(e/(l−r)) − asin(e/(l+r)),
     and its crank turns clockwise at ω1 = 10.5 rad/s."""
-    from plans.cycle.analysis import analyse_cycle
+    from plans.cycle import analyse_cycle
 
     table = tmp_path / "course.toml"
     table.write_text('designation = "ТММ.КП.{n:02d}"\n[[variant]]\nn = 4\nkind = "crank-slider"\n'

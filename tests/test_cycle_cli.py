@@ -10,10 +10,11 @@ import numpy as np
 import pytest
 from support import NON_GRASHOF, run
 
-from plans.cycle.analysis import analyse_cycle
-from plans.kinematics.solver import WARN_SINE, Solver
-from plans.model import mechanism
+from plans.cycle import analyse_cycle
+from plans.kinematics.solver import Solver
+from plans.model import from_dict, load
 from plans.plan.solution import solve_position
+from plans.tolerances import WARN_SINE
 
 PRESS = "samples/press.toml"
 FOURBAR = "samples/fourbar.toml"
@@ -51,7 +52,7 @@ def test_press_json_agrees_with_the_plan_of_each_position(capsys):
     code, out, err = run(capsys, "cycle", PRESS, "--json", "--positions", "8")
     assert code == 0, err
     data = json.loads(out)
-    mech = mechanism.load(PRESS)
+    mech = load(PRESS)
     solver = Solver(mech)
     cyc = analyse_cycle(mech, n_positions=8, solver=solver)
     assert data["positions"] == 8 and len(data["rows"]) == 8
@@ -142,7 +143,7 @@ def test_csv_names_the_conditioning_figures_as_json_and_the_sweep_do(capsys):
     for r, j in zip(rows, data, strict=True):
         for key in keys:
             assert float(r[key]) == j["conditioning"]["figures"][key]
-    sw = Solver(mechanism.load(PRESS)).sweep(np.radians([r["phi_deg"] for r in data]))
+    sw = Solver(load(PRESS)).sweep(np.radians([r["phi_deg"] for r in data]))
     assert set(keys) == set(sw.sine) | set(sw.pivot)
 
 
@@ -176,7 +177,7 @@ def test_a_linkage_that_cannot_turn_fully_has_its_positions_inside_its_exact_lim
     data = json.loads(out)
     assert data["cycle"]["full_turn"] is False
     assert "cannot make a full turn" in data["numbering"]
-    mech = mechanism.load(FOURBAR)
+    mech = load(FOURBAR)
     a, ad = mech.driver.length, abs(mech.frame["D"] - mech.frame["A"])
     bc = abs(mech.links[2].points["C"] - mech.links[2].points["B"])
     cd = abs(mech.links[3].points["C"] - mech.links[3].points["D"])
@@ -195,11 +196,11 @@ def test_a_linkage_that_cannot_turn_fully_has_its_positions_inside_its_exact_lim
 
 
 def test_singular_positions_are_errors_with_no_values(capsys, monkeypatch):
-    import plans.kinematics.records
+    import plans.tolerances
 
     # make every position with |sin| < 0.7 count as singular, so the error path runs
-    monkeypatch.setattr(plans.kinematics.records, "SINGULAR_SINE", 0.7)
-    monkeypatch.setattr(plans.kinematics.records, "WARN_SINE", 0.9)
+    monkeypatch.setattr(plans.tolerances, "SINGULAR_SINE", 0.7)
+    monkeypatch.setattr(plans.tolerances, "WARN_SINE", 0.9)
     code, out, err = run(capsys, "cycle", FOURBAR, "--json", "--positions", "9")
     assert code == 2
     rows = json.loads(out)["rows"]
@@ -217,10 +218,10 @@ def test_singular_positions_are_errors_with_no_values(capsys, monkeypatch):
 
 
 def test_table_marks_warnings(capsys, monkeypatch):
-    import plans.kinematics.records
+    import plans.tolerances
 
     # the five positions' sines are 0.54 at the ends and 0.86 or more between: warn below 0.6
-    monkeypatch.setattr(plans.kinematics.records, "WARN_SINE", 0.6)
+    monkeypatch.setattr(plans.tolerances, "WARN_SINE", 0.6)
     code, out, _ = run(capsys, "cycle", FOURBAR, "--positions", "5")
     assert code == 0
     assert "position 0: warning: group 2–3 (RRR)" in out
@@ -242,7 +243,7 @@ def test_json_is_written_row_by_row_as_one_object():
     from plans.cycle.table import compute
 
     for n in (1, 2, 7):
-        chunks = list(json_chunks(compute(mechanism.load(PRESS), n)))
+        chunks = list(json_chunks(compute(load(PRESS), n)))
         assert len(chunks) == n + 2  # the head, a row each, the tail
         text = "".join(chunks)
         data = json.loads(text)
@@ -293,17 +294,19 @@ def test_cycle_pays_for_no_heavy_import(tmp_path):
     assert _modules_after(tmp_path, runs, heavy) == "[]"
 
 
-def test_solve_imports_neither_the_other_commands_nor_what_only_errors_need(tmp_path):
+def test_solve_imports_neither_the_other_commands_nor_the_drawing(tmp_path):
     """``plans solve`` is end-to-end time (README: ≤ 0.3 s), most of it imports: it
-    configures its own command only, and leaves the look-ups of a misspelt key (difflib),
-    the built-in variant table (importlib.resources) and a cryptographic hash (hashlib,
-    for a plan recipe's name) to the runs that need them."""
+    configures its own command only, and imports neither the drawing nor a package that
+    draws, plots or computes symbolically. (The standard library's modules an engine
+    module needs are imported at its top, as any other import: difflib, for a misspelt
+    key, costs some 2 ms.)"""
     from pathlib import Path
 
     press = str(Path(__file__).resolve().parent.parent / PRESS)
     runs = [["solve", press, "--json", "-o", str(tmp_path / "s.json")]]
     unpaid = ("plans.cli.report", "plans.cli.check", "plans.cli.bench", "plans.cli.sheet",
-              "difflib", "importlib.resources", "hashlib")
+              "plans.cli.check_batch", "drawing", "matplotlib", "shapely",
+              "svgwrite", "cairosvg", "sympy", "mpmath")
     assert _modules_after(tmp_path, runs, unpaid) == "[]"
 
 
@@ -314,7 +317,7 @@ def test_cycle_text_gives_every_crank_angle_in_the_files_convention(capsys):
 
     code, out, _ = run(capsys, "cycle", PRESS)
     assert code == 0
-    mech = mechanism.load(PRESS)
+    mech = load(PRESS)
     c = analyse_cycle(mech, 12)
     (line,) = [ln for ln in out.splitlines() if ln.startswith("extreme positions at φ1 = ")]
     shown = [float(x) for x in re.findall(r"([\d.]+)°", line.split(";")[0])]
@@ -333,7 +336,7 @@ def test_an_extreme_on_the_given_angle_is_one_turning_point(angle):
     from plans.model.scenes import SCENES
 
     text = SCENES["crank_slider_central"].toml.replace("angle_deg = 45", f"angle_deg = {angle}")
-    mech = mechanism.from_dict(__import__("tomllib").loads(text), "<central>")
+    mech = from_dict(__import__("tomllib").loads(text), "<central>")
     cyc = analyse_cycle(mech)
     assert not cyc.notes
     assert cyc.stroke == pytest.approx(0.2, abs=1e-12)  # H = 2R
@@ -345,11 +348,11 @@ def test_an_extreme_on_the_given_angle_is_one_turning_point(angle):
 
 
 def test_a_velocity_that_touches_zero_is_no_turning_point():
-    from plans.cycle.analysis import _signs
+    from plans.cycle import rate_signs
 
-    assert _signs(np.array([1.0, 0.0, 1.0, -1.0, 0.0, 0.0, -1.0, 0.0])).tolist() == [
+    assert rate_signs(np.array([1.0, 0.0, 1.0, -1.0, 0.0, 0.0, -1.0, 0.0])).tolist() == [
         1, 1, 1, -1, -1, -1, -1, 1]
-    assert _signs(np.zeros(4)).tolist() == [0, 0, 0, 0]
+    assert rate_signs(np.zeros(4)).tolist() == [0, 0, 0, 0]
 
 
 def test_a_cycle_from_an_angle_that_does_not_close_says_why(capsys, tmp_path):
@@ -410,7 +413,7 @@ def test_an_output_that_turns_fully_reads_its_angle_within_one_turn(capsys, tmp_
 
 
 def test_a_table_angle_moves_a_swing_by_whole_turns_and_keeps_it_continuous():
-    from plans.cycle.analysis import table_angle
+    from plans.cycle import table_angle
 
     swing = np.radians([-170.0, -178.0, -185.0, -190.0, -181.0])  # across ±180°
     got = np.degrees(table_angle(swing, full_turn=True))
@@ -434,7 +437,7 @@ def test_parallel_guides_end_the_cranks_range_wherever_the_samples_fall(given):
     from plans.model.scenes import SCENES
 
     toml = SCENES["tangent"].toml.replace("angle_deg = 25", f"angle_deg = {given}", 1)
-    mech = mechanism.from_dict(__import__("tomllib").loads(toml))
+    mech = from_dict(__import__("tomllib").loads(toml))
     c = analyse_cycle(mech)
     assert not c.full_turn
     # to within 1e-10 rad: a sine under SINGULAR_SINE (1e-10) is parallel, C at 2e9 m
@@ -449,8 +452,8 @@ def test_two_moving_guides_limit_the_crank_where_they_turn_parallel():
     toml = SCENES["prp_two_moving"].toml
     got = []
     for shift in (0.0, 0.05, 0.0137):
-        mech = mechanism.from_dict(__import__("tomllib").loads(toml))
-        mech = mechanism.from_dict(__import__("tomllib").loads(toml.replace(
+        mech = from_dict(__import__("tomllib").loads(toml))
+        mech = from_dict(__import__("tomllib").loads(toml.replace(
             f"angle_deg = {math.degrees(mech.driver.phi):g}",
             f"angle_deg = {math.degrees(mech.driver.phi) + shift:g}", 1)))
         c = analyse_cycle(mech)
@@ -481,7 +484,7 @@ def test_a_sine_is_never_above_one(capsys, tmp_path):
     code, out, _ = run(capsys, "cycle", path, "--json", "--positions", "360")
     figures = [v for r in json.loads(out)["rows"] for v in r["conditioning"]["figures"].values()]
     assert max(figures) == 1.0
-    mech = mechanism.from_dict(__import__("tomllib").loads(SCENES["slotted_oscillating"].toml))
+    mech = from_dict(__import__("tomllib").loads(SCENES["slotted_oscillating"].toml))
     sw = Solver(mech).sweep(np.radians(np.arange(0.0, 360.0, 1.0)))
     assert max(float(s.max()) for s in sw.sine.values()) == 1.0
     assert max(Solver(mech).solve_one(math.radians(a)).groups[0].sine_at() for a in range(360)) == 1.0
@@ -623,7 +626,7 @@ def test_csv_converts_its_rows_a_stretch_at_a_time():
     from plans.cli.cycle import csv_chunks
     from plans.cycle.table import compute
 
-    t = compute(mechanism.load(PRESS), 6000)
+    t = compute(load(PRESS), 6000)
     whole = "".join(csv_chunks(t, rows=6000))
     tracemalloc.start()
     try:
@@ -675,7 +678,7 @@ def test_plot_draws_the_outputs_s_v_a_and_every_links_omega_epsilon(capsys, monk
     assert code == 0, err
     assert plot.read_bytes() == f"<{fmt} plot>".encode()
     ((call,),) = [calls]
-    assert call["fmt"] == fmt and call["title"] == mechanism.load(PRESS).name
+    assert call["fmt"] == fmt and call["title"] == load(PRESS).name
     assert call["x_label"] == "φ1, degrees turned from position 0"
     assert call["angle"] == pytest.approx([15.0 * k for k in range(24)])
     data = json.loads(table.read_text("utf-8"))
@@ -715,10 +718,10 @@ def test_plot_of_a_rocker_draws_its_angle_in_degrees(capsys, monkeypatch, tmp_pa
 
 
 def test_plot_leaves_the_values_of_a_singular_position_out(capsys, monkeypatch, tmp_path):
-    import plans.kinematics.records
+    import plans.tolerances
 
-    monkeypatch.setattr(plans.kinematics.records, "SINGULAR_SINE", 0.7)
-    monkeypatch.setattr(plans.kinematics.records, "WARN_SINE", 0.9)
+    monkeypatch.setattr(plans.tolerances, "SINGULAR_SINE", 0.7)
+    monkeypatch.setattr(plans.tolerances, "WARN_SINE", 0.9)
     calls = _plot_spy(monkeypatch)
     code, out, _ = run(capsys, "cycle", FOURBAR, "--json", "--positions", "9",
                        "--plot", tmp_path / "f.png")

@@ -12,7 +12,7 @@ from drawing.scene import Arrow, Polyline, Segment, Text, flatten
 from drawing.sheet1 import DIAGRAMS, build_sheet
 from drawing.text import text_box
 from drawing.views import NUMBER_GAPS, WORDS, diagrams_view
-from plans.cycle.analysis import analyse_cycle
+from plans.cycle import analyse_cycle
 from plans.model.scenes import SCENES
 from plans.model.variants import variant
 

@@ -22,7 +22,7 @@ from drawing.formula import Frac, Radical, Script, Vector, parse, plain, show, s
 from drawing.sheet.forms import FORM2, FORM2A  # noqa: E402
 from drawing.sheet.frame import TitleBlock  # noqa: E402
 from plans.cli.report import markdown  # noqa: E402
-from plans.model import mechanism, variants  # noqa: E402
+from plans.model import load, variants  # noqa: E402
 from tests.support import run  # noqa: E402
 
 M = "{http://schemas.openxmlformats.org/officeDocument/2006/math}"
@@ -44,7 +44,7 @@ class _Args:
 def note(source: str, lang: str) -> str:
     """The note's Markdown, as ``plans report`` writes it."""
     mech = (variants.read_table(None).variant(int(source[1:])) if source.startswith("v")
-            else mechanism.load(f"samples/{source}.toml"))
+            else load(f"samples/{source}.toml"))
     return markdown(_Args(lang), mech)[0]
 
 

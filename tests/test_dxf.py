@@ -23,7 +23,7 @@ from drawing.scene import Arrow, Blank, Circle, Layer, Page, Scene, Segment, Tex
 from drawing.sheet1 import build_sheet  # noqa: E402
 from drawing.styles import LineType, Style  # noqa: E402
 from drawing.svg import to_svg  # noqa: E402
-from plans.model import mechanism, variants  # noqa: E402
+from plans.model import load, variants  # noqa: E402
 from tests.support import run  # noqa: E402
 
 SVG = "{http://www.w3.org/2000/svg}"
@@ -34,7 +34,7 @@ TOL = 0.1  # mm: the acceptance's bound for every line end and text anchor
 def sheet(source: str, fmt: str = "A1", lang: str = "ru"):
     """(scene, sheet, SVG text, DXF bytes, the document read back) of a sample or a variant."""
     mech = (variants.read_table(None).variant(int(source[1:])) if source.startswith("v")
-            else mechanism.load(f"samples/{source}.toml"))
+            else load(f"samples/{source}.toml"))
     scene, sh, _ = build_sheet(mech, fmt, lang)
     data = dxf.to_dxf(scene, sh, title=mech.name_in(lang), lang=lang)
     return scene, sh, to_svg(scene, sh), data, ezdxf.read(_stream(data))

@@ -33,19 +33,32 @@ def seed001_loads() -> Loads:
     """Seed 001's task 1 on its worked four-bar: 5 kg per metre of link (the coupler BE
     counts BC + CE), centres mid-link, g = 9.8, inertia forces only, and the useful
     resistance 100·G2 at E against V_E."""
-    return Loads(g=9.8, masses={1: Mass(1, 5 * 0.0625, 0.0, "S1"), 2: Mass(2, 5 * (0.21 + 0.105), 0.0, "S2"),
-                                3: Mass(3, 5 * 0.1025, 0.0, "S3")},
-                 forces=(PointForce("F_пс", "E", link=2, weight_of=2, times=100, rule="against velocity"),),
-                 inertia="forces")
+    return Loads(
+        g=9.8,
+        masses={
+            1: Mass(1, 5 * 0.0625, 0.0, "S1"),
+            2: Mass(2, 5 * (0.21 + 0.105), 0.0, "S2"),
+            3: Mass(3, 5 * 0.1025, 0.0, "S3"),
+        },
+        forces=(PointForce("F_пс", "E", link=2, weight_of=2, times=100, rule="against velocity"),),
+        inertia="forces",
+    )
 
 
 #: the press's loads (seed 000 §1.1, 1.6–1.8): m1 = 2 kg at O, the block massless, m3 = 10,
 #: J_S3 = 0.4, m4 = 3, J_S4 = 0.08, m5 = 5; P(S) up to Pmax = 2500 N: linear from 0 over the
 #: first 66.3 % of the working stroke, then Pmax (the seed's graph is a missing figure; this
 #: shape gives its reading P = 1100 N at the worked position)
-PRESS_LOADS = Loads(g=9.81, masses={1: Mass(1, 2.0, 0.0, "O"), 3: Mass(3, 10.0, 0.4, "S3"),
-                                    4: Mass(4, 3.0, 0.08, "S4"), 5: Mass(5, 5.0, 0.0, "D")},
-                    resistance=Resistance((0.0, 0.663, 1.0), (0.0, 2500.0, 2500.0), relative=True))
+PRESS_LOADS = Loads(
+    g=9.81,
+    masses={
+        1: Mass(1, 2.0, 0.0, "O"),
+        3: Mass(3, 10.0, 0.4, "S3"),
+        4: Mass(4, 3.0, 0.08, "S4"),
+        5: Mass(5, 5.0, 0.0, "D"),
+    },
+    resistance=Resistance((0.0, 0.663, 1.0), (0.0, 2500.0, 2500.0), relative=True),
+)
 
 
 @pytest.fixture(scope="module")
@@ -84,10 +97,25 @@ def _agree(fa, tol=TOL):
 
 
 def _random_loads(mech, rng: random.Random, spread: float = 1.0) -> Loads:
-    masses = {lid: Mass(lid, rng.uniform(0.1, 10) * spread ** rng.uniform(-1, 1), rng.uniform(0, 0.5),
-                        rng.choice(sorted(link.points))) for lid, link in mech.links.items()}
-    forces = tuple(PointForce(f"F{lid}", rng.choice(sorted(mech.links[lid].points)), magnitude=rng.uniform(1, 500),
-                              link=lid, angle=rng.uniform(0, 2 * math.pi)) for lid in mech.links)
+    masses = {
+        lid: Mass(
+            lid,
+            rng.uniform(0.1, 10) * spread ** rng.uniform(-1, 1),
+            rng.uniform(0, 0.5),
+            rng.choice(sorted(link.points)),
+        )
+        for lid, link in mech.links.items()
+    }
+    forces = tuple(
+        PointForce(
+            f"F{lid}",
+            rng.choice(sorted(mech.links[lid].points)),
+            magnitude=rng.uniform(1, 500),
+            link=lid,
+            angle=rng.uniform(0, 2 * math.pi),
+        )
+        for lid in mech.links
+    )
     moments = (LinkMoment("M", max(mech.links), rng.uniform(-50, 50)),)
     return Loads(g=9.81, masses=masses, forces=forces, moments=moments)
 
@@ -122,8 +150,9 @@ def test_stiff_loads_six_decades_apart_still_agree_to_1e12():
             _agree(analyse(sol, _random_loads(mech, rng, spread=1e3)))
 
 
-HYP = settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.filter_too_much,
-                                                                       HealthCheck.too_slow])
+HYP = settings(
+    max_examples=30, deadline=None, suppress_health_check=[HealthCheck.filter_too_much, HealthCheck.too_slow]
+)
 
 
 def _hyp_check(mech, seed):
@@ -252,7 +281,7 @@ def test_press_resistance_reads_the_seeds_1100_newtons_on_the_working_stroke(pre
 
 
 def test_press_balancing_moment_by_groups_lever_and_virtual_power(press):
-    _, sol, _, fa = press
+    _, _sol, _, fa = press
     _agree(fa)
     assert fa.M_y == pytest.approx(226.920396063, rel=1e-9)
     assert [g.group.label for g in fa.groups] == ["group 4–5 (RRP)", "group 2–3 (RPR)"]
@@ -287,7 +316,7 @@ def test_the_sweep_gives_the_single_positions_values(press):
 
 
 def test_a_resistance_graph_beyond_the_stroke_is_refused(press):
-    sv, sol, stroke, _ = press
+    _sv, sol, stroke, _ = press
     bad = Loads(resistance=Resistance((0.0, 0.6), (0.0, 100.0)))
     with pytest.raises(InputError, match="beyond the stroke H"):
         analyse(sol, bad, stroke)
@@ -298,22 +327,32 @@ def test_a_resistance_graph_beyond_the_stroke_is_refused(press):
 POINTS = {1: {"O", "A"}, 2: {"A"}, 3: {"B", "C", "S3"}}
 
 
-@pytest.mark.parametrize("raw, where, says", [
-    ({"links": {"3": {"mass": -10}}}, "loads.links.3.mass", "negative mass"),
-    ({"links": {"3": {"mass": 1, "centre": "Q"}}}, "loads.links.3.centre", "unknown point"),
-    ({"links": {"7": {"mass": 1}}}, "loads.links.7", "not a moving link"),
-    ({"links": {"2": {"mass": 1}}}, "loads.links.2", "centre missing"),
-    ({"forces": [{"point": "Z", "magnitude": 5, "angle_deg": 0}]}, "loads.forces[0].point", "unknown point"),
-    ({"forces": [{"point": "C", "magnitude": 5}]}, "loads.forces[0]", "give direction"),
-    ({"forces": [{"point": "C", "magnitude": 5, "direction": "sideways"}]}, "loads.forces[0].direction",
-     "is not one of"),
-    ({"resistance": {"s": [0, 0.3, 0.2], "P": [0, 1, 2]}}, "loads.resistance.s", "must increase"),
-    ({"resistance": {"s": [0, 0.3], "P": [0]}}, "loads.resistance", "one P for each"),
-    ({"resistance": {"fraction": [0, 1.5], "P": [0, 1]}}, "loads.resistance.fraction", "at most 1"),
-    ({"resistance": {"s": [0, 0.3], "P": [0, -5]}}, "loads.resistance.P", "negative"),
-    ({"g": 0}, "loads.g", "must be positive"),
-    ({"massses": {}}, "loads.massses", "unknown key"),
-])
+@pytest.mark.parametrize(
+    "raw, where, says",
+    [
+        ({"links": {"3": {"mass": -10}}}, "loads.links.3.mass", "negative mass"),
+        ({"links": {"3": {"mass": 1, "centre": "Q"}}}, "loads.links.3.centre", "unknown point"),
+        ({"links": {"7": {"mass": 1}}}, "loads.links.7", "not a moving link"),
+        ({"links": {"2": {"mass": 1}}}, "loads.links.2", "centre missing"),
+        (
+            {"forces": [{"point": "Z", "magnitude": 5, "angle_deg": 0}]},
+            "loads.forces[0].point",
+            "unknown point",
+        ),
+        ({"forces": [{"point": "C", "magnitude": 5}]}, "loads.forces[0]", "give direction"),
+        (
+            {"forces": [{"point": "C", "magnitude": 5, "direction": "sideways"}]},
+            "loads.forces[0].direction",
+            "is not one of",
+        ),
+        ({"resistance": {"s": [0, 0.3, 0.2], "P": [0, 1, 2]}}, "loads.resistance.s", "must increase"),
+        ({"resistance": {"s": [0, 0.3], "P": [0]}}, "loads.resistance", "one P for each"),
+        ({"resistance": {"fraction": [0, 1.5], "P": [0, 1]}}, "loads.resistance.fraction", "at most 1"),
+        ({"resistance": {"s": [0, 0.3], "P": [0, -5]}}, "loads.resistance.P", "negative"),
+        ({"g": 0}, "loads.g", "must be positive"),
+        ({"massses": {}}, "loads.massses", "unknown key"),
+    ],
+)
 def test_bad_loads_are_located(raw, where, says):
     pr = Problems("m.toml")
     read_loads(raw, POINTS, pr)
@@ -394,3 +433,126 @@ def test_a_mechanism_without_loads_is_told_what_to_add(capsys, tmp_path):
     # the kinematic commands do not need them
     code, out, _ = run(capsys, "solve", path)
     assert code == 0 and "Force" not in out
+
+
+@st.composite
+def scotch_yokes(draw):
+    """A crank driving a block in a yoke's slot (RPP): the yoke slides on a fixed guide at
+    a random angle, its slot at a random angle to it (not parallel)."""
+    r = draw(st.floats(0.02, 0.2))
+    gamma = draw(st.floats(-60, 60))
+    slot = draw(st.floats(30, 150))
+    e = draw(st.floats(-0.5, 0.5)) * r
+    omega = draw(st.floats(1, 50))
+    u = np.exp(1j * math.radians(gamma))
+    G = 1j * u * e
+    text = f"""
+[frame]
+O = [0.0, 0.0]
+[driver]
+link = 1
+angle_deg = {draw(st.floats(0, 359))!r}
+omega = {omega!r}
+[links.1]
+axis = ["O", "A"]
+points = {{ A = {r!r} }}
+[links.2]
+points = {{ A = 0 }}
+[links.3]
+axis = ["D", "E"]
+points = {{ E = {3 * r!r}, S3 = [{1.5 * r!r}, {0.3 * r!r}] }}
+[[sliders]]
+link = 2
+guide = {{ link = 3, angle_deg = {slot!r} }}
+[[sliders]]
+link = 3
+point = "D"
+guide = {{ link = 0, through = [{float(G.real)!r}, {float(G.imag)!r}], angle_deg = {gamma!r} }}
+"""
+    return _hyp_mech(text)
+
+
+@st.composite
+def cross_slides(draw):
+    """A cross-slide (PRP) whose two guides both move: one on the crank, one on a slotted
+    link, at random offsets and angles."""
+    r = draw(st.floats(0.05, 0.15))
+    b = draw(st.floats(1.5 * r, 4 * r))
+    slant, across = draw(st.floats(60, 120)), draw(st.floats(0.2, 0.8)) * r
+    text = f"""
+[frame]
+O = [0.0, 0.0]
+B = [0.0, {-b!r}]
+[driver]
+link = 1
+angle_deg = {draw(st.floats(0, 359))!r}
+omega = {draw(st.floats(1, 30))!r}
+[links.1]
+axis = ["O", "A"]
+points = {{ A = {r!r} }}
+[links.2]
+points = {{ A = 0 }}
+[links.3]
+axis = ["B", "C"]
+points = {{ C = {5 * r!r} }}
+[links.4]
+points = {{ G = 0 }}
+[links.5]
+points = {{ G = 0 }}
+[[sliders]]
+link = 2
+guide = {{ link = 3 }}
+[[sliders]]
+link = 4
+point = "G"
+guide = {{ link = 1, angle_deg = {slant!r}, through = [{across!r}, 0.0] }}
+[[sliders]]
+link = 5
+point = "G"
+guide = {{ link = 3, offset = {draw(st.floats(-0.3, 0.3)) * r!r} }}
+"""
+    return _hyp_mech(text)
+
+
+def _hyp_mech(text: str):
+    import tomllib
+
+    from plans.model import from_dict
+
+    try:
+        mech = from_dict(tomllib.loads(text), "<hypothesis>")
+        Solver(mech)
+    except (InputError, SingularPlanError, ValueError):
+        assume(False)
+    return mech
+
+
+@HYP
+@given(scotch_yokes(), st.integers(0, 10**6))
+def test_random_scotch_yokes_force_plans(mech, seed):
+    """RPP: random yokes, their slot at any angle to their guide."""
+    _hyp_check(mech, seed)
+
+
+@HYP
+@given(cross_slides(), st.integers(0, 10**6))
+def test_random_cross_slides_force_plans(mech, seed):
+    """PRP: a cross-slide on two moving guides, at random offsets and angles."""
+    _hyp_check(mech, seed)
+
+
+def test_an_inertia_moment_shifts_the_inertia_force_where_the_file_asks(capsys, tmp_path):
+    """couples = "shift": the note takes M_Φ with Φ, its line shifted by h = M_Φ/Φ."""
+    from support import run
+
+    path = tmp_path / "press.toml"
+    from pathlib import Path
+
+    path.write_text(Path("samples/press.toml").read_text("utf-8").replace(
+        'couples = "pair"', 'couples = "shift"'), "utf-8")
+    code, out, err = run(capsys, "report", path)
+    assert code == 0, err
+    sol = solve_position(load(path))
+    h3 = 0.4 * abs(sol.epsilon[3]) / (10 * abs(sol.scalar.acceleration["S3"]))
+    assert f"h = M_Φ3 / Φ3 = 8.2749 / 77.8 = {h3:.4f} m" in out
+    assert "P_Φ3" not in out

@@ -33,7 +33,7 @@ from hypothesis import strategies as st
 from plans.cli import main
 from plans.errors import InputError, PlansError
 from plans.kinematics.solver import Solver
-from plans.model.mechanism import Mechanism, from_dict
+from plans.model import Mechanism, from_dict
 from plans.model.structure import DyadKind
 from plans.plan.solution import solve_position
 

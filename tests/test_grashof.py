@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 from support import run
 
-from plans.cycle.analysis import analyse_cycle, grashof_class
-from plans.model.mechanism import from_dict
+from plans.cycle import analyse_cycle, grashof_class
+from plans.model import from_dict
 
 
 def fourbar(coupler_id: int, rocker_id: int, crank: float, coupler: float, rocker: float,

@@ -26,7 +26,7 @@ from support import upright_fourbar
 
 from plans.errors import InputError
 from plans.kinematics.solver import Motion, Solver
-from plans.model.mechanism import Mechanism, from_dict
+from plans.model import Mechanism, from_dict
 from plans.model.scenes import SCENES, Scene
 from plans.model.structure import DyadKind, analyse
 from plans.verify.reference import (

@@ -257,22 +257,23 @@ def test_plan_recipe_made_once_gives_the_plans_made_afresh(name):
 def test_plan_recipe_is_worked_out_again_where_a_similarity_base_degenerates():
     """A recipe whose similarity step divides by two points that have met is not
     followed blindly: the plan is worked out again there (and the result is finite)."""
-    from plans.plan.solution import _SIMILAR, _compile, solve_position
+    from plans.plan import recipes, solve_position
+    from plans.plan.recipe import SIMILAR, compile_steps
 
     mech = SCENES["press"].mechanism()
     sv = Solver(mech)
     good = solve_position(mech, 0.3, solver=sv)
-    (recipe,) = sv.cache[("plan recipes", "velocity")]
+    (recipe,) = recipes(sv, "velocity")
     steps = list(recipe.steps)
-    k = next(i for i, st in enumerate(steps) if st[0] == _SIMILAR)
+    k = next(i for i, st in enumerate(steps) if st[0] == SIMILAR)
     st = steps[k]
-    steps[k] = (st[0], st[1], st[2], st[3], st[3]) + st[5:]  # base b1 := b0: divides by 0
-    broken = _compile(recipe.kind, recipe.pole, recipe.tip, steps, recipe.ends)
-    sv.cache[("plan recipes", "velocity")] = [recipe._replace(steps=tuple(steps), follow=broken)]
+    steps[k] = (st[0], st[1], st[2], st[3], st[3], *st[5:])  # base b1 := b0: divides by 0
+    broken = compile_steps(recipe.kind, recipe.pole, recipe.tip, steps, recipe.ends)
+    recipes(sv, "velocity")[:] = [recipe._replace(steps=tuple(steps), follow=broken)]
     again = solve_position(mech, 0.3, solver=sv)
     assert again.velocity.points == good.velocity.points
     # worked out afresh and kept first; the broken one stays behind it
-    fresh, kept = sv.cache[("plan recipes", "velocity")]
+    fresh, kept = recipes(sv, "velocity")
     assert fresh.steps == recipe.steps and kept.steps == tuple(steps)
 
 
@@ -282,13 +283,13 @@ def test_a_compiled_recipe_shows_its_generated_line_in_a_traceback():
     import linecache
     import traceback
 
-    from plans.plan.solution import solve_position
+    from plans.plan import recipes, solve_position
 
     mech = SCENES["press"].mechanism()
     one, two = Solver(mech), Solver(mech)
     solve_position(mech, 0.3, solver=one)
     solve_position(mech, 0.3, solver=two)
-    (r1,), (r2,) = (sv.cache[("plan recipes", "velocity")] for sv in (one, two))
+    (r1,), (r2,) = (recipes(sv, "velocity") for sv in (one, two))
     assert r1.follow is not r2.follow and r1.follow.source == r2.follow.source
     with pytest.raises(KeyError) as info:
         r1.follow({}, [], {}, None)  # no solved vectors at all
@@ -302,7 +303,7 @@ def test_a_mechanism_whose_points_meet_at_some_angles_keeps_one_recipe_for_each_
     """The Scotch yoke's recipe changes where two of its points meet (at φ1 = 0); over
     angles that go back and forth between the two cases each recipe is worked out (and
     compiled) once."""
-    from plans.plan.solution import solve_position
+    from plans.plan import recipes, solve_position
 
     mech = SCENES["scotch_yoke"].mechanism()
     sv = Solver(mech)
@@ -314,7 +315,7 @@ def test_a_mechanism_whose_points_meet_at_some_angles_keeps_one_recipe_for_each_
             assert a.velocity == b.velocity and a.acceleration == b.acceleration
             assert a.segments == b.segments and a.warnings == b.warnings
     # every recipe worked out is kept, so their number is the number of work-outs
-    kept = {kind: len(sv.cache[("plan recipes", kind)]) for kind in ("velocity", "acceleration")}
+    kept = {kind: len(recipes(sv, kind)) for kind in ("velocity", "acceleration")}
     assert max(kept.values()) == 2  # the two cases, and no more
 
 
@@ -376,7 +377,7 @@ def test_the_sweep_gives_each_slotted_links_pivot_figure_as_the_cycle_does(name)
         np.testing.assert_allclose(sw.pivot[key], [r.figures[key] for r in rows], rtol=1e-14)
         g = next(g for g in sv.structure.groups if f"{g.label} pivot" == key)
         P, Q = sw.position[g.P], sw.position[g.Q]
-        O = mech.frame[mech.driver.pivot]
-        by_hand = np.abs(P - Q) / (np.abs(Q - O) + np.abs(P - O))
+        crank = mech.frame[mech.driver.pivot]
+        by_hand = np.abs(P - Q) / (np.abs(Q - crank) + np.abs(P - crank))
         np.testing.assert_allclose(sw.pivot[key], by_hand, rtol=1e-15)
         assert 0 < sw.pivot[key].min() < sw.pivot[key].max() <= 1 + 1e-15  # the triangle OPQ

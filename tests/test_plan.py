@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from plans.model.mechanism import load
+from plans.model import load
 from plans.model.variants import variant
 from plans.plan.solution import solve_position
 
@@ -187,7 +187,7 @@ def test_a_guide_on_a_link_that_only_translates_has_no_coriolis_term():
     import numpy as np
 
     from plans.kinematics.solver import Solver
-    from plans.model.mechanism import from_dict
+    from plans.model import from_dict
 
     mech = from_dict(tomllib.loads(_yoke_and_rocker()), "yoke_rocker")
     assert mech.translating() == {0, 2, 3, 5}  # the yoke and the blocks in its slots
@@ -254,7 +254,7 @@ def test_a_real_small_segment_is_not_taken_for_rounding():
     """1e-4° from the press's extreme position V_A3B is 5e-6 m/s and a^n_A3B = V²/l is
     6.6e-11 m/s²: tiny but real, not two equal vectors subtracted. The plan keeps it, so
     the note's a^n and its segment bn1 agree."""
-    from plans.model.mechanism import load
+    from plans.model import load
 
     mech = load("samples/press.toml").at_file_angle(250.06763)
     sol = solve_position(mech)
@@ -268,7 +268,7 @@ def test_a_rocker_at_rest_has_no_velocity_left_on_its_plan():
     """Variant 3 at its cycle's position 0, an extreme position: the rocker is at rest,
     and pc, dc had read 1.599e-12 mm on the sheet's table (1.2e-14 of the plan's longest
     vector, just above the 1e-14 rounding was taken to reach)."""
-    from plans.cycle.analysis import analyse_cycle
+    from plans.cycle import analyse_cycle
     from plans.kinematics.solver import Solver
     from plans.model.variants import variant
 
@@ -400,7 +400,7 @@ def test_one_position_refuses_what_is_not_one_angle_in_its_own_words(phi, error,
 def test_a_file_name_given_for_a_mechanism_is_told_to_be_loaded():
     """Solver("press.toml") and solve_position("press.toml") were AttributeError: 'str'
     object has no attribute 'revolutes', from deep in the structure analysis."""
-    from plans.cycle.analysis import analyse_cycle
+    from plans.cycle import analyse_cycle
     from plans.kinematics.solver import Solver
 
     for call in (Solver, solve_position, analyse_cycle):

@@ -22,7 +22,7 @@ from drawing.styles import LineType
 from drawing.svg import to_svg
 from drawing.text import text_box
 from drawing.views import JOINT_R
-from plans.model.mechanism import load
+from plans.model import load
 from plans.model.scenes import SCENES
 from plans.model.variants import variant, variant_numbers
 
@@ -237,7 +237,7 @@ def test_no_text_sits_on_a_vector_arrow(key):
 def test_a_rockers_swing_is_dimensioned_on_the_plan_of_positions():
     """A crank-rocker's plan of positions carries ψ between the two extreme positions of
     the rocker, with the value the cycle computes; a slider's carries H instead."""
-    from plans.cycle.analysis import analyse_cycle
+    from plans.cycle import analyse_cycle
 
     rockers = [n for n in variant_numbers() if n % 2]  # odd variants are four-bars
     checked = 0
@@ -329,7 +329,7 @@ def test_trajectories_span_the_positions_drawn_when_the_crank_cannot_turn():
     trajectories must cover every position drawn, not stop at the file's angle."""
     import numpy as np
 
-    from plans.cycle.analysis import analyse_cycle
+    from plans.cycle import analyse_cycle
     from plans.cycle.positions import trajectory_angles
     from plans.kinematics.solver import Solver
 
@@ -383,7 +383,7 @@ def test_a_scotch_yokes_slot_is_drawn_across_its_axis_and_its_block_slides_along
     import numpy as np
 
     from drawing.views import positions as V
-    from plans.cycle.analysis import analyse_cycle
+    from plans.cycle import analyse_cycle
     from plans.kinematics.solver import Solver
     from plans.model.scenes import SCENES
     from plans.plan.solution import solve_position
@@ -453,23 +453,26 @@ def test_the_plan_of_positions_is_sized_by_what_it_draws(name, low, high):
     positions drawn does not shrink the drawing. solve and the sheet use one rule."""
     import numpy as np
 
-    from plans.cycle.analysis import analyse_cycle
+    from plans.cycle import analyse_cycle
     from plans.cycle.positions import drawn
     from plans.kinematics.solver import Solver
     from plans.model.scenes import SCENES
-    from plans.plan.solution import cycle_extent, solve_position
+    from plans.plan.solution import solve_position
     from plans.scales import choose_mu_l
 
     mech = SCENES[name].mechanism()
     solver = Solver(mech)
-    extent = drawn(solver, analyse_cycle(mech, 12, solver=solver)).extent
+    cycle = analyse_cycle(mech, 12, solver=solver)
+    extent = drawn(solver, cycle).extent
     m = solver.solve(mech.driver.phi + np.linspace(0, 2 * np.pi, 720))
     z = np.concatenate([np.asarray(v)[m.valid] for v in m.position.values()])
     whole = max(np.ptp(z.real), np.ptp(z.imag))
     assert low * whole <= extent <= high * whole
     assert np.isfinite(extent) and extent > 0
-    assert cycle_extent(solver) == extent
-    assert solve_position(mech).mu_l == mech.scales.get("mu_l", choose_mu_l(extent))
+    # solve sizes the plan of positions of the cycle it is given as the sheet does
+    assert drawn(Solver(mech), analyse_cycle(mech)).extent == extent
+    assert (solve_position(mech, cycle=analyse_cycle(mech)).mu_l
+            == mech.scales.get("mu_l", choose_mu_l(extent)))
 
 
 def test_solve_sizes_the_tangent_mechanism_as_the_sheet_does(capsys):
@@ -488,7 +491,7 @@ def _drawn_at(name_or_mech, angles=None):
     """(mech, positions at the cycle's angles and at the given one) of a built-in scene."""
     import numpy as np
 
-    from plans.cycle.analysis import analyse_cycle
+    from plans.cycle import analyse_cycle
     from plans.kinematics.solver import Solver
     from plans.model.scenes import SCENES
 
@@ -526,7 +529,7 @@ def test_a_point_named_like_a_centre_of_mass_but_carrying_a_pair_stays_on_the_ba
     import tomllib
 
     from drawing.views import positions as V
-    from plans.model.mechanism import from_dict
+    from plans.model import from_dict
     from plans.model.scenes import SCENES
 
     text = SCENES["scotch_yoke"].toml.replace('"D"', '"S4"')
@@ -728,7 +731,7 @@ def test_the_stroke_is_dimensioned_along_its_guide_at_its_true_length(scene):
 
     from drawing.scene import Arrow, flatten
     from drawing.text import text_box
-    from plans.cycle.analysis import analyse_cycle
+    from plans.cycle import analyse_cycle
     from plans.model.scenes import SCENES
 
     mech = SCENES[scene].mechanism()
@@ -764,7 +767,7 @@ def test_an_output_link_that_turns_all_the_way_gets_its_diagrams():
     нет хода выходного звена». ψ(φ), ω(φ), ε(φ) are drawn; ψ grows by one full turn."""
     from drawing.scene import Polyline, Segment
     from drawing.views import diagrams_view
-    from plans.cycle.analysis import analyse_cycle
+    from plans.cycle import analyse_cycle
     from plans.model.scenes import SCENES
 
     mech = SCENES["slotted_rotating"].mechanism()
@@ -1347,7 +1350,7 @@ def test_the_angular_diagrams_say_which_sense_is_positive(name, tmp_path):
     import numpy as np
 
     from drawing.views import WORDS, diagram_curves, diagrams_view
-    from plans.cycle.analysis import analyse_cycle
+    from plans.cycle import analyse_cycle
     from plans.kinematics.solver import Solver
     from plans.model.scenes import SCENES
     from plans.plan.solution import solve_position
@@ -1672,7 +1675,7 @@ def test_the_diagrams_axes_name_the_output_point_or_link():
     and a sheet has ω of several links. They now read s_D, v_D, a_D of the slider's
     point, ψ3, ω3, ε3 of the rocker."""
     from drawing.views import diagrams_view
-    from plans.cycle.analysis import analyse_cycle
+    from plans.cycle import analyse_cycle
 
     for mech, names in ((load("samples/press.toml"), ("s_{D}, м", "v_{D}, м/с", "a_{D}, м/с²")),
                         (variant(3), ("ψ_{3}, рад", "ω_{3}, рад/с", "ε_{3}, рад/с²"))):

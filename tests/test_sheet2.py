@@ -23,8 +23,8 @@ from drawing.views.arrows import rays
 from drawing.views.forces import force_markup, polygon_equation
 from drawing.views.lever import arm_numbers
 from plans.fmt import num
+from plans.model import from_dict, load
 from plans.model.loads import Loads, Mass
-from plans.model.mechanism import from_dict, load
 from plans.model.scenes import SCENES
 from plans.model.variants import variant
 

@@ -20,11 +20,12 @@ import tomllib
 import numpy as np
 import pytest
 
-from plans.cycle.analysis import analyse_cycle, summary
+from plans.cycle import analyse_cycle, summary
 from plans.cycle.table import compute, conditioning
-from plans.kinematics.solver import WARN_SINE, Solver
-from plans.model.mechanism import from_dict, load
+from plans.kinematics.solver import Solver
+from plans.model import from_dict, load
 from plans.model.scenes import SAMPLES, SCENES
+from plans.tolerances import WARN_SINE
 from plans.verify import reference
 
 EPS = np.finfo(float).eps

@@ -5,7 +5,7 @@ from pathlib import Path
 import pytest
 
 from plans.errors import StructureError
-from plans.model.mechanism import from_dict, load
+from plans.model import from_dict, load
 from plans.model.structure import DyadKind, analyse
 from plans.model.variants import variant
 
@@ -124,7 +124,8 @@ def test_a_name_may_be_given_in_each_language(name, en, ru):
     import tomllib
 
     text = (Path(__file__).resolve().parent.parent / "samples" / "fourbar.toml").read_text("utf-8")
-    text = text.replace('name = { en = "Four-bar linkage", ru = "Шарнирный четырёхзвенник" }', f"name = {name}")
+    text = text.replace('name = { en = "Four-bar linkage", ru = "Шарнирный четырёхзвенник" }',
+                        f"name = {name}")
     mech = from_dict(tomllib.loads(text), "f.toml")
     assert (mech.name, mech.name_in("en"), mech.name_in("ru")) == (en, en, ru)
 
@@ -140,7 +141,8 @@ def test_a_bad_name_table_is_located(name, message):
     from plans.errors import InputError
 
     text = (Path(__file__).resolve().parent.parent / "samples" / "fourbar.toml").read_text("utf-8")
-    text = text.replace('name = { en = "Four-bar linkage", ru = "Шарнирный четырёхзвенник" }', f"name = {name}")
+    text = text.replace('name = { en = "Four-bar linkage", ru = "Шарнирный четырёхзвенник" }',
+                        f"name = {name}")
     with pytest.raises(InputError) as err:
         from_dict(tomllib.loads(text), "f.toml")
     assert message in str(err.value)

@@ -18,7 +18,7 @@ from drawing.labels import LabelRequest
 from drawing.scene import Circle, Hatch, Item, Polyline, Segment, Text, name_markup
 from drawing.styles import LineType
 from drawing.text import text_width
-from drawing.views.common import JOINT_R, LETTER, View, bbox, finish, shifted
+from drawing.views.common import JOINT_R, LETTER, View, bbox, captioned, finish, shifted
 from drawing.views.positions import link_segments
 from plans.fmt import num
 from plans.kinematics.solver import Solver
@@ -262,8 +262,6 @@ def _ticks(lo: float, hi: float, most: int = 6) -> list[float]:
 
 
 def _framed(name: str, items: list[Item], caption: str) -> View:
-    from drawing.views.common import captioned
-
     return captioned(name, items, bbox(items), caption, [])
 
 

@@ -16,7 +16,7 @@ from drawing.styles import LineType, Style
 from drawing.text import text_box
 from drawing.ticks import Ticks
 from drawing.views.common import WORDS, View, bbox, captioned, per_mm, start_anchored
-from plans.cycle.analysis import at_rest
+from plans.cycle import at_rest
 from plans.fmt import num
 from plans.kinematics.solver import Solver
 from plans.scales import choose_mu

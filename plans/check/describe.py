@@ -12,7 +12,7 @@ from __future__ import annotations
 from plans.check.items import MU_KEY, MU_SYMBOL
 from plans.check.words import WORDS
 from plans.fmt import SENSE, notation_in, num
-from plans.model.mechanism import MU_UNIT
+from plans.model import MU_UNIT
 
 
 def unit_in(unit: str, lang: str) -> str:

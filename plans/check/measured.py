@@ -27,11 +27,11 @@ from plans.check.reading import (  # noqa: F401  (SENSE_WORDS: the check's publi
     scale,
 )
 from plans.check.replay import reading_pairs
-from plans.cycle.analysis import analyse_cycle, outside, reachable_cycle
+from plans.cycle import analyse_cycle, outside, reachable_cycle
 from plans.errors import AssemblyError, InputError, PlansError
 from plans.kinematics.solver import Solver
-from plans.model import mechanism as mechmod
-from plans.model import variants
+from plans.model import MU_UNIT, Mechanism, variants
+from plans.model import load as load_mechanism
 from plans.model.fileformat import (
     LOOKALIKES,
     Problems,
@@ -43,7 +43,6 @@ from plans.model.fileformat import (
     read_toml,
     type_in_latin,
 )
-from plans.model.mechanism import MU_UNIT, Mechanism
 from plans.plan.solution import Plan, Solution, plan_name, solve_position
 
 # ---------------------------------------------------------------------------------------
@@ -83,23 +82,27 @@ def load(path: str | Path, solvers: Solvers | None = None) -> Measurement:
 
 
 class Solvers:
-    """One :class:`~plans.kinematics.Solver` per mechanism, for a batch of measurement
-    files: the files of a class, most of one variant at one angle, solve it once. A
-    solver compiles its plans' recipes and, for the angles a report writes, analyses the
-    cycle; of 30 files of one mechanism that is most of the time that is not diagnosis.
-    Mechanisms are told apart by equality (one file read twice is one mechanism; another
-    angle, another path to it or another table is another)."""
+    """One :class:`~plans.kinematics.Solver` and its cycle per mechanism, for a batch of
+    measurement files: the files of a class, most of one variant at one angle, solve it
+    once. A solver compiles its plans' recipes, and the cycle sizes the plan of positions
+    and words the angles a report writes; of 30 files of one mechanism that is most of
+    the time that is not diagnosis. Mechanisms are told apart by equality (one file read
+    twice is one mechanism; another angle, another path to it or another table is
+    another)."""
 
     def __init__(self) -> None:
-        self.known: list[tuple[Mechanism, Any]] = []  # a Mechanism holds dicts: no hash
+        self.known: list[tuple[Mechanism, Any, Any]] = []  # a Mechanism holds dicts: no hash
 
     def __call__(self, mech: Mechanism):
-        for m, solver in self.known:
+        """(solver, cycle) of ``mech``: its cycle first, which raises where ``mech`` does
+        not assemble at its angle."""
+        for m, solver, cycle in self.known:
             if m == mech:
-                return solver
+                return solver, cycle
         solver = Solver(mech)
-        self.known.append((mech, solver))
-        return solver
+        cycle = analyse_cycle(mech, solver=solver)
+        self.known.append((mech, solver, cycle))
+        return solver, cycle
 
 
 def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = None, *,
@@ -207,10 +210,11 @@ def from_dict(data: dict, source: str = "<measurements>", folder: Path | None = 
         if isinstance(mech, int):
             m = rows.variant(mech)
         else:
-            m = mechmod.load(mech)
+            m = load_mechanism(mech)
         if angle is not None:
             m = m.at_file_angle(angle)
-        sol = solve_position(m, mu=dict(mu), solver=None if solvers is None else solvers(m))
+        solver, cycle = (solvers or Solvers())(m)
+        sol = solve_position(m, mu=dict(mu), solver=solver, cycle=cycle)
     except PlansError as exc:
         problems.raise_if_any()  # these first; the mechanism's own problems once they are fixed
         if angle is not None and not isinstance(exc, InputError):  # the file's own angle

@@ -8,8 +8,8 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from plans.model import SCALE
 from plans.model.fileformat import DECIMAL, MAX_ABS, Problems, decimal, quote, read_number
-from plans.model.mechanism import SCALE
 
 #: the sense of an ω, an ε or a moment as a student writes it after the magnitude, +1 ccw,
 #: −1 cw

@@ -18,7 +18,8 @@ from plans.check.items import FORCE_PLANS, MU_KEY, PLANS, Item
 from plans.geometry import cross, intersect
 from plans.kinematics.solver import Solver
 from plans.model.structure import DyadKind
-from plans.plan.solution import NOISE, Plan, Solution, plan_name, solve_position
+from plans.plan.solution import Plan, Solution, plan_name, solve_position
+from plans.tolerances import NOISE
 
 
 @dataclass(frozen=True)

@@ -43,7 +43,7 @@ from plans.cli.common import (
 )
 from plans.cli.words import WORDS
 from plans.errors import InputError, PlansError
-from plans.fmt import angle, columns, cut, listing, notation_in
+from plans.fmt import angle, columns, cut, cut_start, listing, notation_in
 from plans.model.fileformat import read_toml
 from plans.model.variants import BUILTIN, BUILTIN_RU
 
@@ -246,7 +246,7 @@ def mechanism_cell(meas, lang: str) -> str:
             source = source[len(prefix) + 2:]
     sol = meas.solution
     deg = mech.driver.file_angle(sol.phi)
-    return f"{source}, {mech.driver.phi_sym} = {angle(deg, 4, lang, sol.solver.shown_from())}°"
+    return f"{source}, {mech.driver.phi_sym} = {angle(deg, 4, lang, sol.shown_from)}°"
 
 
 def verdict_cell(row: Row, lang: str, tol=None) -> str:
@@ -326,7 +326,7 @@ def to_text(rows: list[Row], lang: str = "en", tol=None) -> str:
     table = []
     for r in rows:
         res = r.result
-        cells = [terminal(r.path, 80)]
+        cells = [cut_start(terminal(r.path), 80)]  # a long path keeps the file's name
         if titled:
             # cut to the columns it takes (a Chinese character two), not to its characters
             cells.append(cut(terminal(" ".join(r.title_text().split()), TITLE_WIDTH), TITLE_WIDTH))

@@ -22,7 +22,7 @@ from plans.fmt import (
     num,
     signed,
 )
-from plans.model.mechanism import MU_UNIT
+from plans.model import MU_UNIT
 from plans.note.report import warnings
 
 #: the PNG of the drawing: two pixels for each px of the SVG
@@ -92,7 +92,7 @@ def to_text(result, lang: str = "en") -> str:
         out.append(f"  {terminal(meas.title)}")
     out.append(f"{w['mech']}: {terminal(mech.name_in(lang))} ({terminal(mech.source_in(lang))}), "
                f"{mech.driver.phi_sym} = "
-               f"{mech.driver.both(sol.phi, lang, lo=sol.solver.shown_from())}")
+               f"{mech.driver.both(sol.phi, lang, lo=sol.shown_from)}")
     mu = meas.mu
 
     given = [f"{MU_SYMBOL[plan]} = {num(mu[key], 4, lang)} {unit_in(MU_UNIT[key], lang)}"

@@ -23,11 +23,11 @@ from plans.cli.output import (
     terminal,
     write_output,
 )
-from plans.cycle.analysis import outside_range
+from plans.cycle import analyse_cycle, outside_range
 from plans.errors import AssemblyError, InputError, PlansError
 from plans.fmt import from_x
 from plans.kinematics.solver import Solver
-from plans.model import mechanism, variants
+from plans.model import load, variants
 from plans.model.fileformat import MAX_ABS
 from plans.plan.solution import solve_position
 
@@ -133,7 +133,7 @@ def mechanism_from(args, table=None):
             for line in t.others(int(text)):
                 warn(args.command, line)
     else:
-        mech = mechanism.load(args.file)
+        mech = load(args.file)
     return mech if angle is None else mech.at_file_angle(angle)
 
 
@@ -148,13 +148,15 @@ def angle_field(args, mech) -> tuple[str, float]:
 
 
 def solved_position(args, mech):
-    """(solver, solution) of ``mech`` at its crank angle, as solve and report need it;
-    where it does not assemble there, the error names the field the angle came from
-    (:func:`angle_field`) and the crank's range where it does
+    """(cycle, solution) of ``mech`` at its crank angle, as solve and report need them:
+    the cycle first, which sizes the plan of positions and words the solution's angles
+    (the solver is the solution's); where it does not assemble there, the error names the
+    field the angle came from (:func:`angle_field`) and the crank's range where it does
     (:func:`plans.cycle.outside_range`)."""
     try:
         solver = Solver(mech)
-        return solver, solve_position(mech, solver=solver)
+        cycle = analyse_cycle(mech, solver=solver)
+        return cycle, solve_position(mech, solver=solver, cycle=cycle)
     except AssemblyError as exc:
         raise outside_range(mech, exc, *angle_field(args, mech)) from None
 

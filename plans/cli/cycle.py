@@ -32,12 +32,12 @@ from plans.cli.common import (
     warn,
 )
 from plans.cli.output import picture_format
-from plans.cycle.analysis import outside, reachable_cycle, shown_from, summary
+from plans.cycle import outside, reachable_cycle, shown_from, summary
 from plans.cycle.table import CycleTable, compute, figure_labels
 from plans.errors import AssemblyError
 from plans.fmt import from_x, in_turn, num
-from plans.kinematics.records import is_pivot
-from plans.plan.solution import NOISE
+from plans.kinematics.conditioning import is_pivot
+from plans.tolerances import NOISE
 
 #: a table for reading or a file for a spreadsheet: 10⁵ rows of the press are 270 MB of
 #: JSON; for more angles, Solver.sweep works on arrays (README, "Whole cycle")

@@ -30,7 +30,7 @@ from plans.cli import solve as solve_cli
 from plans.cli.common import EXIT_OK, add_source, angle_field, mechanism_from, number, warn
 from plans.cli.output import arg_text
 from plans.cli.report import title_block
-from plans.cycle.analysis import outside_range
+from plans.cycle import outside_range
 from plans.errors import AssemblyError, InputError
 from plans.forces.note import force_note
 from plans.forces.summary import solve_forces

@@ -17,7 +17,6 @@ from drawing.document import parse_note
 from drawing.sheet.frame import TitleBlock
 from drawing.sheet1 import FIELDS, title_fields
 from plans.cli.common import EXIT_OK, add_source, mechanism_from, solved_position, warn
-from plans.cycle.analysis import analyse_cycle
 from plans.errors import InputError
 from plans.forces.note import force_note
 from plans.forces.summary import solve_forces
@@ -42,8 +41,8 @@ def configure(p) -> None:
 
 def markdown(args, mech) -> tuple[str, list[str]]:
     """(the note's Markdown, the warnings of its position)."""
-    solver, sol = solved_position(args, mech)
-    cycle = analyse_cycle(mech, solver=solver)
+    cycle, sol = solved_position(args, mech)
+    solver = sol.solver
     text = note(sol, args.lang, cycle)
     if mech.loads is not None:  # the note goes on with the force analysis, section after section
         section = sum(line.startswith("## ") for line in text.splitlines()) + 1

@@ -45,7 +45,7 @@ from plans.cli.common import (
     say,
     warn,
 )
-from plans.cycle.analysis import outside_range
+from plans.cycle import outside_range
 from plans.errors import AssemblyError, InputError, PlansError
 from plans.forces.note import force_note
 from plans.model.variants import DESIGNATION, read_table

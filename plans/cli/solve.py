@@ -8,7 +8,7 @@ import math
 
 from plans.cli.common import EXIT_OK, add_source, cycle_json, mechanism_from, solved_position, warn
 from plans.cli.output import terminal
-from plans.cycle.analysis import analyse_cycle, summary
+from plans.cycle import summary
 from plans.fmt import angle, from_x, json_angle, num
 from plans.note.report import change_points, no_full_turn, warnings
 
@@ -52,8 +52,7 @@ def configure(p) -> None:
 
 def run(args) -> int:
     mech = mechanism_from(args)
-    solver, sol = solved_position(args, mech)
-    cycle = analyse_cycle(mech, solver=solver)
+    cycle, sol = solved_position(args, mech)
     lang = getattr(args, "lang", "en")
     if args.json:
         text = json.dumps(to_json(sol, cycle, lang), ensure_ascii=False, indent=2) + "\n"
@@ -130,7 +129,7 @@ def to_text(sol, cycle=None, lang: str = "en") -> str:
     # the file's own convention too, the one --angle and the cycle's lines below use
     out.append(
         f"{t['crank']}: {t['link']} {d.link}, l_{d.pivot}{d.tip} = {n(d.length)} {t['m']}, "
-        f"{d.phi_sym} = {d.both(sol.phi, lang, lo=sol.solver.shown_from())}, "
+        f"{d.phi_sym} = {d.both(sol.phi, lang, lo=sol.shown_from)}, "
         f"{d.omega_sym} = {n(abs(d.omega))} {t['rads']}{_sense(d.omega, t)}"
     )
     u = t["units"]

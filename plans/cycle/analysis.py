@@ -7,63 +7,25 @@ faster (return) stroke; θ is the crank angle between the extreme positions' lin
 
 from __future__ import annotations
 
+import itertools
 import math
 import numbers
 from dataclasses import dataclass
 
 import numpy as np
 
-from plans.errors import InputError, PlansError
-from plans.fmt import angle, from_x
+from plans import tolerances
+from plans.cycle.words import change_angles, outside, shown_from, worded
+from plans.errors import AssemblyError, InputError, PlansError, PositionError
+from plans.fmt import angle
 from plans.geometry import apart
+from plans.kinematics.setup import Setup
 from plans.kinematics.solver import Motion, Solver
-from plans.model.mechanism import Mechanism
+from plans.model import Mechanism
+from plans.model.outputs import Output, find_output
 from plans.model.structure import DyadKind
 
 TWO_PI = 2 * math.pi
-
-
-@dataclass(frozen=True)
-class Output:
-    """The output coordinate: a slider's travel along its fixed guide (m) or a rocker's
-    angle (rad)."""
-
-    point: str
-    kind: str  # "linear" or "angular"
-    link: int
-
-    def value(self, m: Motion, mech: Mechanism):
-        if self.kind == "linear":
-            g = mech.slider_of(self.link).guide
-            return ((m.position[self.point] - g.point) * np.conj(g.direction)).real
-        psi = np.angle(m.links[self.link].rotor)
-        known = np.isfinite(psi)
-        if np.ndim(psi) == 0 or known.all():
-            return np.unwrap(psi)
-        out = np.full(psi.shape, np.nan)  # one position where the link is nowhere: not the rest
-        out[known] = np.unwrap(psi[known])
-        return out
-
-    def arm(self, mech: Mechanism) -> tuple[str, str] | None:
-        """A rocker's fixed pivot and its point farthest from it, the two the swing ψ is
-        measured by (∠C′DC″ between its extreme positions: the sheet's arc and the note's
-        angle alike); None for a slider, or a rocker with no fixed point."""
-        if self.kind != "angular":
-            return None
-        link = mech.links[self.link]
-        pivot = next((p for p in link.points if p in mech.frame), None)
-        others = [p for p in link.points if p != pivot]
-        if pivot is None or not others:
-            return None
-        return pivot, max(others, key=lambda p: abs(link.points[p] - link.points[pivot]))
-
-    def rate(self, m: Motion, mech: Mechanism, which: str = "velocity"):
-        data = m.velocity if which == "velocity" else m.acceleration
-        if self.kind == "linear":
-            g = mech.slider_of(self.link).guide
-            return (data[self.point] * np.conj(g.direction)).real
-        st = m.links[self.link]
-        return st.omega if which == "velocity" else st.epsilon
 
 
 def table_angle(psi, full_turn: bool):
@@ -88,78 +50,6 @@ def table_angle(psi, full_turn: bool):
             return psi
     psi[known] = got - TWO_PI * math.floor((got.max() + got.min()) / 2 / TWO_PI)
     return psi
-
-
-def find_output(mech: Mechanism) -> Output | None:
-    """The output named in the file, else the last slider on a fixed guide, else the last
-    link hinged to the frame (a rocker), named by its moving joint (C of a rocker DC, as
-    the textbook's ψ_C), never by its fixed pivot."""
-    for name in ([mech.output] if mech.output else []) + outputs(mech):
-        if (out := output_of(mech, name)) is not None:
-            return out
-    return None
-
-
-def outputs(mech: Mechanism) -> list[str]:
-    """Every point that can be the output (:func:`output_of`), in the order
-    :func:`find_output` takes them: the sliders' points on fixed guides, the last first,
-    then the points of each link from the last, a rocker's by its moving joints first
-    (the far end of its axis, then the points it shares with other links)."""
-    names = [s.point for s in reversed(mech.sliders)
-             if s.guide.link == 0 and output_of(mech, s.point) is not None]
-    for lid in sorted(mech.links, reverse=True):
-        link = mech.links[lid]
-        far = [link.axis[1]] if link.axis else []
-        joints = [p for p in link.points if len(mech.links_of(p)) > 1]
-        for p in far + joints + list(link.points):
-            if (out := output_of(mech, p)) is not None and out.link == lid:
-                names.append(p)
-    return list(dict.fromkeys(names))
-
-
-def no_output(mech: Mechanism, name: str) -> str | None:
-    """Why point ``name`` cannot be the output, naming the points of ``mech`` that can
-    (:func:`outputs`); None if it can. A coupler's point traces a curve, with no stroke
-    along a line nor swing about a pivot: it is refused, as a fixed point and the
-    crank's are."""
-    if output_of(mech, name) is not None:
-        return None
-    carriers = mech.links_of(name)
-    if 0 in carriers:
-        what = "it is a fixed point"
-    elif mech.driver.link in carriers:
-        what = "it is a point of the crank"
-    else:
-        links = " and ".join(f"link {lid}" for lid in carriers)
-        what = (f"it is a point of {links}, which neither "
-                f"{'slides' if len(carriers) == 1 else 'slide'} on a fixed guide nor "
-                f"{'turns' if len(carriers) == 1 else 'turn'} about a fixed pivot")
-    names = [f'"{p}"' for p in outputs(mech)]
-    here = ("here " + (names[0] if len(names) == 1 else
-                       ", ".join(names[:-1]) + " or " + names[-1])) if names else \
-        "this mechanism has none"
-    return (f'"{name}" has no stroke or swing: {what}; the output is the point of a slider '
-            "on a fixed guide or a moving point of a rocker (a link other than the crank "
-            f"hinged to the frame): {here}")
-
-
-def output_of(mech: Mechanism, name: str) -> Output | None:
-    """Point ``name`` as the output: the point of a slider on a fixed guide, or any point
-    of a link that only translates along one (its travel), or a moving point of a link
-    hinged to the frame other than the crank (its swing); None for any other point (a
-    fixed one, the crank's, a coupler's), which has no stroke."""
-    if name in mech.frame:  # it stands still: no stroke, no swing of its own
-        return None
-    still = mech.translating()
-    for lid in mech.links_of(name):
-        if lid == 0 or lid == mech.driver.link:
-            continue
-        s = mech.slider_of(lid)
-        if s is not None and s.guide.link == 0 and (s.point == name or lid in still):
-            return Output(name, "linear", lid)  # a yoke's every point travels as its slider does
-        if any(p in mech.frame for p in mech.links[lid].points):
-            return Output(name, "angular", lid)
-    return None
 
 
 @dataclass(frozen=True)
@@ -192,88 +82,20 @@ class Cycle:
         return (min(lo, hi), max(lo, hi))
 
 
-def file_range(c: Cycle, driver=None) -> tuple[float, float]:
-    """The crank range of ``c`` (where it cannot make a full turn) in the convention of
-    ``driver`` (degrees; without one, counter-clockwise from +x) as it is written: from
-    the smaller angle to the larger, the first one negative where it runs through 0°
-    ("from −128.8° to 128.8°"; in the crank's own order, a clockwise crank's "from 128.8°
-    to 231.2°" named the very angles where it does not assemble)."""
-    lo, hi = c.ccw_range
-    deg = driver.file_angle if driver else from_x
-    a, b = deg(lo), deg(hi)
-    if driver is not None and driver.measured == "cw":  # that convention counts the other way
-        a, b = b, a
-    b = 0.0 if b > 360.0 - 1e-9 else b  # 359.99999999999 is 0, as angle() writes it
-    a = a - 360.0 if a > b else a
-    a = 0.0 if abs(a) < 1e-9 else a  # a limit found to 1e-13 rad: −5.7e−14° is 0
-    return a, b
-
-
-def shown_from(c: Cycle | None, driver=None) -> float:
-    """Where the turn the output writes crank angles in begins (degrees, in the
-    convention of ``driver``): 0, for [0°, 360°), unless the crank cannot make a full
-    turn and its range is written through 0° (:func:`file_range`, "from −99.72° to
-    99.72°"); then the turn centred on that range, so that an angle compared with it
-    reads −99.7°, not 260.3° (:func:`plans.fmt.angle`)."""
-    if c is None or c.full_turn or c.crank_range is None:
-        return 0.0
-    a, b = file_range(c, driver)
-    return 0.0 if a >= 0.0 else (a + b) / 2 - 180.0
-
-
-def summary(c: Cycle, driver=None) -> list[str]:
-    """The cycle in a few lines, as ``plans solve`` and ``plans cycle`` print it: the
-    four-bar's Grashof class, the crank range where it cannot make a full turn, the notes,
-    the stroke H or swing ψ, the extreme positions, θ and K.
-
-    Angles are in the convention of ``driver`` (the file's), which they name (" (from +y,
-    cw)"); without one, counter-clockwise from +x."""
-    from plans.fmt import angle, num
-    from plans.note.report import no_full_turn
-
-    deg = driver.file_angle if driver else from_x
-    convention = driver.convention() if driver else ""
-    lines = [f"four-bar: {c.grashof}"] if c.grashof else []
-    if not c.full_turn:
-        lines.append(no_full_turn(c, "en", driver))
-    lines += c.notes
-    if c.stroke is not None and c.output is not None:
-        if c.output.kind == "linear":
-            lines.append(f"stroke of {c.output.point}: H = {num(c.stroke)} m")
-        else:
-            lines.append(f"swing of link {c.output.link}: ψ = {num(math.degrees(c.stroke))}°")
-        lines.append(
-            f"extreme positions at {driver.phi_sym if driver else 'φ1'} = "
-            + ", ".join(f"{angle(deg(x))}°" for x in c.extremes) + convention
-            + f"; θ = {num(math.degrees(c.theta))}°, K = {num(c.K)}")
-    return lines
-
-
 def analyse_cycle(mech: Mechanism, n_positions: int = 12, solver: Solver | None = None,
                   samples: int = 3600) -> Cycle:
-    """The cycle of ``mech`` (see :class:`Cycle`); kept by the solver, which solves one
-    mechanism only, so that solve, its μl and its summary share one analysis.
+    """The cycle of ``mech`` (see :class:`Cycle`), solved by ``solver`` (one of ``mech``,
+    made here where it is not given). Whoever needs the cycle more than once keeps it:
+    it is a value, worked out anew at each call.
+
+    Where the mechanism does not close at its own crank angle (and so has no cycle from
+    there) this raises the error solving there raises, its angle written as the nearest
+    range where it does close writes it (:func:`plans.cycle.words.worded`).
 
     ``n_positions``: how many crank positions (:attr:`Cycle.positions`), at least 1;
     ``samples``: how many angles a turn is searched at, at least 2."""
     _whole(n_positions, "n_positions", 1)
     _whole(samples, "samples", 2)
-    if solver is not None and solver.mech is mech:
-        key = ("cycle", n_positions, samples)
-        got = solver.cache.get(key)
-        if got is None:
-            # the turn the solver's messages write angles in (Solver.at): [0°, 360°) while
-            # the cycle is found, then the cycle's own (shown_from)
-            fresh = SHOWN_FROM not in solver.cache
-            if fresh:
-                solver.cache[SHOWN_FROM] = 0.0
-            try:
-                got = solver.cache[key] = _analyse_cycle(mech, n_positions, solver, samples)
-            finally:
-                if fresh:
-                    del solver.cache[SHOWN_FROM]
-            solver.cache.setdefault(SHOWN_FROM, shown_from(got, mech.driver))
-        return got
     return _analyse_cycle(mech, n_positions, solver or Solver(mech), samples)
 
 
@@ -285,28 +107,20 @@ def _whole(value, name: str, least: int) -> None:
                          f"got {value!r}")
 
 
-#: the solver's cache key of :func:`shown_from` for its cycle (:meth:`Solver.at`)
-SHOWN_FROM = "shown from"
-
-
 def reachable(mech: Mechanism, samples: int = 3600) -> Mechanism | None:
     """Where the crank angle of ``mech`` does not assemble on any assembly: ``mech`` with
     its crank turned to the middle of the nearest range of angles where it does, as
     ``--angle`` turns it (:meth:`Mechanism.at_file_angle`: the hints are read at the
     file's own angle where the mechanism closes there, else at the new one). None where
     its angle assembles (on some assembly), or no angle does."""
-    import itertools
-
-    from plans.model.structure import analyse
-
-    structure = analyse(mech)
-    n = len(structure.groups)
+    setup = Setup.of(mech)
+    n = len(setup.structure.groups)
     grid = mech.driver.phi + np.linspace(0.0, TWO_PI, samples, endpoint=False)
     closes = np.zeros(samples, dtype=bool)
     # on every assembly: a later group may close on one of an earlier group's only
     for sigmas in itertools.islice(itertools.product((1, -1), repeat=n), 64):
         with np.errstate(all="ignore"):
-            closes |= Solver(mech, structure, sigmas, ((),) * n).solve(grid).placed
+            closes |= Solver(mech, None, sigmas, ((),) * n, setup=setup).solve(grid).placed
     if closes[0] or not closes.any():
         return None
     got = np.flatnonzero(closes)
@@ -340,8 +154,6 @@ def outside_range(mech: Mechanism, exc: PlansError, field: str, given: float) ->
     that gave it (``driver.angle_deg``, ``--angle``) and its value ``given``, the crank's
     range where it does, in the file's convention, and the group that cannot close;
     ``exc`` itself where there is no such range."""
-    from plans.errors import AssemblyError, InputError
-
     if not isinstance(exc, AssemblyError) or (got := reachable_cycle(mech)) is None:
         return exc
     _, solver, c = got
@@ -356,22 +168,6 @@ def outside_range(mech: Mechanism, exc: PlansError, field: str, given: float) ->
             break
     return InputError(mech.source, f"{outside(field, given, c, d)}, where the mechanism "
                                    f"assembles{why}")
-
-
-def outside(field: str, given: float, c: Cycle, driver) -> str:
-    """"driver.angle_deg = 150 is outside the crank's range, φ1 from −99.72° to 99.72°":
-    the field that gave a crank angle, its value as given, and the range of ``c``, in the
-    convention of ``driver``; ``field`` "" for "150° is outside …", the field named
-    before it (a measurement file's located problem)."""
-    from plans.fmt import angle as written
-
-    lo = shown_from(c, driver)
-    a, b = file_range(c, driver)
-    head = (f"{given:g}°" if not field else
-            f"{field}{' ' if field.startswith('--') else ' = '}{given:g}")
-    return (f"{head} is outside the crank's range, {driver.phi_sym} from "
-            f"{written(a, 4, 'en', lo)}° to {written(b, 4, 'en', lo)}°"
-            f"{driver.convention()}")
 
 
 def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: int) -> Cycle:
@@ -403,7 +199,8 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
         # the plans are singular at the change points, not where two turns meet (a seam
         # elsewhere): said beside them, not after the seam's angle at the end
         notes.append(
-                f"change points at {mech.driver.phi_sym} = " + ", ".join(f"{x}°" for x in change_angles(changes, mech.driver))
+                f"change points at {mech.driver.phi_sym} = "
+            + ", ".join(f"{x}°" for x in change_angles(changes, mech.driver))
             + mech.driver.convention() + f": the links of a group lie in line there and the "
             f"plans are singular; there {how}")
     closes = valid | (near & m.placed)  # a sample on a change point closes to rounding
@@ -423,7 +220,11 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
     out = find_output(mech)
     if not full:  # the range is worded where it is shown (report.no_full_turn)
         if not closes[0]:  # the given angle itself does not close: say why, as solve does
-            solver.solve_one(phi0)
+            try:
+                solver.solve_one(phi0)
+            except PositionError as err:  # in the turn of the nearest range, if any
+                got = reachable_cycle(mech)
+                raise worded(err, solver, None if got is None else got[2]) from None
         lo, hi = _limits(solver, *_interval_around(grid, closes), grid[1] - grid[0],
                          {label: side[0] for label, side in sides.items()})
         span = lo + (hi - lo) * (np.arange(n_positions) + 0.5) / n_positions
@@ -437,7 +238,7 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
         # no sign where it is singular, nor where the rate is rounding of 0 (1e-9 of the
         # crank's ω1, or of its pin's speed): an output at rest does not turn back
         still = at_rest(mech, out.kind == "linear")
-        sgn = _signs(np.where(near | (np.abs(rate) < still), 0.0, rate))
+        sgn = rate_signs(np.where(near | (np.abs(rate) < still), 0.0, rate))
         if not sgn.any():
             notes.append(f"the output {out.point} does not move")
         idx = np.nonzero(sgn != np.roll(sgn, -1))[0]
@@ -456,10 +257,10 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
             slow, fast = max(span, TWO_PI - span), min(span, TWO_PI - span)
             theta = (slow - fast) / 2
             K = slow / fast
-            if abs(theta) < 1e-9:  # equal strokes, as the tie below: θ = 0 and K = 1 exactly
+            if abs(theta) < tolerances.EQUAL_STROKES:  # equal strokes, as the tie below: θ = 0, K = 1
                 theta, K = 0.0, 1.0
             # position 0 starts the slower (working) stroke; on a tie, the lower output value
-            if abs(span - (TWO_PI - span)) < 1e-9:
+            if abs(span - (TWO_PI - span)) < tolerances.EQUAL_STROKES:
                 start = extremes[int(np.argmin(val))]
             else:
                 start = extremes[0] if span >= TWO_PI - span else extremes[1]
@@ -472,16 +273,10 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
                  change_points=changes)
 
 
-def change_angles(changes, driver, lang: str = "en") -> list[str]:
-    """Change points (rad from +x) as the file's angles, written to 1e-6°: they are found to
-    about 1e-10 rad, and 0° is not to read 5.7e-09°."""
-    return [angle(round(driver.file_angle(x), 6), 4, lang) for x in changes]
-
-
 def at_rest(mech: Mechanism, linear: bool, order: int = 1) -> float:
     """Below this an output's value (``order`` 0), rate (1) or acceleration (2) is rounding
     of 0: 1e-9 of the crank's own (its pin's for a linear output) to that order."""
-    return 1e-9 * (mech.driver.length if linear else 1.0) * abs(mech.driver.omega) ** order
+    return tolerances.AT_REST * (mech.driver.length if linear else 1.0) * abs(mech.driver.omega) ** order
 
 
 def _change_points(solver: Solver, grid: np.ndarray) -> tuple[tuple[float, ...], np.ndarray]:
@@ -500,7 +295,7 @@ def _change_points(solver: Solver, grid: np.ndarray) -> tuple[tuple[float, ...],
     return tuple(angles), near
 
 
-def _signs(rate: np.ndarray) -> np.ndarray:
+def rate_signs(rate: np.ndarray) -> np.ndarray:
     """The sign of the output's velocity at each sample, a sample where it is exactly 0
     taking the sign of the next one that is not (round the turn): an extreme that falls on
     a sample (the central crank-slider at φ1 = 0) is then one change of sign, between the
@@ -533,7 +328,7 @@ def _refine(solver: Solver, out: Output, mech: Mechanism, a: float, b: float,
             a = mid
         else:
             b = mid
-        if abs(b - a) < 1e-13:
+        if abs(b - a) < tolerances.ANGLE:
             break
     return 0.5 * (a + b)
 
@@ -562,7 +357,7 @@ def _limits(solver: Solver, lo: float, hi: float, step: float,
             for label, side in _guide_sides(got).items() if sides else ():
                 ok = ok & (side == sides[label])
         inside, outside = np.where(ok, mid, inside), np.where(ok, outside, mid)
-        if np.all(np.abs(outside - inside) < 1e-13):
+        if np.all(np.abs(outside - inside) < tolerances.ANGLE):
             break
     return float(inside[0]), float(inside[1])
 
@@ -631,8 +426,8 @@ def grashof_class(a: float, b: float, c: float, d: float) -> str:
         if isinstance(x, bool) or not isinstance(x, numbers.Real) or not 0 < x < math.inf:
             raise ValueError(f"grashof_class: {name} must be a positive length (m), got {x!r}")
     lengths = sorted((a, b, c, d))
-    s, l, p, q = lengths[0], lengths[3], lengths[1], lengths[2]
-    lhs, rhs = s + l, p + q
+    s, longest, p, q = lengths[0], lengths[3], lengths[1], lengths[2]
+    lhs, rhs = s + longest, p + q
     tag = f"{lhs:.6g} {'≤' if lhs <= rhs else '>'} {rhs:.6g}"
     if math.isclose(lhs, rhs, rel_tol=1e-12):
         return f"change-point linkage (Grashof equality: {tag}): its links come in line at change points"

@@ -17,6 +17,8 @@ from functools import cached_property
 
 import numpy as np
 
+from plans.cycle.words import worded
+from plans.errors import PositionError
 from plans.kinematics.solver import Motion, Solver
 
 #: how far a point of a drawn position may lie from the given position, in multiples of
@@ -82,14 +84,15 @@ class Drawn:
 
 def drawn(solver: Solver, cycle) -> Drawn:
     """The positions the plan of positions draws (:class:`Drawn`) for ``cycle`` (from
-    :func:`plans.cycle.analyse_cycle`), worked out once per solver and cycle."""
-    key = ("drawn", cycle.positions)
-    if key in solver.cache:
-        return solver.cache[key]
+    :func:`plans.cycle.analyse_cycle`, by ``solver``); a value: whoever draws it more than
+    once keeps it."""
     mech = solver.mech
     given = positions_at(solver, [mech.driver.phi])[0]
     if given is None:  # the given position does not close: say why, as solve would
-        solver.solve_one(mech.driver.phi)
+        try:
+            solver.solve_one(mech.driver.phi)
+        except PositionError as err:
+            raise worded(err, solver, cycle) from None
     centre, limit = reach(given)
 
     def far(z) -> np.ndarray:
@@ -108,6 +111,5 @@ def drawn(solver: Solver, cycle) -> Drawn:
     trajectory = motion_all.placed
     for n in traced:
         trajectory &= ~far(motion_all.position[n])
-    got = solver.cache[key] = Drawn(given, kept, near(positions_at(solver, cycle.extremes)),
-                                    left_off, limit, motion_all, trajectory, traced)
-    return got
+    return Drawn(given, kept, near(positions_at(solver, cycle.extremes)), left_off, limit,
+                 motion_all, trajectory, traced)

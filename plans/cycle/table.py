@@ -32,9 +32,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from plans import tolerances
 from plans.cycle.analysis import analyse_cycle, table_angle
-from plans.kinematics import records
-from plans.kinematics.records import (
+from plans.cycle.words import shown_from
+from plans.kinematics.conditioning import (
     is_pivot,
     near_pivot,
     on_pivot,
@@ -86,7 +87,7 @@ def compute(mech, n_positions: int, solver=None) -> CycleTable:
     phi = np.array(cycle.positions, dtype=float)
     with np.errstate(all="ignore"):
         motion = solver.solve(phi)
-        status = conditioning(mech, motion, solver)
+        status = conditioning(mech, motion, solver, shown_from(cycle, mech.driver))
         out_values = None
         if cycle.output is not None:
             out_values = cycle.output.value(motion, mech)
@@ -103,14 +104,14 @@ def figure_labels(t: CycleTable) -> list[str]:
     return list(dict.fromkeys(key for st in t.status for key in st.figures))
 
 
-def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
+def conditioning(mech, motion, solver=None, lo: float = 0.0) -> tuple[Status, ...]:
     """Per position: the figures of every group, warnings and errors (see the module doc);
-    ``solver``, the motion's, names the change points among the angles."""
+    ``solver``, the motion's, names the change points among the angles; ``lo``: the turn
+    the angles are written in (:func:`plans.cycle.shown_from` of the motion's cycle)."""
     n = len(motion.phi)
     crank_pivot = mech.frame[mech.driver.pivot]
-    # read here, not bound at import: the thresholds are the records module's (a test
-    # moves them to exercise the error path)
-    warn_sine, singular_sine = records.WARN_SINE, records.SINGULAR_SINE
+    # read here, not bound at import: a test moves the thresholds to exercise the error path
+    warn_sine, singular_sine = tolerances.WARN_SINE, tolerances.SINGULAR_SINE
     per_group = [(g, pivot_figure(g, motion.position, crank_pivot)) for g in motion.groups]
     # each group's figures as Python lists, once; words only where a position is flagged
     cols = []
@@ -120,7 +121,8 @@ def conditioning(mech, motion, solver=None) -> tuple[Status, ...]:
         q = None if pivot is None else np.where(np.isfinite(pivot), pivot, 0.0).tolist()
         cols.append((g, g.group.label, valid.tolist(), s.tolist(), (s < warn_sine).tolist(), q))
     phis = np.asarray(motion.phi, dtype=float).tolist()
-    at_ = solver.at if solver is not None else mech.driver.at
+    at_ = ((lambda phi: solver.at(phi, "en", lo)) if solver is not None else
+           (lambda phi: mech.driver.at(phi, "en", lo)))
     at = functools.cache(lambda k: at_(phis[k]))  # words only where flagged, once
     placed = np.broadcast_to(np.asarray(motion.placed, dtype=bool), (n,)).tolist()
     plain = (singular_sine, singular_sine)

@@ -24,24 +24,18 @@ and every segment in mm at the plan's μF (N/mm, a standard value).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from types import MappingProxyType
 from typing import NamedTuple
 
 from plans.errors import SingularPlanError
 from plans.forces import kernels as K
+from plans.forces.fplans import NOISE, closed_plan, vector_plan, yoke_plan
 from plans.forces.loads import Load, Stroke, at_position
 from plans.geometry import cross
+from plans.model import Mechanism
 from plans.model.loads import Loads
-from plans.model.mechanism import Mechanism
 from plans.model.structure import DyadKind, Group
 from plans.plan.solution import Plan as VectorPlan
-from plans.plan.solution import PlanLine, PlanPoint, PlanVector, Solution, Source
-from plans.scales import choose_mu
-
-#: the force plan's longest vector is at most this long (mm) at the μF chosen
-FORCE_PLAN_MM = 150.0
-#: below this share of a plan's largest force, a force is rounding of 0 (as a plan's NOISE)
-NOISE = 1e-13
+from plans.plan.solution import Solution
 
 
 class Reaction(NamedTuple):
@@ -126,8 +120,9 @@ class ForceAnalysis:
             for r in g.reactions:
                 out[r.name] = r
         d = self.mechanism.driver
-        out[_name(0, d.link)] = Reaction(_name(0, d.link), 0, d.link, "revolute", d.pivot,
-                                         self.solution.positions[d.pivot], self.R01)
+        out[_name(0, d.link)] = Reaction(
+            _name(0, d.link), 0, d.link, "revolute", d.pivot, self.solution.positions[d.pivot], self.R01
+        )
         return out
 
     @property
@@ -150,8 +145,9 @@ def _partner(mech: Mechanism, point: str, link: int, known: set[int]) -> int:
     raise ValueError(f"link {link} is not hinged to a known link at {point}")  # pragma: no cover
 
 
-def analyse(sol: Solution, loads: Loads, stroke: Stroke | None = None,
-            mu_F: float | None = None) -> ForceAnalysis:
+def analyse(
+    sol: Solution, loads: Loads, stroke: Stroke | None = None, mu_F: float | None = None
+) -> ForceAnalysis:
     """The force analysis at the position of ``sol`` under ``loads``; ``stroke``: the
     working stroke (:func:`plans.forces.loads.stroke_of`), which a P(S) graph needs;
     ``mu_F``: one scale factor for every force plan (None: each its own standard value)."""
@@ -161,8 +157,9 @@ def analyse(sol: Solution, loads: Loads, stroke: Stroke | None = None,
     return analyse_loads(sol, external, stroke, mu_F)
 
 
-def analyse_loads(sol: Solution, external, stroke: Stroke | None = None, mu_F: float | None = None,
-                  motion=None) -> ForceAnalysis:
+def analyse_loads(
+    sol: Solution, external, stroke: Stroke | None = None, mu_F: float | None = None, motion=None
+) -> ForceAnalysis:
     """The force analysis at the position of ``sol`` under the external loads ``external``
     (:class:`plans.forces.loads.Load` s, as :func:`plans.forces.loads.at_position` gives
     them, or changed: the check replays a student's mistake so), the groups solved at
@@ -175,8 +172,9 @@ def analyse_loads(sol: Solution, external, stroke: Stroke | None = None, mu_F: f
         on[ld.link].append(ld)
     steps, M_y, R01 = walk(mech, sol.structure.groups, m, on)
     groups = tuple(_recorded(mech, st, mu_F, sol) for st in steps)
-    return ForceAnalysis(sol, tuple(external), groups, tuple(on[mech.driver.link]), complex(R01), float(M_y),
-                         stroke)
+    return ForceAnalysis(
+        sol, tuple(external), groups, tuple(on[mech.driver.link]), complex(R01), float(M_y), stroke
+    )
 
 
 def _terms(loads):
@@ -233,32 +231,40 @@ def _step(mech, m, g: Group, on, known) -> Step:
         P, C, Q = pos[g.P], pos[g.C], pos[g.Q]
         kP, kQ = _partner(mech, g.P, g.a, known), _partner(mech, g.Q, g.b, known)
         r = K.rrr(P, C, Q, Fa, K.moment(ta, C), Fb, K.moment(tb, C))
-        backs = (K.Back(kP, _name(g.a, kP), g.a, P, -r.R_P, 0.0),
-                 K.Back(kQ, _name(g.b, kQ), g.b, Q, -r.R_Q, 0.0))
+        backs = (
+            K.Back(kP, _name(g.a, kP), g.a, P, -r.R_P, 0.0),
+            K.Back(kQ, _name(g.b, kQ), g.b, Q, -r.R_Q, 0.0),
+        )
         return Step(g, r, {"P": P, "C": C, "Q": Q}, {g.P: kP, g.Q: kQ}, {g.a: A, g.b: B}, backs)
     if kind == DyadKind.RRP:
         P, C = pos[g.P], pos[g.C]
         kP, k = _partner(mech, g.P, g.a, known), g.s1.guide.link
         u = _direction(m, g.s1.guide)
         r = K.rrp(P, C, u, Fa, K.moment(ta, C), Fb, K.moment(tb, C))
-        backs = (K.Back(kP, _name(g.a, kP), g.a, P, -r.R_P, 0.0),
-                 K.Back(k, _name(g.b, k), g.b, C, -r.N, r.m_b))
+        backs = (
+            K.Back(kP, _name(g.a, kP), g.a, P, -r.R_P, 0.0),
+            K.Back(k, _name(g.b, k), g.b, C, -r.N, r.m_b),
+        )
         return Step(g, r, {"P": P, "C": C, "u": u}, {g.P: kP}, {g.a: A, g.b: B}, backs)
     if kind == DyadKind.RPR:
         P, Q = pos[g.P], pos[g.Q]
         kP, kQ = _partner(mech, g.P, g.a, known), _partner(mech, g.Q, g.b, known)
         u = m.links[g.b].rotor * g.s1.guide.direction
         r = K.rpr(P, Q, u, Fa, K.moment(ta, P), Fb, K.moment(tb, Q))
-        backs = (K.Back(kP, _name(g.a, kP), g.a, P, -r.R_P, 0.0),
-                 K.Back(kQ, _name(g.b, kQ), g.b, Q, -r.R_Q, 0.0))
+        backs = (
+            K.Back(kP, _name(g.a, kP), g.a, P, -r.R_P, 0.0),
+            K.Back(kQ, _name(g.b, kQ), g.b, Q, -r.R_Q, 0.0),
+        )
         return Step(g, r, {"P": P, "Q": Q, "u": u}, {g.P: kP, g.Q: kQ}, {g.a: A, g.b: B}, backs)
     if kind == DyadKind.PRP:
         C = pos[g.C]
         g1, g2 = g.s1.guide, g.s2.guide
         u1, u2 = _direction(m, g1), _direction(m, g2)
         r = K.prp(C, u1, u2, Fa, K.moment(ta, C), Fb, K.moment(tb, C))
-        backs = (K.Back(g1.link, _name(g.a, g1.link), g.a, C, -r.N1, r.m_a),
-                 K.Back(g2.link, _name(g.b, g2.link), g.b, C, -r.N2, r.m_b))
+        backs = (
+            K.Back(g1.link, _name(g.a, g1.link), g.a, C, -r.N1, r.m_a),
+            K.Back(g2.link, _name(g.b, g2.link), g.b, C, -r.N2, r.m_b),
+        )
         return Step(g, r, {"C": C, "u1": u1, "u2": u2}, {}, {g.a: A, g.b: B}, backs)
     # RPP: the block a hinged at P slides in link b, which slides on the guide of link k
     P = pos[g.P]
@@ -269,8 +275,10 @@ def _step(mech, m, g: Group, on, known) -> Step:
     u = _direction(m, gout)
     B0 = m.links[k].pos(gout.point) if k else gout.point
     r = K.rpp(P, B0, us, u, Fa, K.moment(ta, P), Fb, K.moment(tb, B0))
-    backs = (K.Back(kP, _name(g.a, kP), g.a, P, -r.R_P, 0.0),
-             K.Back(k, _name(g.b, k), g.b, B0, -r.N_kb, -r.couple))
+    backs = (
+        K.Back(kP, _name(g.a, kP), g.a, P, -r.R_P, 0.0),
+        K.Back(k, _name(g.b, k), g.b, B0, -r.N_kb, -r.couple),
+    )
     return Step(g, r, {"P": P, "us": us, "u": u, "B0": B0}, {g.P: kP}, {g.a: A, g.b: B}, backs)
 
 
@@ -288,14 +296,25 @@ def _recorded(mech, step: Step, mu_F, sol) -> GroupForces:
         RQ = Reaction(_name(kQ, g.b), kQ, g.b, "revolute", g.Q, Q, r.R_Q, 1j * r.tau_b * r.e_b, r.n_b * r.e_b)
         RC = Reaction(_name(g.b, g.a), g.b, g.a, "revolute", g.C, C, r.R_C)
         RCb = Reaction(_name(g.a, g.b), g.a, g.b, "revolute", g.C, C, -r.R_C)
-        eqs = (_equation(A, g.a, g.C, C, RP.name + "^τ", P, 1j * r.e_a, r.tau_a),
-               _equation(B, g.b, g.C, C, RQ.name + "^τ", Q, 1j * r.e_b, r.tau_b))
-        plan = _closed_plan(
-            [(RP.name + "^τ", "tangential", 1j * r.tau_a * r.e_a), *_vectors(A), *_vectors(B),
-             (RQ.name + "^τ", "tangential", 1j * r.tau_b * r.e_b)],
+        eqs = (
+            _equation(A, g.a, g.C, C, RP.name + "^τ", P, 1j * r.e_a, r.tau_a),
+            _equation(B, g.b, g.C, C, RQ.name + "^τ", Q, 1j * r.e_b, r.tau_b),
+        )
+        plan = closed_plan(
+            [
+                (RP.name + "^τ", "tangential", 1j * r.tau_a * r.e_a),
+                *_vectors(A),
+                *_vectors(B),
+                (RQ.name + "^τ", "tangential", 1j * r.tau_b * r.e_b),
+            ],
             (RQ.name + "^n", r.e_b, f"∥ {g.Q}{g.C}", r.n_b * r.e_b),
             (RP.name + "^n", r.e_a, f"∥ {g.P}{g.C}", r.n_a * r.e_a),
-            r.sine, mu_F, [RP, RQ], RC, A)
+            r.sine,
+            mu_F,
+            [RP, RQ],
+            RC,
+            A,
+        )
         return GroupForces(g, {g.a: A, g.b: B}, (RP, RQ, RC, RCb), eqs, plan, abs(r.sine))
     if kind == DyadKind.RRP:
         P, C, u = geo["P"], geo["C"], geo["u"]
@@ -307,11 +326,16 @@ def _recorded(mech, step: Step, mu_F, sol) -> GroupForces:
         RC = Reaction(_name(g.b, g.a), g.b, g.a, "revolute", g.C, C, r.R_C)
         RCb = Reaction(_name(g.a, g.b), g.a, g.b, "revolute", g.C, C, -r.R_C)
         eqs = (_equation(A, g.a, g.C, C, RP.name + "^τ", P, 1j * r.e_a, r.tau_a),)
-        plan = _closed_plan(
+        plan = closed_plan(
             [(RP.name + "^τ", "tangential", 1j * r.tau_a * r.e_a), *_vectors(A), *_vectors(B)],
             (RN.name, r.w, f"⊥ {guide.label}", r.N),
             (RP.name + "^n", r.e_a, f"∥ {g.P}{g.C}", r.n_a * r.e_a),
-            r.sine, mu_F, [RP, RN], RC, A)
+            r.sine,
+            mu_F,
+            [RP, RN],
+            RC,
+            A,
+        )
         return GroupForces(g, {g.a: A, g.b: B}, (RP, RN, RC, RCb), eqs, plan, abs(r.sine))
     if kind == DyadKind.RPR:
         P, Q, u = geo["P"], geo["Q"], geo["u"]
@@ -323,22 +347,32 @@ def _recorded(mech, step: Step, mu_F, sol) -> GroupForces:
         RN = Reaction(_name(g.b, g.a), g.b, g.a, "prismatic", None, at, r.N)
         RNb = Reaction(_name(g.a, g.b), g.a, g.b, "prismatic", None, at, -r.N)
         eqs = (_group_equation(A, B, g, Q, P, r.w, r.nu),)
-        plan = _vector_plan([(RP.name, "reaction", r.R_P), *_vectors(A), *_vectors(B)],
-                            (RQ.name, r.R_Q), mu_F, RN, A)
+        plan = vector_plan(
+            [(RP.name, "reaction", r.R_P), *_vectors(A), *_vectors(B)], (RQ.name, r.R_Q), mu_F, RN, A
+        )
         return GroupForces(g, {g.a: A, g.b: B}, (RP, RN, RNb, RQ), eqs, plan, 1.0)
     if kind == DyadKind.PRP:
         C, u1, u2 = geo["C"], geo["u1"], geo["u2"]
         g1, g2 = g.s1.guide, g.s2.guide
         _singular(r.sine, g, sol, f"the lines ⊥ {g1.label} and ⊥ {g2.label}")
-        R1 = Reaction(_name(g1.link, g.a), g1.link, g.a, "prismatic", None, _contact(C, u1, r.m_a, r.nu1),
-                      r.N1)
-        R2 = Reaction(_name(g2.link, g.b), g2.link, g.b, "prismatic", None, _contact(C, u2, r.m_b, r.nu2),
-                      r.N2)
+        R1 = Reaction(
+            _name(g1.link, g.a), g1.link, g.a, "prismatic", None, _contact(C, u1, r.m_a, r.nu1), r.N1
+        )
+        R2 = Reaction(
+            _name(g2.link, g.b), g2.link, g.b, "prismatic", None, _contact(C, u2, r.m_b, r.nu2), r.N2
+        )
         RC = Reaction(_name(g.b, g.a), g.b, g.a, "revolute", g.C, C, r.R_C)
         RCb = Reaction(_name(g.a, g.b), g.a, g.b, "revolute", g.C, C, -r.R_C)
-        plan = _closed_plan([*_vectors(A), *_vectors(B)],
-                            (R2.name, r.w2, f"⊥ {g2.label}", r.N2), (R1.name, r.w1, f"⊥ {g1.label}", r.N1),
-                            r.sine, mu_F, [R1, R2], RC, A)
+        plan = closed_plan(
+            [*_vectors(A), *_vectors(B)],
+            (R2.name, r.w2, f"⊥ {g2.label}", r.N2),
+            (R1.name, r.w1, f"⊥ {g1.label}", r.N1),
+            r.sine,
+            mu_F,
+            [R1, R2],
+            RC,
+            A,
+        )
         return GroupForces(g, {g.a: A, g.b: B}, (R1, R2, RC, RCb), (), plan, abs(r.sine))
     P, us, u, B0 = geo["P"], geo["us"], geo["u"], geo["B0"]
     kP, gin, gout = kp[g.P], g.s1.guide, g.s2.guide
@@ -348,16 +382,26 @@ def _recorded(mech, step: Step, mu_F, sol) -> GroupForces:
     RN1 = Reaction(_name(g.b, g.a), g.b, g.a, "prismatic", None, _contact(P, us, r.m_a, r.nu1), r.N_ba)
     RN1b = Reaction(_name(g.a, g.b), g.a, g.b, "prismatic", None, RN1.at, -r.N_ba)
     RN2 = Reaction(_name(k, g.b), k, g.b, "prismatic", None, _contact(B0, u, -r.couple, r.nu2), r.N_kb)
-    plan = _yoke_plan(_vectors(B), (RN2.name, r.w, f"⊥ {gout.label}", r.N_kb),
-                      (RN1b.name, r.ws, f"⊥ {gin.label}", -r.N_ba), _vectors(A), RP, r.sine, mu_F)
+    plan = yoke_plan(
+        _vectors(B),
+        (RN2.name, r.w, f"⊥ {gout.label}", r.N_kb),
+        (RN1b.name, r.ws, f"⊥ {gin.label}", -r.N_ba),
+        _vectors(A),
+        RP,
+        r.sine,
+        mu_F,
+    )
     return GroupForces(g, {g.a: A, g.b: B}, (RP, RN1, RN1b, RN2), (), plan, abs(r.sine))
 
 
 def _singular(sine, g: Group, sol: Solution, lines: str) -> None:
     if not abs(sine) > 1e-10:
-        raise SingularPlanError(f"{g.label}: {lines} are parallel: the force plan has no unique solution "
-                                "at this position (a dead point)", sine=abs(sine),
-                                source=sol.mechanism.source)
+        raise SingularPlanError(
+            f"{g.label}: {lines} are parallel: the force plan has no unique solution "
+            "at this position (a dead point)",
+            sine=abs(sine),
+            source=sol.mechanism.source,
+        )
 
 
 def _contact(X, u, m, nu):
@@ -370,8 +414,11 @@ def _contact(X, u, m, nu):
 
 def _vectors(loads) -> list[tuple[str, str, complex]]:
     """The forces of ``loads`` as vectors of a force plan (couples have none)."""
-    return [(ld.name, "load" if ld.kind != "reaction" else "reaction", complex(ld.force))
-            for ld in loads if ld.force != 0]
+    return [
+        (ld.name, "load" if ld.kind != "reaction" else "reaction", complex(ld.force))
+        for ld in loads
+        if ld.force != 0
+    ]
 
 
 def _arm(name, X, at, force, couple) -> Arm:
@@ -396,129 +443,6 @@ def _group_equation(A, B, g, Q, P, w, nu) -> Equation:
     terms = tuple(_arm(ld.name, Q, ld.at, ld.force, ld.moment) for ld in B)
     terms += tuple(_arm(ld.name, P, ld.at, ld.force, ld.moment) for ld in A)
     return Equation(g.b, g.Q, terms, "N", cross(P - Q, w), nu)
-
-
-_LETTERS = "abcdefghijklmnopqrstuvwxyz"
-
-
-def _letters():
-    """a, b, … z, then a1, b1 …: a force plan's points."""
-    n = 0
-    while True:
-        yield _LETTERS[n % 26] + (str(n // 26) if n >= 26 else "")
-        n += 1
-
-
-def _laid(vectors, names):
-    """Vectors laid end to end from the pole: (points, plan vectors, segment ends, end)."""
-    pole = next(names)
-    at, here = 0j, pole
-    points = {pole: PlanPoint(pole, 0j, Source("pole"))}
-    out, ends = [], {}
-    for label, comp, value in vectors:
-        nxt = next(names)
-        at = at + value
-        points[nxt] = PlanPoint(nxt, at, Source("component", base=here, label=label))
-        out.append(PlanVector(here, nxt, comp, label))
-        ends[label] = (here, nxt)
-        here = nxt
-    return pole, points, out, ends, here
-
-
-def _finish(pole, points, vectors, ends, mu_F) -> VectorPlan:
-    big = max([abs(p.value) for p in points.values()] + [abs(points[b].value - points[a].value)
-                                                           for a, b in ends.values()] + [0.0])
-    mu = mu_F or choose_mu(big, big, FORCE_PLAN_MM, FORCE_PLAN_MM)
-    tiny = NOISE * big
-    segments = {}
-    for label, (a, b) in ends.items():
-        size = abs(points[b].value - points[a].value)
-        segments[label] = size / mu if size > tiny else 0.0
-    return VectorPlan("force", pole, points, tuple(vectors), mu, "N", MappingProxyType(segments),
-                      MappingProxyType(dict(ends)), tiny)
-
-
-def _closed_plan(known, last, first, sine, mu_F, wholes, inner, A) -> VectorPlan:
-    """A polygon of ``known`` vectors closed by two lines: ``last`` (name, direction,
-    relation, its value) through the end, ``first`` through the pole; the reactions
-    ``wholes`` (their two components' sums) and the inner reaction ``inner`` drawn as the
-    resultants they are."""
-    names = _letters()
-    pole, points, vectors, ends, end = _laid(known, names)
-    meet = next(names)
-    value = points[end].value + last[3]
-    eq = " + ".join([v.label for v in vectors] + [last[0], first[0]]) + " = 0"
-    lines = (PlanLine(end, last[1], last[2], last[0]), PlanLine(pole, first[1], first[2], first[0]))
-    points[meet] = PlanPoint(meet, value, Source("intersection", equation=eq, lines=lines,
-                                                 sine=float(abs(sine))))
-    vectors += [PlanVector(end, meet, "closing", last[0]), PlanVector(meet, pole, "closing", first[0])]
-    ends[last[0]] = (end, meet)
-    ends[first[0]] = (meet, pole)
-    _resultants(points, vectors, ends, wholes, inner, A, pole, meet)
-    return _finish(pole, points, vectors, ends, mu_F)
-
-
-def _resultants(points, vectors, ends, wholes, inner, A, pole, meet):
-    """Each reaction found as two components, drawn whole (from the start of its first
-    component to the end of its second), and the inner reaction closing link a's own
-    polygon."""
-    for r in wholes:
-        if r.tangential is None:
-            continue
-        t0, t1 = ends[r.name + "^τ"]
-        n0, n1 = ends[r.name + "^n"]
-        a, b = (n0, t1) if n1 == t0 else (t0, n1)
-        vectors.append(PlanVector(a, b, "reaction", r.name))
-        ends[r.name] = (a, b)
-    # link a's loads run from the end of its first reaction's component on
-    a_labels = [ld.name for ld in A if ld.force != 0]
-    if a_labels:
-        start = ends[a_labels[-1]][1]
-    else:
-        start = ends[wholes[0].name + "^τ"][1] if wholes[0].tangential is not None else pole
-    vectors.append(PlanVector(start, meet, "reaction", inner.name))
-    ends[inner.name] = (start, meet)
-
-
-def _vector_plan(known, closing, mu_F, inner, A) -> VectorPlan:
-    """A polygon of known vectors closed by one vector back to the pole (the slotted
-    link's frame reaction), and the block's own polygon closed by ``inner``."""
-    names = _letters()
-    pole, points, vectors, ends, end = _laid(known, names)
-    vectors.append(PlanVector(end, pole, "closing", closing[0]))
-    ends[closing[0]] = (end, pole)
-    a_labels = [ld.name for ld in A if ld.force != 0]
-    start = ends[a_labels[-1]][1] if a_labels else ends[known[0][0]][1]
-    vectors.append(PlanVector(start, pole, "reaction", inner.name))
-    ends[inner.name] = (start, pole)
-    return _finish(pole, points, vectors, ends, mu_F)
-
-
-def _yoke_plan(b_vectors, outer, inner_b, a_vectors, RP, sine, mu_F) -> VectorPlan:
-    """RPP: link b's polygon F_b + N_kb + N_ab = 0 closed by lines ⊥ the outer and ⊥ the
-    inner guide; then the block's: N_ba + F_a + R_Pa = 0 from the meeting point."""
-    names = _letters()
-    pole, points, vectors, ends, end = _laid(b_vectors, names)
-    meet = next(names)
-    value = points[end].value + outer[3]
-    eq = " + ".join([v.label for v in vectors] + [outer[0], inner_b[0]]) + " = 0"
-    lines = (PlanLine(end, outer[1], outer[2], outer[0]), PlanLine(pole, inner_b[1], inner_b[2], inner_b[0]))
-    points[meet] = PlanPoint(meet, value, Source("intersection", equation=eq, lines=lines,
-                                                 sine=float(abs(sine))))
-    vectors += [PlanVector(end, meet, "closing", outer[0]), PlanVector(meet, pole, "closing", inner_b[0])]
-    ends[outer[0]] = (end, meet)
-    ends[inner_b[0]] = (meet, pole)
-    here, at = pole, 0j
-    for label, comp, v in a_vectors:  # the block's loads from the pole: N_ba = pole → meet reversed
-        nxt = next(names)
-        at = at + v
-        points[nxt] = PlanPoint(nxt, at, Source("component", base=here, label=label))
-        vectors.append(PlanVector(here, nxt, comp, label))
-        ends[label] = (here, nxt)
-        here = nxt
-    vectors.append(PlanVector(here, meet, "closing", RP.name))
-    ends[RP.name] = (here, meet)
-    return _finish(pole, points, vectors, ends, mu_F)
 
 
 def residual(fa: ForceAnalysis) -> float:

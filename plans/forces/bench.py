@@ -12,7 +12,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from plans.cycle.analysis import analyse_cycle
+from plans.cycle import analyse_cycle
 from plans.forces.analysis import analyse
 from plans.forces.loads import stroke_of
 from plans.forces.reference import global_solve
@@ -52,7 +52,7 @@ def force_bench(mech, name: str, positions: int = 100_000, repeats: int = 3, che
         ref = global_solve(mech, sol.scalar, fa.loads)
         big = max([abs(r.value) for r in fa.reactions.values()] + [abs(fa.M_y)] + [1e-300])
         worst = max(worst, abs(out.M_y[k] - ref.M_y) / big)
-        for (pt, i, j), f in ref.revolutes.items():
+        for (_pt, i, j), f in ref.revolutes.items():
             got = out.reactions.get(f"R{i}{j}")
             if got is not None:
                 worst = max(worst, abs(got[k] - f) / big)

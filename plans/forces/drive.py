@@ -72,8 +72,11 @@ def read_catalogue(path: str | Path | None = None) -> tuple[Motor, ...]:
     pr = Problems(source, text)
     rows = data.get("motor") if isinstance(data, dict) else None
     if not isinstance(rows, list) or not rows:
-        raise InputError(source, "motor: missing: a catalogue lists its motors as [[motor]] type = …, "
-                         "power_kw = …, rpm = …, synchronous = …")
+        raise InputError(
+            source,
+            "motor: missing: a catalogue lists its motors as [[motor]] type = …, "
+            "power_kw = …, rpm = …, synchronous = …",
+        )
     out = []
     for i, row in enumerate(rows):
         at = f"motor[{i}]"
@@ -83,10 +86,12 @@ def read_catalogue(path: str | Path | None = None) -> tuple[Motor, ...]:
         check_keys(row, {"type", "power_kw", "rpm", "synchronous"}, at, pr)
         kind = read_text(row.get("type"), f"{at}.type", pr, "")
         if not kind:
-            pr.add(f"{at}.type", "missing: the motor's type, e.g. \"4А80В2У3\"")
+            pr.add(f"{at}.type", 'missing: the motor\'s type, e.g. "4А80В2У3"')
         kw = read_number(row.get("power_kw"), f"{at}.power_kw", pr, positive=True, unit="kW", high=1e5)
         rpm = read_number(row.get("rpm"), f"{at}.rpm", pr, positive=True, unit="rpm", high=1e5)
-        sync = read_number(row.get("synchronous"), f"{at}.synchronous", pr, positive=True, unit="rpm", high=1e5)
+        sync = read_number(
+            row.get("synchronous"), f"{at}.synchronous", pr, positive=True, unit="rpm", high=1e5
+        )
         if kind and kw and rpm and sync:
             out.append(Motor(kind, kw, rpm, int(sync)))
     pr.raise_if_any()
@@ -99,13 +104,19 @@ def choose_motor(needed: float, catalogue, synchronous: int = 3000, source: str 
     fit = sorted((m for m in catalogue if m.synchronous == synchronous), key=lambda m: m.power_kw)
     if not fit:
         speeds = sorted({m.synchronous for m in catalogue})
-        raise InputError(source, f"drive.synchronous: the catalogue has no motor of {synchronous} rpm "
-                         f"(it has {', '.join(map(str, speeds))})")
+        raise InputError(
+            source,
+            f"drive.synchronous: the catalogue has no motor of {synchronous} rpm "
+            f"(it has {', '.join(map(str, speeds))})",
+        )
     for m in fit:
         if m.power_kw * 1000 >= needed:
             return m
-    raise InputError(source, f"the drive needs {needed / 1000:.3g} kW: the catalogue's largest motor of "
-                     f"{synchronous} rpm is {fit[-1].type}, {fit[-1].power_kw:g} kW")
+    raise InputError(
+        source,
+        f"the drive needs {needed / 1000:.3g} kW: the catalogue's largest motor of "
+        f"{synchronous} rpm is {fit[-1].type}, {fit[-1].power_kw:g} kW",
+    )
 
 
 def _r2(x: float, classroom: bool) -> float:
@@ -118,16 +129,22 @@ def gearbox(n_motor: float, n1: float, digit: int = 0, classroom: bool = True, s
     u = _r2(n_motor / n1, classroom)
     z1 = BASE_TEETH + digit
     if u < 1:
-        raise InputError(source, f"the motor turns slower ({n_motor:g} rpm) than the crank ({n1:.6g} rpm): "
-                         "a gearbox that reduces speed cannot drive it")
+        raise InputError(
+            source,
+            f"the motor turns slower ({n_motor:g} rpm) than the crank ({n1:.6g} rpm): "
+            "a gearbox that reduces speed cannot drive it",
+        )
     if u <= ONE_STAGE:
         z2 = _teeth(u * z1)
         ua = _r2(z2 / z1, classroom)
         n1a = _r2(n_motor / ua, classroom)
         return Gearbox(u, 1, u, None, z1, z2, None, None, ua, n1a, _dev(n1a, n1, classroom))
     if u > TWO_STAGES:
-        raise InputError(source, f"u = {u:g} is beyond a two-stage gearbox (at most {TWO_STAGES:g}): "
-                         "choose a slower motor ([drive] synchronous = 1500, 1000 or 750)")
+        raise InputError(
+            source,
+            f"u = {u:g} is beyond a two-stage gearbox (at most {TWO_STAGES:g}): "
+            "choose a slower motor ([drive] synchronous = 1500, 1000 or 750)",
+        )
     u34 = _r2(math.sqrt(u / SPLIT), classroom)
     u12 = _r2(SPLIT * u34, classroom)
     z2, z4 = _teeth(u12 * z1), _teeth(u34 * z1)
@@ -139,7 +156,7 @@ def gearbox(n_motor: float, n1: float, digit: int = 0, classroom: bool = True, s
 
 def _teeth(x: float) -> int:
     """The nearest whole number of teeth (a half rounded up, as by hand)."""
-    return int(math.floor(x + 0.5))
+    return math.floor(x + 0.5)
 
 
 def _dev(n1a: float, n1: float, classroom: bool) -> float:
@@ -147,12 +164,23 @@ def _dev(n1a: float, n1: float, classroom: bool) -> float:
     return round(d, 1) if classroom else d
 
 
-def drive(power: float, n1: float, efficiency: float = 0.9, digit: int = 0, synchronous: int = 3000,
-          catalogue=None, classroom: bool = True, source: str = "") -> DriveResult:
+def drive(
+    power: float,
+    n1: float,
+    efficiency: float = 0.9,
+    digit: int = 0,
+    synchronous: int = 3000,
+    catalogue=None,
+    classroom: bool = True,
+    source: str = "",
+) -> DriveResult:
     """The motor and the gearbox for ``power`` (W) on a crank turning at ``n1`` rpm."""
     if not power > 0:
-        raise InputError(source, f"the crank takes no power here (P = M_у·ω1 = {power:.4g} W): a motor is "
-                         "chosen for a position where the drive does work, or for the cycle's mean power")
+        raise InputError(
+            source,
+            f"the crank takes no power here (P = M_у·ω1 = {power:.4g} W): a motor is "
+            "chosen for a position where the drive does work, or for the cycle's mean power",
+        )
     catalogue = catalogue if catalogue is not None else read_catalogue()
     needed = power / efficiency
     motor = choose_motor(needed, catalogue, synchronous, source)

@@ -174,10 +174,10 @@ def rpp(P, B0, us, u, F_a, MP_a, F_b, MB0_b) -> RPP:
     return RPP(ws, w, nu1, nu2, N_ba, N_kb, -F_a - N_ba, MP_a, couple, sine)
 
 
-def crank(O, F, MO):
-    """The driving link: its loads' resultant F and their moment about its pivot O (the
+def crank(pivot, F, MO):
+    """The driving link: its loads' resultant F and their moment about its pivot (the
     groups' forces on it included). Returns (M_у, R_01): the balancing moment that holds it
-    and the frame's force on it at O."""
+    and the frame's force on it at the pivot."""
     return -MO, -F
 
 

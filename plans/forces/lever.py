@@ -101,7 +101,8 @@ def lever(solution, loads: list[Load]) -> Lever:
     # −F_у·pb·sign(ω1) (see the module's docstring), and the lever's sum vanishes
     sense = 1.0 if d.omega > 0 else -1.0
     F_y = total / (pb * sense)
-    rounded = sum(round(t.arm) * (1 if t.moment > 0 else -1) * abs(t.force) if t.force else t.moment
-                  for t in terms)
+    rounded = sum(
+        round(t.arm) * (1 if t.moment > 0 else -1) * abs(t.force) if t.force else t.moment for t in terms
+    )
     measured = rounded / (round(pb) * sense) if round(pb) else F_y
     return Lever(tuple(terms), d.tip, pb, F_y, F_y * l_crank, measured, mu)

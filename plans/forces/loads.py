@@ -16,8 +16,8 @@ from typing import NamedTuple
 import numpy as np
 
 from plans.errors import InputError
+from plans.model import Mechanism
 from plans.model.loads import Loads
-from plans.model.mechanism import Mechanism
 
 
 class Load(NamedTuple):
@@ -77,8 +77,17 @@ def stroke_of(mech: Mechanism, cycle, solver) -> Stroke | None:
         m = solver.solve_one(phi)
         ends.append(((m.position[out.point] - guide.point) * guide.direction.conjugate()).real)
     sense = 1 if mech.driver.omega > 0 else -1
-    return Stroke(out.point, out.link, guide.point, guide.direction, ends[0], ends[1],
-                  cycle.extremes[0], cycle.extremes[1], sense)
+    return Stroke(
+        out.point,
+        out.link,
+        guide.point,
+        guide.direction,
+        ends[0],
+        ends[1],
+        cycle.extremes[0],
+        cycle.extremes[1],
+        sense,
+    )
 
 
 def resistance(loads: Loads, stroke: Stroke | None, phi, position, source: str = ""):
@@ -90,13 +99,19 @@ def resistance(loads: Loads, stroke: Stroke | None, phi, position, source: str =
     if graph is None:
         return None
     if stroke is None:
-        raise InputError(source, "loads.resistance: a P(S) graph needs an output that slides on a fixed "
-                         "guide and a crank that makes a full turn (output = the slider's point)")
+        raise InputError(
+            source,
+            "loads.resistance: a P(S) graph needs an output that slides on a fixed "
+            "guide and a crank that makes a full turn (output = the slider's point)",
+        )
     H = stroke.H
     xs = np.asarray(graph.s) * (H if graph.relative else 1.0)
     if not graph.relative and xs[-1] > H * (1 + 1e-9) + 1e-12:
-        raise InputError(source, f"loads.resistance.s: the graph runs to s = {xs[-1]:g} m, beyond the "
-                         f"stroke H = {H:.6g} m: s is measured from the start of the working stroke")
+        raise InputError(
+            source,
+            f"loads.resistance.s: the graph runs to s = {xs[-1]:g} m, beyond the "
+            f"stroke H = {H:.6g} m: s is measured from the start of the working stroke",
+        )
     way = 1.0 if stroke.end >= stroke.start else -1.0
     s = ((position[stroke.point] - stroke.origin) * stroke.direction.conjugate()).real
     s = (s - stroke.start) * way
@@ -131,8 +146,9 @@ def at_position(mech: Mechanism, loads: Loads, motion, phi, stroke: Stroke | Non
         if size is None:  # so many times a link's weight (seed 001: 100·G2)
             m = loads.masses.get(f.weight_of)
             size = f.times * (m.mass if m else 0.0) * g
-        out.append(Load(f.name, "force", lid, f.point, pos[f.point],
-                        size * _direction(mech, motion, f, lid), 0.0))
+        out.append(
+            Load(f.name, "force", lid, f.point, pos[f.point], size * _direction(mech, motion, f, lid), 0.0)
+        )
     for mo in loads.moments:
         value = mo.moment
         if mo.rule is not None:
@@ -141,9 +157,11 @@ def at_position(mech: Mechanism, loads: Loads, motion, phi, stroke: Stroke | Non
             value = float(value) if np.ndim(value) == 0 else value
         out.append(Load(mo.name, "moment", mo.link, None, 0j, 0j, value))
     if loads.resistance is not None:
-        P, force, _ = resistance(loads, stroke, phi, pos, mech.source)
+        _P, force, _ = resistance(loads, stroke, phi, pos, mech.source)
         lid = stroke.link
-        out.append(Load(loads.resistance.name, "resistance", lid, stroke.point, pos[stroke.point], force, 0.0))
+        out.append(
+            Load(loads.resistance.name, "resistance", lid, stroke.point, pos[stroke.point], force, 0.0)
+        )
     return out
 
 

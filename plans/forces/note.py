@@ -27,15 +27,22 @@ T = {
         "a_read": "a_{S} = π{s}·μa = {mm}·{mu} = {a} m/s²",
         "phi_moment": "Inertia moment of link {i}, against ε{i} ({sense}):",
         "pair": "Replaced by a couple of two forces ⊥ {a}{b} at {a} and {b}:",
+        "shift": "Taken with the inertia force: its line shifted from {S} by h, on the side that "
+                 "turns it about {S} as M_Φ{i} does:",
         "zero_phi": "The centre of mass of link {i} is on its fixed pivot {S}: its inertia force is zero.",
         "no_moments": "As the task asks, only the inertia forces are taken (no inertia moments).",
         "resistance": "Useful resistance",
-        "graph": "From the graph P(S) at s = {s} m from the start of the working stroke (H = {H} m, {stroke}):",
+        "graph": "From the graph P(S) at s = {s} m from the start of the working stroke (H = {H} m, "
+                 "{stroke}):",
         "times": "{name} = {k}·G{j} = {k}·{G} = {F} N, at {p}, {rule}",
         "fixed_force": "{name} = {F} N at {p}, {rule}",
-        "against velocity": "against V_{p}", "along velocity": "along V_{p}",
-        "along guide": "along the guide", "against guide": "against the guide", "angle": "at {a}° from +x",
-        "working": "working stroke", "idle": "idle stroke",
+        "against velocity": "against V_{p}",
+        "along velocity": "along V_{p}",
+        "along guide": "along the guide",
+        "against guide": "against the guide",
+        "angle": "at {a}° from +x",
+        "working": "working stroke",
+        "idle": "idle stroke",
         "groups": "Kinetostatics of the groups (the last attached first)",
         "group": "Group of links {a} and {b} ({kind})",
         "moments_of": "Moments about {X} of link {i} (arms measured on the drawing, in m):",
@@ -53,25 +60,27 @@ T = {
         "R01": "Reaction of the frame: R0{i} = −(ΣF on link {i}) = {F} N",
         "lever": "Zhukovsky's lever",
         "lever_intro": "The velocity plan turned by 90°, every load applied at the image of its point; "
-                       "the moments about the pole p (arms h in mm of the plan, pb = {pb} mm):",
+        "the moments about the pole p (arms h in mm of the plan, pb = {pb} mm):",
         "lever_eq": "F_у = (Σ ±F·h) / pb = ({expr}) / {pb} = {F} N",
         "discrepancy": "Discrepancy from the force plans: δ = |F_у(lever) − F_у(plans)| / F_у(plans) = {d} %",
         "power": "Power and drive",
         "P": "P = F_у·V_{t} = {F}·{V} = {P} W",
-        "P_mean": "The cycle's mean power (the crank takes no power at this position): P = M_у,mean·ω{i} = {P} W",
+        "P_mean": "The cycle's mean power (the crank takes no power at this position): P = M_у,mean·ω{i} = "
+                  "{P} W",
         "need": "P_motor ≥ P/η = {P}/{eta} = {need} W: motor {type}, {kw} kW, n = {rpm} rpm",
         "u": "u = n_motor/n1 = {rpm}/{n1} = {u}",
         "stages2": "u > 6.3: a two-stage gearbox, u12 = 1.2·u34: u34 = √(u/1.2) = √({u}/1.2) = {u34}, "
-                   "u12 = 1.2·{u34} = {u12}",
+        "u12 = 1.2·{u34} = {u12}",
         "stages1": "u ≤ 6.3: a one-stage gearbox",
         "teeth2": "z1 = z3 = 20 + Ш = {z1}; z2 = u12·z1 = {u12}·{z1} = {z2r} ≈ {z2}; "
-                  "z4 = u34·z3 = {u34}·{z1} = {z4r} ≈ {z4}",
+        "z4 = u34·z3 = {u34}·{z1} = {z4r} ≈ {z4}",
         "teeth1": "z1 = 20 + Ш = {z1}; z2 = u·z1 = {u}·{z1} = {z2r} ≈ {z2}",
         "actual2": "u = (z2/z1)·(z4/z3) = {u12a}·{u34a} = {ua}; n1 = {rpm}/{ua} = {n1a} rpm; "
-                   "Δn1 = ({n1a} − {n1})/{n1}·100 % = {dev} %",
+        "Δn1 = ({n1a} − {n1})/{n1}·100 % = {dev} %",
         "actual1": "u = z2/z1 = {ua}; n1 = {rpm}/{ua} = {n1a} rpm; Δn1 = ({n1a} − {n1})/{n1}·100 % = {dev} %",
         "nodrive": "No drive is chosen: {why}.",
-        "ccw": "counter-clockwise", "cw": "clockwise",
+        "ccw": "counter-clockwise",
+        "cw": "clockwise",
     },
     "ru": {
         "title": "Силовой анализ",
@@ -83,15 +92,22 @@ T = {
         "a_read": "a_{S} = π{s}·μa = {mm}·{mu} = {a} м/с²",
         "phi_moment": "Главный момент сил инерции звена {i}, противоположно ε{i} ({sense}):",
         "pair": "Заменяем парой сил, приложенных в точках {a} и {b} ⊥ {a}{b}:",
-        "zero_phi": "Центр масс звена {i} совпадает с неподвижной точкой {S}: главный вектор сил инерции равен нулю.",
+        "shift": "Учитываем вместе с силой инерции: её линию действия смещаем от {S} на h в ту "
+                 "сторону, чтобы её момент относительно {S} совпадал с M_Φ{i}:",
+        "zero_phi": "Центр масс звена {i} совпадает с неподвижной точкой {S}: главный вектор сил инерции "
+                    "равен нулю.",
         "no_moments": "По условию учитываются только силы инерции (без моментов сил инерции).",
         "resistance": "Сила полезного сопротивления",
         "graph": "По графику P(S) при s = {s} м от начала рабочего хода (H = {H} м, {stroke}):",
         "times": "{name} = {k}·G{j} = {k}·{G} = {F} Н, в точке {p}, {rule}",
         "fixed_force": "{name} = {F} Н в точке {p}, {rule}",
-        "against velocity": "против V_{p}", "along velocity": "по V_{p}",
-        "along guide": "вдоль направляющей", "against guide": "против направляющей", "angle": "под углом {a}° к +x",
-        "working": "рабочий ход", "idle": "холостой ход",
+        "against velocity": "против V_{p}",
+        "along velocity": "по V_{p}",
+        "along guide": "вдоль направляющей",
+        "against guide": "против направляющей",
+        "angle": "под углом {a}° к +x",
+        "working": "рабочий ход",
+        "idle": "холостой ход",
         "groups": "Кинетостатика групп Ассура (начиная с последней присоединённой)",
         "group": "Группа звеньев {a} и {b} ({kind})",
         "moments_of": "Моменты относительно точки {X} для звена {i} (плечи — по чертежу, в м):",
@@ -102,33 +118,36 @@ T = {
         "closes1": "Многоугольник замыкается вектором {R}; из плана сил:",
         "read": "{R} = [{R}]·μF = {mm}·{mu} = {F} Н",
         "inner": "Внутренняя реакция — из многоугольника сил звена {a}: {R} = [{R}]·μF = {mm}·{mu} = {F} Н",
-        "rpr": "Вся группа относительно точки {Q}: сила направляющей на камень ⊥ направляющей, из ΣM_{Q} = 0:",
+        "rpr": "Вся группа относительно точки {Q}: сила направляющей на камень ⊥ направляющей, из ΣM_{Q} = "
+               "0:",
         "crank": "Ведущее звено {i}",
         "My": "Уравновешивающий момент из ΣM_{O}(звено {i}) = 0:",
         "Fy": "Уравновешивающая сила в точке {t} ⊥ {O}{t}:",
         "R01": "Реакция стойки: R0{i} = −(ΣF на звено {i}) = {F} Н",
         "lever": "Рычаг Н. Е. Жуковского",
         "lever_intro": "План скоростей, повёрнутый на 90°; силы приложены в одноимённых точках; моменты "
-                       "относительно полюса p (плечи h в мм плана, pb = {pb} мм):",
+        "относительно полюса p (плечи h в мм плана, pb = {pb} мм):",
         "lever_eq": "F_у = (Σ ±F·h) / pb = ({expr}) / {pb} = {F} Н",
         "discrepancy": "Расхождение с планами сил: δ = |F_у(рычаг) − F_у(планы)| / F_у(планы) = {d} %",
         "power": "Мощность и привод",
         "P": "P = F_у·V_{t} = {F}·{V} = {P} Вт",
         "P_mean": "Средняя мощность за цикл (в этом положении кривошип мощности не потребляет): "
-                  "P = M_у,ср·ω{i} = {P} Вт",
+        "P = M_у,ср·ω{i} = {P} Вт",
         "need": "P_дв ≥ P/η = {P}/{eta} = {need} Вт: электродвигатель {type}, {kw} кВт, n = {rpm} об/мин",
         "u": "u = n_дв/n1 = {rpm}/{n1} = {u}",
         "stages2": "u > 6,3: двухступенчатый редуктор, u12 = 1,2·u34: u34 = √(u/1,2) = √({u}/1,2) = {u34}, "
-                   "u12 = 1,2·{u34} = {u12}",
+        "u12 = 1,2·{u34} = {u12}",
         "stages1": "u ≤ 6,3: одноступенчатый редуктор",
         "teeth2": "z1 = z3 = 20 + Ш = {z1}; z2 = u12·z1 = {u12}·{z1} = {z2r} ≈ {z2}; "
-                  "z4 = u34·z3 = {u34}·{z1} = {z4r} ≈ {z4}",
+        "z4 = u34·z3 = {u34}·{z1} = {z4r} ≈ {z4}",
         "teeth1": "z1 = 20 + Ш = {z1}; z2 = u·z1 = {u}·{z1} = {z2r} ≈ {z2}",
         "actual2": "u = (z2/z1)·(z4/z3) = {u12a}·{u34a} = {ua}; n1 = {rpm}/{ua} = {n1a} об/мин; "
-                   "Δn1 = ({n1a} − {n1})/{n1}·100 % = {dev} %",
-        "actual1": "u = z2/z1 = {ua}; n1 = {rpm}/{ua} = {n1a} об/мин; Δn1 = ({n1a} − {n1})/{n1}·100 % = {dev} %",
+        "Δn1 = ({n1a} − {n1})/{n1}·100 % = {dev} %",
+        "actual1": "u = z2/z1 = {ua}; n1 = {rpm}/{ua} = {n1a} об/мин; Δn1 = ({n1a} − {n1})/{n1}·100 % = "
+                   "{dev} %",
         "nodrive": "Привод не подобран: {why}.",
-        "ccw": "против часовой стрелки", "cw": "по часовой стрелке",
+        "ccw": "против часовой стрелки",
+        "cw": "по часовой стрелке",
     },
 }
 
@@ -207,12 +226,20 @@ def force_note(F: Forces, lang: str = "en", section: int = 1) -> str:
             unit = "N·m" if lang == "en" else "Н·м"
             item(f"M_Φ{lid} = J_S{lid}·ε{lid} = {c(ms.J)}·{c(abs(eps))} = {n(abs(ld.moment))} {unit}")
             ends = joints(mech, lid)
-            if loads.couples == "pair" and ends is not None:
+            phi_force = by_name.get(f"Φ{lid}")
+            if loads.couples == "shift" and phi_force is not None and abs(phi_force.force) > 0:
+                para(t["shift"].format(S=S, i=lid))
+                size = abs(phi_force.force)
+                item(f"h = M_Φ{lid} / Φ{lid} = {c(abs(ld.moment))} / {c(size)} = "
+                     f"{n(abs(ld.moment) / size)} {'m' if lang == 'en' else 'м'}")
+            elif loads.couples == "pair" and ends is not None:
                 a, b = ends
                 length = abs(m.position[b] - m.position[a])
                 para(t["pair"].format(a=a, b=b))
-                item(f"P_Φ{lid} = M_Φ{lid} / l_{a}{b} = {c(abs(ld.moment))} / {c(length)} = "
-                     f"{n(abs(ld.moment) / length)} {N}")
+                item(
+                    f"P_Φ{lid} = M_Φ{lid} / l_{a}{b} = {c(abs(ld.moment))} / {c(length)} = "
+                    f"{n(abs(ld.moment) / length)} {N}"
+                )
     if not loads.inertia_moments:
         para(t["no_moments"])
     forces = [ld for ld in fa.loads if ld.kind in ("force", "resistance")]
@@ -224,11 +251,11 @@ def force_note(F: Forces, lang: str = "en", section: int = 1) -> str:
     for g in fa.groups:
         _group(out, t, g, lang, item, n, N, sol)
     heading(t["crank"].format(i=d.link))
-    O = m.position[d.pivot]
+    pivot = m.position[d.pivot]
     para(t["My"].format(O=d.pivot, i=d.link))
     parts = []
     for ld in fa.crank_loads:
-        mo = float((complex(ld.at - O).conjugate() * ld.force).imag + ld.moment)
+        mo = float((complex(ld.at - pivot).conjugate() * ld.force).imag + ld.moment)
         if mo:
             size = abs(complex(ld.force))
             what = f"{c(size)}·{c(abs(mo) / size)}" if size else c(abs(mo))
@@ -263,7 +290,9 @@ def _resistance(out, t, ld, fa, loads, lang, item, n, N):
     if ld.kind == "resistance" and fa.stroke is not None:
         st = fa.stroke
         s = abs(((sol.positions[st.point] - st.origin) * st.direction.conjugate()).real - st.start)
-        _para(out, t["graph"].format(s=n(s), H=n(st.H), stroke=t["working" if st.working(sol.phi) else "idle"]))
+        _para(
+            out, t["graph"].format(s=n(s), H=n(st.H), stroke=t["working" if st.working(sol.phi) else "idle"])
+        )
         item(f"{ld.name} = {n(abs(ld.force))} {N}")
         return
     f = next((x for x in loads.forces if x.name == ld.name), None)
@@ -272,8 +301,11 @@ def _resistance(out, t, ld, fa, loads, lang, item, n, N):
     rule = t[f.rule].format(p=p) if f.rule else t["angle"].format(a=n(math.degrees(f.angle)))
     if f.weight_of is not None:
         G = loads.masses[f.weight_of].mass * loads.g
-        item(t["times"].format(name=ld.name, k=n(f.times, 5), j=f.weight_of, G=n(G, 5), F=n(abs(ld.force)), p=p,
-                               rule=rule))
+        item(
+            t["times"].format(
+                name=ld.name, k=n(f.times, 5), j=f.weight_of, G=n(G, 5), F=n(abs(ld.force)), p=p, rule=rule
+            )
+        )
     else:
         item(t["fixed_force"].format(name=ld.name, F=n(abs(ld.force)), p=p, rule=rule))
 
@@ -283,15 +315,21 @@ def _group(out, t, g, lang, item, n, N, sol):
     kind = grp.kind.name if lang == "en" else grp.kind.ru
     out.extend(["", f"**{t['group'].format(a=grp.links[0], b=grp.links[1], kind=kind)}**"])
     for eq in g.equations:
-        _para(out, t["moments_of"].format(X=eq.about, i=eq.link) if eq.unknown != "N"
-                   else t["rpr"].format(Q=eq.about))
+        _para(
+            out,
+            t["moments_of"].format(X=eq.about, i=eq.link)
+            if eq.unknown != "N"
+            else t["rpr"].format(Q=eq.about),
+        )
         total = sum(term.moment for term in eq.terms)
         parts = []
         for term in eq.terms:
             if not term.moment:
                 continue
             sign = "+ " if term.moment > 0 else "− "
-            parts.append(sign + (f"{n(term.size, 5)}·{n(term.arm, 5)}" if term.arm else n(abs(term.moment), 5)))
+            parts.append(
+                sign + (f"{n(term.size, 5)}·{n(term.arm, 5)}" if term.arm else n(abs(term.moment), 5))
+            )
         known = " ".join(parts).removeprefix("+ ") or "0"
         expr = f"({known}) / {n(eq.arm, 5)}"
         name = eq.unknown if eq.unknown != "N" else next(r.name for r in g.reactions if r.pair == "prismatic")
@@ -338,18 +376,47 @@ def _drive(out, t, F, lang, item, n):
         item(t["P"].format(t=d.tip, F=n(abs(fa.F_y), 5), V=n(V, 5), P=n(dr.power)))
     else:
         item(t["P_mean"].format(i=d.link, P=n(dr.power)))
-    item(t["need"].format(P=n(dr.power, 5), eta=n(dr.efficiency), need=n(dr.needed), type=dr.motor.type,
-                          kw=n(dr.motor.power_kw), rpm=n(dr.motor.rpm)))
+    item(
+        t["need"].format(
+            P=n(dr.power, 5),
+            eta=n(dr.efficiency),
+            need=n(dr.needed),
+            type=dr.motor.type,
+            kw=n(dr.motor.power_kw),
+            rpm=n(dr.motor.rpm),
+        )
+    )
     item(t["u"].format(rpm=n(dr.motor.rpm), n1=n(rpm_of(mech), 5), u=r2(gb.u)))
     dev = ("+" if gb.deviation > 0 else "−" if gb.deviation < 0 else "") + num(abs(gb.deviation), 2, lang)
     if gb.stages == 2:
         item(t["stages2"].format(u=r2(gb.u), u34=r2(gb.u34), u12=r2(gb.u12)))
-        item(t["teeth2"].format(z1=gb.z1, u12=r2(gb.u12), u34=r2(gb.u34), z2r=r2(gb.u12 * gb.z1), z2=gb.z2,
-                                z4r=r2(gb.u34 * gb.z1), z4=gb.z4))
-        item(t["actual2"].format(u12a=r2(gb.z2 / gb.z1), u34a=r2(gb.z4 / gb.z3), ua=r2(gb.u_actual),
-                                 rpm=n(dr.motor.rpm), n1a=r2(gb.n1_actual), n1=n(dr.n1, 5), dev=dev))
+        item(
+            t["teeth2"].format(
+                z1=gb.z1,
+                u12=r2(gb.u12),
+                u34=r2(gb.u34),
+                z2r=r2(gb.u12 * gb.z1),
+                z2=gb.z2,
+                z4r=r2(gb.u34 * gb.z1),
+                z4=gb.z4,
+            )
+        )
+        item(
+            t["actual2"].format(
+                u12a=r2(gb.z2 / gb.z1),
+                u34a=r2(gb.z4 / gb.z3),
+                ua=r2(gb.u_actual),
+                rpm=n(dr.motor.rpm),
+                n1a=r2(gb.n1_actual),
+                n1=n(dr.n1, 5),
+                dev=dev,
+            )
+        )
     else:
         item(t["stages1"])
         item(t["teeth1"].format(z1=gb.z1, u=r2(gb.u), z2r=r2(gb.u * gb.z1), z2=gb.z2))
-        item(t["actual1"].format(ua=r2(gb.u_actual), rpm=n(dr.motor.rpm), n1a=r2(gb.n1_actual),
-                                 n1=n(dr.n1, 5), dev=dev))
+        item(
+            t["actual1"].format(
+                ua=r2(gb.u_actual), rpm=n(dr.motor.rpm), n1a=r2(gb.n1_actual), n1=n(dr.n1, 5), dev=dev
+            )
+        )

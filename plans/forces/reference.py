@@ -17,7 +17,7 @@ from typing import NamedTuple
 import numpy as np
 
 from plans.geometry import cross
-from plans.model.mechanism import Mechanism
+from plans.model import Mechanism
 
 
 class GlobalSolution(NamedTuple):

@@ -55,9 +55,12 @@ def solve_forces(sol, solver, cycle, mu_F: float | None = None, catalogue=None) 
     mech = sol.mechanism
     loads = mech.loads
     if loads is None:
-        raise InputError(mech.source, "loads: missing: the force analysis needs the links' masses and the "
-                         'forces on them, e.g. [loads.links.3] mass = 10, J_S = 0.4, centre = "S3" '
-                         "(README: Loads)")
+        raise InputError(
+            mech.source,
+            "loads: missing: the force analysis needs the links' masses and the "
+            'forces on them, e.g. [loads.links.3] mass = 10, J_S = 0.4, centre = "S3" '
+            "(README: Loads)",
+        )
     stroke: Stroke | None = stroke_of(mech, cycle, solver)
     fa = analyse(sol, loads, stroke, mu_F)
     lv = lever(sol, list(fa.loads))
@@ -66,7 +69,8 @@ def solve_forces(sol, solver, cycle, mu_F: float | None = None, catalogue=None) 
     turn = positions = None
     if cycle.full_turn:
         phi = cycle.positions[0] + np.linspace(0.0, 2 * math.pi, SAMPLES, endpoint=False) * np.sign(
-            mech.driver.omega)
+            mech.driver.omega
+        )
         try:
             turn = sweep(solver, loads, phi, stroke)
             at = sweep(solver, loads, np.asarray(cycle.positions), stroke)
@@ -92,7 +96,8 @@ def _drive(fa: ForceAnalysis, turn: ForceSweep | None, spec: Drive, catalogue, m
         power, why = turn.mean_power(), "mean"
     catalogue = catalogue if catalogue is not None else read_catalogue()
     try:
-        return drive(power, n1, spec.efficiency, spec.digit, spec.synchronous, catalogue,
-                     source=mech.source), why
+        return drive(
+            power, n1, spec.efficiency, spec.digit, spec.synchronous, catalogue, source=mech.source
+        ), why
     except InputError as exc:
         return None, str(exc).split(": ", 1)[-1]

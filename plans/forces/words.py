@@ -28,17 +28,18 @@ EN = {
     "My": "  M_у = {value} N·m {sense}; F_у = M_у / l_{pivot}{tip} = {F} N at {tip} ⊥ {pivot}{tip}",
     "balance": "Balancing moment M_у",
     "by_groups": "  by the force plans (groups)   {value} N·m",
-    "by_lever": "  by Zhukovsky's lever           {value} N·m (discrepancy {d} %; with arms to the millimetre "
-                "as on paper {m} %)",
+    "by_lever": "  by Zhukovsky's lever           {value} N·m (discrepancy {d} %; with arms to the "
+    "millimetre as on paper {m} %)",
     "by_power": "  by virtual power               {value} N·m",
     "by_global": "  by one linear solve of all links {value} N·m",
-    "cycle": "Cycle: mean M_у = {mean} N·m, work of the useful resistance {work} J per cycle, mean power {power} W",
+    "cycle": "Cycle: mean M_у = {mean} N·m, work of the useful resistance {work} J per cycle, mean power "
+             "{power} W",
     "cycle_no_resistance": "Cycle: mean M_у = {mean} N·m, mean power {power} W",
     "no_cycle": "Cycle: the crank makes no full turn: no mean over the cycle",
     "drive": "Drive",
     "power_position": "  P = M_у·{omega_sym} = {P} W at this position",
     "power_mean": "  P = M_у,mean·{omega_sym} = {P} W (the cycle's mean power: the crank takes none at this "
-                  "position)",
+    "position)",
     "power_mean_asked": "  P = M_у,mean·{omega_sym} = {P} W (the cycle's mean power, as [drive] asks)",
     "motor": "  P/η = {P} / {eta} = {need} W: motor {type}, {kw} kW, {rpm} rpm",
     "ratio": "  u = n_motor / n1 = {rpm} / {n1} = {u}: {stages}",
@@ -77,17 +78,17 @@ RU = {
     "balance": "Уравновешивающий момент M_у",
     "by_groups": "  по планам сил (группы)          {value} Н·м",
     "by_lever": "  по рычагу Жуковского            {value} Н·м (расхождение {d} %; с плечами, измеренными "
-                "до миллиметра, {m} %)",
+    "до миллиметра, {m} %)",
     "by_power": "  по принципу возможных мощностей {value} Н·м",
     "by_global": "  по решению системы для всех звеньев {value} Н·м",
     "cycle": "Цикл: средний M_у = {mean} Н·м, работа сил полезного сопротивления {work} Дж за цикл, "
-             "средняя мощность {power} Вт",
+    "средняя мощность {power} Вт",
     "cycle_no_resistance": "Цикл: средний M_у = {mean} Н·м, средняя мощность {power} Вт",
     "no_cycle": "Цикл: кривошип не делает полного оборота, среднего за цикл нет",
     "drive": "Привод",
     "power_position": "  P = M_у·{omega_sym} = {P} Вт в этом положении",
     "power_mean": "  P = M_у,ср·{omega_sym} = {P} Вт (средняя мощность за цикл: в этом положении кривошип "
-                  "мощности не потребляет)",
+    "мощности не потребляет)",
     "power_mean_asked": "  P = M_у,ср·{omega_sym} = {P} Вт (средняя мощность за цикл, как задано в [drive])",
     "motor": "  P/η = {P} / {eta} = {need} Вт: электродвигатель {type}, {kw} кВт, {rpm} об/мин",
     "ratio": "  u = n_дв / n1 = {rpm} / {n1} = {u}: {stages}",

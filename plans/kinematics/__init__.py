@@ -1,9 +1,10 @@
 """Group-by-group kinematics: one formula per dyad kind, recorded and bulk solves."""
 
+from plans.tolerances import LIMIT_STEP, SINGULAR_SINE, WARN_SINE
+
+from .dyads import DYADS, Dyad
+from .setup import Setup
 from .solver import (
-    LIMIT_STEP,
-    SINGULAR_SINE,
-    WARN_SINE,
     Construction,
     GroupSolution,
     LinkState,
@@ -20,13 +21,16 @@ from .sweep import (
 
 __all__ = [
     "BLOCK",
+    "DYADS",
     "LIMIT_STEP",
     "SINGULAR_SINE",
     "WARN_SINE",
     "Construction",
+    "Dyad",
     "GroupSolution",
     "LinkState",
     "Route",
+    "Setup",
     "Solver",
     "Sweep",
     "Term",

@@ -12,25 +12,16 @@ import math
 
 import numpy as np
 
+from plans import tolerances
 from plans.errors import AssemblyError, InputError, SingularPlanError
-from plans.geometry import cross
-from plans.kinematics.records import IN_LINE, coincident_name
-from plans.model.mechanism import Mechanism
+from plans.kinematics.dyads import DYADS
+from plans.kinematics.records import coincident_name
+from plans.model import Mechanism
+from plans.model.hints import Ambiguous, hint_holds, parse_hint
 from plans.model.structure import DyadKind, Structure
-
-RELATIONS = ("above", "below", "left of", "right of")
 
 #: samples of the turn searched for change points
 CHANGE_SAMPLES = 3600
-
-#: how far past an angle where a group's two assemblies meet its hints are read (rad):
-#: there (a change point, a limit of the crank's range) no hint can tell them apart,
-#: while 1e-4 rad on they stand some 1e-4 of the group's size apart
-PAST_MEETING = 1e-4
-
-#: a point within this fraction of the distances from a hint's line (or level with its
-#: point) lies on it, on neither side
-ON_LINE = 1e-9
 
 
 def change_points(sv) -> tuple[tuple[tuple[float, ...], ...], tuple[tuple[float, ...], ...],
@@ -47,7 +38,7 @@ def change_points(sv) -> tuple[tuple[tuple[float, ...], ...], tuple[tuple[float,
     other assembly with a kink in its motion (a parallelogram into an antiparallelogram,
     an isosceles crank-slider's slider to rest on the crank's pivot). The smooth motion
     goes on with the other sign. A minimum of the margin on a grid of the turn is refined
-    (to about 1e-10 rad) and taken when it lies within :data:`plans.kinematics.records.IN_LINE` of 0; one below
+    (to about 1e-10 rad) and taken when it lies within :data:`plans.tolerances.IN_LINE` of 0; one below
     that is a dead point of a linkage that cannot turn there.
 
     Where a group meets an odd number of them a turn, its smooth motion repeats only
@@ -73,7 +64,7 @@ def change_points(sv) -> tuple[tuple[tuple[float, ...], ...], tuple[tuple[float,
         last = first + int(np.argmin(gap[first:])) - 1 if not gap[first:].all() else len(gap) - 1
         seam = 0.5 * (first + last) * step
     for i, g in enumerate(sv.structure.groups):
-        if g.kind in (DyadKind.PRP, DyadKind.RPP):  # no assemblies to meet
+        if not DYADS[g.kind].assemblies:  # no assemblies to meet
             found.append(())
             flips.append(())
             continue
@@ -86,7 +77,7 @@ def change_points(sv) -> tuple[tuple[tuple[float, ...], ...], tuple[tuple[float,
         points = []
         for k in np.flatnonzero(low):
             at, least = _lowest(trial, i, grid[k] - step, grid[k] + step)
-            if abs(least) <= IN_LINE:
+            if abs(least) <= tolerances.IN_LINE:
                 points.append((at - sv.branch_at) % (2 * math.pi))
         points.sort()
         found.append(tuple(points))
@@ -131,62 +122,8 @@ def _lowest(sv, i: int, lo: float, hi: float) -> tuple[float, float]:
     return at, float(margin[j])
 
 
-def parse_hint(hint: str, names: list[str]) -> tuple[str, list[str]]:
-    """``"above BD"`` → ("above", ["B", "D"]); ``"right of C"`` → ("right of", ["C"])."""
-    text = " ".join(hint.strip().split())
-    for rel in RELATIONS:
-        if text.startswith(rel + " "):
-            rest = text[len(rel) + 1 :].replace("line ", "").replace("-", "").replace(" ", "")
-            refs: list[str] = []
-            while rest:
-                match = max((n for n in names if rest.startswith(n)), key=len, default=None)
-                if match is None:
-                    raise ValueError(f'"{rest}" is not a point name')
-                refs.append(match)
-                rest = rest[len(match) :]
-            if len(refs) not in (1, 2):
-                raise ValueError("name one point or a line through two points")
-            return rel, refs
-    raise ValueError('a hint reads "above BD", "below BD", "left of C" or "right of C"')
-
-
-#: above and below a vertical line (left and right of a horizontal one) are not defined:
-#: the hint is refused. Only a line vertical to rounding: one a degree off still has a
-#: side that points up, and a table's own hint ("C above BD") passes near vertical as
-#: the crank turns
-UPRIGHT = 1e-9
-
-
-class Ambiguous(ValueError):
-    """A hint whose line stands across the sides it names ("above" a vertical line)."""
-
-
-def hint_holds(rel: str, X: complex, refs: list[complex]) -> bool:
-    """Whether X lies on the side ``rel`` of the point or line ``refs``; a point on the
-    line (or level with the point) to rounding, :data:`ON_LINE` of the distances, lies
-    on neither side: an assembly must not be picked by the sign of rounding."""
-    if len(refs) == 1:
-        Q = refs[0]
-        off = X - Q
-        across = off.imag if rel in ("above", "below") else off.real
-        if abs(across) <= ON_LINE * (abs(X) + abs(Q)):
-            return False
-        return across > 0 if rel in ("above", "right of") else across < 0
-    Q, R = refs
-    d = R - Q
-    across = d.real if rel in ("above", "below") else d.imag
-    if abs(across) < UPRIGHT * abs(d):
-        raise Ambiguous("vertical" if rel in ("above", "below") else "horizontal")
-    if (d.real < 0) if rel in ("above", "below") else (d.imag < 0):
-        d = -d
-    side = cross(d, X - Q)
-    if abs(side) <= ON_LINE * abs(d) * (abs(X - Q) + abs(d)):
-        return False
-    return (side > 0) == (rel in ("above", "left of"))
-
-
-def choose_branches(mech: Mechanism,
-                    structure: Structure) -> tuple[tuple[int, ...], float, float]:
+def choose_branches(mech: Mechanism, structure: Structure,
+                    trial) -> tuple[tuple[int, ...], float, float]:
     """Turn the file's hints into a sign per group, evaluated at the file's crank angle
     (``mech.hints_at`` when the crank was turned from it, :meth:`Mechanism.at_file_angle`);
     returns the signs, that angle and the one they were read at (rad from +x): the same,
@@ -197,52 +134,55 @@ def choose_branches(mech: Mechanism,
     position the cycle passes through at 180°, not whichever assembly the hint's words
     would pick there. Where the mechanism does not close at the file's angle, the hints
     are read at the angle asked for instead.
+
+    ``trial(phi, sigmas, count)``: the motion of the first ``count`` groups at crank angle
+    ``phi`` on the signs ``sigmas``, none flipping (an array of one angle): the solver's.
     """
     at = mech.hints_at
     if at is not None and at != mech.driver.phi:
         try:
-            return _read(mech.with_phi(at), structure)
+            return _read(mech.with_phi(at), structure, trial)
         except (AssemblyError, SingularPlanError):
             pass
-    return _read(mech, structure)
+    return _read(mech, structure, trial)
 
 
 class _Meet(Exception):
     """A group's two assemblies meet at the angle the hints are read at."""
 
 
-def _read(mech: Mechanism, structure: Structure) -> tuple[tuple[int, ...], float, float]:
+def _read(mech: Mechanism, structure: Structure, trial) -> tuple[tuple[int, ...], float, float]:
     """The signs the hints give, the mechanism's angle, and the angle they were read at:
     the mechanism's own, or, where a group's two assemblies meet there,
-    :data:`PAST_MEETING` on, the way the crank turns (or back, where the linkage does not
+    :data:`plans.tolerances.PAST_MEETING` on, the way the crank turns (or back, where the linkage does not
     close on that side or the hints part nothing there). The change point itself is then
     one the motion passes (a parallelogram given at 0°), and the motion's turn still
     starts at the given angle (:meth:`plans.kinematics.Solver.sigma`)."""
     phi = mech.driver.phi
     try:
-        return _choose(mech, structure), phi, phi
+        return _choose(mech, structure, trial), phi, phi
     except _Meet as meet:
-        step = math.copysign(PAST_MEETING, mech.driver.omega)
+        step = math.copysign(tolerances.PAST_MEETING, mech.driver.omega)
         first = None
         for past in (phi + step, phi - step):
             try:
-                return _choose(mech.with_phi(past), structure), phi, past
+                return _choose(mech.with_phi(past), structure, trial), phi, past
             except (AssemblyError, SingularPlanError, _Meet):
                 continue
             except InputError as exc:  # the hints part nothing there: the other side?
                 first = first or exc
         if first is not None:
-            why = (f" (read {PAST_MEETING:g} rad past {mech.driver.at(phi)}, where the two "
+            why = (f" (read {tolerances.PAST_MEETING:g} rad past {mech.driver.at(phi)}, where the two "
                    f"assemblies of {meet} meet)")
             raise InputError(first.source, [p + why for p in first.problems]) from None
-        return _choose(mech, structure, meet=False), phi, phi  # its error, or rounding's pick
+        return _choose(mech, structure, trial, meet=False), phi, phi  # its error, or rounding's pick
 
 
 def _same(positions: dict, name: str) -> bool:
     """Whether the two assemblies (``positions`` by sign) put point ``name`` in one place,
     to rounding of the mechanism's size."""
     a, b = (complex(positions[sigma].position[name][0]) for sigma in (1, -1))
-    return abs(a - b) <= 1e-9 * (1.0 + abs(a) + abs(b))
+    return abs(a - b) <= tolerances.SAME_PLACE * (1.0 + abs(a) + abs(b))
 
 
 def _at_both(positions: dict, name: str, joint: str = " and ") -> str:
@@ -263,11 +203,9 @@ def _parting(g, mech: Mechanism, positions: dict) -> str:
     return g.C or next(iter(mech.links[g.b].points))
 
 
-def _choose(mech: Mechanism, structure: Structure, meet: bool = True) -> tuple[int, ...]:
+def _choose(mech: Mechanism, structure: Structure, trial, meet: bool = True) -> tuple[int, ...]:
     """The sign of each group by the hints at the mechanism's angle; ``meet``: raise
     :class:`_Meet` where a group's two assemblies meet there (to rounding)."""
-    from plans.kinematics.solver import Solver  # it calls back here: imported when first needed
-
     names = mech.point_names()
     hints = {}
     for key, text in mech.assembly.items():
@@ -278,7 +216,7 @@ def _choose(mech: Mechanism, structure: Structure, meet: bool = True) -> tuple[i
     used = set()
     sigmas: list[int] = []
     for i, g in enumerate(structure.groups):
-        if g.kind in (DyadKind.PRP, DyadKind.RPP):
+        if not DYADS[g.kind].assemblies:
             sigmas.append(1)
             continue
         group_points = set(mech.links[g.a].points) | set(mech.links[g.b].points)
@@ -286,9 +224,7 @@ def _choose(mech: Mechanism, structure: Structure, meet: bool = True) -> tuple[i
         ok = []
         positions = {}
         for sigma in (1, -1):
-            trial = Solver(mech, structure, tuple(sigmas) + (sigma,) + (1,) * (len(structure.groups) - i - 1),
-                           ((),) * len(structure.groups))
-            motion = trial._solve_upto(i + 1)
+            motion = trial(mech.driver.phi, (*sigmas, sigma), i + 1)
             positions[sigma] = motion
             for k, (_, refs) in mine.items():
                 if later := [r for r in refs if r not in motion.position]:
@@ -319,7 +255,7 @@ def _choose(mech: Mechanism, structure: Structure, meet: bool = True) -> tuple[i
         # on a meeting point to rounding the hints are read past it, unless they part the
         # two assemblies here (a parallelogram given 1e-6 rad short of its change point,
         # its coupler 1e-7 below OD and the other assembly's above: the file's own angle)
-        if (meet and margin is not None and abs(float(np.ravel(margin)[0])) <= IN_LINE
+        if (meet and margin is not None and abs(float(np.ravel(margin)[0])) <= tolerances.IN_LINE
                 and not (mine and len(ok) == 1)):
             raise _Meet(g.label)
         used |= set(mine)
@@ -334,9 +270,10 @@ def _choose(mech: Mechanism, structure: Structure, meet: bool = True) -> tuple[i
             note = ""
             if earlier:
                 asked = ", ".join(f"{k} = {mech.assembly[k]!r}" for k in earlier)
-                note = f" (the groups before it are assembled as the hints {asked} ask: is one of them wrong?)"
+                note = (f" (the groups before it are assembled as the hints {asked} ask: is one of "
+                        "them wrong?)")
             raise positions[1].groups[i].failure(0, mech.driver.at(mech.driver.phi), note,
-                                                 source=mech.source)
+                                                 source=mech.source, phi=mech.driver.phi)
         new = g.C or coincident_name(g.P, g.b)
         key = _parting(g, mech, positions)
         if mine and key not in mine and all(

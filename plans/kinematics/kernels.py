@@ -30,11 +30,8 @@ from typing import NamedTuple
 
 import numpy as np
 
+from plans import tolerances
 from plans.geometry import cross, heron, meet
-
-#: below this |sin| of the angle between the two lines a plan is singular (and two guides
-#: are parallel: a PRP or RPP group then has no unique position)
-SINGULAR_SINE = 1e-10
 
 #: ``record(Cls, (field, …))``: a NamedTuple built from a tuple of all its fields, in
 #: order. The records of a construction are made at every angle of the one-angle path,
@@ -284,7 +281,8 @@ def prp(xp, G1, u1, vG1, aG1, w1, e1, G2, u2, vG2, aG2, w2, e2):
     v1, a1 = _guide_motion(C, G1, vG1, aG1, w1, e1)
     v2, a2 = _guide_motion(C, G2, vG2, aG2, w2, e2)
     vC, aC, (c1, c2, t1, t2, s1, s2) = _two_slides(v1, a1, u1, w1, v2, a2, u2, w2, inv)
-    return record(PRP, (C, vC, aC, v1, v2, a1, a2, c1, c2, t1, t2, s1, s2, sine, abs(sine) > SINGULAR_SINE))
+    return record(PRP, (C, vC, aC, v1, v2, a1, a2, c1, c2, t1, t2, s1, s2, sine,
+                        abs(sine) > tolerances.SINGULAR_SINE))
 
 
 def rpp(xp, P, vP, aP, G, u, vG, aG, wk, ek, locD, g0, gd):

@@ -7,56 +7,16 @@ whichever it solved. Everything here is immutable.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from typing import NamedTuple
 
 import numpy as np
 
-from plans.errors import AssemblyError, PlansError, SingularPlanError
-from plans.kinematics.kernels import (
-    SINGULAR_SINE,
-    record,
-)
-from plans.model.structure import DyadKind, Group
-
-#: below this |sin| (about 2°) a position is reported as near-singular
-WARN_SINE = 0.035
-
-#: the relative error of a plan's velocities and accelerations where its lines meet at
-#: sine s is within about LOSS·ε/s² (κ²·ε, κ = 1/s: the position's error tilts the lines
-#: it intersects): 11 on the stiff scenes (README); at a crank's limit position, against
-#: the 30-digit reference, 0.7 (1.5e-3 at s = 3.3e-7)
-LOSS = 11.0
-
-
-def plan_error(sine: float) -> float | None:
-    """How far off, at most and relative to the largest of them, a plan's velocities and
-    accelerations may be where its lines' sine is ``sine``; None where it is below half a
-    unit of the fourth digit a report prints (5e-5).
-
-    >>> plan_error(0.03), f"{plan_error(3.3e-7):.1e}", plan_error(1e-9) > 1
-    (None, '2.2e-02', True)
-    """
-    err = LOSS * float(np.finfo(float).eps) / (sine * sine)
-    return err if err > 5e-5 else None
-
-#: beside a change point (within :data:`CHANGE_NEAR` rad of one of the group's) a sine
-#: below this makes the position singular: there the acceleration plan's right-hand side
-#: carries the velocities' error (κ²·ε, κ = 1/sin), and the nearly parallel lines
-#: multiply it by κ again; measured on a parallelogram, ε of the rocker was off by
-#: 7·κ³·ε of ω1², 2e-6 at sin = 1e-3 and 1e-3 at sin = 1e-4
-CHANGE_SINE = 1e-3
-#: the same for a slotted link's pivot figure, whose accelerations lose 0.05–0.4·κ³·ε
-#: there (its pivot on the crank circle: 1e-8 at 1.1e-3, 1e-4 at 1.1e-4): about 3e-6 here
-CHANGE_PIVOT = 3e-4
-CHANGE_NEAR = 0.05
-
-#: a group whose margin (a fraction of its size) is within this of 0 has its links in
-#: line to rounding: equal lengths typed in decimal meet to about 1e-16, and Grashof's
-#: equality is judged to 1e-12 as well
-IN_LINE = 1e-12
-
+from plans import tolerances
+from plans.errors import PositionError, SingularPlanError
+from plans.kinematics import conditioning
+from plans.kinematics.kernels import record
+from plans.model.structure import Group
 
 
 class LinkState(NamedTuple):
@@ -141,202 +101,28 @@ class GroupSolution(NamedTuple):
     #: where it does not close (arrays only: None on the one-angle path)
     margin: np.ndarray | None
 
-    def failure(self, k: int, at: str, note: str = "", source: str = "") -> PlansError:
-        """The error for angle index ``k`` where the group does not close; ``at`` names the
-        crank angle ("φ1 = 330°", :meth:`plans.model.mechanism.Driver.at`).
-
-        A group that misses (its links do not reach) is an :class:`AssemblyError` with the
-        distance it misses by; one exactly at the limit (links in line, parallel guides,
-        a pivot on the pin) is a dead point: a :class:`SingularPlanError`.
-        """
-        label = self.group.label
-        if bool(self.singular[k]):
-            return SingularPlanError(
-                f"{label} at {at}: {self.why_singular}: {_singular(at)}, the plan has no "
-                f"unique solution{note}", source=source,
-            )
-        return AssemblyError(
-            f"{label} cannot be assembled at {at}: needs {self.admissible}, "
-            f"misses by {float(self.gap[k]):.6g} m{note}",
-            group=label, source=source,
-        )
+    def failure(self, k: int, at: str, note: str = "", source: str = "",
+                phi: float | None = None) -> PositionError:
+        """The error for angle index ``k`` where the group does not close
+        (:func:`plans.kinematics.conditioning.failure`)."""
+        return conditioning.failure(self, k, at, note, source, phi)
 
     def sine_at(self, k: int | None = None) -> float:
-        """|sin| of the angle between the two lines of the plans (k: the angle's index in
-        an array solution; None for a solution on Python numbers), as :func:`sine_figure`."""
-        s = self.velocity.sine
-        return float(sine_figure(s if k is None else s[k]))
+        """|sin| of the angle between the two lines of the plans
+        (:func:`plans.kinematics.conditioning.sine_at`)."""
+        return conditioning.sine_at(self, k)
 
-    def parallel(self, k: int | None, at: str, source: str = "",
-                 below: float | None = None) -> SingularPlanError | None:
-        """The error where the two lines of the plans are parallel (|sin| below
-        :data:`SINGULAR_SINE`): a dead point, no unique plan. None elsewhere. ``below``:
-        :data:`CHANGE_SINE` beside a change point."""
-        below = SINGULAR_SINE if below is None else below  # read when called, not when defined
-        s = self.sine_at(k)
-        if s >= below:
-            return None
-        r0, r1 = self.velocity.routes
-        if s >= SINGULAR_SINE:
-            return SingularPlanError(
-                f"{self.group.label} at {at}: the lines {r0.relation} and {r1.relation} "
-                f"meet at {_degrees(s):.3g}° (sin = {s:.3g}), under {below:g} beside a "
-                f"change point, where the accelerations lose their digits as 1/sin³: "
-                f"{_singular(at)}, the plan is not built", sine=s, source=source)
-        return SingularPlanError(
-            f"{self.group.label} at {at}: the lines {r0.relation} and "
-            f"{r1.relation} are parallel (angle {_degrees(s):.3g}°, sin = {s:.3g}): "
-            f"{_singular(at)}, the plan has no unique solution", sine=s, source=source)
+    def parallel(self, k: int | None, at: str, source: str = "", below: float | None = None,
+                 phi: float | None = None) -> SingularPlanError | None:
+        """The error where the two lines of the plans are parallel
+        (:func:`plans.kinematics.conditioning.parallel`); None elsewhere."""
+        return conditioning.parallel(self, k, at, source, below, phi)
 
     def near_parallel(self, k: int | None, at: str, lang: str = "en",
                       below: float | None = None) -> str | None:
-        """The warning where the two lines meet at under about 2° (|sin| below
-        :data:`WARN_SINE`), when they are not parallel (``below``, as for
-        :meth:`parallel`). None elsewhere."""
-        below = SINGULAR_SINE if below is None else below  # read when called, not when defined
-        s = self.sine_at(k)
-        if not below <= s < WARN_SINE:
-            return None
-        r0, r1 = self.velocity.routes
-        err = plan_error(s)  # said where the four digits printed are not all right
-        if lang == "ru":
-            from plans.fmt import num
-
-            lost = ("" if err is None else
-                    "; скорости и ускорения могут быть неверны целиком" if err >= 1 else
-                    f"; скорости и ускорения могут быть неточны до {num(100 * err, 2, 'ru')} % "
-                    "(от наибольшей)")
-            return (f"группа {self.group.label.removeprefix('group ')} при {at}: положение, "
-                    f"близкое к особому: прямые {r0.relation} и {r1.relation} пересекаются "
-                    f"под углом {num(_degrees(s), 3, 'ru')}° (sin = {num(s, 3, 'ru')}){lost}")
-        lost = ("" if err is None else
-                "; its velocities and accelerations may be wrong altogether" if err >= 1 else
-                f"; its velocities and accelerations may be off by up to {100 * err:.2g} % "
-                "(of the largest)")
-        return (f"{self.group.label} at {at}: near-singular, the lines "
-                f"{r0.relation} and {r1.relation} meet at {_degrees(s):.3g}° (sin = {s:.3g}){lost}")
-
-
-def pivot_figure(g: GroupSolution, position: dict, crank_pivot: complex):
-    """For a slotted link (RPR): how far the block P is from the rocker's pivot Q, relative
-    to the loop, |QP| / (|OQ| + |OP|) with O the crank's pivot (arrays or Python numbers,
-    as ``position`` holds them); None for the other kinds. Near 0 the rocker's
-    ω = V / |QP| loses its digits, though the two lines of the plans stay perpendicular."""
-    if g.group.kind != DyadKind.RPR:
-        return None
-    return pivot_ratio(position[g.group.P], position[g.group.Q], crank_pivot)
-
-
-#: what the pivot figure's key adds to its group's label ("group 2–3 (RPR) pivot"), in a
-#: sweep's :attr:`plans.kinematics.sweep.Sweep.pivot` and a cycle row's figures alike
-PIVOT = " pivot"
-
-
-def pivot_key(label: str) -> str:
-    """The key of group ``label``'s pivot figure."""
-    return label + PIVOT
-
-
-def is_pivot(key: str) -> bool:
-    """Whether a figure's key is a pivot figure's (else it is a group's lines' sine)."""
-    return key.endswith(PIVOT)
-
-
-def pivot_ratio(P, Q, O):
-    """|QP| / (|OQ| + |OP|) of a block P, a rocker's pivot Q and the crank's pivot O
-    (arrays or Python numbers); 0 where all three coincide."""
-    loop = abs(Q - O) + abs(P - O)
-    if isinstance(loop, float):  # the one-angle path, on Python numbers
-        return abs(P - Q) / loop if loop > 0 else 0.0
-    with np.errstate(all="ignore"):
-        return np.where(loop > 0, np.abs(P - Q) / np.where(loop > 0, loop, 1.0), 0.0)
-
-
-def on_pivot(g: GroupSolution, q: float, at: str, source: str = "",
-             below: float | None = None) -> SingularPlanError | None:
-    """The error where the block is on the rocker's pivot (``q`` from :func:`pivot_figure`
-    below :data:`SINGULAR_SINE`, or ``below`` beside a change point): the rocker's
-    direction, ω and ε are undefined. None elsewhere."""
-    below = SINGULAR_SINE if below is None else below  # read when called, not when defined
-    if not q < below:
-        return None
-    P, Q = g.group.P, g.group.Q
-    where = "is on" if q < SINGULAR_SINE else f"is all but on (under {below:g}, beside a change point)"
-    return SingularPlanError(
-        f"{g.group.label} at {at}: the block {P} {where} the rocker's pivot {Q} (|{Q}{P}| "
-        f"ratio {q:.3g}): the rocker's ω is undefined, {_singular(at)}",
-        sine=q, source=source)
-
-
-def near_pivot(g: GroupSolution, q: float, at: str, lang: str = "en",
-               below: float | None = None) -> str | None:
-    """The warning where the block passes close to the rocker's pivot (``q`` under
-    :data:`WARN_SINE`, not on it: ``below`` as for :func:`on_pivot`). None elsewhere."""
-    below = SINGULAR_SINE if below is None else below  # read when called, not when defined
-    if not below <= q < WARN_SINE:
-        return None
-    P, Q = g.group.P, g.group.Q
-    if lang == "ru":
-        from plans.fmt import num
-
-        return (f"группа {g.group.label.removeprefix('group ')} при {at}: камень {P} проходит "
-                f"близко к оси кулисы {Q} (|{Q}{P}| / (|O{Q}| + |O{P}|) = {num(q, 3, 'ru')}): "
-                "ω и ε кулисы теряют точность")
-    return (f"{g.group.label} at {at}: the block {P} passes close to the rocker's pivot {Q} "
-            f"(|{Q}{P}| / (|O{Q}| + |O{P}|) = {q:.3g}): the rocker's ω and ε lose digits")
-
-
-def flagged(groups, position: dict, crank_pivot: complex, at, source: str = "",
-            below=None) -> tuple:
-    """The conditioning figures of one position (groups and positions on Python numbers)
-    that call for a word: (group, "lines" or "pivot", figure) for each under
-    :data:`WARN_SINE`, the sine between a group's two lines or a slotted link's pivot
-    figure. One that is singular raises its error. ``at()`` names the crank angle, asked
-    only then; ``below(i)``, the singular figures (lines, pivot) of the i-th group
-    (:meth:`plans.kinematics.Solver.singular_figures`). The words, in either language, are
-    :func:`flag_words`."""
-    out = []
-    for i, g in enumerate(groups):
-        lines = abs(g.velocity.sine)
-        q = pivot_figure(g, position, crank_pivot)
-        if WARN_SINE <= lines < math.inf and (q is None or q >= WARN_SINE):
-            continue
-        under, under_q = (SINGULAR_SINE, SINGULAR_SINE) if below is None else below(i)
-        if not WARN_SINE <= lines < math.inf:  # NaN, inf: parallel() refuses them
-            if (err := g.parallel(None, at(), source, under)) is not None:
-                raise err
-            out.append((g, "lines", g.sine_at(None)))
-        if q is not None and q < WARN_SINE:
-            if (err := on_pivot(g, q, at(), source, under_q)) is not None:
-                raise err
-            out.append((g, "pivot", q))
-    return tuple(out)
-
-
-def flag_words(flag: tuple, at: str, lang: str = "en") -> str:
-    """The warning for one of :func:`flagged`'s figures."""
-    g, kind, figure = flag
-    return g.near_parallel(None, at, lang) if kind == "lines" else near_pivot(g, figure, at, lang)
-
-
-def _singular(at: str) -> str:
-    """'a singular position (dead point)', but not where ``at`` already calls the angle a
-    change point (:meth:`plans.kinematics.Solver.at`), through which the motion goes on."""
-    return "a singular position" if "change point" in at else "a singular position (dead point)"
-
-
-def _degrees(sine: float) -> float:
-    return math.degrees(math.asin(min(sine, 1.0)))
-
-
-def sine_figure(sine):
-    """The conditioning figure of a group's lines from the kernel's signed ``sine`` (a
-    number or an array): |sin| within [0, 1], the cross product of two unit vectors as
-    rounded reaching 1.0000000000000002, which the kernel divides by as it is; 0 where it
-    is not a number (parallel lines). The sweep clips its own in its blocks
-    (:meth:`plans.kinematics.sweep._Block._close`), where it is NaN only where nothing closes."""
-    s = np.abs(sine)
-    return np.where(np.isfinite(s), np.minimum(s, 1.0), 0.0)
+        """The warning where the two lines meet at under about 2°
+        (:func:`plans.kinematics.conditioning.near_parallel`); None elsewhere."""
+        return conditioning.near_parallel(self, k, at, lang, below)
 
 
 def frozen(cls, **fields):
@@ -372,7 +158,7 @@ class Motion:
         if self.groups:  # valid, unless a group misses by more than rounding
             out = np.ones_like(out)
         for g in self.groups:
-            out = out & (g.valid if g.margin is None else g.valid | (g.margin >= -IN_LINE))
+            out = out & (g.valid if g.margin is None else g.valid | (g.margin >= -tolerances.IN_LINE))
         for z in self.position.values():  # a pin exactly on a pivot: the group has no place
             out = out & np.isfinite(z)
         return out
@@ -382,7 +168,7 @@ class Motion:
         """Conditioning: the smallest |sin| between intersected lines over the groups."""
         out = np.ones_like(self.phi)
         for g in self.groups:
-            out = np.minimum(out, sine_figure(g.velocity.sine))
+            out = np.minimum(out, conditioning.sine_figure(g.velocity.sine))
         return out
 
 

@@ -4,7 +4,9 @@
 (``plans/kinematics/kernels.py``), and records every construction (``plans/kinematics/records.py``): over an
 array of crank angles at once (:meth:`Solver.solve`), on Python numbers at one angle for
 the single-position plan (:meth:`Solver.solve_one`), or without the record, block by
-block, for bulk work (:meth:`Solver.sweep`). For each group the velocity and the
+block, for bulk work (:meth:`Solver.sweep`). All three run the one group loop
+(``plans/kinematics/assemble.py``) over the mechanism's setup, worked out once
+(``plans/kinematics/setup.py``). For each group the velocity and the
 acceleration of its new point come from the intersection of two lines, exactly as on paper:
 
     RRR  V_C  = V_P + V_CP (⊥ CP)          = V_Q + V_CQ (⊥ CQ)
@@ -26,18 +28,16 @@ from pathlib import Path
 
 import numpy as np
 
+from plans import tolerances
 from plans.errors import SingularPlanError
 from plans.geometry import apart
-from plans.kinematics import kernels, records
-from plans.kinematics.branches import choose_branches, hint_holds, parse_hint
-from plans.kinematics.groups import SOLVERS, ScalarFallback
-from plans.kinematics.kernels import record
+from plans.kinematics import sweep
+from plans.kinematics.assemble import assemble
+from plans.kinematics.branches import change_points, choose_branches
+from plans.kinematics.conditioning import pivot_figure, pivot_key
+from plans.kinematics.groups import Recorded, ScalarFallback
+from plans.kinematics.kernels import ARRAY, SCALAR
 from plans.kinematics.records import (
-    CHANGE_NEAR,
-    CHANGE_PIVOT,
-    CHANGE_SINE,
-    SINGULAR_SINE,
-    WARN_SINE,
     Construction,
     GroupSolution,
     LinkState,
@@ -45,23 +45,17 @@ from plans.kinematics.records import (
     Route,
     Term,
     coincident_name,
-    frozen,
-    pivot_figure,
 )
+from plans.kinematics.setup import Setup
+from plans.kinematics.words import WARNINGS
+from plans.model import Mechanism
 from plans.model.fileformat import one_line
-from plans.model.mechanism import Mechanism
-from plans.model.structure import Structure, analyse
+from plans.model.structure import Structure
 
 __all__ = [
-    "SINGULAR_SINE", "WARN_SINE", "Construction", "GroupSolution", "LinkState", "Motion",
-    "Route", "Solver", "Term", "choose_branches", "coincident_name", "hint_holds",
-    "parse_hint",
+    "Construction", "GroupSolution", "LinkState", "Motion", "Route", "Solver", "Term",
+    "coincident_name", "crank_angle",
 ]
-
-#: how far past a change point (rad, in the crank's sense) the points that are nowhere on
-#: it are placed (:meth:`Solver.solve`): the positions are then off by about 1e-9 of the
-#: links' lengths, where rounding alone would leave the rocker's direction 0/0
-LIMIT_STEP = 1e-9
 
 
 def crank_angle(phi) -> float:
@@ -93,23 +87,31 @@ class Solver:
     it would make a link jump (a slotted link's pivot on the crank circle). Where the
     crank cannot make a full turn the signs are counted from ``branch_at`` within its
     range, the way the crank goes, not through the angles where it does not close.
+
+    ``setup``: the mechanism's :class:`~plans.kinematics.setup.Setup`, shared with another
+    solver of it (made here where it is not given).
     """
 
     def __init__(self, mech: Mechanism, structure: Structure | None = None,
                  sigmas: tuple[int, ...] | None = None,
-                 flips: tuple[tuple[float, ...], ...] | None = None):
+                 flips: tuple[tuple[float, ...], ...] | None = None, *,
+                 setup: Setup | None = None):
         if not isinstance(mech, Mechanism):  # a file's name was 'str' has no 'revolutes'
             hint = (f": read the file first, with load({str(mech)!r})"
                     if isinstance(mech, str | Path) else "")
             raise TypeError(f"a mechanism (plans.load, plans.from_dict) is needed, "
                             f"not {one_line(repr(mech), 60)}{hint}")
         self.mech = mech
-        self.structure = structure or analyse(mech)
+        self.setup = setup if setup is not None else Setup.of(mech, structure)
+        self.structure = self.setup.structure
+        #: links that never turn: a guide on one carries no Coriolis term
+        self.translating = self.setup.translating
         # the turn starts at ``branch_at``; ``sigmas`` hold at ``read_at``, which is
         # ``branch_at`` unless a group's two assemblies meet there (a parallelogram given
         # at 0°): then a little past it (plans.kinematics.branches._read)
         if sigmas is None:
-            self.sigmas, self.branch_at, self.read_at = choose_branches(mech, self.structure)
+            self.sigmas, self.branch_at, self.read_at = choose_branches(
+                mech, self.structure, self._trial)
         else:  # given signs hold at the mechanism's own angle
             self.sigmas, self.branch_at = sigmas, mech.driver.phi
             self.read_at = self.branch_at
@@ -120,20 +122,10 @@ class Solver:
         #: where the counting of flips wraps: a turn from ``branch_at`` (rad) where the
         #: mechanism does not close; None: at ``branch_at`` itself
         self._seam: float | None = None
-        #: what follows from the mechanism alone, worked out once: the groups' words,
-        #: the plans' recipes, the extent of the cycle (``plans.plan``)
-        self.cache: dict = {}
-        self._todo: dict[int, tuple] = {}  # link → its points that _fill places
-        #: links that never turn: a guide on one carries no Coriolis term
-        self.translating = mech.translating()
-        self.steps = tuple((SOLVERS[g.kind], g, sigma)
-                           for g, sigma in zip(self.structure.groups, self.sigmas, strict=True))
 
     @property
     def changes(self) -> tuple[tuple[float, ...], ...]:
         if self._changes is None:
-            from plans.kinematics.branches import change_points
-
             self._changes, self._flips, self._seam = change_points(self)
         return self._changes
 
@@ -177,13 +169,13 @@ class Solver:
 
     def change_point_near(self, phi: float, group: int | None = None) -> float | None:
         """The change point (crank angle, rad from +x) of group ``group`` (of any: None)
-        nearest to ``phi``, if one is within :data:`plans.kinematics.records.CHANGE_NEAR`."""
+        nearest to ``phi``, if one is within :data:`plans.tolerances.CHANGE_NEAR`."""
         turn = (phi - self.branch_at) % (2 * math.pi)
         best = None
         for i, points in enumerate(self.changes):
             if group is None or i == group:
                 for f in points:
-                    if (d := apart(turn, f)) < CHANGE_NEAR and (best is None or d < best[0]):
+                    if (d := apart(turn, f)) < tolerances.CHANGE_NEAR and (best is None or d < best[0]):
                         best = (d, f)
         return None if best is None else self.branch_at + best[1]
 
@@ -191,16 +183,16 @@ class Solver:
         """Whether the crank angle ``phi`` (rad from +x) is a change point, to 1e-9 rad:
         the positions stand there, the plans are singular."""
         near = self.change_point_near(phi)
-        return near is not None and apart(phi, near) < 1e-9
+        return near is not None and apart(phi, near) < tolerances.AT_CHANGE_POINT
 
     def singular_figures(self, group: int, phi: float) -> tuple[float, float]:
         """Below which figures (the lines' sine, a slotted link's pivot figure) group
-        ``group``'s plans are singular at ``phi``: :data:`plans.kinematics.records.SINGULAR_SINE`, or
-        beside one of its change points :data:`plans.kinematics.records.CHANGE_SINE` and
-        :data:`plans.kinematics.records.CHANGE_PIVOT`."""
+        ``group``'s plans are singular at ``phi``: :data:`plans.tolerances.SINGULAR_SINE`, or
+        beside one of its change points :data:`plans.tolerances.CHANGE_SINE` and
+        :data:`plans.tolerances.CHANGE_PIVOT`."""
         if self.change_point_near(phi, group) is None:
-            return records.SINGULAR_SINE, records.SINGULAR_SINE  # read now, as records does
-        return CHANGE_SINE, CHANGE_PIVOT
+            return tolerances.SINGULAR_SINE, tolerances.SINGULAR_SINE
+        return tolerances.CHANGE_SINE, tolerances.CHANGE_PIVOT
 
     def trusted(self, m) -> np.ndarray:
         """Where the plans of ``m`` can be built: every group closes and its figures, the
@@ -216,61 +208,42 @@ class Solver:
             figures = [(g.velocity.sine, pivot_figure(g, m.position, crank)) for g in m.groups]
         else:  # a sweep: its figures by the group's label, the pivot's worked out here
             pivots = m.pivot
-            figures = [(m.sine[g.label], pivots.get(records.pivot_key(g.label)))
+            figures = [(m.sine[g.label], pivots.get(pivot_key(g.label)))
                        for g in self.structure.groups]
         for i, (sine, q) in enumerate(figures):
             beside = np.zeros(phi.shape, dtype=bool)
             for f in self.changes[i]:
-                beside |= apart(turn, f) < CHANGE_NEAR
+                beside |= apart(turn, f) < tolerances.CHANGE_NEAR
             with np.errstate(invalid="ignore"):
                 sine = np.abs(np.asarray(sine, dtype=float))
                 ok &= np.where(np.isfinite(sine), sine, 0.0) >= np.where(
-                    beside, CHANGE_SINE, records.SINGULAR_SINE)
+                    beside, tolerances.CHANGE_SINE, tolerances.SINGULAR_SINE)
                 if q is not None:
-                    ok &= q >= np.where(beside, CHANGE_PIVOT, records.SINGULAR_SINE)
+                    ok &= q >= np.where(beside, tolerances.CHANGE_PIVOT, tolerances.SINGULAR_SINE)
         return ok
 
-    def at(self, phi: float, lang: str = "en") -> str:
-        """The crank angle ``phi`` in words, as :meth:`plans.model.mechanism.Driver.at` gives it,
-        saying so where it is a change point (to 1e-9 rad) or beside one (in English).
-        Where the crank cannot make a full turn and its range is written through 0°
-        ("from −99.72° to 99.72°"), the angle is written as the range is: −99.7°, not
-        260.3° (:func:`plans.cycle.shown_from`)."""
-        words = self._at(phi, lang)
+    def at(self, phi: float, lang: str = "en", lo: float = 0.0) -> str:
+        """The crank angle ``phi`` in words, as :meth:`plans.model.mechanism.Driver.at`
+        gives it in the turn from ``lo`` (the file's degrees: 0 for [0°, 360°)), saying so
+        where it is a change point (to :data:`plans.tolerances.AT_CHANGE_POINT`) or beside
+        one (in English: :data:`plans.kinematics.words.WARNINGS`). Where the crank cannot
+        make a full turn and its range is written through 0° ("from −99.72° to 99.72°")
+        the cycle knows ``lo`` (:func:`plans.cycle.shown_from`), and the angle is written as
+        the range is: −99.7°, not 260.3°."""
+        drv = self.mech.driver
+        words = drv.at(phi, lang, lo)
         near = self.change_point_near(phi)
-        if near is None or lang != "en":
+        if near is None:
             return words
-        if apart(phi, near) < 1e-9:
-            return words + " (a change point: the two assemblies of a group meet there)"
-        return (words + f" (beside the change point at {self._at(near, lang)}, where the "
-                "two assemblies of a group meet)")
-
-    def _at(self, phi: float, lang: str) -> str:
-        return self.mech.driver.at(phi, lang, self.shown_from())
-
-    def shown_from(self) -> float:
-        """Where the turn that crank angles are written in begins, in the file's
-        convention (:func:`plans.cycle.shown_from`): worked out once, from the cycle, or
-        where the mechanism's own angle does not assemble, from the nearest range where
-        it does (:func:`plans.cycle.reachable_cycle`)."""
-        from plans.cycle.analysis import SHOWN_FROM, analyse_cycle, reachable_cycle, shown_from
-        from plans.errors import PlansError
-
-        got = self.cache.get(SHOWN_FROM)
-        if got is None:
-            try:
-                analyse_cycle(self.mech, solver=self)  # it keeps the value
-                got = self.cache[SHOWN_FROM]
-            except PlansError:
-                self.cache[SHOWN_FROM] = 0.0  # meanwhile: a message worded as it is found
-                other = reachable_cycle(self.mech)
-                got = self.cache[SHOWN_FROM] = (
-                    0.0 if other is None else shown_from(other[2], self.mech.driver))
-        return got
+        said = WARNINGS[lang]
+        if apart(phi, near) < tolerances.AT_CHANGE_POINT:
+            return words + said["on_change"]
+        beside = said["beside_change"]
+        return words + (beside.format(at=drv.at(near, lang, lo)) if beside else "")
 
     def with_flips(self, flips: tuple[tuple[float, ...], ...], seam: float | None = None) -> Solver:
         """This solver with the given flips (and seam) instead of its own."""
-        out = Solver(self.mech, self.structure, self.sigmas, flips)
+        out = Solver(self.mech, self.structure, self.sigmas, flips, setup=self.setup)
         out.branch_at, out.read_at, out._seam = self.branch_at, self.read_at, seam
         return out
 
@@ -284,14 +257,14 @@ class Solver:
         with np.errstate(all="ignore"):
             phi = np.atleast_1d(np.asarray(phi, dtype=float))
             zero = np.zeros_like(phi)
-            m = self._solve(kernels.ARRAY, phi, zero, np.exp(1j * phi))
+            m = self._motion(ARRAY, phi, zero, np.exp(1j * phi), self.signs(phi))
             return self._placed_on_change_points(m) if any(self.changes) else m
 
     def _placed_on_change_points(self, m: Motion) -> Motion:
         """``m`` with the points that are nowhere on a change point placed where the
         motion puts them: a slotted link's rocker when the block is exactly on its pivot,
         whose direction 0/0 leaves undetermined, is where it stands an instant later
-        (:data:`LIMIT_STEP` on, in the crank's sense), as the turn from there goes on.
+        (:data:`plans.tolerances.LIMIT_STEP` on, in the crank's sense), as the turn from there goes on.
         The plans there stay singular; only positions and the links' poses are filled."""
         placed = m.placed
         if placed.all():
@@ -301,8 +274,8 @@ class Solver:
                         if self.on_change_point(float(flat[k]))], dtype=int)
         if not idx.size:
             return m
-        on = flat[idx] + math.copysign(LIMIT_STEP, self.mech.driver.omega)
-        later = self._solve(kernels.ARRAY, on, np.zeros_like(on), np.exp(1j * on))
+        on = flat[idx] + math.copysign(tolerances.LIMIT_STEP, self.mech.driver.omega)
+        later = self._motion(ARRAY, on, np.zeros_like(on), np.exp(1j * on), self.signs(on))
 
         def filled(now, then):
             out = np.array(now, copy=True)
@@ -319,8 +292,6 @@ class Solver:
     def sweep(self, phi, **options):
         """Every point and link at many angles, without the recorded constructions:
         the same kernels block by block (:func:`plans.kinematics.sweep.sweep`), for bulk work."""
-        from plans.kinematics import sweep
-
         return sweep.sweep(self, phi, **options)
 
     def solve_one(self, phi: float) -> Motion:
@@ -329,11 +300,13 @@ class Solver:
         Every value in the result is a Python ``complex`` or ``float`` instead of an array
         of one; it is about twenty times faster than :meth:`solve` on one angle. Where
         the mechanism does not close or a plan is singular it raises the error that
-        :meth:`solve` would report for that angle.
+        :meth:`solve` would report for that angle, its crank angle worded by :meth:`at`
+        in [0°, 360°) (:meth:`plans.errors.PositionError.at_words` words it otherwise).
         """
         phi = crank_angle(phi)
         try:
-            return self._solve(kernels.SCALAR, phi, 0.0, complex(math.cos(phi), math.sin(phi)))
+            return self._motion(SCALAR, phi, 0.0, complex(math.cos(phi), math.sin(phi)),
+                                self.signs(phi))
         except (ScalarFallback, ArithmeticError, ValueError):
             pass
         m = self.solve(np.array([phi]))
@@ -341,84 +314,35 @@ class Solver:
         source = self.mech.source
         for g in m.groups:
             if not g.valid[0]:
-                raise g.failure(0, at, source=source)
+                raise g.failure(0, at, source=source, phi=phi)
         for i, g in enumerate(m.groups):
-            if (err := g.parallel(0, at, source, self.singular_figures(i, phi)[0])) is not None:
+            below = self.singular_figures(i, phi)[0]
+            if (err := g.parallel(0, at, source, below, phi)) is not None:
                 raise err
         raise SingularPlanError(  # pragma: no cover - every fallback above is a failure
-            f"at {at}: the plan has no unique solution", source=source)
+            f"at {at}: the plan has no unique solution", source=source, phi=phi, at=at)
 
-    def _solve(self, xp, phi, zero, rotor) -> Motion:
-        mech = self.mech
-        drv = mech.driver
-        if xp.scalar:  # the frame's part is the same at every angle: copied, not rebuilt
-            frame = self.cache.get("scalar frame")
-            if frame is None:
-                frame = self.cache["scalar frame"] = self._frame(0j, 0.0)
-        else:
-            frame = self._frame(zero * 0j, zero)
-        frame_state, pos, vel, acc, owner = frame
-        states: dict[int, LinkState] = {0: frame_state}
-        pos, vel, acc, owner = dict(pos), dict(vel), dict(acc), dict(owner)
-        zc = frame_state.v
-        states[drv.link] = record(LinkState, (zc + mech.frame[drv.pivot], rotor, zc, zero + drv.omega, zc, zero))
-        self._fill(drv.link, states, pos, vel, acc, owner)
-        solutions = []
-        valid = True if xp.scalar else np.ones(phi.shape, dtype=bool)
-        coincident: dict[str, str] = {}
+    def signs(self, phi):
+        """Each group's sign at the angles ``phi``, as a function of the group's index
+        (:meth:`sigma`, the same at every angle where the group never flips): what the
+        group loop (:func:`plans.kinematics.assemble.assemble`) asks."""
         flips = self.flips
-        for i, (solve_group, g, sigma) in enumerate(self.steps):
-            if flips[i]:
-                sigma = self.sigma(i, phi)
-            sol, extra = solve_group(self, xp, g, sigma, states, pos, vel, acc)
-            solutions.append(sol)
-            if not xp.scalar:
-                valid &= sol.valid
-            for a in (g.a, g.b):
-                self._fill(a, states, pos, vel, acc, owner)
-            for name, (link, base, v, a) in extra.items():  # the kernel's own values
-                pos[name], vel[name], acc[name] = pos[base], v, a
-                owner[name] = link
-                coincident[name] = base
-        return frozen(Motion, phi=phi, links=states, position=pos, velocity=vel,
-                      acceleration=acc, point_link=owner, groups=tuple(solutions), valid=valid,
-                      coincident=coincident)
+        sigmas = self.sigmas
+        if not any(flips):  # the signs chosen, at every angle (read by index, in C)
+            return sigmas.__getitem__
+        return lambda i: self.sigma(i, phi) if flips[i] else sigmas[i]
 
-    def _frame(self, zc, zero):
-        """The frame's state and its points: fixed, at rest."""
-        pos = {name: zc + xy for name, xy in self.mech.frame.items()}
-        rest = dict.fromkeys(pos, zc)
-        return (LinkState(zc, zc + 1, zc, zero, zc, zero), pos, rest, rest,
-                dict.fromkeys(pos, 0))
+    def _motion(self, xp, phi, zero, rotor, sigma, count: int | None = None) -> Motion:
+        """The recorded solution at ``phi`` by the group loop, each group at ``sigma(i)``;
+        of the first ``count`` groups only where it is given."""
+        return assemble(Recorded(self.setup, xp, phi, zero, rotor), self.setup, sigma,
+                        count).motion()
 
-    def _solve_upto(self, count: int) -> Motion:
-        """Solve only the first ``count`` groups at the given crank angle (branch choice)."""
-        part = Solver(self.mech, replace(self.structure, groups=self.structure.groups[:count]),
-                      self.sigmas[:count], ((),) * count)  # at branch_at: no flip counts
-        return part.solve(np.array([self.mech.driver.phi]))
-
-    def _fill(self, lid, states, pos, vel, acc, owner):
-        """The points of link ``lid`` that no link solved before it has placed (a group's
-        new hinge is placed again here, from the first of its two links).
-
-        Which points those are follows from the order of the groups alone, so it is
-        worked out at the first solve and kept."""
-        todo = self._todo.get(lid)
-        if todo is None:
-            todo = self._todo[lid] = tuple(
-                (name, local) for name, local in self.mech.links[lid].points.items()
-                if name not in owner)
-        if not todo:
-            return
-        origin, rotor, v, w, a, e = states[lid]
-        jw, kk = 1j * w, 1j * e - w * w
-        for name, local in todo:
-            r = rotor * local
-            pos[name] = origin + r
-            vel[name] = v + jw * r
-            acc[name] = a + kk * r
-            owner[name] = lid
-
-    # helpers used by the group solvers ------------------------------------------------
-    def local(self, lid: int, point: str) -> complex:
-        return self.mech.links[lid].points[point]
+    def _trial(self, phi: float, sigmas, count: int) -> Motion:
+        """The first ``count`` groups at crank angle ``phi`` on the signs ``sigmas``, none
+        flipping: the assemblies the hints choose between
+        (:func:`plans.kinematics.branches.choose_branches`)."""
+        with np.errstate(all="ignore"):
+            at = np.array([phi], dtype=float)
+            return self._motion(ARRAY, at, np.zeros_like(at), np.exp(1j * at),
+                                lambda i: sigmas[i], count)

@@ -9,7 +9,8 @@ what a table or a chart uses: the position, velocity and acceleration of every p
 
 It works in blocks of :data:`BLOCK` angles, so that the twenty-odd arrays a group
 needs stay in the processor's cache, and writes each block into arrays cut from one
-allocation (:func:`_allocate`).
+allocation (:func:`_allocate`). The blocks run the one group loop
+(:func:`plans.kinematics.assemble.assemble`) with each dyad's bulk step.
 Fixed points cost nothing: their entries are read-only broadcast views of one number.
 Each link is carried through a block by one of its points (an anchor: position,
 velocity, acceleration), its rotor, ω and ε; any other point Y of it follows by the
@@ -23,10 +24,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from plans.kinematics import kernels
-from plans.kinematics.groups import setup
-from plans.kinematics.records import pivot_key, pivot_ratio
-from plans.kinematics.solver import Solver
+from plans.kinematics.assemble import assemble
+from plans.kinematics.conditioning import pivot_key, pivot_ratio
+from plans.kinematics.dyads import rigid
 from plans.model.structure import DyadKind
 
 #: angles per block: 8192 complex numbers are 128 KiB an array, so the few arrays a step
@@ -75,15 +75,15 @@ class Sweep:
     def pivot(self) -> dict[str, np.ndarray]:
         """Per slotted link ("group 2–3 (RPR) pivot", as ``plans cycle`` names it): how far
         its block P is from the rocker's pivot Q, |QP| / (|OQ| + |OP|), O the crank's pivot
-        (:func:`plans.kinematics.records.pivot_figure`). Near 0 the rocker's ω = V / |QP| loses its
+        (:func:`plans.kinematics.conditioning.pivot_figure`). Near 0 the rocker's ω = V / |QP| loses its
         digits while the lines' sine stays 1. Worked out when asked for."""
-        return {key: pivot_ratio(self.position[P], self.position[Q], O)
-                for key, P, Q, O in self.slots}
+        return {key: pivot_ratio(self.position[P], self.position[Q], crank)
+                for key, P, Q, crank in self.slots}
 
 
-def sweep(sv: Solver, phi, block: int = BLOCK, into: Sweep | None = None) -> Sweep:
-    """Solve ``sv``'s mechanism at every angle of ``phi`` (rad from +x, any shape: the
-    results take it), block by block.
+def sweep(sv, phi, block: int = BLOCK, into: Sweep | None = None) -> Sweep:
+    """Solve the mechanism of the solver ``sv`` (:class:`plans.kinematics.Solver`) at
+    every angle of ``phi`` (rad from +x, any shape: the results take it), block by block.
 
     ``into``: a sweep of the same solver over angles of the same shape, whose arrays are
     overwritten instead of allocating new ones. Fresh memory is what a sweep of 10⁶
@@ -103,7 +103,7 @@ def sweep(sv: Solver, phi, block: int = BLOCK, into: Sweep | None = None) -> Swe
                 raise ValueError(f"into: a sweep of {into.phi.size} angles, not {n}")
             if into.phi.shape != shape:
                 raise ValueError(f"into: a sweep of angles shaped {into.phi.shape}, not {shape}")
-            if [name for name, _ in _layout(sv)[0]["pos"]] != list(into.position):
+            if [name for name, _ in sv.setup.layout[0]["pos"]] != list(into.position):
                 raise ValueError("into: a sweep of another mechanism (its points differ)")
             # flat views of its arrays (cut from one block, or broadcast constants)
             out = {"pos": _flat(into.position), "vel": _flat(into.velocity),
@@ -113,14 +113,14 @@ def sweep(sv: Solver, phi, block: int = BLOCK, into: Sweep | None = None) -> Swe
             into.phi.reshape(-1)[...] = phi
             phi = into.phi.reshape(-1)
         else:
-            out, omega, epsilon, sine, valid, own = _allocate(sv, n)
+            out, omega, epsilon, sine, valid, own = _allocate(sv.setup.layout, n)
             own[...] = phi  # the sweep owns its angles: a later into= overwrites them
             phi = own
         for i in range(0, n, block):
             j = min(i + block, n)
             dest = {kind: {name: o[i:j] for name, o in outs.items() if o.flags.writeable}
                     for kind, outs in out.items()}
-            part = _Block(sv, phi[i:j], dest)
+            part = assemble(Block(sv.setup, phi[i:j], dest), sv.setup, sv.signs(phi[i:j]))
             for kind, outs in dest.items():
                 got = getattr(part, kind)
                 for name, o in outs.items():
@@ -169,18 +169,18 @@ def _blank(bad: np.ndarray, out: dict, *stores: dict) -> None:
                 a[bad] = np.nan
 
 
-def _layout(sv: Solver):
-    """The names a sweep fills, with the value of those that are constant (None for the
-    others): solved once per solver at one angle."""
-    got = sv.cache.get("sweep layout")
-    if got is None:
-        probe = _Block(sv, np.zeros(1))
-        const = lambda v: v if np.ndim(v) == 0 else None  # noqa: E731
-        kinds = {kind: [(name, const(v)) for name, v in getattr(probe, kind).items()]
-                 for kind in ("pos", "vel", "acc")}
-        links = {lid: (const(ln[4]), const(ln[5])) for lid, ln in probe.links.items()}
-        got = sv.cache["sweep layout"] = (kinds, links, list(probe.sine))
-    return got
+def layout(setup):
+    """The names a sweep of ``setup``'s mechanism fills, with the value of those that are
+    constant (None for the others): (points by kind, ω and ε by link, group labels). A
+    block of one angle is solved to find them, every sign +1 (they do not depend on the
+    assembly); :attr:`plans.kinematics.setup.Setup.layout` keeps them."""
+    with np.errstate(all="ignore"):
+        probe = assemble(Block(setup, np.zeros(1)), setup, lambda i: 1.0)
+    const = lambda v: v if np.ndim(v) == 0 else None  # noqa: E731
+    kinds = {kind: [(name, const(v)) for name, v in getattr(probe, kind).items()]
+             for kind in ("pos", "vel", "acc")}
+    links = {lid: (const(ln[4]), const(ln[5])) for lid, ln in probe.links.items()}
+    return kinds, links, list(probe.sine)
 
 
 _malloc_ready = False
@@ -203,7 +203,7 @@ def _raise_malloc_thresholds() -> None:
         _malloc_ready = True
 
 
-def _allocate(sv: Solver, n: int):
+def _allocate(layout, n: int):
     """The arrays of a sweep over ``n`` angles, all cut from one allocation.
 
     One large block instead of some forty: the system gives it 2 MiB pages (numpy asks
@@ -214,7 +214,7 @@ def _allocate(sv: Solver, n: int):
     array of the sweep is gone.
     Returns (position/velocity/acceleration dicts by kind, ω, ε, sine, valid, angles).
     """
-    kinds, links, labels = _layout(sv)
+    kinds, links, labels = layout
     n_complex = sum(v is None for names in kinds.values() for _, v in names)
     n_float = sum((w is None) + (e is None) for w, e in links.values()) + len(labels) + 1
     n_bool = -(-n // 8)  # float64 slots that hold n booleans
@@ -243,23 +243,17 @@ def _allocate(sv: Solver, n: int):
     return out, omega, epsilon, sine, valid, phi
 
 
-def _plus(a, b):
-    """a + b, skipping the zero of a fixed point (a Python 0j) instead of adding it."""
-    return b if isinstance(a, complex) and a == 0 else a + b
+class Block:
+    """One block of angles (:func:`sweep`), the bulk path's state in the group loop
+    (:func:`plans.kinematics.assemble.assemble`): every point's position, velocity and
+    acceleration, each link carried by one of its points, each group's figure and where
+    the block closes. ``dest``: the sweep's arrays for this block, written straight into
+    where it has one."""
 
-
-def _rigid(vX, aX, r, w, e):
-    """Velocity and acceleration of the point X + r of a link moving with X at ω, ε."""
-    return _plus(vX, r * (1j * w)), _plus(aX, r * (1j * e - w * w))
-
-
-class _Block:
-    """One block of angles, solved group by group with the shared kernels."""
-
-    def __init__(self, sv: Solver, phi: np.ndarray, dest: dict | None = None):
-        self.sv = sv
+    def __init__(self, setup, phi: np.ndarray, dest: dict | None = None):
+        self.setup = setup
         self.dest = dest or {"pos": {}, "vel": {}, "acc": {}}
-        mech = sv.mech
+        mech = setup.mech
         self.pos: dict = {}
         self.vel: dict = {}
         self.acc: dict = {}
@@ -274,26 +268,18 @@ class _Block:
         np.cos(phi, out=rotor.real)
         np.sin(phi, out=rotor.imag)
         self.links[drv.link] = (mech.frame[drv.pivot], 0j, 0j, rotor, drv.omega, 0.0, 0j)
-        self._fill(drv.link)
-        xp = kernels.ARRAY
-        flips = sv.flips
-        for i, (g, sigma) in enumerate(zip(sv.structure.groups, sv.sigmas, strict=True)):
-            if flips[i]:
-                sigma = sv.sigma(i, phi)
-            self._pending: list = []
-            getattr(self, "_" + g.kind.name.lower())(xp, g, sigma)
-            for lid in (g.a, g.b):
-                self._fill(lid)
-            for args in self._pending:  # after the links' own points, as solve() orders them
-                self._put_coincident(*args)
 
-    # rigid-body helpers ----------------------------------------------------------------
-    def _fill(self, lid: int) -> None:
+    # the group loop's three moves ------------------------------------------------------
+    def step(self, dyad, g, own: dict, sigma):
+        """Group ``g`` by its dyad's bulk step; the coincident points it found."""
+        return dyad.bulk(self, g, own, sigma)
+
+    def fill(self, lid: int) -> None:
         """Every point of link ``lid`` not known yet, from the link's anchor; written
         straight into the sweep's output where it has one."""
         X, vX, aX, rot, w, e, xl = self.links[lid]
         jw = kk = None
-        for name, yl in self.sv.mech.links[lid].points.items():
+        for name, yl in self.setup.mech.links[lid].points.items():
             if name in self.pos:
                 continue
             if jw is None:
@@ -303,12 +289,38 @@ class _Block:
             self.vel[name] = self._sum("vel", name, vX, r, jw)
             self.acc[name] = self._sum("acc", name, aX, r, kk)
 
+    def coincide(self, found) -> None:
+        """The coincident points a step found, after the links' own points, as the
+        recorded solve orders them, with the kernel's own values."""
+        for name, _lid, at, v, a in found:
+            self.pos[name], self.vel[name], self.acc[name] = self.pos[at], v, a
+
+    # what the steps use ------------------------------------------------------------------
+    def guide(self, guide):
+        """A world point of the guide, its direction, the motion of its link there, and
+        the link's ω, ε: None where the link never turns
+        (:func:`plans.kinematics.groups.guide_motion`)."""
+        if guide.link == 0:
+            return guide.point, guide.direction, 0j, 0j, None, None
+        _X, _vX, _aX, rot, w, e, _xl = self.links[guide.link]
+        G, vG, aG = self._at(guide.link, guide.point)
+        if guide.link in self.setup.translating:
+            return G, rot * guide.direction, vG, aG, None, None
+        return G, rot * guide.direction, vG, aG, w, e
+
+    def close(self, label, sine, valid):
+        """Group ``label``'s figure and where it closes."""
+        # a figure, |sin| within [0, 1]: the cross product of two unit vectors as rounded
+        # reaches 1.0000000000000002, which the kernel divides by as it is
+        self.sine[label] = np.minimum(abs(sine), 1.0)
+        self.valid &= valid
+
     def _sum(self, kind, name, a, r, k=None):
         """a + r·k (k omitted: a + r), into the output ``dest[kind][name]`` if there is one."""
         o = self.dest[kind].get(name)
         if o is None:
             rk = r if k is None else r * k
-            return _plus(a, rk)
+            return rk if isinstance(a, complex) and a == 0 else a + rk
         if k is None:
             np.add(a, r, out=o)
             return o
@@ -321,104 +333,4 @@ class _Block:
         """World position, velocity and acceleration of the point ``local`` of link lid."""
         X, vX, aX, rot, w, e, xl = self.links[lid]
         r = rot * (local - xl)
-        return (X + r, *_rigid(vX, aX, r, w, e))
-
-    def _motion_at(self, lid: int, Y):
-        """Velocity and acceleration of the point of link lid that is at Y."""
-        X, vX, aX, _rot, w, e, _xl = self.links[lid]
-        return _rigid(vX, aX, Y - X, w, e)
-
-    def _guide(self, guide):
-        """As :func:`plans.kinematics.groups._guide`: ω, ε None where the guide's link never turns."""
-        if guide.link == 0:
-            return guide.point, guide.direction, 0j, 0j, None, None
-        _X, _vX, _aX, rot, w, e, _xl = self.links[guide.link]
-        G, vG, aG = self._at(guide.link, guide.point)
-        if guide.link in self.sv.translating:
-            return G, rot * guide.direction, vG, aG, None, None
-        return G, rot * guide.direction, vG, aG, w, e
-
-    def _coincident(self, name, lid, at, v=None, a=None):
-        self._pending.append((name, lid, at, v, a))
-
-    def _put_coincident(self, name, lid, at, v, a):
-        X = self.pos[at]
-        if v is None:
-            v, a = self._motion_at(lid, X)
-        self.pos[name], self.vel[name], self.acc[name] = X, v, a
-
-    def _close(self, label, sine, valid):
-        # a figure, |sin| within [0, 1]: the cross product of two unit vectors as rounded
-        # reaches 1.0000000000000002, which the kernel divides by as it is
-        self.sine[label] = np.minimum(abs(sine), 1.0)
-        self.valid &= valid
-
-    # the five kinds ----------------------------------------------------------------------
-    def _rrr(self, xp, g, sigma):
-        P, C, Q = g.P, g.C, g.Q
-        w = setup(self.sv, g)
-        Pw, Qw = self.pos[P], self.pos[Q]
-        r = kernels.rrr(xp, sigma, w["l2"], w["l3"], Pw, self.vel[P], self.acc[P],
-                        Qw, self.vel[Q], self.acc[Q])
-        self.pos[C], self.vel[C], self.acc[C] = r.C, r.vC, r.aC
-        self.links[g.a] = (r.C, r.vC, r.aC, (r.C - Pw) * (1 / (w["cl"] - w["pl"])), r.w2, r.e2,
-                           w["cl"])
-        self.links[g.b] = (r.C, r.vC, r.aC, (r.C - Qw) * (1 / (w["cl3"] - w["ql"])), r.w3, r.e3,
-                           w["cl3"])
-        self._close(g.label, r.sine, r.closes)
-
-    def _rrp(self, xp, g, sigma):
-        P, C, s = g.P, g.C, g.s1
-        w = setup(self.sv, g)
-        Pw = self.pos[P]
-        G, u, vG, aG, wk, ek = self._guide(s.guide)
-        r = kernels.rrp(xp, sigma, w["l2"], Pw, self.vel[P], self.acc[P], G, u, vG, aG, wk, ek)
-        self.pos[C], self.vel[C], self.acc[C] = r.C, r.vC, r.aC
-        k = self.links[s.guide.link]
-        self.links[g.a] = (r.C, r.vC, r.aC, (r.C - Pw) * (1 / (w["cl"] - w["pl"])), r.w2, r.e2,
-                           w["cl"])
-        self.links[g.b] = (r.C, r.vC, r.aC, u, k[4], k[5], w["cb"])
-        if s.guide.link:
-            self._coincident(w["base"], s.guide.link, C, r.vCk, r.aCk)
-        self._close(g.label, r.sine, r.closes)
-
-    def _rpr(self, xp, g, sigma):
-        P, Q = g.P, g.Q
-        w = setup(self.sv, g)
-        Pw, Qw = self.pos[P], self.pos[Q]
-        vP, aP = self.vel[P], self.acc[P]
-        r = kernels.rpr(xp, sigma, w["e"], w["gd"], Pw, vP, aP, Qw, self.vel[Q], self.acc[Q])
-        self.links[g.b] = (Qw, self.vel[Q], self.acc[Q], r.rot, r.w3, r.e3, w["q"])
-        self.links[g.a] = (Pw, vP, aP, r.u, r.w3, r.e3, w["pa"])
-        self._coincident(w["name"], g.b, P, r.vP3, r.aP3)
-        self._close(g.label, r.sine, r.closes)
-
-    def _prp(self, xp, g, sigma):
-        C, sa, sb = g.C, g.s1, g.s2
-        w = setup(self.sv, g)
-        G1, u1, vG1, aG1, w1, e1 = self._guide(sa.guide)
-        G2, u2, vG2, aG2, w2, e2 = self._guide(sb.guide)
-        r = kernels.prp(xp, G1, u1, vG1, aG1, w1, e1, G2, u2, vG2, aG2, w2, e2)
-        self.pos[C], self.vel[C], self.acc[C] = r.C, r.vC, r.aC
-        for lid, u, s, own in ((g.a, u1, sa, w["ca"]), (g.b, u2, sb, w["cb"])):
-            k = self.links[s.guide.link]
-            self.links[lid] = (r.C, r.vC, r.aC, u, k[4], k[5], own)
-        for s, base, v, a in ((sa, w["b1"], r.v1, r.a1), (sb, w["b2"], r.v2, r.a2)):
-            if base:
-                self._coincident(base, s.guide.link, C, v, a)
-        self._close(g.label, r.sine, r.closes)
-
-    def _rpp(self, xp, g, sigma):
-        P, s_out = g.P, g.s2
-        w = setup(self.sv, g)
-        Gk, uk, vG, aG, wk, ek = self._guide(s_out.guide)
-        Pw, vP, aP = self.pos[P], self.vel[P], self.acc[P]
-        r = kernels.rpp(xp, Pw, vP, aP, Gk, uk, vG, aG, wk, ek, w["locD"], w["g0"], w["gd"])
-        k = self.links[s_out.guide.link]
-        vB, aB = _rigid(r.vP3, r.aP3, r.oB - Pw, k[4], k[5])  # the yoke at its origin
-        self.links[g.b] = (r.oB, vB, aB, uk, k[4], k[5], 0j)
-        self.links[g.a] = (Pw, vP, aP, r.us, k[4], k[5], w["pa"])
-        self._coincident(w["name"], g.b, P, r.vP3, r.aP3)
-        if w["bk"]:
-            self._coincident(w["bk"], s_out.guide.link, P, r.vk, r.ak)
-        self._close(g.label, r.sine, r.closes)
+        return (X + r, *rigid(vX, aX, r, w, e))

@@ -1,32 +1,40 @@
-"""The mechanism as data: its file format and reading, structure, variant tables and the built-in scenes."""
+"""The mechanism as data: its description, its file format and reading, structure, output,
+assembly hints, variant tables and the built-in scenes."""
 
-from .mechanism import (
-    FIXED_NAMES,
+from plans.tolerances import SAME
+
+from .hints import RELATIONS, Ambiguous, hint_holds, parse_hint
+from .load import (
     LANGS,
     MAX_FRAME,
     MAX_ITEMS,
-    MAX_LINK_POINTS,
     MAX_LINKS,
     MAX_POINTS,
     MIN_LEN,
-    MIN_LINK,
-    MU_UNIT,
-    POINT_NAME,
-    REFERENCES,
-    RESERVED,
-    RPM_MIN,
-    SAME,
     SCALE,
+    from_dict,
+    load,
+)
+from .mechanism import (
+    MU_UNIT,
+    REFERENCES,
     SENSES,
-    SPEED,
     Driver,
     Guide,
     Link,
     Mechanism,
     Slider,
-    from_dict,
-    load,
     phi_of,
+)
+from .outputs import Output, find_output, no_output, output_of, outputs
+from .parts import (
+    FIXED_NAMES,
+    MAX_LINK_POINTS,
+    MIN_LINK,
+    POINT_NAME,
+    RESERVED,
+    RPM_MIN,
+    SPEED,
 )
 from .structure import (
     DyadKind,
@@ -75,6 +83,7 @@ __all__ = [
     "OPTIONAL",
     "POINT_NAME",
     "REFERENCES",
+    "RELATIONS",
     "RESERVED",
     "ROW_KEYS",
     "RPM_MIN",
@@ -83,6 +92,7 @@ __all__ = [
     "SENSES",
     "SPEED",
     "TABLE_KEYS",
+    "Ambiguous",
     "Driver",
     "DyadKind",
     "Edge",
@@ -90,15 +100,22 @@ __all__ = [
     "Guide",
     "Link",
     "Mechanism",
+    "Output",
     "Slider",
     "Structure",
     "Table",
     "analyse",
     "chebyshev",
     "edges",
+    "find_output",
     "from_dict",
+    "hint_holds",
     "load",
     "load_table",
+    "no_output",
+    "output_of",
+    "outputs",
+    "parse_hint",
     "phi_of",
     "read_table",
     "variant",

@@ -11,7 +11,7 @@ file of a hand-drawn plan are all read with these.
 from __future__ import annotations
 
 import ast
-import datetime
+import difflib
 import json
 import math
 import re
@@ -20,6 +20,7 @@ from pathlib import Path
 from typing import Any
 
 from plans.errors import InputError
+from plans.model.locate import BARE, first_duplicate, key_text, line_of, locate, one_line, quote
 
 MAX_ABS = 1e6  # metres, rad/s: anything larger is a typo, not a machine
 MAX_FILE = 1_000_000  # bytes: a mechanism file is a few KB
@@ -44,7 +45,8 @@ def read_toml(path: str | Path, typical: str = "") -> tuple[dict, str]:
         raise InputError(source, f"cannot read the file: {exc.strerror or exc}") from None
     if len(raw) > MAX_FILE:
         raise InputError(
-            source, f"the file is larger than {MAX_FILE // 1_000_000} MB" + (f"; {typical}" if typical else "")
+            source,
+            f"the file is larger than {MAX_FILE // 1_000_000} MB" + (f"; {typical}" if typical else "")
         )
     nul = raw.find(b"\x00")
     if nul >= 0:
@@ -71,7 +73,8 @@ def parse_toml(text: str, source: str) -> dict:
     except RecursionError:
         deep = re.search(r"[\[{](?:\s*[\[{]){50}", text)
         at = f"line {text.count(chr(10), 0, deep.start()) + 1}: " if deep else ""
-        raise InputError(source, f"{at}TOML nested too deeply: these files need three levels at most") from None
+        raise InputError(source, f"{at}TOML nested too deeply: these files need three levels at "
+                                 "most") from None
     except (ValueError, OverflowError, MemoryError) as exc:  # e.g. an integer of 5000 digits
         long = re.search(r"\d{4000,}", text)
         at = f"line {text.count(chr(10), 0, long.start()) + 1}: " if long else ""
@@ -79,7 +82,8 @@ def parse_toml(text: str, source: str) -> dict:
         raise InputError(source, f"{at}TOML value out of range: {what}") from None
 
 
-_TOML_AT = re.compile(r"^(?P<msg>.*?)\s*\((?:at line (?P<line>\d+), column (?P<col>\d+)|at end of document)\)$", re.S)
+_TOML_AT = re.compile(r"^(?P<msg>.*?)\s*\((?:at line (?P<line>\d+), column (?P<col>\d+)|at end of "
+                      r"document)\)$", re.S)
 _TOML_HINTS = (
     ("Invalid value", "a value is a number, \"text\" in double quotes, [a, list] or { a = table }"),
     ("Cannot overwrite a value", "a name given twice: each key once"),
@@ -106,7 +110,7 @@ def _toml_problem(message: str, text: str) -> str:
         line = max(text.count("\n") + (0 if text.endswith("\n") else 1), 1)
         where = f"line {line} (end of file)"
     if msg.startswith("Cannot overwrite a value"):
-        dup = _first_duplicate("\n".join(text.split("\n")[:line]))
+        dup = first_duplicate("\n".join(text.split("\n")[:line]))
         if dup:
             key, first, again = dup
             return (
@@ -170,12 +174,12 @@ def _bare_key_hint(key: str) -> str:
     """
     key = key.strip()
     parts = key.split(".")
-    if not key or any(c in key for c in "\"'#") or all(_BARE.fullmatch(p) for p in parts):
+    if not key or any(c in key for c in "\"'#") or all(BARE.fullmatch(p) for p in parts):
         return ""
-    quoted = ".".join(p if _BARE.fullmatch(p) else json.dumps(p, ensure_ascii=False)
+    quoted = ".".join(p if BARE.fullmatch(p) else json.dumps(p, ensure_ascii=False)
                       for p in parts)
     latin = "".join(_GREEK.get(c, c) for c in key)
-    if latin != key and all(_BARE.fullmatch(p) for p in latin.split(".")):
+    if latin != key and all(BARE.fullmatch(p) for p in latin.split(".")):
         said = ", ".join(f"{g} as {a}" for g, a in _GREEK.items() if g in key)
         return f"write {said} ({latin}) or quote the key ({quoted})"
     return f"a key with letters other than A–Z, a–z is quoted: {quoted}"
@@ -226,40 +230,6 @@ def other_kind(data: dict, source: str, reads: str) -> str | None:
     return f"{what}, not {_KINDS[reads][0].split(' (')[0]}: {how.format(src=source)}"
 
 
-def one_line(text: str, limit: int = 200) -> str:
-    """``text`` on one line, at most ``limit`` characters."""
-    cut = len(text) > limit
-    text = "".join(c if c.isprintable() else repr(c)[1:-1] for c in text[:limit])
-    return text[: limit - 1] + "…" if cut or len(text) > limit else text
-
-
-def quote(value: Any, limit: int = 40) -> str:
-    """A value of the file, quoted and cut short, for a message."""
-    if isinstance(value, str):
-        return '"' + one_line(value, limit).replace('"', '\\"') + '"'
-    if isinstance(value, dict):
-        return "a table"
-    if isinstance(value, list):
-        return f"a list of {len(value)}"
-    if isinstance(value, int) and not isinstance(value, bool) and abs(value) > 10**15:
-        return f"{'-' if value < 0 else ''}an integer of {len(str(abs(value))) if abs(value) < 10**4000 else 'thousands of'} digits"
-    if isinstance(value, bool):
-        return "true" if value else "false"  # as the file spells it
-    if isinstance(value, datetime.date | datetime.time):
-        return f"the date or time {value.isoformat()}"  # 1979-05-27, not datetime.date(…)
-    return one_line(repr(value), limit)
-
-
-_SIMPLE_KEY = re.compile(r"^[A-Za-z0-9_'-]{1,40}$")
-
-
-def key_text(key: Any) -> str:
-    """A key of the file as it appears in a key path."""
-    if isinstance(key, str) and _SIMPLE_KEY.match(key):
-        return key
-    return quote(key, 30)
-
-
 def name_list(names, limit: int = 20) -> str:
     names = sorted(names)
     if not names:
@@ -284,10 +254,10 @@ class Problems:
         return bool(self.items)
 
     def lines(self) -> list[str]:
-        index = _locate(self.text) if self.text else {}
+        index = locate(self.text) if self.text else {}
         located = []
         for n, (where, what) in enumerate(self.items):
-            line = _line_of(where, index)
+            line = line_of(where, index)
             text = f"{where}: {what}" if where else what
             if line:
                 text = f"line {line}: {text}"
@@ -431,226 +401,5 @@ def close_match(key: Any, allowed, cutoff: float = 0.6) -> str:
     if latin != key and latin in allowed:
         return f'did you mean "{latin}" (typed with {cyrillic_letters(key)})? '
     same = sorted(a for a in allowed if a.lower() == key.lower())
-    import difflib  # only for a misspelt key
-
     close = same or difflib.get_close_matches(key, sorted(allowed), n=1, cutoff=cutoff)
     return f'did you mean "{close[0]}"? ' if close else ""
-
-
-# ---------------------------------------------------------------------------------------
-# where is a key? (line numbers for the messages)
-# ---------------------------------------------------------------------------------------
-
-_BARE = re.compile(r"[A-Za-z0-9_-]+")
-
-
-def _join(path: list[str]) -> str:
-    out = ""
-    for part in path:
-        out += part if part.startswith("[") or not out else "." + part
-    return out
-
-
-def _line_of(where: str, index: dict[str, int]) -> int | None:
-    """The line of ``where`` or of the nearest enclosing key that is in the file."""
-    while where:
-        if where in index:
-            return index[where]
-        cut = max(where.rfind("."), where.rfind("["))
-        if cut <= 0:
-            return None
-        where = where[:cut]
-    return None
-
-
-def _locate(text: str) -> dict[str, int]:
-    """Key path ("links.3.points.C", "sliders[1].guide", "frame.O[0]") → line, for a TOML
-    text that parses. Best effort: never raises; an unlocated problem keeps its key path."""
-    loc = _Locator(text)
-    try:
-        loc.document()
-    except Exception:
-        pass
-    return loc.index
-
-
-def _first_duplicate(text: str) -> tuple[str, int, int] | None:
-    """The first key given twice in ``text``: (key path, first line, second line)."""
-    loc = _Locator(text)
-    try:
-        loc.document()
-    except Exception:
-        pass
-    return loc.duplicate
-
-
-class _Locator:
-    """A small reader of valid TOML that notes the line where each key is defined."""
-
-    def __init__(self, text: str):
-        self.s = text
-        self.i = 0
-        self.line = 1
-        self.index: dict[str, int] = {}
-        self.defined: dict[str, int] = {}
-        self.duplicate: tuple[str, int, int] | None = None
-        self.aot: dict[str, int] = {}  # array of tables → index of its current element
-
-    def _note(self, path: list[str], line: int, *, value: bool = False) -> None:
-        key = _join(path)
-        self.index.setdefault(key, line)
-        if value:
-            if key in self.defined and self.duplicate is None:
-                self.duplicate = (key, self.defined[key], line)
-            self.defined.setdefault(key, line)
-
-    def _peek(self) -> str:
-        return self.s[self.i] if self.i < len(self.s) else ""
-
-    def _advance(self, n: int = 1) -> None:
-        self.line += self.s.count("\n", self.i, self.i + n)
-        self.i += n
-
-    def _skip(self, newlines: bool = False) -> None:
-        s = self.s
-        while self.i < len(s):
-            c = s[self.i]
-            if c in " \t\r" or (newlines and c == "\n"):
-                self._advance()
-            elif c == "#":
-                end = s.find("\n", self.i)
-                self.i = len(s) if end < 0 else end
-            else:
-                return
-
-    def _expect(self, token: str) -> None:
-        self._skip()
-        if not self.s.startswith(token, self.i):
-            raise ValueError(f"expected {token!r} at line {self.line}")
-        self._advance(len(token))
-
-    def _key(self) -> list[str]:
-        parts = []
-        while True:
-            self._skip()
-            if self._peek() in "\"'":
-                parts.append(key_text(self._string()))
-            else:
-                m = _BARE.match(self.s, self.i)
-                if not m:
-                    raise ValueError(f"no key at line {self.line}")
-                parts.append(key_text(m.group()))
-                self._advance(len(m.group()))
-            self._skip()
-            if self._peek() != ".":
-                return parts
-            self._advance()
-
-    def _string(self) -> str:
-        s, q = self.s, self.s[self.i]
-        if s.startswith(q * 3, self.i):
-            end = self.i + 3
-            while True:
-                end = s.find(q * 3, end)
-                if end < 0:
-                    raise ValueError("unterminated string")
-                if q == '"' and s[end - 1] == "\\":
-                    end += 1
-                    continue
-                break
-            while s.startswith(q, end + 3):
-                end += 1
-            raw = s[self.i + 3 : end]
-            self._advance(end + 3 - self.i)
-            return raw
-        j = self.i + 1
-        while s[j] != q:
-            j += 2 if (q == '"' and s[j] == "\\") else 1
-        raw = s[self.i + 1 : j]
-        self._advance(j + 1 - self.i)
-        if q == '"' and "\\" in raw:
-            try:
-                raw = json.loads(f'"{raw}"')
-            except ValueError:
-                pass
-        return raw
-
-    def _resolve(self, parts: list[str]) -> list[str]:
-        """Header key → path, with the current element of every array of tables in it."""
-        out: list[str] = []
-        for part in parts:
-            out.append(part)
-            n = self.aot.get(_join(out))
-            if n is not None:
-                out[-1] = f"{part}[{n}]"
-        return out
-
-    def document(self) -> None:
-        table: list[str] = []
-        while True:
-            self._skip(newlines=True)
-            if self.i >= len(self.s):
-                return
-            line = self.line
-            if self.s.startswith("[[", self.i):
-                self._advance(2)
-                parts = self._key()
-                self._expect("]]")
-                base = [*self._resolve(parts[:-1]), parts[-1]]
-                key = _join(base)
-                n = self.aot.get(key, -1) + 1
-                self.aot[key] = n
-                self.index.setdefault(key, line)
-                table = [*base[:-1], f"{parts[-1]}[{n}]"]
-                self._note(table, line)
-            elif self._peek() == "[":
-                self._advance()
-                parts = self._key()
-                self._expect("]")
-                table = self._resolve(parts)
-                self._note(table, line)
-            else:
-                parts = self._key()
-                self._expect("=")
-                self._note(table + parts, line, value=True)
-                self._value(table + parts)
-
-    def _value(self, path: list[str]) -> None:
-        self._skip()
-        c = self._peek()
-        if c in "\"'":
-            self._string()
-        elif c == "[":
-            self._advance()
-            n = 0
-            while True:
-                self._skip(newlines=True)
-                if self._peek() == "]":
-                    self._advance()
-                    return
-                self._note([*path, f"[{n}]"], self.line)
-                self._value([*path, f"[{n}]"])
-                n += 1
-                self._skip(newlines=True)
-                if self._peek() == ",":
-                    self._advance()
-        elif c == "{":
-            self._advance()
-            while True:
-                self._skip()
-                if self._peek() == "}":
-                    self._advance()
-                    return
-                line = self.line
-                parts = self._key()
-                self._expect("=")
-                self._note(path + parts, line, value=True)
-                self._value(path + parts)
-                self._skip()
-                if self._peek() == ",":
-                    self._advance()
-        else:
-            m = re.compile(r"[^,\]}\n#]*").match(self.s, self.i)
-            if not m.group().strip():
-                raise ValueError(f"no value at line {self.line}")
-            self._advance(len(m.group()))

@@ -157,8 +157,13 @@ def _point(value: Any, where: str, known: set[str], pr: Problems, what: str) -> 
     return value
 
 
-def read_loads(raw: Any, points: dict[int, set[str]], pr: Problems, where: str = "loads",
-               sliding: frozenset[int] | None = None) -> Loads:
+def read_loads(
+    raw: Any,
+    points: dict[int, set[str]],
+    pr: Problems,
+    where: str = "loads",
+    sliding: frozenset[int] | None = None,
+) -> Loads:
     """The ``[loads]`` table of a mechanism file; ``points``: each moving link's point
     names; ``sliding``: the links that slide on a guide (a force "along guide" needs one).
     Every problem goes to ``pr``, located by its key path."""
@@ -166,8 +171,9 @@ def read_loads(raw: Any, points: dict[int, set[str]], pr: Problems, where: str =
         pr.add(where, f"must be a table ([loads]), got {quote(raw)}")
         return Loads()
     check_keys(raw, {"g", "links", "forces", "moments", "resistance", "inertia", "couples"}, where, pr)
-    g = read_number(raw.get("g"), f"{where}.g", pr, positive=True, default=G_STANDARD, unit="m/s²",
-                    high=1000.0)
+    g = read_number(
+        raw.get("g"), f"{where}.g", pr, positive=True, default=G_STANDARD, unit="m/s²", high=1000.0
+    )
     inertia = couples = None
     if "inertia" in raw:
         inertia = _keyword(raw["inertia"], f"{where}.inertia", INERTIA, pr)
@@ -177,30 +183,46 @@ def read_loads(raw: Any, points: dict[int, set[str]], pr: Problems, where: str =
     masses: dict[int, Mass] = {}
     raw_links = raw.get("links", {})
     if not isinstance(raw_links, dict):
-        pr.add(f"{where}.links", f'must be a table of links, e.g. [loads.links.3] mass = 10, got {quote(raw_links)}')
+        pr.add(
+            f"{where}.links",
+            f"must be a table of links, e.g. [loads.links.3] mass = 10, got {quote(raw_links)}",
+        )
         raw_links = {}
     for key, body in raw_links.items():
         at = f"{where}.links.{key_text(key)}"
         lid = _link_key(key, at, points, pr)
         if not isinstance(body, dict):
-            pr.add(at, f'must be a table such as {{ mass = 10, J_S = 0.4, centre = "S3" }}, got {quote(body)}')
+            pr.add(
+                at, f'must be a table such as {{ mass = 10, J_S = 0.4, centre = "S3" }}, got {quote(body)}'
+            )
             continue
         check_keys(body, {"mass", "J_S", "centre"}, at, pr)
         m = read_number(body.get("mass"), f"{at}.mass", pr, unit="kg", high=MAX_LOAD, default=0.0)
         J = read_number(body.get("J_S"), f"{at}.J_S", pr, unit="kg·m²", high=MAX_LOAD, default=0.0)
         for name, v in (("mass", m), ("J_S", J)):
             if v is not None and v < 0:
-                pr.add(f"{at}.{name}", f"negative {'mass' if name == 'mass' else 'moment of inertia'} {v:g}: "
-                       f"it is at least 0 (write {-v:g})")
+                pr.add(
+                    f"{at}.{name}",
+                    f"negative {'mass' if name == 'mass' else 'moment of inertia'} {v:g}: "
+                    f"it is at least 0 (write {-v:g})",
+                )
         centre = None
         if lid is not None:
             default = f"S{lid}" if f"S{lid}" in points[lid] else None
             if "centre" in body:
-                centre = _point(body["centre"], f"{at}.centre", points[lid], pr,
-                                f"the centre of mass is a point of link {lid}:")
+                centre = _point(
+                    body["centre"],
+                    f"{at}.centre",
+                    points[lid],
+                    pr,
+                    f"the centre of mass is a point of link {lid}:",
+                )
             elif (m or J) and default is None:
-                pr.add(at, f"centre missing: name the centre of mass, a point of link {lid} "
-                       f"({name_list(points[lid])}), e.g. centre = \"{next(iter(sorted(points[lid])), 'S')}\"")
+                pr.add(
+                    at,
+                    f"centre missing: name the centre of mass, a point of link {lid} "
+                    f'({name_list(points[lid])}), e.g. centre = "{next(iter(sorted(points[lid])), "S")}"',
+                )
             else:
                 centre = default
         if lid is not None and centre is not None and m is not None and J is not None and m >= 0 and J >= 0:
@@ -208,14 +230,24 @@ def read_loads(raw: Any, points: dict[int, set[str]], pr: Problems, where: str =
     forces = tuple(_forces(raw.get("forces", []), f"{where}.forces", points, everywhere, pr))
     for i, f in enumerate(forces):
         if sliding is not None and f.rule in ("along guide", "against guide") and f.link not in sliding:
-            pr.add(f"{where}.forces[{i}].direction", f'"{f.rule}": link {f.link} slides on no guide; '
-                   "give angle_deg, or a direction along or against the point's velocity")
+            pr.add(
+                f"{where}.forces[{i}].direction",
+                f'"{f.rule}": link {f.link} slides on no guide; '
+                "give angle_deg, or a direction along or against the point's velocity",
+            )
     moments = tuple(_moments(raw.get("moments", []), f"{where}.moments", points, pr))
     resistance = None
     if "resistance" in raw:
         resistance = read_resistance(raw["resistance"], f"{where}.resistance", pr)
-    return Loads(g=g if g is not None else G_STANDARD, masses=masses, forces=forces, moments=moments,
-                 resistance=resistance, inertia=inertia or "forces and moments", couples=couples or "moment")
+    return Loads(
+        g=g if g is not None else G_STANDARD,
+        masses=masses,
+        forces=forces,
+        moments=moments,
+        resistance=resistance,
+        inertia=inertia or "forces and moments",
+        couples=couples or "moment",
+    )
 
 
 def _rows(raw: Any, where: str, pr: Problems, example: str) -> list[tuple[str, dict]]:
@@ -239,8 +271,12 @@ def _rows(raw: Any, where: str, pr: Problems, example: str) -> list[tuple[str, d
 
 def _forces(raw, where, points, everywhere, pr):
     for i, (at, body) in enumerate(_rows(raw, where, pr, '[[loads.forces]] point = "E", magnitude = 100')):
-        check_keys(body, {"name", "point", "link", "magnitude", "weight_of", "times", "direction", "angle_deg"},
-                   at, pr)
+        check_keys(
+            body,
+            {"name", "point", "link", "magnitude", "weight_of", "times", "direction", "angle_deg"},
+            at,
+            pr,
+        )
         name = read_text(body.get("name"), f"{at}.name", pr, f"F{i + 1}")
         point = _point(body.get("point"), f"{at}.point", everywhere, pr, "the points of the moving links are")
         magnitude = weight_of = link = None
@@ -248,24 +284,38 @@ def _forces(raw, where, points, everywhere, pr):
         carriers = sorted(lid for lid, names in points.items() if point in names)
         if "link" in body:
             raw_link = body["link"]
-            link = _link_key(str(raw_link) if isinstance(raw_link, int) and not isinstance(raw_link, bool)
-                             else raw_link, f"{at}.link", points, pr)
+            link = _link_key(
+                str(raw_link) if isinstance(raw_link, int) and not isinstance(raw_link, bool) else raw_link,
+                f"{at}.link",
+                points,
+                pr,
+            )
             if link is not None and point is not None and link not in carriers:
-                pr.add(f"{at}.link", f"link {link} does not carry the point {point}: "
-                       f"{name_list(map(str, carriers))} do")
+                pr.add(
+                    f"{at}.link",
+                    f"link {link} does not carry the point {point}: {name_list(map(str, carriers))} do",
+                )
                 link = None
         if "magnitude" in body and "weight_of" in body:
             pr.add(at, "give magnitude (N) or weight_of with times, not both")
         elif "weight_of" in body:
-            weight_of = _link_key(str(body["weight_of"]) if isinstance(body["weight_of"], int) else body["weight_of"],
-                                  f"{at}.weight_of", points, pr)
-            times = read_number(body.get("times"), f"{at}.times", pr, positive=True, default=1.0, unit="",
-                                high=MAX_LOAD)
+            weight_of = _link_key(
+                str(body["weight_of"]) if isinstance(body["weight_of"], int) else body["weight_of"],
+                f"{at}.weight_of",
+                points,
+                pr,
+            )
+            times = read_number(
+                body.get("times"), f"{at}.times", pr, positive=True, default=1.0, unit="", high=MAX_LOAD
+            )
         else:
             magnitude = read_number(body.get("magnitude"), f"{at}.magnitude", pr, unit="N", high=MAX_LOAD)
             if magnitude is not None and magnitude < 0:
-                pr.add(f"{at}.magnitude", f"negative magnitude {magnitude:g}: give its size and turn it "
-                       "with direction or angle_deg")
+                pr.add(
+                    f"{at}.magnitude",
+                    f"negative magnitude {magnitude:g}: give its size and turn it "
+                    "with direction or angle_deg",
+                )
                 magnitude = None
         rule = angle = None
         if ("direction" in body) == ("angle_deg" in body):
@@ -276,10 +326,22 @@ def _forces(raw, where, points, everywhere, pr):
         else:
             deg = read_number(body["angle_deg"], f"{at}.angle_deg", pr, unit="°", high=1e4)
             angle = None if deg is None else math.radians(deg)
-        if point is not None and (magnitude is not None or weight_of is not None) and times is not None \
-                and (rule is not None or angle is not None):
-            yield PointForce(name, point, magnitude, link if link is not None else carriers[0],
-                             weight_of, times, rule, angle)
+        if (
+            point is not None
+            and (magnitude is not None or weight_of is not None)
+            and times is not None
+            and (rule is not None or angle is not None)
+        ):
+            yield PointForce(
+                name,
+                point,
+                magnitude,
+                link if link is not None else carriers[0],
+                weight_of,
+                times,
+                rule,
+                angle,
+            )
 
 
 def _moments(raw, where, points, pr):
@@ -287,21 +349,31 @@ def _moments(raw, where, points, pr):
         check_keys(body, {"name", "link", "moment", "magnitude", "direction"}, at, pr)
         name = read_text(body.get("name"), f"{at}.name", pr, f"M{i + 1}")
         link = body.get("link")
-        lid = _link_key(str(link) if isinstance(link, int) and not isinstance(link, bool) else link,
-                        f"{at}.link", points, pr)
+        lid = _link_key(
+            str(link) if isinstance(link, int) and not isinstance(link, bool) else link,
+            f"{at}.link",
+            points,
+            pr,
+        )
         if ("moment" in body) == ("magnitude" in body):
-            pr.add(at, "give moment (N·m, counter-clockwise positive) or magnitude with direction, one of them")
+            pr.add(
+                at, "give moment (N·m, counter-clockwise positive) or magnitude with direction, one of them"
+            )
             continue
         if "moment" in body:
             value = read_number(body["moment"], f"{at}.moment", pr, unit="N·m", high=MAX_LOAD)
             rule = None
             if "direction" in body:
-                pr.add(f"{at}.direction", "goes with magnitude: a signed moment is counter-clockwise positive")
+                pr.add(
+                    f"{at}.direction", "goes with magnitude: a signed moment is counter-clockwise positive"
+                )
         else:
             value = read_number(body["magnitude"], f"{at}.magnitude", pr, unit="N·m", high=MAX_LOAD)
             if value is not None and value < 0:
-                pr.add(f"{at}.magnitude", f"negative magnitude {value:g}: give its size and its sense "
-                       "with direction")
+                pr.add(
+                    f"{at}.magnitude",
+                    f"negative magnitude {value:g}: give its size and its sense with direction",
+                )
                 value = None
             rule = _keyword(body.get("direction"), f"{at}.direction", SENSES, pr)
         if lid is not None and value is not None and ("moment" in body or rule is not None):
@@ -317,7 +389,10 @@ def read_resistance(raw: Any, where: str, pr: Problems) -> Resistance | None:
     check_keys(raw, {"s", "fraction", "P", "idle", "name"}, where, pr)
     name = read_text(raw.get("name"), f"{where}.name", pr, "P")
     if ("s" in raw) == ("fraction" in raw):
-        pr.add(where, "give s (m from the start of the working stroke) or fraction (of the stroke H), one of them")
+        pr.add(
+            where,
+            "give s (m from the start of the working stroke) or fraction (of the stroke H), one of them",
+        )
         return None
     key = "s" if "s" in raw else "fraction"
     xs = _numbers(raw.get(key), f"{where}.{key}", pr, "m" if key == "s" else "")
@@ -338,16 +413,20 @@ def read_resistance(raw: Any, where: str, pr: Problems) -> Resistance | None:
             ok = False
             break
     if xs and xs[0] < 0:
-        pr.add(f"{where}.{key}", f"starts at {xs[0]:g}: s is measured from the start of the working stroke, "
-               "from 0")
+        pr.add(
+            f"{where}.{key}",
+            f"starts at {xs[0]:g}: s is measured from the start of the working stroke, from 0",
+        )
         ok = False
     if key == "fraction" and xs and xs[-1] > 1:
         pr.add(f"{where}.fraction", f"ends at {xs[-1]:g}: a fraction of the stroke is at most 1")
         ok = False
     for i, p in enumerate(ps):
         if p < 0:
-            pr.add(f"{where}.P", f"P[{i}] = {p:g} is negative: the resistance is its size, it always "
-                   "acts against the motion")
+            pr.add(
+                f"{where}.P",
+                f"P[{i}] = {p:g} is negative: the resistance is its size, it always acts against the motion",
+            )
             ok = False
             break
     if idle < 0:
@@ -379,17 +458,22 @@ def read_drive(raw: Any, pr: Problems, where: str = "drive") -> Drive:
         return Drive()
     check_keys(raw, {"efficiency", "digit", "catalogue", "synchronous", "power"}, where, pr)
     power = _keyword(raw["power"], f"{where}.power", ("position", "mean"), pr) if "power" in raw else None
-    eta = read_number(raw.get("efficiency"), f"{where}.efficiency", pr, positive=True, default=0.9, unit="",
-                      high=1.0)
+    eta = read_number(
+        raw.get("efficiency"), f"{where}.efficiency", pr, positive=True, default=0.9, unit="", high=1.0
+    )
     digit = raw.get("digit", 0)
     if isinstance(digit, bool) or not isinstance(digit, int) or not 0 <= digit <= 9:
-        pr.add(f"{where}.digit", "must be one digit 0…9 (Ш, the last digit of the student's code), "
-               f"got {quote(digit)}")
+        pr.add(
+            f"{where}.digit",
+            f"must be one digit 0…9 (Ш, the last digit of the student's code), got {quote(digit)}",
+        )
         digit = 0
     catalogue = read_text(raw.get("catalogue"), f"{where}.catalogue", pr, "4A")
     sync = raw.get("synchronous", 3000)
     if sync not in (3000, 1500, 1000, 750) or isinstance(sync, bool):
-        pr.add(f"{where}.synchronous", f"must be the motors' synchronous speed in rpm: 3000, 1500, 1000 or 750, "
-               f"got {quote(sync)}")
+        pr.add(
+            f"{where}.synchronous",
+            f"must be the motors' synchronous speed in rpm: 3000, 1500, 1000 or 750, got {quote(sync)}",
+        )
         sync = 3000
     return Drive(eta if eta is not None else 0.9, digit, catalogue, int(sync), power or "position")

@@ -15,7 +15,8 @@ from pathlib import Path
 
 import numpy as np
 
-from plans.model.mechanism import Mechanism, from_dict, load
+from plans.model.load import from_dict, load
+from plans.model.mechanism import Mechanism
 
 #: the samples of a source checkout; an installed package has the other scenes only
 SAMPLES = Path(__file__).resolve().parents[2] / "samples"

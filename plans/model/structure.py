@@ -12,6 +12,7 @@ import itertools
 from dataclasses import dataclass
 from enum import Enum
 
+from plans import tolerances
 from plans.errors import StructureError
 from plans.model.mechanism import Mechanism, Slider
 
@@ -125,7 +126,8 @@ def _analyse(mech: Mechanism) -> Structure:
     p5 = len(all_edges)
     W = 3 * n - 2 * p5
     if W != 1:
-        what = "over-constrained (a structure or a locked chain)" if W < 1 else "under-constrained: more inputs than one crank"
+        what = ("over-constrained (a structure or a locked chain)" if W < 1 else
+                "under-constrained: more inputs than one crank")
         raise StructureError(
             f"{chebyshev(n, p5)}: the chain is {what}; "
             "a mechanism with one crank needs W = 1"
@@ -204,11 +206,9 @@ def _classify(x: int, y: int, ex: Edge, inner: Edge, ey: Edge) -> Group:
                 f"{label}: the block (link {x}) hinged at {ex.point} must slide along the "
                 f"guide carried by link {y}"
             )
-        from plans.kinematics.kernels import SINGULAR_SINE  # here: the structure itself needs no numpy
-
         # the inner guide in the yoke's coordinates, whose x runs along the yoke's own guide:
         # along x, the two stay parallel at every angle (the threshold of a singular plan)
-        if abs(s_in.guide.direction.imag) <= SINGULAR_SINE:
+        if abs(s_in.guide.direction.imag) <= tolerances.SINGULAR_SINE:
             raise StructureError(
                 f"{label}: the guide {s_in.guide.label} of link {y} is parallel to the guide "
                 f"{ey.slider.guide.label} it moves along (a sliding link's x-axis runs along "

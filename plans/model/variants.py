@@ -22,7 +22,9 @@ from __future__ import annotations
 
 import operator
 from dataclasses import replace
+from importlib import resources
 from pathlib import Path
+from string import Formatter
 from typing import NamedTuple
 
 from plans.errors import InputError
@@ -37,7 +39,9 @@ from plans.model.fileformat import (
     read_number,
     read_toml,
 )
-from plans.model.mechanism import MIN_LINK, RPM_MIN, SENSES, SPEED, Mechanism, from_dict
+from plans.model.load import from_dict
+from plans.model.mechanism import SENSES, Mechanism
+from plans.model.parts import MIN_LINK, RPM_MIN, SPEED
 
 BUILTIN = "Table 2 (built in)"
 #: :data:`BUILTIN` in Russian, for the reports in Russian that name a variant's source
@@ -134,9 +138,6 @@ class Table(NamedTuple):
 def read_table(path: str | Path | None = None) -> Table:
     """The table at ``path`` (None: the built-in Table 2), read once."""
     if path is None:
-        # imported only here: it costs a tenth of what `plans solve` imports
-        from importlib import resources
-
         text = resources.files("plans").joinpath("data/table2.toml").read_text("utf-8")
         source = BUILTIN
         data = parse_toml(text, source)
@@ -171,7 +172,8 @@ def read_table(path: str | Path | None = None) -> Table:
     rows = data.get("variant")
     if not isinstance(rows, list) or not rows:
         got = "" if rows is None else f" (got {quote(rows)})"
-        pr.add("variant", f"missing: the table needs [[variant]] rows with n, AB, BC, CD, AD, phi_deg, rpm{got}")
+        pr.add("variant", "missing: the table needs [[variant]] rows with n, AB, BC, CD, AD, phi_deg, "
+                          f"rpm{got}")
         return done()
     if len(rows) > MAX_ROWS:
         pr.add("variant", f"{len(rows)} rows: at most {MAX_ROWS}")
@@ -190,15 +192,19 @@ def read_table(path: str | Path | None = None) -> Table:
         rp = bad.setdefault(n, Problems(source, text))
         for key in row:
             if key not in ROW_KEYS:
-                rp.add(f"{where}.{key_text(key)}", f"unknown column (variant {n}) — {close_match(key, ROW_KEYS)}known: {', '.join(sorted(ROW_KEYS))}")
+                rp.add(f"{where}.{key_text(key)}", f"unknown column (variant {n}) — "
+                                                   f"{close_match(key, ROW_KEYS)}known: "
+                                                   f"{', '.join(sorted(ROW_KEYS))}")
         if n in first:
-            rp.add(where + ".n", f"variant {n} appears twice (first as variant[{first[n]}]): each number once")
+            rp.add(where + ".n",
+                   f"variant {n} appears twice (first as variant[{first[n]}]): each number once")
             table.pop(n, None)
             continue
         first[n] = i
         kind = row.get("kind", "crank-slider" if n % 2 == 0 else "four-bar")
         if kind not in KINDS:
-            rp.add(where + ".kind", f'must be "crank-slider" or "four-bar", got {quote(kind, 30)} (variant {n})')
+            rp.add(where + ".kind", f'must be "crank-slider" or "four-bar", got {quote(kind, 30)} (variant '
+                                    f'{n})')
             continue
         need = COLUMNS if kind == "four-bar" else ("AB", "BC", "phi_deg", "rpm")
         if "kind" not in row and kind == "four-bar" and not {"CD", "AD"} & row.keys():
@@ -296,8 +302,6 @@ def _row_loads(row: dict, rules: dict) -> tuple[dict, dict]:
 def _bad_pattern(pattern: str) -> str | None:
     """What is wrong with a table's designation pattern, None if nothing: it must name the
     variant ``{n}`` (else every sheet would carry one designation) and nothing else."""
-    from string import Formatter
-
     try:
         fields = [f for _, f, _, _ in Formatter().parse(pattern) if f is not None]
         pattern.format(n=7)

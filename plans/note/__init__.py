@@ -1,13 +1,8 @@
 """The explanatory note: each step as formula, substitution, result."""
 
-from .report import (
-    UNITS,
-    Step,
-    T,
-    change_points,
-    no_full_turn,
-    note,
-    warnings,
-)
+from plans.cycle.words import change_points, no_full_turn
+
+from .report import Step, note, warnings
+from .words import UNITS, T
 
 __all__ = ["UNITS", "Step", "T", "change_points", "no_full_turn", "note", "warnings"]

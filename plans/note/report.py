@@ -12,119 +12,11 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from plans.fmt import SENSE, angle, notation_in, num
-from plans.kinematics.records import flag_words
+from plans.cycle.words import change_points, no_full_turn
+from plans.fmt import notation_in, num
+from plans.kinematics.conditioning import flag_words
+from plans.note.words import UNITS, T
 from plans.plan.solution import Solution, plan_name
-
-T = {
-    "en": {
-        "title": "Kinematic analysis",
-        "structure": "Structural analysis",
-        "cheb": "Degrees of freedom (mobility) by the Chebyshev–Grübler–Kutzbach formula:",
-        "n": "moving links", "p5": "one-DOF pairs (revolute and prismatic)", "p4": "two-DOF pairs",
-        "groups": "Detaching the input link {d} and the frame, the chain splits into class-II (Assur) groups, dyads:",
-        "group": "links {a} and {b}: kind {k} ({name} dyad)",
-        "class": "The mechanism is of class {c}; structural formula {f}.",
-        "positions": "Plan of positions",
-        "mul": "Scale factor of the plan of positions:",
-        "seg": "Segments of the links on the drawing:",
-        "heavy": "The position of the plans below ({title}) is drawn in heavy lines, the other positions in thin lines.",
-        "heavy_all": "The positions of the plans below ({title}) are drawn in heavy lines, the other positions in thin lines.",
-        "seg_first": "Segments of the links on the drawing, in the position of the plans below ({title}):",
-        "seg_at": "Segments whose length changes with the position, in the position of the plans below ({title}):",
-        "seg_same": "In the position of the plans below ({title}) the segments are as above.",
-        "seg_same_all": "In the positions of the plans below ({title}) the segments are as above.",
-        "stroke": "Stroke of the output point {p}:",
-        "swing": "Swing of the output link {l}:",
-        "kth": "Crank angle between the extreme positions, θ, and the time ratio K, from the crank's turn over the working stroke φ_w (from the extreme position ′ to ″ in the sense of ω{d}) and over the return stroke φ_r:",
-        "change": "At {phi} = {at}°{conv}, {what}, the links of a group lie on one line and its two assemblies meet: the plans there are singular.",
-        "change1": "a change point",
-        "changes": "change points",
-        "noturn": "The input link {d} cannot make a full turn (it rocks, it is not a crank): the mechanism assembles only for {phi} from {lo}° to {hi}°{conv}, a swing of {span}°.",
-        "velocities": "Velocity plan",
-        "va": "Velocity of point {t} of the input link, ⊥ {p}{t} in the sense of {w}:",
-        "muv": "Scale factor of the velocity plan, with p{t} = {mm} mm:",
-        "eqs": "Vector equations for point {x}:",
-        "known": "known", "dir": "direction",
-        "build": "Through point {l0} draw a line {r0} and through point {l1} a line {r1}; they meet at point {x}.",
-        "sim": "By the {plan} image (the image of a link is similar to the link):",
-        "values": "Velocities read from the plan:",
-        "avalues": "Accelerations read from the plan:",
-        "omega": "Angular velocity of link {i}:",
-        "sense": {**SENSE["en"], 0: ""},
-        "accelerations": "Acceleration plan",
-        "aa": "Acceleration of point {t}, directed from {t} to {p} ({w} = const):",
-        "mua": "Scale factor of the acceleration plan, with π{t} = {mm} mm:",
-        "normal": "Normal component, directed from {x} to {y}:",
-        "coriolis": "Coriolis component: V_{x}{y} turned by 90° in the sense of ω{i}:",
-        "ontheplan": "on the plan",
-        "eps": "Angular acceleration of link {i}:",
-        "fixed": "fixed point: at the pole",
-        "warn": "Warning",
-        "translates": "Link {i} translates (ω{i} = 0): all its points have one {what}, {eq}:",
-        "vel": "velocity", "acc": "acceleration",
-        "nocor": "no Coriolis term: the guide's link {k} translates (ω{k} = 0)",
-        "same_w": "ω{i} = ω{k}: link {i} slides along a guide of link {k}, so it turns with it",
-        "xk": "{x}: the axis of the guide (slot) on link {k}",
-    },
-    "ru": {
-        "title": "Кинематический анализ",
-        "structure": "Структурный анализ механизма",
-        "cheb": "Число степеней свободы по формуле П. Л. Чебышева:",
-        "n": "число подвижных звеньев", "p5": "число одноподвижных пар", "p4": "число двухподвижных пар",
-        "groups": "После отделения начального звена {d} со стойкой цепь разбивается на группы Ассура II класса:",
-        "group": "звенья {a} и {b}: {k}-й вид ({name})",
-        "class": "Механизм относится к {c} классу; структурная формула {f}.",
-        "positions": "План положений механизма",
-        "mul": "Масштабный коэффициент плана положений:",
-        "seg": "Длины отрезков, изображающих звенья на чертеже:",
-        "heavy": "Положение, для которого ниже построены планы ({title}), выделено основными линиями, остальные положения — тонкими.",
-        "heavy_all": "Положения, для которых ниже построены планы ({title}), выделены основными линиями, остальные положения — тонкими.",
-        "seg_first": "Длины отрезков, изображающих звенья на чертеже, в положении, для которого ниже построены планы ({title}):",
-        "seg_at": "Отрезки, длина которых меняется с положением, в положении, для которого ниже построены планы ({title}):",
-        "seg_same": "В положении, для которого ниже построены планы ({title}), длины отрезков те же.",
-        "seg_same_all": "В положениях, для которых ниже построены планы ({title}), длины отрезков те же.",
-        "stroke": "Ход выходной точки {p}:",
-        "swing": "Угол размаха выходного звена {l}:",
-        "kth": "Угол между положениями кривошипа в крайних положениях механизма θ и коэффициент изменения средней скорости K — по углам поворота кривошипа за рабочий ход φ_рх (от крайнего положения ′ до ″ в сторону ω{d}) и за холостой ход φ_хх:",
-        "change": "При {phi} = {at}°{conv} ({what}) звенья группы лежат на одной прямой и обе её сборки совпадают: планы скоростей и ускорений там не строятся.",
-        "change1": "точка смены сборки",
-        "changes": "точки смены сборки",
-        "noturn": "Начальное звено {d} не может сделать полный оборот (это коромысло, а не кривошип): механизм собирается только при {phi} от {lo}° до {hi}°{conv}, угол качания {span}°.",
-        "velocities": "План скоростей механизма",
-        "va": "Скорость точки {t} начального звена, ⊥ {p}{t} в сторону вращения {w}:",
-        "muv": "Масштабный коэффициент плана скоростей при p{t} = {mm} мм:",
-        "eqs": "Векторные уравнения для точки {x}:",
-        "known": "известна", "dir": "направление",
-        "build": "Через точку {l0} проводим прямую {r0}, через точку {l1} — прямую {r1}; их пересечение даёт точку {x}.",
-        "sim": "По теореме подобия:",
-        "values": "Скорости точек по плану:",
-        "avalues": "Ускорения точек по плану:",
-        "omega": "Угловая скорость звена {i}:",
-        "sense": {**SENSE["ru"], 0: ""},
-        "accelerations": "План ускорений механизма",
-        "aa": "Ускорение точки {t} направлено от {t} к {p} ({w} = const):",
-        "mua": "Масштабный коэффициент плана ускорений при π{t} = {mm} мм:",
-        "normal": "Нормальное ускорение направлено от {x} к {y}:",
-        "coriolis": "Ускорение Кориолиса: вектор V_{x}{y}, повёрнутый на 90° в сторону ω{i}:",
-        "ontheplan": "на плане",
-        "eps": "Угловое ускорение звена {i}:",
-        "fixed": "неподвижная точка: в полюсе",
-        "warn": "Предупреждение",
-        "translates": "Звено {i} движется поступательно (ω{i} = 0): {what} всех его точек равны, {eq}:",
-        "vel": "скорости", "acc": "ускорения",
-        "nocor": "ускорение Кориолиса равно нулю: звено {k}, несущее направляющую, движется поступательно (ω{k} = 0)",
-        "same_w": "ω{i} = ω{k}: звено {i} движется по направляющей звена {k} и поворачивается вместе с ним",
-        "xk": "{x} — ось направляющей (паза) на звене {k}",
-    },
-}
-
-UNITS = {
-    "en": {"m": "m", "mm": "mm", "m/s": "m/s", "m/s²": "m/s²", "rad/s": "rad/s",
-           "rad/s²": "rad/s²", "mu_l": "m/mm", "mu_v": "(m/s)/mm", "mu_a": "(m/s²)/mm", "deg": "°"},
-    "ru": {"m": "м", "mm": "мм", "m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с",
-           "rad/s²": "рад/с²", "mu_l": "м/мм", "mu_v": "(м/с)/мм", "mu_a": "(м/с²)/мм", "deg": "°"},
-}
 
 
 @dataclass(frozen=True, slots=True)
@@ -161,12 +53,13 @@ def note(sol: Solution, lang: str = "en", cycle=None,
     # structure ----------------------------------------------------------------------
     out += [f"## 1. {t['structure']}", "", t["cheb"], ""]
     out.append(f"- `{st.chebyshev()}`")
-    dash = " —" if lang == "ru" else ""  # «n = 5 — число подвижных звеньев»
+    dash = t["dash"]  # «n = 5 — число подвижных звеньев»
     out.append(f"  (n = {st.n}{dash} {t['n']}, p5 = {st.p5}{dash} {t['p5']}, p4 = 0{dash} {t['p4']})")
     out += ["", t["groups"].format(d=d.link), ""]
     for g in st.groups:
         out.append("- " + t["group"].format(a=g.links[0], b=g.links[1], k=g.kind.value,
-                                            name=g.kind.name if lang == "en" else g.kind.ru))
+                                            name=t["dyad"].format(latin=g.kind.name,
+                                                                  cyrillic=g.kind.ru)))
     out += ["", t["class"].format(c="II" if st.groups else "I", f=f"`{st.formula()}`"), ""]
     # positions ----------------------------------------------------------------------
     mu_l = sol.mu_l
@@ -226,7 +119,7 @@ def note(sol: Solution, lang: str = "en", cycle=None,
             # the crank's turn over the working stroke, from the first extreme to the
             # second: 180° + θ, as the cycle found θ from the two turns
             work = 180.0 + th
-            w, r = ("φ_рх", "φ_хх") if lang == "ru" else ("φ_w", "φ_r")
+            w, r = t["working"], t["return"]
             # the turns carried to one decimal more than θ is given to, so that their
             # difference gives θ as printed (3,855° from 183,855° and 176,145°)
             shown = n(th)
@@ -261,45 +154,11 @@ def _letter(plan, name: str) -> str:
 
 
 def warnings(sol: Solution, lang: str = "en") -> list[str]:
-    """The solution's near-singular groups in ``lang``: ``sol.warnings`` in English, the
-    same figures (``sol.flags``) worded again in Russian."""
-    if lang == "en":
-        return list(sol.warnings)
-    at = sol.solver.at(sol.phi, lang)  # written as the crank's range is (Solver.at)
+    """The solution's near-singular groups in ``lang``: its figures (``sol.flags``)
+    worded in that language (in English, ``sol.warnings``), the crank angle written as
+    the solution writes it (:attr:`plans.plan.Solution.shown_from`)."""
+    at = sol.solver.at(sol.phi, lang, sol.shown_from)
     return [flag_words(f, at, lang) for f in sol.flags]
-
-
-def change_points(cycle, lang: str, driver) -> str:
-    """The sentence naming the cycle's change points, in the file's convention."""
-    from plans.cycle.analysis import change_angles  # the cycle words its summary from here
-
-    t = T[lang]
-    joined = {"en": " and ", "ru": " и "}.get(lang, ", ")
-    at = joined.join(change_angles(cycle.change_points, driver, lang))
-    what = t["change1"] if len(cycle.change_points) == 1 else t["changes"]
-    return t["change"].format(at=at, conv=driver.convention(lang), what=what, phi=driver.phi_sym)
-
-
-def no_full_turn(cycle, lang: str = "en", driver=None) -> str:
-    """The sentence for a crank that cannot make a full turn, with its range in the
-    convention of ``driver`` (:class:`plans.model.mechanism.Driver`), which it names; without
-    one, counter-clockwise from +x, and the input link is link 1.
-
-    The range reads as the convention counts, from the smaller angle to the larger, the
-    first one negative where it runs through 0°: "from −128.8° to 128.8°" (in the crank's
-    own order, a clockwise crank's "from 128.8° to 231.2°" named the very angles where it
-    does not assemble).
-    """
-    from plans.cycle.analysis import file_range
-
-    lo, hi = cycle.ccw_range
-    a, b = file_range(cycle, driver)
-    return T[lang]["noturn"].format(
-        d=driver.link if driver else 1, phi=driver.phi_sym if driver else "φ1",
-        lo=num(a, 4, lang).replace("-", "−"), hi=angle(b, 4, lang),
-        conv=driver.convention(lang) if driver else "",
-        span=num(math.degrees(abs(hi - lo)), 4, lang),
-    )
 
 
 def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") -> list[str]:
@@ -323,16 +182,21 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
     val = abs(plan.value(tip))
     if acc:
         out += [t["aa"].format(t=d.tip, p=d.pivot, w=d.omega_sym), ""]
-        out.append(Step(f"a_{d.tip} = {d.omega_sym}²·l_{d.pivot}{d.tip}", f"{n(w1, 5)}²·{n(d.length, 5)}", n(val), unit).markdown())
+        out.append(Step(f"a_{d.tip} = {d.omega_sym}²·l_{d.pivot}{d.tip}",
+                        f"{n(w1, 5)}²·{n(d.length, 5)}", n(val), unit).markdown())
         out += ["", t["mua"].format(mm=n(val / mu), t=tip), ""]
-        out.append(Step(f"μa = a_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu), u["mu_a"]).markdown())
+        out.append(Step(f"μa = a_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu),
+                        u["mu_a"]).markdown())
     else:
         out += [t["va"].format(t=d.tip, p=d.pivot, w=d.omega_sym), ""]
         if d.rpm:
-            out.append(Step(f"{d.omega_sym} = π·n{d.link} / 30", f"{n(math.pi, 5)}·{n(d.rpm)} / 30", n(w1), u["rad/s"]).markdown())
-        out.append(Step(f"V_{d.tip} = {d.omega_sym}·l_{d.pivot}{d.tip}", f"{n(w1, 5)}·{n(d.length, 5)}", n(val), unit).markdown())
+            out.append(Step(f"{d.omega_sym} = π·n{d.link} / 30", f"{n(math.pi, 5)}·{n(d.rpm)} / 30",
+                            n(w1), u["rad/s"]).markdown())
+        out.append(Step(f"V_{d.tip} = {d.omega_sym}·l_{d.pivot}{d.tip}",
+                        f"{n(w1, 5)}·{n(d.length, 5)}", n(val), unit).markdown())
         out += ["", t["muv"].format(mm=n(val / mu), t=tip), ""]
-        out.append(Step(f"μv = V_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu), u["mu_v"]).markdown())
+        out.append(Step(f"μv = V_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu),
+                        u["mu_v"]).markdown())
     out.append("")
     # the input link's other points (its centre of mass, a point a guide slides past)
     sims = [p for p in plan.points.values() if p.source.kind == "similarity"
@@ -364,10 +228,11 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
                 a_, b_ = term.about
                 rel = vplan.mm(plan_name(b_), plan_name(a_)) * vplan.mu  # 0 where it is rounding
                 if term.kind == "normal":
-                    l = abs(sol.positions[a_] - sol.positions[b_])
+                    span = abs(sol.positions[a_] - sol.positions[b_])
                     out.append(f"- {t['normal'].format(x=a_, y=b_)}")
                     out.append("  " + Step(f"{term.label} = V_{a_}{b_}² / l_{a_}{b_}",
-                                           f"{n(rel, 5)}² / {n(l, 5)}", n(rel**2 / l), unit).markdown()[2:])
+                                           f"{n(rel, 5)}² / {n(span, 5)}", n(rel**2 / span),
+                                           unit).markdown()[2:])
                 else:
                     owner = m.point_link.get(a_) if a_ in m.coincident else m.point_link.get(b_)
                     w = abs(sol.omega[owner])
@@ -428,7 +293,7 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
             link = m.point_link.get(A) if A in m.coincident else _common_link(mech, A, B)
             if link is None:
                 continue
-            l = abs(sol.positions[A] - sol.positions[B])
+            span = abs(sol.positions[A] - sol.positions[B])
             mag = abs(r.param)
             mag = mag if mag > plan.tiny else 0.0  # rounding, as the plan's segments
             val = (sol.epsilon if acc else sol.omega)[link]
@@ -436,8 +301,10 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
             key = "eps" if acc else "omega"
             out += [t[key].format(i=link), ""]
             w = "ε" if acc else "ω"
-            out.append(Step(f"{w}{link} = {r.unknown} / l_{A}{B}", f"{n(mag, 5)} / {n(l, 5)}",
-                            n(mag / l), (u["rad/s²"] if acc else u["rad/s"]) + (f", {sense}" if sense else "")).markdown())
+            out.append(Step(f"{w}{link} = {r.unknown} / l_{A}{B}", f"{n(mag, 5)} / {n(span, 5)}",
+                            n(mag / span),
+                            (u["rad/s²"] if acc else u["rad/s"]) + (f", {sense}" if sense else ""))
+                       .markdown())
             out.append("")
     return out
 

@@ -1,31 +1,27 @@
 """One crank position: the plans with every construction recorded."""
 
-from .solution import (
-    IN_LINE,
-    NOISE,
+from .recipe import Recipe, recipes
+from .solution import Solution, solve_position
+from .values import (
     Plan,
     PlanLine,
     PlanPoint,
     PlanVector,
-    Solution,
     Source,
-    cycle_extent,
     image_sides,
     plan_name,
-    solve_position,
 )
 
 __all__ = [
-    "IN_LINE",
-    "NOISE",
     "Plan",
     "PlanLine",
     "PlanPoint",
     "PlanVector",
+    "Recipe",
     "Solution",
     "Source",
-    "cycle_extent",
     "image_sides",
     "plan_name",
+    "recipes",
     "solve_position",
 ]

@@ -19,11 +19,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from plans.cycle.analysis import Cycle, analyse_cycle
+from plans.cycle import Cycle, analyse_cycle
 from plans.errors import PlansError
 from plans.fmt import num
 from plans.kinematics.solver import Solver
-from plans.model.mechanism import Mechanism, from_dict
+from plans.model import Mechanism, from_dict
 from plans.synthesis.design import Design, impossible
 from plans.synthesis.mechfile import mechanism_dict
 from plans.synthesis.roots import golden_min

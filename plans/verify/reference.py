@@ -47,14 +47,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
-from plans.model.mechanism import Mechanism
-
-if TYPE_CHECKING:  # pragma: no cover
-    from plans.kinematics.solver import Motion
+from plans.kinematics.solver import Motion, Solver
+from plans.model import Mechanism
 
 DEFAULT_DPS = 30
 MAX_NEWTON = 40
@@ -400,8 +398,6 @@ def reference(
 
     phi = np.atleast_1d(np.asarray(phi, dtype=float))
     if motion is None:
-        from plans.kinematics.solver import Solver
-
         with np.errstate(all="ignore"):
             motion = Solver(mech).solve(phi)
     elif len(motion.phi) != len(phi) or not np.array_equal(motion.phi, phi):

@@ -1,0 +1,138 @@
+"""The note's words, one table per language: its headings and sentences (:data:`T`) and
+its units (:data:`UNITS`). A third language is one more table of each, with the same keys.
+
+Beside the sentences: ``dash``, what stands between a symbol and its meaning ("n = 5 —
+число подвижных звеньев" in Russian, "n = 5 moving links" in English); ``dyad``, a group's
+kind by the letters of its pairs, ``{latin}`` (RPR) or ``{cyrillic}`` (ВПВ); ``working`` and
+``return``, the crank's turn over the working and the return stroke.
+"""
+
+from __future__ import annotations
+
+from plans.fmt import SENSE
+
+T = {
+    "en": {
+        "title": "Kinematic analysis",
+        "structure": "Structural analysis",
+        "cheb": "Degrees of freedom (mobility) by the Chebyshev–Grübler–Kutzbach formula:",
+        "n": "moving links", "p5": "one-DOF pairs (revolute and prismatic)", "p4": "two-DOF pairs",
+        "groups": "Detaching the input link {d} and the frame, the chain splits into class-II (Assur) "
+                  "groups, dyads:",
+        "group": "links {a} and {b}: kind {k} ({name} dyad)",
+        "class": "The mechanism is of class {c}; structural formula {f}.",
+        "positions": "Plan of positions",
+        "mul": "Scale factor of the plan of positions:",
+        "seg": "Segments of the links on the drawing:",
+        "heavy": "The position of the plans below ({title}) is drawn in heavy lines, the other positions in "
+                 "thin lines.",
+        "heavy_all": "The positions of the plans below ({title}) are drawn in heavy lines, the other "
+                     "positions in thin lines.",
+        "seg_first": "Segments of the links on the drawing, in the position of the plans below ({title}):",
+        "seg_at": "Segments whose length changes with the position, in the position of the plans below "
+                  "({title}):",
+        "seg_same": "In the position of the plans below ({title}) the segments are as above.",
+        "seg_same_all": "In the positions of the plans below ({title}) the segments are as above.",
+        "stroke": "Stroke of the output point {p}:",
+        "swing": "Swing of the output link {l}:",
+        "kth": "Crank angle between the extreme positions, θ, and the time ratio K, from the crank's turn "
+               "over the working stroke φ_w (from the extreme position ′ to ″ in the sense of ω{d}) and "
+               "over the return stroke φ_r:",
+        "velocities": "Velocity plan",
+        "va": "Velocity of point {t} of the input link, ⊥ {p}{t} in the sense of {w}:",
+        "muv": "Scale factor of the velocity plan, with p{t} = {mm} mm:",
+        "eqs": "Vector equations for point {x}:",
+        "known": "known", "dir": "direction",
+        "build": "Through point {l0} draw a line {r0} and through point {l1} a line {r1}; they meet at point "
+                 "{x}.",
+        "sim": "By the {plan} image (the image of a link is similar to the link):",
+        "values": "Velocities read from the plan:",
+        "avalues": "Accelerations read from the plan:",
+        "omega": "Angular velocity of link {i}:",
+        "sense": {**SENSE["en"], 0: ""},
+        "dash": "",
+        "dyad": "{latin}",
+        "working": "φ_w",
+        "return": "φ_r",
+        "accelerations": "Acceleration plan",
+        "aa": "Acceleration of point {t}, directed from {t} to {p} ({w} = const):",
+        "mua": "Scale factor of the acceleration plan, with π{t} = {mm} mm:",
+        "normal": "Normal component, directed from {x} to {y}:",
+        "coriolis": "Coriolis component: V_{x}{y} turned by 90° in the sense of ω{i}:",
+        "ontheplan": "on the plan",
+        "eps": "Angular acceleration of link {i}:",
+        "fixed": "fixed point: at the pole",
+        "warn": "Warning",
+        "translates": "Link {i} translates (ω{i} = 0): all its points have one {what}, {eq}:",
+        "vel": "velocity", "acc": "acceleration",
+        "nocor": "no Coriolis term: the guide's link {k} translates (ω{k} = 0)",
+        "same_w": "ω{i} = ω{k}: link {i} slides along a guide of link {k}, so it turns with it",
+        "xk": "{x}: the axis of the guide (slot) on link {k}",
+    },
+    "ru": {
+        "title": "Кинематический анализ",
+        "structure": "Структурный анализ механизма",
+        "cheb": "Число степеней свободы по формуле П. Л. Чебышева:",
+        "n": "число подвижных звеньев", "p5": "число одноподвижных пар", "p4": "число двухподвижных пар",
+        "groups": "После отделения начального звена {d} со стойкой цепь разбивается на группы Ассура II "
+                  "класса:",
+        "group": "звенья {a} и {b}: {k}-й вид ({name})",
+        "class": "Механизм относится к {c} классу; структурная формула {f}.",
+        "positions": "План положений механизма",
+        "mul": "Масштабный коэффициент плана положений:",
+        "seg": "Длины отрезков, изображающих звенья на чертеже:",
+        "heavy": "Положение, для которого ниже построены планы ({title}), выделено основными линиями, "
+                 "остальные положения — тонкими.",
+        "heavy_all": "Положения, для которых ниже построены планы ({title}), выделены основными линиями, "
+                     "остальные положения — тонкими.",
+        "seg_first": "Длины отрезков, изображающих звенья на чертеже, в положении, для которого ниже "
+                     "построены планы ({title}):",
+        "seg_at": "Отрезки, длина которых меняется с положением, в положении, для которого ниже построены "
+                  "планы ({title}):",
+        "seg_same": "В положении, для которого ниже построены планы ({title}), длины отрезков те же.",
+        "seg_same_all": "В положениях, для которых ниже построены планы ({title}), длины отрезков те же.",
+        "stroke": "Ход выходной точки {p}:",
+        "swing": "Угол размаха выходного звена {l}:",
+        "kth": "Угол между положениями кривошипа в крайних положениях механизма θ и коэффициент изменения "
+               "средней скорости K — по углам поворота кривошипа за рабочий ход φ_рх (от крайнего положения "
+               "′ до ″ в сторону ω{d}) и за холостой ход φ_хх:",
+        "velocities": "План скоростей механизма",
+        "va": "Скорость точки {t} начального звена, ⊥ {p}{t} в сторону вращения {w}:",
+        "muv": "Масштабный коэффициент плана скоростей при p{t} = {mm} мм:",
+        "eqs": "Векторные уравнения для точки {x}:",
+        "known": "известна", "dir": "направление",
+        "build": "Через точку {l0} проводим прямую {r0}, через точку {l1} — прямую {r1}; их пересечение даёт "
+                 "точку {x}.",
+        "sim": "По теореме подобия:",
+        "values": "Скорости точек по плану:",
+        "avalues": "Ускорения точек по плану:",
+        "omega": "Угловая скорость звена {i}:",
+        "sense": {**SENSE["ru"], 0: ""},
+        "dash": " —",
+        "dyad": "{cyrillic}",
+        "working": "φ_рх",
+        "return": "φ_хх",
+        "accelerations": "План ускорений механизма",
+        "aa": "Ускорение точки {t} направлено от {t} к {p} ({w} = const):",
+        "mua": "Масштабный коэффициент плана ускорений при π{t} = {mm} мм:",
+        "normal": "Нормальное ускорение направлено от {x} к {y}:",
+        "coriolis": "Ускорение Кориолиса: вектор V_{x}{y}, повёрнутый на 90° в сторону ω{i}:",
+        "ontheplan": "на плане",
+        "eps": "Угловое ускорение звена {i}:",
+        "fixed": "неподвижная точка: в полюсе",
+        "warn": "Предупреждение",
+        "translates": "Звено {i} движется поступательно (ω{i} = 0): {what} всех его точек равны, {eq}:",
+        "vel": "скорости", "acc": "ускорения",
+        "nocor": "ускорение Кориолиса равно нулю: звено {k}, несущее направляющую, движется поступательно "
+                 "(ω{k} = 0)",
+        "same_w": "ω{i} = ω{k}: звено {i} движется по направляющей звена {k} и поворачивается вместе с ним",
+        "xk": "{x} — ось направляющей (паза) на звене {k}",
+    },
+}
+
+UNITS = {
+    "en": {"m": "m", "mm": "mm", "m/s": "m/s", "m/s²": "m/s²", "rad/s": "rad/s",
+           "rad/s²": "rad/s²", "mu_l": "m/mm", "mu_v": "(m/s)/mm", "mu_a": "(m/s²)/mm", "deg": "°"},
+    "ru": {"m": "м", "mm": "мм", "m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с",
+           "rad/s²": "рад/с²", "mu_l": "м/мм", "mu_v": "(м/с)/мм", "mu_a": "(м/с²)/мм", "deg": "°"},
+}
