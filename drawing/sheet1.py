@@ -14,12 +14,12 @@ from __future__ import annotations
 from typing import NamedTuple
 
 from drawing.scene import Layer, Rect, Scene, parse_markup
+from drawing.sheet.balance import balance
 from drawing.sheet.fit import SCALED, SIZES, Fit, readable
 from drawing.sheet.frame import FIELD_NO, FORMATS, Sheet, TitleBlock, frame_scene, title_block_entries
 from drawing.sheet.layout import (
     LayoutError,
     Placed,
-    balance,
     describe,
     field,
     kept_together,

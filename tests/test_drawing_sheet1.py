@@ -26,7 +26,7 @@ from drawing.views.positions import AngleMark, omega_arc, to_sheet
 from plans.cycle.analysis import analyse_cycle
 from plans.cycle.positions import drawn
 from plans.kinematics.solver import Solver
-from plans.model.mechanism import load
+from plans.model import load
 from plans.model.variants import variant
 from plans.plan.solution import solve_position
 

@@ -853,7 +853,7 @@ PAIRED = [
     (1, "A2", (1, 4), (0.002, 0.01, 0.1), 190),
     (6, "A1", (2, 8), (0.002, 0.02, 0.25), 370),
     (9, "A2", (1, 4), (0.002, 0.01, 0.25), 190),
-    (1, "A1", (2, 8), (0.002, 0.005, 0.25), 190),
+    (1, "A1", (2, 8), (0.002, 0.01, 0.25), 190),
     (7, "A1", (1, 4), (0.002, 0.01, 0.25), 250),
 ]
 
@@ -1269,9 +1269,10 @@ def test_a_plans_letter_stays_on_its_points_side_and_off_construction_lines(key,
     assert ("s_{3}" if key == 5 else "f") in names
 
 
-# variant 1's plans of positions 1, 5 and 9 are under 40 mm across at the scales that fit
-# A2 or A1 (sheet1.LEAST_PLAN): those sheets are refused, and they are drawn on A0
-@pytest.mark.parametrize("key, fmt, plans", [(1, "A2", (2, 6, 10)), (1, "A0", (1, 5, 9)),
+# variant 1's plans of positions 1 and 5 beside position 9's are under 40 mm across at
+# any scale that fits a format (sheet1.LEAST_PLAN): that sheet is refused; positions 1 and
+# 5 alone are drawn on A1
+@pytest.mark.parametrize("key, fmt, plans", [(1, "A2", (2, 6, 10)), (1, "A1", (1, 5)),
                                              ("slot_rrp_moving", "A2", None)])
 def test_a_plans_letter_in_a_narrow_fan_hangs_on_a_leader_rather_than_touch_a_vector(
         key, fmt, plans, monkeypatch):
@@ -1305,7 +1306,7 @@ def test_a_plans_letter_in_a_narrow_fan_hangs_on_a_leader_rather_than_touch_a_ve
     assert leaders
 
 
-@pytest.mark.parametrize("key, fmt, plans", [(1, "A2", (2, 6, 10)), (1, "A0", (1, 5, 9))])
+@pytest.mark.parametrize("key, fmt, plans", [(1, "A2", (2, 6, 10)), (1, "A1", (1, 5))])
 def test_a_plans_leader_ends_in_the_open_not_on_a_vector(key, fmt, plans, monkeypatch):
     """A letter standing clear but across a vector from its point hung on a leader that
     ended on the next vector, 0.2–0.5 mm from it: variant 1's s₃ on the plans of
@@ -1429,7 +1430,7 @@ def test_views_at_free_scales_are_spread_evenly_over_the_field(key):
     the top left they left the lower half blank. Stretched from the field's top and left
     edges until one view met its bottom and one its right edge (layout.spread), a column
     of two views kept all its room in one band between them: variant 4 on A1 had a band
-    165 mm tall blank across the sheet. layout.balance sets each view (a pair of plans
+    165 mm tall blank across the sheet. sheet.balance sets each view (a pair of plans
     kept together as one) in the middle of the room above and below it, then beside it,
     until the gaps settle: a column's gaps are equal from the field's top edge to its
     bottom or the title block, none resized and none overlapping, and no band across the
