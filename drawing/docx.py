@@ -34,6 +34,8 @@ from plans.errors import PlansError
 __all__ = ["FONT", "MARGINS", "DocxUnavailableError", "omml", "require", "to_docx"]
 
 _HINT = "DOCX export needs python-docx: pip install 'vector-plans[docx]'"
+#: the document's language tag (w:lang) by the note's language
+LANGUAGE_TAGS = {"ru": "ru-RU", "en": "en-GB"}
 FONT = "Times New Roman"
 SIZE_PT = 14
 #: page margins, mm (left, right, top, bottom): GOST 2.105 without a frame, and with one
@@ -166,7 +168,7 @@ class _Writer:
         section.left_margin, section.right_margin = Mm(left), Mm(right)
         section.top_margin, section.bottom_margin = Mm(top), Mm(bottom)
         section.header_distance, section.footer_distance = Mm(5), Mm(5)
-        lang = "ru-RU" if self.note.lang == "ru" else "en-GB"
+        lang = LANGUAGE_TAGS.get(self.note.lang, "en-GB")
         for name in ("Normal", "Heading 1", "Heading 2"):
             st = self.doc.styles[name]
             st.font.name = FONT

@@ -264,7 +264,7 @@ class _Writer:
         pdf = fpdf.FPDF(orientation="P", unit="mm", format="A4")
         pdf.set_creation_date(datetime.datetime(2000, 1, 1, tzinfo=datetime.UTC))
         pdf.set_title(note.title)
-        pdf.set_lang("ru" if note.lang == "ru" else "en")
+        pdf.set_lang(note.lang if note.lang in ("en", "ru") else "en")
         if self.tb.developer:
             pdf.set_author(self.tb.developer)
         pdf.set_auto_page_break(False)

@@ -177,7 +177,7 @@ class Sheet2:
         out += self.tables(mu)
         if self.forces.turn is None:
             why = no_full_turn(self.cycle, self.lang, self.mech.driver)
-            words = ("Диаграмма M_у(φ) не строится: " if self.lang == "ru" else "No M_у(φ) diagram: ")
+            words = FORCE_WORDS[self.lang]["no_moment_diagram"]
             (x0, _, x1, _), _ = field(self.sheet)
             out.append(note_view([words + why[0].lower() + why[1:]], width=min(180.0, x1 - x0)))
         return out

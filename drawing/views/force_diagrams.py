@@ -23,7 +23,7 @@ GRAPH_WORDS = {
     "ru": {
         "moment": "Диаграмма уравновешивающего момента M_у(φ)",
         "resistance": "График сил полезного сопротивления P(S)",
-        "Nm": "Н·м", "N": "Н", "m": "м", "rad": "рад",
+        "Nm": "Н·м", "N": "Н", "m": "м", "mm": "мм", "rad": "рад",
         "mean": "M_{{у,ср}} = {v} Н·м",
         "cycle": "Работа сил полезного сопротивления A_{{пс}} = {A} Дж за цикл, средняя мощность "
                  "P_{{ср}} = {P} Вт",
@@ -35,7 +35,7 @@ GRAPH_WORDS = {
     "en": {
         "moment": "Balancing moment M_у(φ)",
         "resistance": "Useful resistance P(S)",
-        "Nm": "N·m", "N": "N", "m": "m", "rad": "rad",
+        "Nm": "N·m", "N": "N", "m": "m", "mm": "mm", "rad": "rad",
         "mean": "M_{{у,mean}} = {v} N·m",
         "cycle": "Work of the useful resistance A = {A} J per cycle, mean power P_{{mean}} = {P} W",
         "cycle_no_resistance": "Mean power P_{{mean}} = M_{{у,mean}}·ω_{{{i}}} = {P} W",
@@ -105,8 +105,7 @@ def moment_diagram_view(forces, cycle, lang: str = "ru", width: float = 180.0, h
     work = turn.resistance_work()
     under = [w["cycle"].format(A=num(work, 4, lang), P=num(power, 4, lang)) if work is not None
              else w["cycle_no_resistance"].format(i=mech.driver.link, P=num(power, 4, lang))]
-    mm = "мм" if lang == "ru" else "mm"
-    caption = f"{w['moment']}, μ_φ = {num(2 * math.pi / width, 3, lang)} {w['rad']}/{mm}"
+    caption = f"{w['moment']}, μ_φ = {num(2 * math.pi / width, 3, lang)} {w['rad']}/{w['mm']}"
     return finish("moment", items, labels, caption, under, pad=4.0, sizing=sizing, under_size=UNDER)
 
 

@@ -68,6 +68,7 @@ FORCE_WORDS = {
         "Nm": "Н·м",
         "Nmm": "Н·мм",
         "N_per_mm": "Н/мм",
+        "m_per_mm": "м/мм",
         "ccw": "против ч.с.",
         "cw": "по ч.с.",
         "link": "звено",
@@ -75,6 +76,7 @@ FORCE_WORDS = {
         "My": "M_у = {value} Н·м, {sense}",
         "Fy": "F_у = M_у / l_{{{crank}}} = {value} Н",
         "title": "Силовой анализ",
+        "no_moment_diagram": "Диаграмма M_у(φ) не строится: ",
         "far": "{name}: линия действия пересекает направляющую в {d} м от {block}",
     },
     "en": {
@@ -86,6 +88,7 @@ FORCE_WORDS = {
         "Nm": "N·m",
         "Nmm": "N·mm",
         "N_per_mm": "N/mm",
+        "m_per_mm": "m/mm",
         "ccw": "ccw",
         "cw": "cw",
         "link": "link",
@@ -93,6 +96,7 @@ FORCE_WORDS = {
         "My": "M_у = {value} N·m, {sense}",
         "Fy": "F_у = M_у / l_{{{crank}}} = {value} N",
         "title": "Force analysis",
+        "no_moment_diagram": "No M_у(φ) diagram: ",
         "far": "{name}: its line meets the guide {d} m from {block}",
     },
 }
@@ -124,7 +128,7 @@ def force_markup(name: str, lang: str = "ru") -> str:
 
 def group_name(group, lang: str) -> str:
     """"4–5 (ВВП)", "4–5 (RRP)": a group by its links and its kind."""
-    kind = group.kind.ru if lang == "ru" else group.kind.name
+    kind = group.kind.letters(lang)
     return f"{group.links[0]}–{group.links[1]} ({kind})"
 
 
@@ -292,7 +296,7 @@ def _forces(mech, pos, mu_l, links, drawn: list[Drawn], lang: str):
 
 
 def _mu_l(mu_l: float, lang: str) -> str:
-    return f"μ_l = {num(mu_l, 4, lang)} {'м/мм' if lang == 'ru' else 'm/mm'}"
+    return f"μ_l = {num(mu_l, 4, lang)} {FORCE_WORDS[lang]['m_per_mm']}"
 
 
 def mechanism_view(fa, mu_l: float, lang: str = "ru", label: str = "", sizing: bool = False) -> View:

@@ -18,7 +18,7 @@ from drawing.styles import LineType
 from drawing.views.arrows import ARROW, beside, compass, force_arrow, rays
 from drawing.views.common import HEAD, LETTER, View, finish, per_mm, shared_points
 from drawing.views.forces import UNDER, force_markup
-from plans.fmt import num
+from plans.fmt import decimal, num
 from plans.plan.solution import plan_name
 
 __all__ = ["LEVER_WORDS", "arm_numbers", "lever_view", "turned"]
@@ -134,7 +134,7 @@ def _percent(share: float, lang: str) -> str:
     ('0', '1,23')
     """
     pct = 100 * share
-    return "0" if pct < 0.005 else f"{pct:.2f}".replace(".", "," if lang == "ru" else ".")
+    return "0" if pct < 0.005 else decimal(f"{pct:.2f}", lang)
 
 
 def arm_numbers(forces, mu_v: float) -> dict[str, int]:

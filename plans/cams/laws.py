@@ -59,7 +59,7 @@ class Law:
     formula: str
 
     def name(self, lang: str = "en") -> str:
-        return self.ru if lang == "ru" else self.en
+        return getattr(self, lang, self.en) if lang in ("en", "ru") else self.en
 
 
 LAWS: dict[str, Law] = {law.key: law for law in (

@@ -25,6 +25,12 @@ from plans.fmt import num
 
 __all__ = ["cam_note"]
 
+#: the note's units in each language
+UNITS = {
+    "en": {"m": "m", "mm": "mm", "m/s": "m/s", "m/s²": "m/s²", "rad/s": "rad/s", "rad/s²": "rad/s²"},
+    "ru": {"m": "м", "mm": "мм", "m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с", "rad/s²": "рад/с²"},
+}
+
 T = {
     "en": {
         "title": "Cam mechanism: {name}",
@@ -129,10 +135,9 @@ def cam_note(d, lang: str = "en", section: int = 1) -> str:
     """The note's cam section in Markdown, its parts numbered from ``section``."""
     t = T[lang]
     cam, f, m = d.cam, d.cam.follower, d.motion
-    ru = lang == "ru"
-    u = {"m": "м" if ru else "m", "mm": "мм" if ru else "mm",
-         "v": ("рад/с" if ru else "rad/s") if f.oscillating else ("м/с" if ru else "m/s"),
-         "a": ("рад/с²" if ru else "rad/s²") if f.oscillating else ("м/с²" if ru else "m/s²")}
+    units = UNITS[lang]
+    u = {"m": units["m"], "mm": units["mm"],
+         "v": units["rad/s" if f.oscillating else "m/s"], "a": units["rad/s²" if f.oscillating else "m/s²"]}
 
     def n(x, digits=4):  # a true minus; rounding's noise of a zero is a zero
         x = float(x)

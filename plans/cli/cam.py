@@ -141,7 +141,7 @@ def to_text(d: Design, lang: str = "en") -> str:
     else:
         parts.append(w["centred"])
     out.append(line + "; " + "; ".join(parts))
-    rpm = f", n = {n(cam.rpm)} {'об/мин' if lang == 'ru' else 'rpm'}" if cam.rpm else ""
+    rpm = f", n = {n(cam.rpm)} {w['rpm']}" if cam.rpm else ""
     out.append(w["cam"].format(sense=w["ccw" if cam.sense > 0 else "cw"], omega=n(cam.omega), rpm=rpm))
     if cam.disc is not None:
         out.append(w["disc"].format(R=mm(cam.disc.radius), c=mm(cam.disc.eccentricity)))

@@ -8,7 +8,7 @@ import json
 import math
 
 from plans.cli.common import EXIT_OK, add_source, mechanism_from, solved_position, warn
-from plans.fmt import columns, from_x, json_angle, num
+from plans.fmt import columns, decimal, from_x, json_angle, num
 from plans.forces.summary import Forces, rpm_of, solve_forces
 from plans.forces.words import words
 
@@ -278,7 +278,7 @@ def _drive_lines(F: Forces, lang: str) -> list[str]:
         return num(float(x), digits, lang)
 
     def r2(x):  # a ratio as the workbook writes it: two decimals
-        return f"{x:.2f}".replace(".", ",") if lang == "ru" else f"{x:.2f}"
+        return decimal(f"{x:.2f}", lang)
 
     if F.drive is None:
         return [w["no_drive"].format(why=F.drive_note)]

@@ -50,14 +50,19 @@ def markdown(args, mech) -> tuple[str, list[str]]:
     return text, list(sol.warnings)
 
 
+#: an explanatory note's document code after its designation, by language (GOST 2.102's
+#: ПЗ; an English designation carries none)
+NOTE_CODE = {"ru": "ПЗ"}
+
+
 def title_block(mech, pairs, lang: str) -> TitleBlock:
     """The text document's title block: the file's [title] and --title-block, its
     designation the document's (GOST 2.102 gives an explanatory note the code ПЗ)."""
     fields = title_fields(mech, pairs, "", lang)
     fields.pop("scale", None)  # a text document has no scale
-    designation = fields.get("designation", "")
-    if designation and lang == "ru" and not designation.rstrip().endswith("ПЗ"):
-        fields["designation"] = f"{designation} ПЗ"
+    designation, code = fields.get("designation", ""), NOTE_CODE.get(lang, "")
+    if designation and code and not designation.rstrip().endswith(code):
+        fields["designation"] = f"{designation} {code}"
     return TitleBlock(**fields)
 
 

@@ -16,6 +16,10 @@ from plans import tolerances
 from plans.errors import StructureError
 from plans.model.mechanism import Mechanism, Slider
 
+#: the pairs' letters in each language's textbooks: R, P in English; В (вращательная),
+#: П (поступательная) in Russian
+PAIR_LETTERS = {"en": {"R": "R", "P": "P"}, "ru": {"R": "В", "P": "П"}}
+
 
 class DyadKind(Enum):
     RRR = 1
@@ -26,7 +30,16 @@ class DyadKind(Enum):
 
     @property
     def ru(self) -> str:
-        return self.name.replace("R", "В").replace("P", "П")
+        return self.letters("ru")
+
+    def letters(self, lang: str = "en") -> str:
+        """The kind as ``lang``'s textbooks letter it.
+
+        >>> DyadKind.RPR.letters("ru"), DyadKind.RPR.letters("en")
+        ('ВПВ', 'RPR')
+        """
+        table = PAIR_LETTERS.get(lang, PAIR_LETTERS["en"])
+        return "".join(table[c] for c in self.name)
 
 
 @dataclass(frozen=True, slots=True)

@@ -9,7 +9,7 @@ from typing import Any
 
 import numpy as np
 
-from plans.fmt import columns, num
+from plans.fmt import ITEM_SEPARATOR, columns, num
 from plans.synthesis.design import Design
 from plans.synthesis.mechfile import mechanism_dict, why_words
 from plans.synthesis.note import given_line
@@ -89,7 +89,7 @@ def text(design: Design, check, lang: str = "en", written: str | None = None) ->
         parts = []
         for r in check.rows:
             parts.append(f"{r.name} = {_shown(r, lang)}")
-        out.append("  " + ("; " if lang == "ru" else ", ").join(parts))
+        out.append("  " + ITEM_SEPARATOR[lang].join(parts))
         if check.grashof:
             out.append(f"  {grashof_words(check.grashof, lang)}")
         out.append("  " + t["worst"].format(d=num(check.worst, 2, lang), tol="1e-12"))
