@@ -387,9 +387,11 @@ class Sheet1:
         placed = one_title_size(self.sheet, place_views(
             self.sheet, fit.arranged(views + list(fit.fixed)), together, keep=True, search=True),
             together, keep=True)
-        if not any(k in self.mech.scales for k in SCALED):
-            # at their largest and still leaving room: spread evenly over the field. Views
-            # at the scales a file fixes stay together, the share they take said in a note
+        if not any(k in self.mech.scales for k in SCALED) or share_used(self.sheet, placed) >= SPARSE:
+            # at their largest and still leaving room: spread evenly over the field, and so
+            # at the scales a file fixes where they fill enough of it (the press on A2: half
+            # of it, the lower 106 mm blank). Views the file's scales leave sparse stay
+            # together, the share they take said in a note
             placed = balance(self.sheet, placed, together)
         return full, placed
 

@@ -315,3 +315,21 @@ def test_the_committed_sheet_samples_are_what_the_readmes_commands_write(name, a
     finally:
         os.chdir(here)
     assert (tmp_path / f"{name}.svg").read_bytes() == (ROOT / "samples" / f"{name}.svg").read_bytes()
+
+
+def test_views_at_a_files_own_scales_are_spread_where_they_fill_enough_of_the_field():
+    """The press fixes its scales; on A2 its views take half of the field, and packed to
+    the top they left the lower 106 mm of the sheet blank. Views at a file's scales that
+    fill SPARSE of the field or more are set evenly over it as the sheet's own are; on A1,
+    where they take a fifth, they stay together and the note says so."""
+    from drawing.sheet.layout import share_used
+    from drawing.sheet1 import SPARSE, sparse_note
+
+    mech, _, sheet, info = _built("press", "A2")
+    assert mech.scales and share_used(sheet, info["placed"]) >= SPARSE
+    (_x0, y0, _x1, y1), blocked = field(sheet)
+    spans = [(p.rect.y, p.rect.y1) for p in info["placed"]] + [(b[1], b[3]) for b in blocked]
+    assert _blank_band(y0, y1, spans) <= 60
+    mech, _, sheet, info = _built("press", "A1")
+    assert sparse_note(mech, sheet, info["placed"]) is not None
+    assert min(p.rect.y for p in info["placed"]) < field(sheet)[0][1] + 1.0  # packed to the top
