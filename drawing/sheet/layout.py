@@ -394,7 +394,9 @@ def pair_box(a: tuple[float, float], b: tuple[float, float]) -> tuple[bool, tupl
     under ``a``, their left sides level.
 
     >>> pair_box((100.0, 40.0), (80.0, 50.0))
-    (False, (100.0, 96.0))
+    (True, (186.0, 50.0))
+    >>> pair_box((200.0, 20.0), (100.0, 100.0))
+    (False, (200.0, 126.0))
     """
     beside = (a[0] + GAP + b[0], max(a[1], b[1]))
     under = (max(a[0], b[0]), a[1] + GAP + b[1])
