@@ -4,6 +4,7 @@ goes on smoothly (plans.kinematics.branches.change_points, Solver.flips), checke
 a slotted link whose pivot is on the crank circle turns at half the crank's rate) and
 against the smoothness of the velocities across the change point."""
 
+import json
 import math
 
 import numpy as np
@@ -220,19 +221,25 @@ def test_well_shaped_mechanisms_have_no_change_points():
         assert all(not c for c in sv.changes), name
 
 
-def test_a_plan_asked_for_on_a_change_point_is_refused_and_says_why(capsys, tmp_path):
+def test_a_plan_asked_for_on_a_change_point_gives_the_positions_and_says_why(capsys, tmp_path):
+    """solve had refused the whole position; the positions stand there, and only the
+    plans are singular: it gives them and says why, exit 0 as the cycle's row there."""
     from support import run
 
     path = tmp_path / "parallelogram.toml"
     path.write_text(fourbar(A, B_, A, D), "utf-8")
     code, out, err = run(capsys, "solve", path, "--angle", "180")
-    assert code != 0 and out == ""
-    assert "at φ1 = 180° (a change point: the two assemblies of a group meet there)" in err
-    assert "dead point" not in err
-    assert len(err.strip().splitlines()) == 1
+    assert code == 0 and err == ""
+    assert "at φ1 = 180° (a change point: the two assemblies of a group meet there)" in out
+    assert "dead point" not in out
+    assert len([line for line in out.splitlines() if "change point" in line]) == 1
+    assert "The velocity and acceleration plans are not built: group 2–3 (RRR)" in out
+    assert "  B              0.15            0" in out  # A at −0.05, B = A + 0.2: in line with D
+    code, out, _ = run(capsys, "solve", path, "--angle", "180", "--json")
+    got = json.loads(out)
+    assert got["plans"] is None and "(a change point" in got["singular"]
+    assert got["points"]["B"]["position"] == pytest.approx([0.15, 0.0], abs=1e-15)
     code, out, err = run(capsys, "cycle", path, "--positions", "4", "--json")
-    import json
-
     rows = json.loads(out)["rows"]  # from 60°: 60, 150, 240, 330 miss them; 12 would not
     assert all(r["solved"] for r in rows)
 
@@ -433,9 +440,9 @@ def test_a_block_on_the_pivot_at_a_change_point_is_not_called_a_dead_point(capsy
 
     path = tmp_path / "slotted.toml"
     path.write_text(slotted(0.1, 0.1), "utf-8")
-    code, _, err = run(capsys, "solve", path, "--angle", "270")
-    assert code != 0 and "at φ1 = 270° (a change point" in err
-    assert "is on the rocker's pivot" in err and "dead point" not in err
+    code, out, err = run(capsys, "solve", path, "--angle", "270")
+    assert code == 0 and "at φ1 = 270° (a change point" in out
+    assert "is on the rocker's pivot" in out and "dead point" not in out + err
 
 
 def test_rounding_of_a_zero_stays_zero_at_any_scale_factor():
@@ -521,11 +528,11 @@ def test_a_cycle_from_a_change_point_starts_with_a_singular_row(capsys, tmp_path
     assert "position 0: singular: group 2–3 (RRR) at φ1 = 0° (a change point" in out
     assert "position 2: singular: group 2–3 (RRR) at φ1 = 180° (a change point" in out
     code, out, err = run(capsys, "solve", path)
-    assert code == 2 and out == ""
-    assert err.strip().splitlines() == [
-        f"plans solve: {path}: group 2–3 (RRR) at φ1 = 0° (a change point: the two assemblies "
-        "of a group meet there): A, B and D are in line (links 2 and 3 stretched out or "
-        "folded): a singular position, the plan has no unique solution"]
+    assert code == 0 and err == ""
+    assert out.strip().splitlines()[-1] == (
+        "The velocity and acceleration plans are not built: group 2–3 (RRR) at φ1 = 0° (a change "
+        "point: the two assemblies of a group meet there): A, B and D are in line (links 2 and 3 "
+        "stretched out or folded): a singular position, the plan has no unique solution")
     code, out, err = run(capsys, "sheet", path, "--plans", "1", "-o", tmp_path / "s.svg")
     assert code == 2 and not (tmp_path / "s.svg").exists()
     assert err.strip().endswith("(the sheet solves the given position for its scale even with "
@@ -612,9 +619,11 @@ def test_no_solved_row_beside_a_change_point_carries_lost_digits(capsys, tmp_pat
     for cmd in (("solve", path, "--angle", "30"), ("sheet", path, "--plans", "11", "-o",
                                                    tmp_path / "t.svg")):
         code, out, err = run(capsys, *cmd)
-        assert code == 2 and "group 2–3 (RRR) at φ1 = 30° (a change point" in err, err
-        assert "dead point" not in err and ": a singular position, the plan" in err
-        assert len(err.strip().splitlines()) == 1
+        said = err if cmd[0] == "sheet" else out  # solve gives the positions, exit 0
+        assert code == (2 if cmd[0] == "sheet" else 0), err
+        assert "group 2–3 (RRR) at φ1 = 30° (a change point" in said, err
+        assert "dead point" not in said and ": a singular position, the plan" in said
+        assert len([line for line in said.strip().splitlines() if "change point" in line]) == 1
 
 
 @pytest.mark.parametrize("angle", ["359.9999999", "1e-7", "180.0000001"])

@@ -58,7 +58,7 @@ def _letters(label: str) -> str:
 def positions_of(check) -> dict[str, complex]:
     """The engine's positions of the written mechanism at its own crank angle."""
     mech = check.mechanism
-    return Solver(mech).solve_one(mech.driver.phi).position
+    return Solver(mech).solve_one(mech.param).position
 
 
 def extent(design, check) -> tuple[float, float, float, float]:

@@ -20,6 +20,7 @@ from drawing.scene import Arrow, Circle, Hatch, Item, Polyline, Segment, Text, n
 from drawing.styles import LineType
 from drawing.text import text_width
 from drawing.views.common import JOINT_R, LETTER, WORDS, View, finish, shared_points
+from drawing.views.inputs import gamma_marks, input_marks
 from plans.cycle.positions import drawn
 from plans.fmt import num
 
@@ -32,7 +33,6 @@ __all__ = [
     "guide_dir",
     "guide_slots",
     "link_segments",
-    "omega_arc",
     "positions_view",
     "slider_block",
     "slot_segments",
@@ -217,7 +217,8 @@ def positions_view(sol, cycle, lang: str = "ru", sizing: bool = False,
     the given position (``sol``'s), which has no plans then, is not drawn. None: the
     given position heavy, the plans being its own.
 
-    The crank's ω1 is an arc arrow about its pivot in its sense; the extreme positions'
+    The inputs (the crank's ω1 as an arc arrow in its sense) and γ where it falls lowest
+    are drawn as :mod:`drawing.views.inputs` draws them; the extreme positions'
     moving joints are lettered ′ and ″ as the note names them (H = D′D″·μl, ψ = ∠C′DC″),
     ′ the one the working stroke starts from; θ and any other angle of ``marks``
     (:class:`AngleMark`) are marked with their arcs."""
@@ -300,6 +301,11 @@ def positions_view(sol, cycle, lang: str = "ru", sizing: bool = False,
         # close to its point even among the other positions' lines, which break for it
         labels.insert(0, LabelRequest(xy, shared_label(names), LETTER, "nw",
                                       blank=True))
+    # the inputs drawn as such, γ marked where it falls lowest (drawing/views/inputs.py)
+    inputs, marked = input_marks(sol, pos, to_sheet, lang)
+    gamma_items, gamma_labels = gamma_marks(sol, cycle, pos, to_sheet, lang)
+    items += inputs + gamma_items
+    labels += marked + gamma_labels
     # stroke H of a linear output
     out = cycle.output
     w = WORDS[lang]
@@ -320,10 +326,7 @@ def positions_view(sol, cycle, lang: str = "ru", sizing: bool = False,
             labels.append(LabelRequest(along[0], f"{w['swing']} = {num(deg, 4, lang)}°",
                                        3.5, "n", markup=False, also=tuple(along[1:]),
                                        blank=True))
-    # the crank's sense of rotation; the extreme positions lettered; θ and the other marks
-    arc, req = omega_arc(mech.driver, pos, mu_l)
-    over += arc
-    labels.append(req)
+    # the extreme positions lettered; θ and the other marks
     if cycle.full_turn and cycle.stroke and ends:
         labels += [LabelRequest(to_sheet(e[n], mu_l), name_markup(n) + prime, LETTER, "ne", blank=True)
                    for e, prime in zip(extremes, ("′", "″"), strict=True)
@@ -449,8 +452,8 @@ class AngleMark:
     ``share`` of the shorter ray (within :data:`ARC_MM` on the sheet); the rays drawn
     thin to :data:`RAY_PAST` beyond the arc, and ``label`` beside it. θ is one
     (:func:`theta_mark`). The plan of positions takes any others
-    (``positions_view(marks=…)``): the transmission angle γmin, for one, at the joint
-    where the coupler meets the output link, in the position the cycle finds it at."""
+    (``positions_view(marks=…)``), an angle a task asks for beyond θ, ψ and γ (those
+    three the view marks itself)."""
 
     vertex: complex
     a: complex
@@ -518,38 +521,3 @@ def _compass(dx: float, dy: float) -> str:
     """The compass direction on the sheet (y down) nearest to (dx, dy)."""
     a = math.degrees(math.atan2(-dy, dx)) % 360.0
     return ("e", "ne", "n", "nw", "w", "sw", "s", "se")[int((a + 22.5) // 45) % 8]
-
-
-#: the ω1 arc: its radius as a share of the crank on the sheet, within these mm, and the
-#: angle it spans
-OMEGA_R = (0.5, 5.0, 14.0)
-OMEGA_SPAN = math.radians(100)
-
-
-def omega_arc(driver, pos: dict[str, complex], mu_l: float) -> tuple[list[Item], LabelRequest]:
-    """The crank's ω1 as the course draws it: an arc about the pivot with its arrowhead
-    in the crank's sense, on the side of the pivot away from the crank (of the heavy
-    position ``pos``) and from its support below it; the request for its letter ω₁."""
-    o, tip = pos[driver.pivot], pos[driver.tip]
-    crank = cmath.phase(tip - o)
-    r_mm = min(max(OMEGA_R[0] * driver.length / mu_l, OMEGA_R[1]), OMEGA_R[2])
-
-    def apart(a: float, b: float) -> float:
-        return abs(math.remainder(a - b, 2 * math.pi))
-
-    # the middle of the arc: of eight directions, the one farthest from the crank and
-    # from the support (straight down on the sheet)
-    middle = max((k * math.pi / 4 for k in range(8)),
-                 key=lambda a: (min(apart(a, crank), apart(a, -math.pi / 2)), -apart(a, math.pi / 2)))
-    sense = 1.0 if driver.omega >= 0 else -1.0
-    start = cmath.exp(1j * (middle - sense * OMEGA_SPAN / 2))
-    r = r_mm * mu_l
-    shaft = sense * OMEGA_SPAN * (1 - 3.0 / (r_mm * OMEGA_SPAN))  # the last 3 mm: the head
-    pts = [to_sheet(z, mu_l) for z in _arc_points(o, start, shaft, r)]
-    end = to_sheet(_arc_points(o, start, sense * OMEGA_SPAN, r, 1)[-1], mu_l)
-    arc: list[Item] = [Polyline(pts, LineType.THIN), Arrow(pts[-1], end, LineType.THIN, 3.0, 1.0)]
-    along = [to_sheet(_arc_points(o, start, sense * OMEGA_SPAN * t, r, 1)[-1], mu_l) for t in SWING_AT]
-    out = to_sheet(o + (r + mu_l) * cmath.exp(1j * middle), mu_l)
-    prefer = _compass(out[0] - along[0][0], out[1] - along[0][1])
-    return arc, LabelRequest(along[0], f"ω_{{{driver.link}}}", LETTER, prefer, also=tuple(along[1:]),
-                             blank=True)

@@ -13,6 +13,7 @@ from plans.check.items import MU_KEY, MU_SYMBOL
 from plans.check.words import WORDS
 from plans.fmt import SENSE, notation_in, num
 from plans.model import MU_UNIT
+from plans.plan.values import plan_name
 
 
 def unit_in(unit: str, lang: str) -> str:
@@ -44,7 +45,10 @@ def mistake_words(mk, lang: str = "en") -> tuple[str, str]:
         fields |= {"tan": g("tangential"), "on": w["plan_on"].get(mk.plan, "")}
     elif k == "normal-reversed":
         key = "normal-reversed-crank" if g("driver") else k
-        fields["x"] = g("X").lower()
+        fields["x"] = plan_name(g("X"))
+    elif k in ("crank-tangential-omitted", "crank-tangential-reversed"):
+        key = k
+        fields["x"] = plan_name(g("X"))
     elif k == "normal-length":
         key = k
         fields["own"] = num(float(g("own")), 4, lang)

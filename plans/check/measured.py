@@ -391,7 +391,8 @@ class _Names:
 
     def segment(self, key, where, scope, name, mm, problems) -> Item | None:
         """The item ``key`` (located in the file by ``where``) measuring segment ``name``."""
-        spellings = [name]
+        # a point whose letter is the plans' own is primed on them (p′, k′): ' types it
+        spellings = [name] if "'" not in name else [name.replace("'", "′"), name]
         if name.startswith("pi"):
             spellings.append("π" + name[2:])
         if name.endswith("pi"):

@@ -73,6 +73,7 @@ class Mistake:
 
     kind: coriolis-reversed, coriolis-omitted, coriolis-half, coriolis-double, term-scale,
     normal-reversed, normal-omitted, normal-length, normal-swapped, omega-sense, crank-sense,
+    crank-tangential-omitted, crank-tangential-reversed (an accelerating crank's a^t),
     value-sense, crank-omega, crank-angle, line-swapped,
     branch, scale, scale-swapped, similarity-ratio, similarity-mirrored; and of the force
     analysis (:mod:`plans.check.forces`): weight-omitted, inertia-along, inertia-omitted,
@@ -103,6 +104,7 @@ class Mistake:
                 "normal-reversed": "normal",
                 "normal-omitted": "normal", "normal-length": "normal",
                 "normal-swapped": "normal", "omega-sense": "omega",
+                "crank-tangential-omitted": "tangential", "crank-tangential-reversed": "tangential",
                 "crank-sense": "omega", "crank-omega": "omega", "crank-angle": "angle",
                 "value-sense": "sense",
                 "line-swapped": "line", "branch": "branch", "scale": "scale",
@@ -267,6 +269,9 @@ class Replayer:
                 v = pt.value
                 if mk.kind == "normal-reversed" and mk.get("driver") and kind == "acceleration":
                     v = -v
+                elif mk.kind.startswith("crank-tangential") and kind == "acceleration" and s.base:
+                    # a^t of an accelerating crank, laid off from n1: left out, or reversed
+                    v = vals[s.base] if mk.factor == 0 else vals[s.base] - (v - vals[s.base])
             elif s.kind == "similarity":
                 r = s.ratio
                 if mk.kind.startswith("similarity") and mk.target == name and self._applies(mk, kind):
@@ -373,6 +378,11 @@ def hypotheses(sol: Solution, plans: set[str] | None = None) -> list[Mistake]:
     drv = sol.mechanism.driver
     out.append(Mistake("normal-reversed", "acceleration", f"a^n_{drv.tip}{drv.pivot}", -1,
                        info=(("X", drv.tip), ("Y", drv.pivot), ("driver", str(drv.link)))))
+    if not drv.linear and drv.epsilon:  # an accelerating crank's a^t, from n1
+        info = (("X", drv.tip), ("Y", drv.pivot), ("driver", str(drv.link)))
+        target = f"a^t_{drv.tip}{drv.pivot}"
+        out.append(Mistake("crank-tangential-omitted", "acceleration", target, 0, info=info))
+        out.append(Mistake("crank-tangential-reversed", "acceleration", target, -1, info=info))
     for t in cor:
         out.append(Mistake("omega-sense", "acceleration", f"ω{rep.guide_link(t)}",
                            link=rep.guide_link(t), info=(("coriolis", t.label),)))

@@ -62,6 +62,13 @@ EN = {
         "coriolis-double": (
             "the Coriolis acceleration {target} is twice as long as it should be",
             "{target} = 2·{omega}·{rel}: the factor 2 is taken twice"),
+        "crank-tangential-omitted": (
+            "the crank's tangential acceleration {target} is missing",
+            "the crank accelerates: a_{X} = a^n_{X}{Y} + a^t_{X}{Y}, lay off a^t_{X}{Y} = ε{driver}·l_{Y}{X} "
+            "⊥ {Y}{X} from the end of a^n_{X}{Y}, in the sense of ε{driver}"),
+        "crank-tangential-reversed": (
+            "the crank's tangential acceleration {target} points the wrong way",
+            "a^t_{X}{Y} = ε{driver}·l_{Y}{X} is laid off ⊥ {Y}{X} in the sense of ε{driver}, not against it"),
         "normal-reversed-crank": (
             "the crank's acceleration {target} points from {Y} to {X}",
             "a_{X} = ω{driver}²·l_{Y}{X} is directed from {X} towards the centre {Y}: "
@@ -295,6 +302,13 @@ RU = {
         "coriolis-double": (
             "ускорение Кориолиса {target} вдвое больше",
             "{target} = 2·{omega}·{rel}: множитель 2 учтён дважды"),
+        "crank-tangential-omitted": (
+            "касательное ускорение {target} кривошипа не учтено",
+            "кривошип вращается с ускорением: a_{X} = a^n_{X}{Y} + a^t_{X}{Y}, отложите a^t_{X}{Y} = "
+            "ε{driver}·l_{Y}{X} ⊥ {Y}{X} от конца a^n_{X}{Y}, в сторону ε{driver}"),
+        "crank-tangential-reversed": (
+            "касательное ускорение {target} кривошипа направлено в обратную сторону",
+            "a^t_{X}{Y} = ε{driver}·l_{Y}{X} откладывается ⊥ {Y}{X} в сторону ε{driver}, а не против неё"),
         "normal-reversed-crank": (
             "ускорение {target} кривошипа направлено от {Y} к {X}",
             "a_{X} = ω{driver}²·l_{Y}{X} направлено от {X} к центру {Y}: "

@@ -48,6 +48,7 @@ __all__ = [
     "mechanism_from",
     "number",
     "picture_names",
+    "place_json",
     "same_file",
     "say",
     "solved_position",
@@ -164,6 +165,17 @@ def solved_position(args, mech):
 def cycle_json(c) -> dict:
     """The cycle's figures (:class:`plans.cycle.Cycle`) as ``plans cycle --json`` and
     ``plans solve --json`` give them, in SI units and degrees from +x."""
+    if c.kind != "turn":  # over a slider's travel (m) or an interval in time (s)
+        unit = "s" if c.kind == "time" else "m"
+        return {
+            "runs_over": c.kind, "unit": unit, "span": list(c.span), "periodic": c.periodic,
+            "full_turn": False,
+            "output": None if c.output is None else
+            {"point": c.output.point, "kind": c.output.kind, "link": c.output.link,
+             "unit": "m" if c.output.kind == "linear" else "rad"},
+            "extremes": [float(x) for x in c.extremes], "stroke": c.stroke,
+            "theta_deg": None if c.theta is None else math.degrees(c.theta), "K": c.K,
+            "notes": list(c.notes)}
     return {
         "full_turn": c.full_turn,
         "output": None
@@ -180,6 +192,18 @@ def cycle_json(c) -> dict:
         "crank_range_phi_deg": None if c.ccw_range is None else [from_x(x) for x in c.ccw_range],
         "notes": list(c.notes),
     }
+
+
+def place_json(mech, x: float) -> dict:
+    """A place of the mechanism's cycle (its solver's parameter ``x``) for the JSON: the
+    crank angle from +x and in the file's convention; a slider input's travel s (m); an
+    instant t (s) of a mechanism moved in time."""
+    if mech.timing is not None:
+        return {"t": float(x)}
+    d = mech.driver
+    if d.linear:
+        return {"s": float(x)}
+    return {"phi_deg": from_x(x), "angle_deg": d.file_angle(x)}
 
 
 def error_lines(exc: PlansError) -> list[str]:

@@ -28,12 +28,14 @@ from plans.cli.common import (
     cycle_json,
     mechanism_from,
     number,
+    place_json,
     say,
     warn,
 )
 from plans.cli.output import picture_format
-from plans.cycle import outside, reachable_cycle, shown_from, summary
+from plans.cycle import existence, outside, reachable_cycle, shown_from, summary
 from plans.cycle.table import CycleTable, compute, figure_labels
+from plans.cycle.transmission import lines as transmission_lines
 from plans.errors import AssemblyError
 from plans.fmt import from_x, in_turn, num
 from plans.kinematics.conditioning import is_pivot
@@ -97,8 +99,10 @@ def run(args) -> int:
     plot = None
     if plot_format is not None:  # drawn before anything is written: all outputs or none
         angle_deg, panels = plot_panels(table)
-        plot = charts.cycle_chart(angle_deg, panels, title=mech.name, fmt=plot_format,
-                                  x_label=f"{mech.driver.phi_sym}, degrees turned from position 0")
+        kind, d = table.cycle.kind, mech.driver
+        x_label = (f"{d.phi_sym}, degrees turned from position 0" if kind == "turn" else "t, s"
+                   if kind == "time" else f"{d.phi_sym}, m along {d.guide.label}")
+        plot = charts.cycle_chart(angle_deg, panels, title=mech.name, fmt=plot_format, x_label=x_label)
     args.run_files.write(args.output, text)
     if plot is not None:
         args.run_files.write(args.plot, plot)
@@ -144,6 +148,8 @@ def plot_panels(t: CycleTable) -> tuple[list[float], list[tuple[str, list[tuple[
     phi = np.broadcast_to(np.asarray(m.phi, dtype=float), (n,))
     sense = 1.0 if mech.driver.omega >= 0 else -1.0
     turned = np.degrees(np.mod((phi - phi[0]) * sense, 2 * math.pi)) if n else phi
+    if c.kind != "turn":  # over an instant or a slider's travel, as it is
+        turned = phi
     ok = np.array([st.ok for st in t.status], dtype=bool)
     placed = np.array([st.placed for st in t.status], dtype=bool)
 
@@ -186,11 +192,17 @@ def _ok(x) -> float | None:
 
 
 def _cycle_summary(t: CycleTable) -> dict:
-    return cycle_json(t.cycle)
+    return cycle_json(t.cycle) | {"transmission": _transmission_head(t)} | (
+        {} if t.conditions is None else {"crank_conditions": existence.as_json(t.conditions)})
 
 
 def _numbering(t: CycleTable) -> str:
     c = t.cycle
+    if c.kind == "time":
+        return ("over the interval, from the extreme position that starts the working stroke"
+                if c.periodic and len(c.extremes) == 2 else "over the interval in time, evenly")
+    if c.kind == "range":
+        return "over the input slider's travel where the linkage assembles"
     if not c.full_turn:
         return "over the crank range where the linkage assembles (it cannot make a full turn)"
     if len(c.extremes) == 2:
@@ -228,15 +240,46 @@ def _json_head(t: CycleTable) -> dict:
     }
 
 
+def _transmission_head(t: CycleTable) -> dict:
+    """Each group's γmin over the cycle, where, and its dead points (degrees)."""
+    mech, tr = t.mechanism, t.transmission
+    out = {}
+    for g in tr.groups if tr is not None else ():
+        fin = math.isfinite(g.gamma_min)
+        out[g.group.label] = {
+            "gamma_min_deg": math.degrees(g.gamma_min) if fin else None,
+            "pressure_max_deg": math.degrees(g.pressure_max) if fin else None,
+            "at": place_json(mech, g.at) if fin and not g.constant else None,
+            "constant": g.constant,
+            "dead_points": [place_json(mech, x) for x in g.dead],
+            "change_points": [place_json(mech, x) for x in g.change]}
+    return {"groups": out, "reversed_dead_points": [place_json(mech, x) for x in tr.reversed]
+            if tr is not None else []}
+
+
+def _place_cols(t: CycleTable, x: float) -> dict:
+    """Where a row is: its crank angle (from +x and in the file's convention); a slider
+    input's travel; an instant and each input's coordinate."""
+    mech = t.mechanism
+    if t.cycle.kind == "turn":
+        return {"phi_deg": from_x(x), "angle_deg": mech.driver.file_angle(x)}
+    if t.cycle.kind == "range":
+        return {"s": x}
+    out = {"t": x}
+    for d, (q, _, _) in zip(mech.drivers, mech.inputs_at(x), strict=True):
+        out[f"{d.phi_sym}_m" if d.linear else f"{d.phi_sym}_deg"] = (
+            float(q) if d.linear else d.file_angle(float(q)))
+    return out
+
+
 def _json_rows(t: CycleTable):
-    m, mech = t.motion, t.mechanism
+    m = t.motion
     for k, st in enumerate(t.status):
         phi = float(m.phi[k])
         good = st.ok
         row = {
             "index": k,
-            "phi_deg": from_x(phi),
-            "angle_deg": mech.driver.file_angle(phi),
+            **_place_cols(t, phi),
             "solved": good,
             "placed": st.placed,  # the positions stand (where not solved: a change point)
             "conditioning": {
@@ -267,13 +310,14 @@ def _json_rows(t: CycleTable):
             }
             for i in t.links
         }
+        row["transmission_deg"] = {label: _ok(math.degrees(g[k])) for label, g in (t.gamma or {}).items()}
         yield row
 
 
 def _csv_header(t: CycleTable) -> list[str]:
     # the figures by their keys in a JSON row's conditioning.figures and in Sweep.sine
     # and Sweep.pivot: "group 2–3 (RPR)" (the lines' sine), "group 2–3 (RPR) pivot"
-    head = ["index", "phi_deg", "angle_deg", "solved", "placed", "min_sine", *figure_labels(t)]
+    head = ["index", *_place_cols(t, 0.0), "solved", "placed", "min_sine", *figure_labels(t)]
     if t.output_values is not None:  # s in m along the guide, or ψ in rad
         o = t.cycle.output
         head.append(f"output {o.point} ({'m' if o.kind == 'linear' else 'rad'})")
@@ -282,6 +326,7 @@ def _csv_header(t: CycleTable) -> list[str]:
     for i in t.links:
         head += [f"omega{i}", f"epsilon{i}"]
     head += ["warnings", "errors", "singular"]
+    head += [f"gamma_deg {label}" for label in (t.gamma or {})]
     return head
 
 
@@ -289,7 +334,7 @@ def csv_chunks(t: CycleTable, rows: int = 1000):
     """The CSV text, ``rows`` rows at a time: each stretch of rows is converted to Python
     numbers as it is written, so that 10⁵ rows never stand in memory as some six million
     Python floats (about 200 MB for the press)."""
-    m, mech = t.motion, t.mechanism
+    m = t.motion
     n = len(t.status)
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
@@ -317,6 +362,7 @@ def csv_chunks(t: CycleTable, rows: int = 1000):
     coordinate += [False] * (len(arrays) - len(coordinate))  # ω and ε
     phi_all = column(m.phi)
     out_all = None if t.output_values is None else column(t.output_values)
+    gam_all = [np.degrees(column(g)) for g in (t.gamma or {}).values()]
     blank = [""] * len(arrays)
     labels = figure_labels(t)
     for lo in range(0, n, rows):
@@ -325,9 +371,10 @@ def csv_chunks(t: CycleTable, rows: int = 1000):
         cols = [a[lo:hi].tolist() for a in arrays]
         phis = phi_all[lo:hi].tolist()
         out = None if out_all is None else out_all[lo:hi].tolist()
+        gams = [g[lo:hi].tolist() for g in gam_all]
         for j, st in enumerate(t.status[lo:hi]):
             good = st.ok
-            row = [lo + j, f(from_x(phis[j])), f(mech.driver.file_angle(phis[j])), int(good),
+            row = [lo + j, *(f(x) for x in _place_cols(t, phis[j]).values()), int(good),
                    int(st.placed), f(st.min_sine)]
             row += [f(st.figures.get(x, math.nan)) for x in labels]
             if out is not None:
@@ -339,6 +386,7 @@ def csv_chunks(t: CycleTable, rows: int = 1000):
             else:
                 row += blank
             row += ["; ".join(st.warnings), "; ".join(st.errors), "; ".join(st.singular)]
+            row += [f(g[j]) for g in gams]
             w.writerow(row)
         yield buf.getvalue()
         buf.seek(0)
@@ -366,19 +414,35 @@ def to_text(t: CycleTable) -> str:
     n = len(t.status)
     sense = "ccw" if d.omega > 0 else "cw"
     lines = [mech.name, ""]
-    lines.append(
-        f"{n} crank position{'s' if n != 1 else ''}, numbered {_numbering(t)}; "
-        f"{d.omega_sym} = {num(abs(d.omega))} rad/s {sense}"
-    )
-    lines.append(
-        f"{d.phi_sym}: degrees from {d.reference}, measured {d.measured} (the file's convention)"
-    )
+    if c.kind == "turn":
+        lines.append(
+            f"{n} crank position{'s' if n != 1 else ''}, numbered {_numbering(t)}; "
+            f"{d.omega_sym} = {num(abs(d.omega))} rad/s {sense}"
+            + (f", ε{d.link} = {num(abs(d.epsilon))} rad/s² {'ccw' if d.epsilon > 0 else 'cw'} "
+               "at every position (no law in time)" if d.epsilon else "")
+        )
+        lines.append(
+            f"{d.phi_sym}: degrees from {d.reference}, measured {d.measured} (the file's convention)"
+        )
+    elif c.kind == "range":
+        lines.append(f"{n} position{'s' if n != 1 else ''} of the input slider {d.link}, numbered "
+                     f"{_numbering(t)}; {d.omega_sym} = {num(d.omega)} m/s, {d.epsilon_sym} = "
+                     f"{num(d.epsilon)} m/s² at every position")
+        lines.append(f"{d.phi_sym}: m along the guide {d.guide.label} from its point")
+    else:
+        lines.append(f"{n} instant{'s' if n != 1 else ''}, numbered {_numbering(t)}")
+        lines.append("t: s; " + "; ".join(
+            f"{dd.phi_sym}: m along {dd.guide.label}" if dd.linear else
+            f"{dd.phi_sym}: degrees from {dd.reference}, measured {dd.measured}" for dd in mech.drivers))
     if c.output is not None and c.output.kind == "angular":
         lines.append(
             f"ψ_{c.output.point}: degrees of link {c.output.link} from +x, measured ccw"
         )
 
     lines += summary(c, d)
+    lines += existence.lines(t.conditions)
+    lines += transmission_lines(t.transmission, mech, [g.group for g in t.motion.groups], None, "en",
+                                shown_from(c, d), c.output.point if c.output is not None else "")
     moving = [p for p in t.points if p not in mech.frame]
     fixed = [p for p in t.points if p in mech.frame]
     if fixed:
@@ -393,7 +457,15 @@ def to_text(t: CycleTable) -> str:
     lo = shown_from(c, d)  # a range through 0° writes its angles from −…°, as the range
 
     def lead(k: int) -> list[str]:
-        return [str(k), table_degrees(d.file_angle(float(m.phi[k])), lo)]
+        x = float(m.phi[k])
+        if c.kind == "time":
+            return [str(k), num(x, 6), *(num(float(q), 6) if dd.linear else
+                                         table_degrees(dd.file_angle(float(q)))
+                                         for dd, (q, _, _) in zip(mech.drivers, mech.inputs_at(x),
+                                                                  strict=True))]
+        if c.kind == "range":
+            return [str(k), num(x, 6)]
+        return [str(k), table_degrees(d.file_angle(x), lo)]
 
     def cell(k: int, value, big: float = 0.0, position: bool = False) -> str:
         """A value of position k; rounding (below NOISE of its column's largest) is 0.
@@ -411,7 +483,9 @@ def to_text(t: CycleTable) -> str:
         got = np.abs(np.broadcast_to(np.asarray(values), rows.shape)[rows])
         return float(got.max()) if got.size else 0.0
 
-    base = ["№", f"{mech.driver.phi_sym} °"]
+    base = (["№", f"{mech.driver.phi_sym} °"] if c.kind == "turn" else
+            ["№", f"{d.phi_sym} m"] if c.kind == "range" else
+            ["№", "t s", *(f"{dd.phi_sym} {'m' if dd.linear else '°'}" for dd in mech.drivers)])
     # a coordinate is rounding against the largest distance from the origin: x of a crank
     # pin at 90° is R·cos(π/2) = 3e-18 m
     size = max((largest(m.position[p], placed) for p in moving), default=0.0)
@@ -457,6 +531,11 @@ def to_text(t: CycleTable) -> str:
     lines += _table(
         "ω (rad/s) and ε (rad/s²) of links, counter-clockwise positive", head, rows
     )
+    if t.gamma:
+        rows = [lead(k) + [num(math.degrees(g[k])) if t.status[k].placed and math.isfinite(g[k])
+                           else "—" for g in t.gamma.values()] for k in range(n)]
+        lines += _table("Transmission angles γ (°) of the groups; the pressure angle α = 90° − γ",
+                        base + [f"γ {label.split()[1]}" for label in t.gamma], rows)
     out_head = []
     if t.output_values is not None:
         unit = "m" if c.output.kind == "linear" else "°"

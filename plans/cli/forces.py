@@ -172,6 +172,8 @@ def to_text(F: Forces, lang: str = "en") -> str:
             omega=n(abs(d.omega)),
             sense=_sense(d.omega, w),
         )
+        # an accelerating crank: its ε1 changes the inertia loads, said beside ω1
+        + (f"; ε{d.link} = {n(abs(d.epsilon))} {w['rads2']} {_sense(d.epsilon, w)}" if d.epsilon else "")
     )
     out.append("")
     out.append(w["loads"].format(g=n(loads.g)))

@@ -17,7 +17,7 @@ import numpy as np
 from plans import tolerances
 from plans.cycle.words import change_angles, outside, shown_from, worded
 from plans.errors import AssemblyError, InputError, PlansError, PositionError
-from plans.fmt import angle
+from plans.fmt import angle, num
 from plans.geometry import apart
 from plans.kinematics.setup import Setup
 from plans.kinematics.solver import Motion, Solver
@@ -70,6 +70,15 @@ class Cycle:
     #: crank angles (rad from +x) of the change points the motion passes smoothly
     #: (:func:`plans.kinematics.branches.change_points`), in the order the crank meets them
     change_points: tuple[float, ...] = ()
+    #: what the cycle runs over: "turn", the crank's angle; "range", a slider input's
+    #: travel (m) where the mechanism assembles; "time", the instants (s) of the drivers'
+    #: laws. ``positions``, ``extremes`` and ``crank_range`` are in its unit.
+    kind: str = "turn"
+    #: the interval a "range" or "time" cycle runs over (its positions lie within it)
+    span: tuple[float, float] | None = None
+    #: a "time" cycle: whether its interval is one period of the drivers' laws (the
+    #: motion then repeats from its end, as a crank's turn does)
+    periodic: bool = False
 
     @property
     def ccw_range(self) -> tuple[float, float] | None:
@@ -96,7 +105,12 @@ def analyse_cycle(mech: Mechanism, n_positions: int = 12, solver: Solver | None 
     ``samples``: how many angles a turn is searched at, at least 2."""
     _whole(n_positions, "n_positions", 1)
     _whole(samples, "samples", 2)
-    return _analyse_cycle(mech, n_positions, solver or Solver(mech), samples)
+    solver = solver or Solver(mech)
+    if mech.timed:
+        return _timed_cycle(mech, n_positions, solver, samples)
+    if mech.driver.linear:
+        return _travel_cycle(mech, n_positions, solver, samples)
+    return _analyse_cycle(mech, n_positions, solver, samples)
 
 
 def _whole(value, name: str, least: int) -> None:
@@ -273,6 +287,115 @@ def _analyse_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: i
                  change_points=changes)
 
 
+#: how far a slider input's travel is searched each way for where the mechanism assembles,
+#: in multiples of the given position's size
+TRAVEL_REACH = 4.0
+
+
+def _travel_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: int) -> Cycle:
+    """The cycle of a slider input placed at the position analysed: its travel over the
+    range where the mechanism assembles on its branch, searched each way from the given
+    position up to :data:`TRAVEL_REACH` times that position's size; the N positions the
+    middles of N equal parts of it, as a rocking crank's."""
+    s0 = mech.driver.phi
+    try:
+        given = solver.solve_one(s0)
+    except PositionError as err:
+        raise worded(err, solver, None) from None
+    pts = np.array(list(given.position.values()))
+    reach = TRAVEL_REACH * max(float(np.ptp(pts.real)), float(np.ptp(pts.imag)), 1e-6)
+    half = max(samples // 2, 2)
+    ends, notes = [], []
+    for way in (-1.0, 1.0):
+        grid = s0 + way * np.linspace(0.0, reach, half + 1)
+        with np.errstate(all="ignore"):
+            ok = solver.solve(grid).placed
+        j = int(np.argmin(ok)) - 1 if not ok.all() else half
+        if j < half:
+            lo, hi = _limits(solver, *sorted((float(grid[j]), float(grid[j]))), reach / half)
+            ends.append(lo if way < 0 else hi)
+        else:
+            ends.append(float(grid[-1]))
+            notes.append(f"the mechanism assembles up to the end of the travel searched, "
+                         f"{mech.driver.phi_sym} = {num(float(grid[-1]), 6)} m")
+    lo, hi = ends
+    span = lo + (hi - lo) * (np.arange(n_positions) + 0.5) / n_positions
+    return Cycle(find_output(mech), False, (lo, hi), None, None, None, tuple(span), None,
+                 tuple(notes), (lo, hi), kind="range", span=(lo, hi))
+
+
+def _timed_cycle(mech: Mechanism, n_positions: int, solver: Solver, samples: int) -> Cycle:
+    """The cycle of a mechanism moved by its drivers' laws in time: the interval of
+    ``[motion]`` (by default one common period of the laws) sampled at ``samples``
+    instants; the output's extreme positions where its velocity changes sign (found to
+    1e-13 of the interval), its stroke or swing, and where the interval is a period with
+    two extremes the time-ratio K = t_work / t_return (the slower stroke's time over the
+    faster's) and θ = 180°·(K − 1)/(K + 1). The N positions are instants a period's Nth
+    apart, from the extreme position that starts the working stroke where it has one."""
+    t0, t1 = mech.timing.span
+    T = t1 - t0
+    periodic = _periodic(mech, T)
+    grid = t0 + T * np.arange(samples) / samples if periodic else np.linspace(t0, t1, samples)
+    with np.errstate(all="ignore"):
+        m = solver.solve(grid)
+    notes: list[str] = []
+    placed = m.placed
+    if not placed.all():
+        bad = grid[~placed]
+        notes.append(f"the mechanism does not assemble over all of the interval: from t = "
+                     f"{num(float(bad.min()), 6)} s to {num(float(bad.max()), 6)} s it does "
+                     "not close at some instants")
+    out = find_output(mech)
+    extremes: list[float] = []
+    stroke = theta = K = None
+    start = t0
+    if out is not None and placed.all():
+        rate = out.rate(m, mech)
+        still = np.abs(rate) < tolerances.AT_REST * max(float(np.max(np.abs(rate))), 1e-300)
+        sgn = rate_signs(np.where(still, 0.0, rate))
+        if not sgn.any():
+            notes.append(f"the output {out.point} does not move")
+        n = len(grid)
+        idx = np.nonzero(sgn != np.roll(sgn, -1))[0] if periodic else np.nonzero(sgn[:-1] != sgn[1:])[0]
+        for i in idx:
+            a = float(grid[i])
+            b = float(grid[i + 1]) if i + 1 < n else t1
+            extremes.append(_refine(solver, out, mech, a, b, sgn[i] > 0, step=T * 1e-13))
+        if len(extremes) == 2:
+            with np.errstate(all="ignore"):
+                val = out.value(solver.solve(np.array(extremes)), mech)
+            stroke = float(abs(val[1] - val[0]))
+            if periodic:
+                span = (extremes[1] - extremes[0]) % T
+                slow, fast = max(span, T - span), min(span, T - span)
+                K = slow / fast
+                theta = math.pi * (K - 1) / (K + 1)
+                start = extremes[0] if span >= T - span else extremes[1]
+                if start is extremes[1]:
+                    extremes.reverse()
+        elif len(extremes) > 2:
+            notes.append(f"the output {out.point} has {len(extremes)} turning points over the interval")
+    if periodic:
+        pos = tuple(t0 + (start - t0 + T * i / n_positions) % T for i in range(n_positions))
+    else:
+        pos = tuple(t0 + T * i / max(n_positions - 1, 1) for i in range(n_positions))
+    return Cycle(out, False, tuple(extremes), stroke, theta, K, pos, None, tuple(notes),
+                 (t0, t1), kind="time", span=(t0, t1), periodic=periodic)
+
+
+def _periodic(mech: Mechanism, T: float) -> bool:
+    """Whether the interval ``T`` (s) is a period of every driver's law: each is where it
+    began, at the same speed, after it (a crank by whole turns)."""
+    t0 = mech.timing.span[0]
+    for d in mech.drivers:
+        (q0, w0, _), (q1, w1, _) = d.law.at(t0), d.law.at(t0 + T)
+        diff = q1 - q0 if d.linear else math.remainder(q1 - q0, TWO_PI)
+        size = max(abs(q0), abs(q1), 1e-3) if d.linear else 1.0
+        if abs(diff) > 1e-9 * size or abs(w1 - w0) > 1e-9 * max(abs(w0), abs(w1), 1e-3):
+            return False
+    return True
+
+
 def at_rest(mech: Mechanism, linear: bool, order: int = 1) -> float:
     """Below this an output's value (``order`` 0), rate (1) or acceleration (2) is rounding
     of 0: 1e-9 of the crank's own (its pin's for a linear output) to that order."""
@@ -310,7 +433,7 @@ def rate_signs(rate: np.ndarray) -> np.ndarray:
 
 
 def _refine(solver: Solver, out: Output, mech: Mechanism, a: float, b: float,
-            rising: bool) -> float:
+            rising: bool, step: float = tolerances.ANGLE) -> float:
     """The crank angle in [a, b] where the output's velocity changes sign, from ``rising``
     (positive) at a to the other sign (bisection to 1e-13 rad: the velocity is exact, so
     the extreme is as exact as the angle). The sign at a is the grid's: an extreme on a
@@ -328,7 +451,7 @@ def _refine(solver: Solver, out: Output, mech: Mechanism, a: float, b: float,
             a = mid
         else:
             b = mid
-        if abs(b - a) < tolerances.ANGLE:
+        if abs(b - a) < step:
             break
     return 0.5 * (a + b)
 

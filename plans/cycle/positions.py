@@ -87,10 +87,10 @@ def drawn(solver: Solver, cycle) -> Drawn:
     :func:`plans.cycle.analyse_cycle`, by ``solver``); a value: whoever draws it more than
     once keeps it."""
     mech = solver.mech
-    given = positions_at(solver, [mech.driver.phi])[0]
+    given = positions_at(solver, [mech.param])[0]
     if given is None:  # the given position does not close: say why, as solve would
         try:
-            solver.solve_one(mech.driver.phi)
+            solver.solve_one(mech.param)
         except PositionError as err:
             raise worded(err, solver, cycle) from None
     centre, limit = reach(given)

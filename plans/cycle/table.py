@@ -34,6 +34,8 @@ import numpy as np
 
 from plans import tolerances
 from plans.cycle.analysis import analyse_cycle, table_angle
+from plans.cycle.existence import support_conditions
+from plans.cycle.transmission import transmission
 from plans.cycle.words import shown_from
 from plans.kinematics.conditioning import (
     is_pivot,
@@ -44,6 +46,7 @@ from plans.kinematics.conditioning import (
     sine_figure,
 )
 from plans.kinematics.solver import Solver
+from plans.kinematics.transmission import gamma as angle_of
 
 
 @dataclass(frozen=True)
@@ -77,6 +80,14 @@ class CycleTable:
     points: tuple[str, ...]
     links: tuple[int, ...]
     output_values: object | None  # array: s (m) or ψ (rad) of the output, or None
+    #: per group (by its label) its transmission angle γ at each position (rad, NaN where
+    #: the group does not close), and the transmission over the whole cycle
+    #: (:func:`plans.cycle.transmission.transmission`)
+    gamma: dict | None = None
+    transmission: object | None = None
+    #: a moving rocker support's crank-existence conditions
+    #: (:func:`plans.cycle.existence.support_conditions`), None for other mechanisms
+    conditions: object | None = None
 
 
 def compute(mech, n_positions: int, solver=None) -> CycleTable:
@@ -95,7 +106,12 @@ def compute(mech, n_positions: int, solver=None) -> CycleTable:
                 out_values = table_angle(out_values, cycle.full_turn)
     points = tuple(motion.position)
     links = tuple(sorted(lid for lid in motion.links if lid != 0))
-    return CycleTable(mech, cycle, motion, status, points, links, out_values)
+    placed = np.broadcast_to(np.asarray(motion.placed, dtype=bool), phi.shape)
+    gamma = {g.group.label: np.where(placed & np.asarray(g.valid, dtype=bool),
+                                     np.broadcast_to(angle_of(g), phi.shape), np.nan)
+             for g in motion.groups}
+    return CycleTable(mech, cycle, motion, status, points, links, out_values, gamma,
+                      transmission(solver, cycle), support_conditions(mech, solver, cycle))
 
 
 def figure_labels(t: CycleTable) -> list[str]:
@@ -109,7 +125,7 @@ def conditioning(mech, motion, solver=None, lo: float = 0.0) -> tuple[Status, ..
     ``solver``, the motion's, names the change points among the angles; ``lo``: the turn
     the angles are written in (:func:`plans.cycle.shown_from` of the motion's cycle)."""
     n = len(motion.phi)
-    crank_pivot = mech.frame[mech.driver.pivot]
+    crank_pivot = mech.driver.origin
     # read here, not bound at import: a test moves the thresholds to exercise the error path
     warn_sine, singular_sine = tolerances.WARN_SINE, tolerances.SINGULAR_SINE
     per_group = [(g, pivot_figure(g, motion.position, crank_pivot)) for g in motion.groups]

@@ -29,6 +29,13 @@ WORDS = {
         "noturn": "The input link {d} cannot make a full turn (it rocks, it is not a crank): "
                   "the mechanism assembles only for {phi} from {lo}° to {hi}°{conv}, a swing "
                   "of {span}°.",
+        "travel": "The input slider {d} is taken over the travel where the mechanism "
+                  "assembles: {phi} from {lo} m to {hi} m along {guide}, {span} m.",
+        "time": "The cycle runs over t from {lo} s to {hi} s, {what}.",
+        "period": "one period of the drivers' laws",
+        "given": "the interval [motion] gives",
+        "textremes": "extreme positions at t = {at} s",
+        "tK": "K = t_work / t_return = {K}, θ = 180°·(K − 1)/(K + 1) = {theta}°",
     },
     "ru": {
         "change": "При {phi} = {at}°{conv} ({what}) звенья группы лежат на одной прямой и обе "
@@ -39,6 +46,13 @@ WORDS = {
         "noturn": "Начальное звено {d} не может сделать полный оборот (это коромысло, а не "
                   "кривошип): механизм собирается только при {phi} от {lo}° до {hi}°{conv}, "
                   "угол качания {span}°.",
+        "travel": "Ползун {d} (начальное звено) рассмотрен на ходе, где механизм собирается: "
+                  "{phi} от {lo} м до {hi} м вдоль {guide}, {span} м.",
+        "time": "Цикл рассмотрен при t от {lo} с до {hi} с ({what}).",
+        "period": "один период законов движения начальных звеньев",
+        "given": "интервал из [motion]",
+        "textremes": "крайние положения при t = {at} с",
+        "tK": "K = t_раб / t_хол = {K}, θ = 180°·(K − 1)/(K + 1) = {theta}°",
     },
 }
 
@@ -66,7 +80,7 @@ def shown_from(c, driver=None) -> float:
     unless the crank cannot make a full turn and its range is written through 0°
     (:func:`file_range`, "from −99.72° to 99.72°"); then the turn centred on that range,
     so that an angle compared with it reads −99.7°, not 260.3° (:func:`plans.fmt.angle`)."""
-    if c is None or c.full_turn or c.crank_range is None:
+    if c is None or c.full_turn or c.crank_range is None or c.kind != "turn":
         return 0.0
     a, b = file_range(c, driver)
     return 0.0 if a >= 0.0 else (a + b) / 2 - 180.0
@@ -108,6 +122,8 @@ def no_full_turn(c, lang: str = "en", driver=None) -> str:
     own order, a clockwise crank's "from 128.8° to 231.2°" named the very angles where it
     does not assemble).
     """
+    if c.kind != "turn":
+        return _span_words(c, lang, driver)
     lo, hi = c.ccw_range
     a, b = file_range(c, driver)
     return WORDS[lang]["noturn"].format(
@@ -116,6 +132,29 @@ def no_full_turn(c, lang: str = "en", driver=None) -> str:
         conv=driver.convention(lang) if driver else "",
         span=num(math.degrees(abs(hi - lo)), 4, lang),
     )
+
+
+def _span_words(c, lang: str, driver) -> str:
+    """A slider input's travel, or the interval in time, that a cycle runs over."""
+    words = WORDS[lang]
+    lo, hi = c.span
+    if c.kind == "time":
+        return words["time"].format(lo=num(lo, 4, lang), hi=num(hi, 4, lang),
+                                    what=words["period" if c.periodic else "given"])
+    return words["travel"].format(d=driver.link, phi=driver.phi_sym, lo=num(lo, 4, lang),
+                                  hi=num(hi, 4, lang), guide=driver.guide.label,
+                                  span=num(hi - lo, 4, lang))
+
+
+def time_lines(c, lang: str = "en") -> list[str]:
+    """A cycle in time's extreme positions and its time-ratio K, where it has them."""
+    words = WORDS[lang]
+    out = []
+    if c.extremes:
+        out.append(words["textremes"].format(at=", ".join(num(x, 4, lang) for x in c.extremes)))
+    if c.K is not None:
+        out.append(words["tK"].format(K=num(c.K, 4, lang), theta=num(math.degrees(c.theta), 4, lang)))
+    return out
 
 
 def outside(field: str, given: float, c, driver) -> str:
@@ -150,6 +189,8 @@ def summary(c, driver=None) -> list[str]:
             lines.append(f"stroke of {c.output.point}: H = {num(c.stroke)} m")
         else:
             lines.append(f"swing of link {c.output.link}: ψ = {num(math.degrees(c.stroke))}°")
+        if c.kind == "time":
+            return lines + time_lines(c)
         lines.append(
             f"extreme positions at {driver.phi_sym if driver else 'φ1'} = "
             + ", ".join(f"{angle(deg(x))}°" for x in c.extremes) + convention

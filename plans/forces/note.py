@@ -15,6 +15,7 @@ import math
 from plans.fmt import num
 from plans.forces.lever import joints
 from plans.forces.summary import Forces, rpm_of
+from plans.plan.values import plan_name
 
 T = {
     "en": {
@@ -216,7 +217,7 @@ def force_note(F: Forces, lang: str = "en", section: int = 1) -> str:
                 continue
             a = abs(m.acceleration[S])
             para(t["phi_force"].format(i=lid, S=S))
-            s = S.lower()
+            s = plan_name(S)
             item(t["a_read"].format(S=S, s=s, mm=c(a / mu_a), mu=c(mu_a), a=n(a)))
             item(f"Φ{lid} = m{lid}·a_{S} = {c(ms.mass)}·{c(a)} = {n(abs(ld.force))} {N}")
         ld = by_name.get(f"M_Φ{lid}")

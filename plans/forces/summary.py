@@ -61,6 +61,16 @@ def solve_forces(sol, solver, cycle, mu_F: float | None = None, catalogue=None) 
             'forces on them, e.g. [loads.links.3] mass = 10, J_S = 0.4, centre = "S3" '
             "(README: Loads)",
         )
+    if len(mech.drivers) > 1 or mech.driver.linear:
+        inputs = " and ".join(f"link {d.link}" for d in mech.drivers)
+        raise InputError(
+            mech.source,
+            (f"drivers: the force analysis balances one crank by its moment M_у: this mechanism has "
+             f"two inputs ({inputs}), and each would need a balancing load of its own")
+            if len(mech.drivers) > 1 else
+            (f"driver: the force analysis balances a crank by its moment M_у: link {mech.driver.link} "
+             "is a slider driven along its guide, whose balancing force is not worked out here"),
+        )
     stroke: Stroke | None = stroke_of(mech, cycle, solver)
     fa = analyse(sol, loads, stroke, mu_F)
     lv = lever(sol, list(fa.loads))

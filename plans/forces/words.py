@@ -9,6 +9,7 @@ from __future__ import annotations
 EN = {
     "title": "{name}: force analysis",
     "position": "Position: {phi}; {omega_sym} = {omega} rad/s {sense}",
+    "rads2": "rad/s²",
     "loads": "Loads (g = {g} m/s²)",
     "load_head": ("load", "kind", "link", "point", "value", "direction"),
     "weight": "weight",
@@ -58,6 +59,7 @@ EN = {
 RU = {
     "title": "{name}: силовой анализ",
     "position": "Положение: {phi}; {omega_sym} = {omega} рад/с {sense}",
+    "rads2": "рад/с²",
     "loads": "Нагрузки (g = {g} м/с²)",
     "load_head": ("нагрузка", "вид", "звено", "точка", "величина", "направление"),
     "weight": "сила тяжести",

@@ -6,7 +6,8 @@ Both paths run it: the recorded solve (:class:`plans.kinematics.groups.Recorded`
 step (the dyad's ``recorded`` or ``bulk``, :data:`plans.kinematics.dyads.DYADS`); the
 order is this loop's alone:
 
-1. the crank's points, from its state (the path set it up: pivot, e^{iφ}, ω1);
+1. the crank's points, from its state (the path set it up: pivot, e^{iφ}, ω1, ε1), and
+   a second input's (a mechanism of two degrees of freedom);
 2. for each group, its step at the group's sign: the kernel finds its new point, the
    states of its two links and any points of another link it passes (coincident points);
 3. the other points of its two links, from their states (rigid-body formulas);
@@ -26,7 +27,8 @@ def assemble(path, setup, sigma: Callable[[int], object], count: int | None = No
     ``sigma(i)`` is the i-th group's sign (a number, or an array of the path's angles).
     Returns ``path``."""
     step, fill, coincide = path.step, path.fill, path.coincide  # read once: one angle's
-    fill(setup.mech.driver.link)                                  # plan runs this loop
+    for link in setup.inputs:                                     # plan runs this loop
+        fill(link)
     for i, (g, dyad, own) in enumerate(setup.steps[:count]):
         found = step(dyad, g, own, sigma(i))
         fill(g.a)

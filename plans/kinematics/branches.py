@@ -51,6 +51,8 @@ def change_points(sv) -> tuple[tuple[tuple[float, ...], ...], tuple[tuple[float,
     within its range.
     """
     n = len(sv.structure.groups)
+    if sv.mech.timed or sv.mech.driver.linear:  # no turn to search: a motion in time, a slider
+        return ((),) * n, ((),) * n, None
     found: list[tuple[float, ...]] = []
     flips: list[tuple[float, ...]] = []
     grid = sv.branch_at + np.linspace(0.0, 2 * math.pi, CHANGE_SAMPLES, endpoint=False)
@@ -139,7 +141,7 @@ def choose_branches(mech: Mechanism, structure: Structure,
     ``phi`` on the signs ``sigmas``, none flipping (an array of one angle): the solver's.
     """
     at = mech.hints_at
-    if at is not None and at != mech.driver.phi:
+    if at is not None and at != mech.param:
         try:
             return _read(mech.with_phi(at), structure, trial)
         except (AssemblyError, SingularPlanError):
@@ -158,11 +160,11 @@ def _read(mech: Mechanism, structure: Structure, trial) -> tuple[tuple[int, ...]
     close on that side or the hints part nothing there). The change point itself is then
     one the motion passes (a parallelogram given at 0°), and the motion's turn still
     starts at the given angle (:meth:`plans.kinematics.Solver.sigma`)."""
-    phi = mech.driver.phi
+    phi = mech.param
     try:
         return _choose(mech, structure, trial), phi, phi
     except _Meet as meet:
-        step = math.copysign(tolerances.PAST_MEETING, mech.driver.omega)
+        step = math.copysign(tolerances.PAST_MEETING, 1.0 if mech.timed else mech.driver.omega)
         first = None
         for past in (phi + step, phi - step):
             try:
@@ -172,7 +174,8 @@ def _read(mech: Mechanism, structure: Structure, trial) -> tuple[tuple[int, ...]
             except InputError as exc:  # the hints part nothing there: the other side?
                 first = first or exc
         if first is not None:
-            why = (f" (read {tolerances.PAST_MEETING:g} rad past {mech.driver.at(phi)}, where the two "
+            unit = "s" if mech.timed else "rad"
+            why = (f" (read {tolerances.PAST_MEETING:g} {unit} past {mech.at(phi)}, where the two "
                    f"assemblies of {meet} meet)")
             raise InputError(first.source, [p + why for p in first.problems]) from None
         return _choose(mech, structure, trial, meet=False), phi, phi  # its error, or rounding's pick
@@ -224,7 +227,7 @@ def _choose(mech: Mechanism, structure: Structure, trial, meet: bool = True) -> 
         ok = []
         positions = {}
         for sigma in (1, -1):
-            motion = trial(mech.driver.phi, (*sigmas, sigma), i + 1)
+            motion = trial(mech.param, (*sigmas, sigma), i + 1)
             positions[sigma] = motion
             for k, (_, refs) in mine.items():
                 if later := [r for r in refs if r not in motion.position]:
@@ -247,7 +250,7 @@ def _choose(mech: Mechanism, structure: Structure, trial, meet: bool = True) -> 
                     raise InputError(
                         mech.source,
                         f"assembly.{k}: {mech.assembly[k]!r}: the line {line} is {exc} at "
-                        f"{mech.driver.at(mech.driver.phi)}, so {rel} it names no side: "
+                        f"{mech.at(mech.param)}, so {rel} it names no side: "
                         f"write {other}") from None
             if holds:
                 ok.append(sigma)
@@ -272,8 +275,8 @@ def _choose(mech: Mechanism, structure: Structure, trial, meet: bool = True) -> 
                 asked = ", ".join(f"{k} = {mech.assembly[k]!r}" for k in earlier)
                 note = (f" (the groups before it are assembled as the hints {asked} ask: is one of "
                         "them wrong?)")
-            raise positions[1].groups[i].failure(0, mech.driver.at(mech.driver.phi), note,
-                                                 source=mech.source, phi=mech.driver.phi)
+            raise positions[1].groups[i].failure(0, mech.at(mech.param), note,
+                                                 source=mech.source, phi=mech.param)
         new = g.C or coincident_name(g.P, g.b)
         key = _parting(g, mech, positions)
         if mine and key not in mine and all(
@@ -284,12 +287,12 @@ def _choose(mech: Mechanism, structure: Structure, trial, meet: bool = True) -> 
             raise InputError(
                 mech.source,
                 f"assembly.{k}: {k} stands at the same place in both assemblies of "
-                f"{g.label} at {mech.driver.at(mech.driver.phi)}, so a hint on it chooses "
+                f"{g.label} at {mech.at(mech.param)}, so a hint on it chooses "
                 f"neither: write one on {key}, which stands at {_at_both(positions, key)}")
         if not mine:
             raise InputError(
                 mech.source,
-                f"assembly: {g.label} closes two ways at {mech.driver.at(mech.driver.phi)}, with {key} at "
+                f"assembly: {g.label} closes two ways at {mech.at(mech.param)}, with {key} at "
                 f"{_at_both(positions, key, ' or ')}: add a hint such as [assembly] {key} = "
                 f'"above {g.P or ""}{g.Q or ""}"',
             )
@@ -299,13 +302,13 @@ def _choose(mech: Mechanism, structure: Structure, trial, meet: bool = True) -> 
                 mech.source,
                 f"assembly: the {'hint' if len(mine) == 1 else 'hints'} {hints_} "
                 f"{'fits' if len(mine) == 1 else 'fit'} both "
-                f"assemblies of {g.label} at {mech.driver.at(mech.driver.phi)}, with {key} at "
+                f"assemblies of {g.label} at {mech.at(mech.param)}, with {key} at "
                 f"{_at_both(positions, key)}: name a point or line that parts them")
         raise InputError(
             mech.source,
             f"assembly: the {'hint' if len(mine) == 1 else 'hints'} {hints_} "
             f"{'fits' if len(mine) == 1 else 'fit'} neither "
-            f"assembly of {g.label} at {mech.driver.at(mech.driver.phi)} (new point {new})",
+            f"assembly of {g.label} at {mech.at(mech.param)} (new point {new})",
         )
     unused = set(hints) - used
     if unused:

@@ -11,6 +11,8 @@ the array path words the error.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from plans import tolerances
@@ -93,6 +95,24 @@ def guide_motion(guide: Guide, states, translating: frozenset[int]):
     return G, u, st.vel(G), st.acc(G), st.omega, st.epsilon
 
 
+def driver_inputs(mech: Mechanism, x):
+    """Each driver's (q, q′, q″) where the mechanism is at ``x`` (its solver's parameter:
+    :meth:`plans.model.Mechanism.inputs_at`)."""
+    return mech.inputs_at(x)
+
+
+def driver_state(d, q, dq, ddq, zc, zero, xp) -> LinkState:
+    """The state of the input link ``d`` at its coordinate ``q`` with rates ``dq``,
+    ``ddq``: a crank at the angle q (rad), turning at ω = q′, ε = q″; a slider on its
+    fixed guide at the travel q (m), moving at V = q′, a = q″ along it."""
+    if d.linear:
+        u = d.guide.direction
+        return record(LinkState, (zc + d.origin + q * u - u * d.local, zc + u, zc + dq * u, zero,
+                                  zc + ddq * u, zero))
+    rotor = complex(math.cos(q), math.sin(q)) if xp.scalar else np.exp(1j * np.asarray(q))
+    return record(LinkState, (zc + d.origin, rotor, zc, zero + dq, zc, zero + ddq))
+
+
 def frame_points(mech: Mechanism, zc, zero):
     """The frame's state and its points: fixed, at rest. ``zc``, ``zero``: a complex and
     a real 0 of the path's kind (Python numbers, or arrays of the angles' shape)."""
@@ -127,10 +147,16 @@ class Recorded:
         self.solutions: list[GroupSolution] = []
         self.valid = True if xp.scalar else np.ones(phi.shape, dtype=bool)
         self.coincident: dict[str, str] = {}
-        drv = setup.mech.driver
+        mech = setup.mech
+        drv = mech.driver
         zc = frame_state.v
-        self.states[drv.link] = record(LinkState, (
-            zc + setup.mech.frame[drv.pivot], rotor, zc, zero + drv.omega, zc, zero))
+        if mech.timing is None and not drv.linear:  # the crank at φ, at its ω and ε
+            self.states[drv.link] = record(LinkState, (
+                zc + drv.origin, rotor, zc, zero + drv.omega, zc,
+                zero if drv.epsilon == 0 else zero + drv.epsilon))
+        else:
+            for d, (q, dq, ddq) in zip(mech.drivers, driver_inputs(mech, phi), strict=True):
+                self.states[d.link] = driver_state(d, q, dq, ddq, zc, zero, xp)
 
     def step(self, dyad, g: Group, own: dict, sigma):
         """Group ``g`` by its dyad's recorded step; the points it found on another link

@@ -36,6 +36,8 @@ class Setup:
     #: per link, the points its fill places: those no link solved before it has placed
     #: (a group's new hinge is placed again, from the first of its two links)
     todo: Mapping[int, tuple[tuple[str, complex], ...]]
+    #: the input links, the first driver's first: their points are filled before the groups
+    inputs: tuple[int, ...] = ()
 
     @classmethod
     def of(cls, mech: Mechanism, structure: Structure | None = None) -> Setup:
@@ -45,7 +47,7 @@ class Setup:
         steps = tuple((g, DYADS[g.kind], DYADS[g.kind].setup(mech, translating, g))
                       for g in structure.groups)
         return cls(mech, structure, translating, steps, frame_points(mech, 0j, 0.0),
-                   _todo(mech, steps))
+                   _todo(mech, steps), tuple(d.link for d in mech.drivers))
 
     @cached_property
     def layout(self):
@@ -66,7 +68,8 @@ def _todo(mech: Mechanism, steps) -> Mapping[int, tuple[tuple[str, complex], ...
                           if name not in placed)
         placed.update(name for name, _ in todo[lid])
 
-    fill(mech.driver.link)
+    for d in mech.drivers:
+        fill(d.link)
     for g, dyad, own in steps:
         fill(g.a)
         fill(g.b)

@@ -113,7 +113,7 @@ class Solver:
             self.sigmas, self.branch_at, self.read_at = choose_branches(
                 mech, self.structure, self._trial)
         else:  # given signs hold at the mechanism's own angle
-            self.sigmas, self.branch_at = sigmas, mech.driver.phi
+            self.sigmas, self.branch_at = sigmas, mech.param
             self.read_at = self.branch_at
         #: per group, its change points as counter-clockwise turns from ``branch_at``
         #: (rad, in [0, 2π), ascending), and where its sign flips (at all of them, or at
@@ -203,7 +203,7 @@ class Solver:
         phi = np.asarray(m.phi, dtype=float)
         turn = (phi - self.branch_at) % (2 * math.pi)
         ok = np.broadcast_to(np.asarray(m.valid, dtype=bool), phi.shape).copy()
-        crank = self.mech.frame[self.mech.driver.pivot]
+        crank = self.mech.driver.origin
         if isinstance(m, Motion):
             figures = [(g.velocity.sine, pivot_figure(g, m.position, crank)) for g in m.groups]
         else:  # a sweep: its figures by the group's label, the pivot's worked out here
@@ -231,7 +231,7 @@ class Solver:
         the cycle knows ``lo`` (:func:`plans.cycle.shown_from`), and the angle is written as
         the range is: −99.7°, not 260.3°."""
         drv = self.mech.driver
-        words = drv.at(phi, lang, lo)
+        words = self.mech.at(phi, lang, lo)
         near = self.change_point_near(phi)
         if near is None:
             return words

@@ -27,6 +27,7 @@ import numpy as np
 from plans.kinematics.assemble import assemble
 from plans.kinematics.conditioning import pivot_key, pivot_ratio
 from plans.kinematics.dyads import rigid
+from plans.kinematics.groups import driver_inputs
 from plans.model.structure import DyadKind
 
 #: angles per block: 8192 complex numbers are 128 KiB an array, so the few arrays a step
@@ -136,7 +137,7 @@ def sweep(sv, phi, block: int = BLOCK, into: Sweep | None = None) -> Sweep:
         if not valid.all():
             _blank(~valid, out, omega, epsilon, sine)
     mech = sv.mech
-    slots = tuple((pivot_key(g.label), g.P, g.Q, mech.frame[mech.driver.pivot])
+    slots = tuple((pivot_key(g.label), g.P, g.Q, mech.driver.origin)
                   for g in sv.structure.groups if g.kind == DyadKind.RPR)
     if into is not None:  # its own arrays, already of the angles' shape
         return Sweep(into.phi, into.position, into.velocity, into.acceleration, into.omega,
@@ -264,10 +265,18 @@ class Block:
         for name, xy in mech.frame.items():
             self.pos[name], self.vel[name], self.acc[name] = xy, 0j, 0j
         drv = mech.driver
-        rotor = np.empty(phi.shape, dtype=complex)
-        np.cos(phi, out=rotor.real)
-        np.sin(phi, out=rotor.imag)
-        self.links[drv.link] = (mech.frame[drv.pivot], 0j, 0j, rotor, drv.omega, 0.0, 0j)
+        if mech.timing is None and not drv.linear:  # the crank at φ, at its ω and ε
+            rotor = np.empty(phi.shape, dtype=complex)
+            np.cos(phi, out=rotor.real)
+            np.sin(phi, out=rotor.imag)
+            self.links[drv.link] = (drv.origin, 0j, 0j, rotor, drv.omega, drv.epsilon, 0j)
+            return
+        for d, (q, dq, ddq) in zip(mech.drivers, driver_inputs(mech, phi), strict=True):
+            if d.linear:  # carried by its point on the guide
+                u = d.guide.direction
+                self.links[d.link] = (d.origin + q * u, dq * u, ddq * u, u, 0.0, 0.0, d.local)
+            else:
+                self.links[d.link] = (d.origin, 0j, 0j, np.exp(1j * q), dq, ddq, 0j)
 
     # the group loop's three moves ------------------------------------------------------
     def step(self, dyad, g, own: dict, sigma):

@@ -13,6 +13,7 @@ from pathlib import Path
 
 from plans import tolerances
 from plans.errors import InputError
+from plans.model.drivers import read_drivers
 from plans.model.fileformat import (
     MAX_ABS,
     MAX_TEXT,
@@ -38,7 +39,6 @@ from plans.model.parts import (
     name_slots,
     not_a_link,
     one_spelling,
-    read_driver,
     read_guide,
     read_link,
     read_name,
@@ -65,8 +65,8 @@ def load(path: str | Path) -> Mechanism:
 
 
 #: the top-level keys of a mechanism file
-TOP_KEYS = {"name", "frame", "links", "sliders", "driver", "assembly", "scales", "trace", "output", "title",
-            "loads", "drive"}
+TOP_KEYS = {"name", "frame", "links", "sliders", "driver", "drivers", "motion", "assembly", "scales",
+            "trace", "output", "title", "loads", "drive"}
 #: the keys of [driver]: found in [drive], the crank was meant
 DRIVER_KEYS = {"link", "angle_deg", "omega", "rpm", "sense", "from", "measured"}
 
@@ -220,12 +220,14 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
                 f"[[sliders]] entry with link = {lid}",
             )
 
-    # driver ------------------------------------------------------------------------
-    driver = read_driver(data.get("driver"), pr, links, frame, bad_links, frame_names if raw_frame else None)
+    # drivers -----------------------------------------------------------------------
+    drivers, timing = read_drivers(data, pr, links, frame, bad_links, frame_names if raw_frame else None,
+                                   sliders, frozenset(sliding))
 
     # joints: every link attached by two pairs, no joint with two names ---------------
-    raw_driver = data.get("driver")
-    drv = link_id(raw_driver.get("link", 1)) if isinstance(raw_driver, dict) else None
+    raw_drivers = data.get("drivers") if "drivers" in data else [data.get("driver")]
+    drv = {link_id(d.get("link", 1)) for d in raw_drivers if isinstance(d, dict)} if isinstance(
+        raw_drivers, list) else set()
     before = len(pr.items)
     if whole:
         _connections(frame, links, pairs, drv, bad_links, pr)
@@ -260,7 +262,7 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
             continue
         on = [lid for lid, link in links.items() if k in link.points]
         fixed = ("a fixed point" if k in frame else
-                 "on the crank only" if drv is not None and on == [drv] else "")
+                 "on the crank only" if len(on) == 1 and on[0] in drv else "")
         if fixed:
             pr.add(where, f"{k} is {fixed}: it has one position; a hint names the new point of a "
                    "group that closes two ways (the end of a coupler, a slider)")
@@ -333,13 +335,15 @@ def from_dict(data: dict, source: str = "<mechanism>", *, text: str | None = Non
         drive = read_drive(raw_drive, pr)
 
     pr.raise_if_any()
-    assert driver is not None
+    assert drivers
     mech = Mechanism(
         name=name,
         frame=frame,
         links=links,
         sliders=tuple(sliders),
-        driver=driver,
+        driver=drivers[0],
+        more_drivers=drivers[1:],
+        timing=timing,
         assembly=hints,
         scales=scales,
         trace=tuple(trace),
@@ -399,7 +403,7 @@ def _connections(frame, links, pairs, drv, bad_links, pr: Problems) -> None:
             continue
         joints = {n for n in link.points if len(carriers[n]) > 1}
         _coincident(link.points, joints, f"links.{lid}.points", f"joints of link {lid}", pr, tolerances.SAME)
-        if lid == drv:
+        if lid in drv:
             continue
         pairs = [f'"{n}"' for n in sorted(joints)] + slides[lid]
         if len(pairs) >= 2:

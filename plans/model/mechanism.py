@@ -20,7 +20,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field, replace
 
-from plans.fmt import angle
+from plans.fmt import angle, num
+from plans.model.laws import Law, Timing
 from plans.model.loads import Drive, Loads
 from plans.model.words import WORDS
 
@@ -70,38 +71,69 @@ class Slider:
 
 @dataclass(frozen=True, slots=True)
 class Driver:
-    """The crank: link ``link`` turning about the fixed ``pivot``; ``tip`` is its pin."""
+    """An input link. The crank (``kind`` "rotary", a link hinged to the frame, a crank or
+    a rocker): link ``link`` turning about the fixed ``pivot``; ``tip`` is its pin, ``phi``
+    its angle, ``omega`` and ``epsilon`` its ω and ε. A slider on a fixed guide (``kind``
+    "linear"): ``tip`` its point on the ``guide``, ``phi`` its travel s along the guide
+    from the guide's point (m, positive along the guide's direction), ``omega`` and
+    ``epsilon`` its velocity and acceleration along it (m/s, m/s²). ``law``: its law in
+    time, where the file gives one (:mod:`plans.model.laws`)."""
 
     link: int
     pivot: str
     tip: str
     length: float
-    phi: float  # rad, counter-clockwise from +x
-    omega: float  # rad/s, signed: positive counter-clockwise
+    phi: float  # rad, counter-clockwise from +x (a slider: m along its guide)
+    omega: float  # rad/s, signed: positive counter-clockwise (a slider: m/s)
     angle_deg: float  # as given in the file
     reference: str  # "+x", "+y", ...
     measured: str  # "ccw" or "cw"
     rpm: float | None = None
+    #: rad/s², signed: positive counter-clockwise (a slider: m/s² along its guide)
+    epsilon: float = 0.0
+    kind: str = "rotary"
+    guide: Guide | None = None
+    law: Law | None = None
+    #: where the input is: a crank's pivot, a slider's guide point (world, m)
+    origin: complex = 0j
+    #: a slider's point on its guide in the slider's own coordinates
+    local: complex = 0j
+
+    @property
+    def linear(self) -> bool:
+        return self.kind == "linear"
 
     @property
     def phi_sym(self) -> str:
         """"φ1": the crank's angle named by its link's number, as its ω is ("ω1", the
         course's numbering; "φ3" for a crank numbered 3, whose text then never calls
-        another link's ω "ω1" beside it)."""
-        return f"φ{self.link}"
+        another link's ω "ω1" beside it); "s4" for a slider's travel."""
+        return f"s{self.link}" if self.linear else f"φ{self.link}"
 
     @property
     def omega_sym(self) -> str:
-        """"ω1": the crank's angular velocity, named by its link's number."""
-        return f"ω{self.link}"
+        """"ω1": the crank's angular velocity, named by its link's number; a slider's
+        velocity V_D by its point."""
+        return f"V_{self.tip}" if self.linear else f"ω{self.link}"
+
+    @property
+    def epsilon_sym(self) -> str:
+        """"ε1": the crank's angular acceleration; a slider's acceleration a_D."""
+        return f"a_{self.tip}" if self.linear else f"ε{self.link}"
 
     def phi_of(self, angle_deg: float) -> float:
         """The crank angle (rad, counter-clockwise from +x) of an angle given in the
-        file's convention (degrees from ``reference``, ``measured`` ccw or cw)."""
+        file's convention (degrees from ``reference``, ``measured`` ccw or cw); a slider's
+        travel as it is."""
+        if self.linear:
+            return angle_deg
         return phi_of(angle_deg, self.reference, self.measured)
 
     def file_angle(self, phi: float) -> float:
-        """The inverse: the crank angle ``phi`` in the file's convention, in [0, 360)."""
+        """The inverse: the crank angle ``phi`` in the file's convention, in [0, 360); a
+        slider's travel as it is."""
+        if self.linear:
+            return phi
         return (SENSES[self.measured] * (math.degrees(phi) - REFERENCES[self.reference])) % 360.0
 
     def at(self, phi: float, lang: str = "en", lo: float = 0.0) -> str:
@@ -114,6 +146,8 @@ class Driver:
         >>> d.at(math.radians(-240)), d.at(math.radians(-240.5), "ru")
         ('φ1 = 330° (from +y, cw)', 'φ1 = 330,5° (от +y, по часовой стрелке)')
         """
+        if self.linear:
+            return f"{self.phi_sym} = {num(phi, 6, lang)} {WORDS[lang]['m']}"
         return f"{self.phi_sym} = {angle(self.file_angle(phi), 6, lang, lo)}°{self.convention(lang)}"
 
     def both(self, phi: float, lang: str = "en", lo: float = 0.0) -> str:
@@ -133,6 +167,8 @@ class Driver:
         '60° from +x'
         """
         words = WORDS[lang]
+        if self.linear:
+            return f"{num(phi, 6, lang)} {words['m']} {words['along']} {self.guide.label}"
         conv = self.convention(lang)[2:-1]  # "from +y, cw" without its brackets
         own = (f" ({angle(self.file_angle(phi), 6, lang, lo)}° {conv}, {words['as_given']})"
                if conv else "")
@@ -142,7 +178,7 @@ class Driver:
     def convention(self, lang: str = "en") -> str:
         """" (from +y, cw)" after an angle in the file's convention; nothing for the usual
         one (from +x, counter-clockwise)."""
-        if (self.reference, self.measured) == ("+x", "ccw"):
+        if (self.reference, self.measured) == ("+x", "ccw") or self.linear:
             return ""
         words = WORDS[lang]
         return f" ({words['from']} {self.reference}, {words['measured'][self.measured]})"
@@ -179,6 +215,44 @@ class Mechanism:
     loads: Loads | None = None
     #: the drive's data (``[drive]``)
     drive: Drive | None = None
+    #: the inputs after the first (``[[drivers]]``): a mechanism of two degrees of freedom
+    more_drivers: tuple[Driver, ...] = ()
+    #: where the drivers move by laws in time: the instant of the plans and the cycle's
+    #: interval (``[motion]``); None where the cycle runs over the crank's angle
+    timing: Timing | None = None
+
+    @property
+    def drivers(self) -> tuple[Driver, ...]:
+        """Every input, the first (``driver``) first."""
+        return (self.driver, *self.more_drivers)
+
+    @property
+    def timed(self) -> bool:
+        """Whether the mechanism is placed by time (its drivers' laws), not by the crank's
+        angle: its solver then takes instants (s) where it takes crank angles otherwise."""
+        return self.timing is not None
+
+    @property
+    def param(self) -> float:
+        """Where the file places the mechanism, as its solver takes it: the crank angle
+        (rad from +x; a slider's travel, m), or the instant (s) of a timed mechanism."""
+        return self.timing.time if self.timing is not None else self.driver.phi
+
+    def inputs_at(self, x):
+        """Each driver's (q, q′, q″) where the mechanism is at ``x`` (as :attr:`param` is):
+        the crank's angle, ω and ε (a slider's travel, velocity and acceleration) as the
+        file gives its rates, or at the instant ``x`` by each driver's law."""
+        if self.timing is None:
+            d = self.driver
+            return ((x, d.omega, d.epsilon),)
+        return tuple(d.law.at(x) for d in self.drivers)
+
+    def at(self, x: float, lang: str = "en", lo: float = 0.0) -> str:
+        """The place ``x`` (as :attr:`param` is) in words: "φ1 = 330° (from +y, cw)"
+        (:meth:`Driver.at`), or "t = 0.05 s" for a timed mechanism."""
+        if self.timing is None:
+            return self.driver.at(x, lang, lo)
+        return f"t = {num(x, 6, lang)} {WORDS[lang]['s']}"
 
     def name_in(self, lang: str) -> str:
         """The name for a note or sheet in ``lang``: the file's name in that language if
@@ -242,5 +316,8 @@ class Mechanism:
                        hints_at=d.phi if self.hints_at is None else self.hints_at)
 
     def with_phi(self, phi: float) -> Mechanism:
-        """The same mechanism with the crank at ``phi`` (rad, from +x)."""
+        """The same mechanism with the crank at ``phi`` (rad, from +x); a timed one at the
+        instant ``phi`` (s)."""
+        if self.timing is not None:
+            return replace(self, timing=replace(self.timing, time=phi))
         return replace(self, driver=replace(self.driver, phi=phi))

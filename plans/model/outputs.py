@@ -118,16 +118,22 @@ def output_of(mech: Mechanism, name: str) -> Output | None:
     """Point ``name`` as the output: the point of a slider on a fixed guide, or any point
     of a link that only translates along one (its travel), or a moving point of a link
     hinged to the frame other than the crank (its swing); None for any other point (a
-    fixed one, the crank's, a coupler's), which has no stroke."""
+    fixed one, the crank's, a coupler's), which has no stroke. A rocker hinged to a
+    support that an input slider carries along a fixed guide (seed 003) swings too: its
+    angle is its output."""
     if name in mech.frame:  # it stands still: no stroke, no swing of its own
         return None
     still = mech.translating()
+    inputs = {d.link for d in mech.drivers}
     for lid in mech.links_of(name):
-        if lid == 0 or lid == mech.driver.link:
+        if lid == 0 or lid in inputs:
             continue
         s = mech.slider_of(lid)
         if s is not None and s.guide.link == 0 and (s.point == name or lid in still):
             return Output(name, "linear", lid)  # a yoke's every point travels as its slider does
         if any(p in mech.frame for p in mech.links[lid].points):
             return Output(name, "angular", lid)
+        if any(p in mech.links[d.link].points for d in mech.drivers if d.linear
+               for p in mech.links[lid].points):
+            return Output(name, "angular", lid)  # a rocker whose support an input carries
     return None

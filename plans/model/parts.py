@@ -28,8 +28,10 @@ from plans.model.fileformat import (
 )
 from plans.model.mechanism import REFERENCES, SENSES, Driver, Guide, Link, Slider, phi_of
 
-#: names the plans reserve for their own construction points (n1, k, p, π)
-RESERVED = re.compile(r"^(P|N\d*|K\d*)$")
+#: the point names whose plan letters would be the plans' own (the pole p, n1, k): no
+#: longer refused, they are written with a prime on the plans (p′, n1′, k′:
+#: :func:`plans.plan.values.plan_name`)
+RESERVED = re.compile(r"^(P|PI|Pi|N\d+|K\d*)$")
 POINT_NAME = re.compile(r"^[A-Z][A-Za-z0-9_']{0,11}$")
 MAX_LINK_POINTS = 200  # points on one link
 MIN_LINK = 1e-6  # m: the shortest link (a micrometre)
@@ -62,12 +64,6 @@ def read_name(value: Any, where: str, problems: Problems, named: set[str]) -> st
             where,
             f"{quote(value)} is not a point name: a capital letter, then up to 11 "
             "letters, digits, _ or ' (e.g. C, S3, A')",
-        )
-        return None
-    if RESERVED.match(value):
-        named.add(value)
-        problems.add(
-            where, f'"{value}" is reserved for plan construction points (p, n1, k…): rename it'
         )
         return None
     return value
@@ -190,14 +186,38 @@ def read_link(lid: int, lname: str, body: dict, where: str, pr: Problems, named:
                 pr.add(pw, f'the axis end "{a1}" must lie on the axis: give its distance, {a1} = '
                            f'{abs(end):g}, not {xy_text(end)}')
             elif end.real < 0:
-                pr.add(pw, f"negative length {end.real:g}: the length {a0}{a1} is positive (write {a1} = "
-                           f"{-end.real:g})")
+                pr.add(pw, negative_end(lid, a0, a1, end.real, points))
             elif end.real < MIN_LINK:
                 pr.add(pw, f"link length {end.real:g} m: zero or too short, a link is at least "
                            f"{MIN_LINK:g} m")
     if not points and not failed and len(pr.items) == before:
         pr.add(where, 'has no points: give axis = ["B", "C"] and points = { C = 0.3 }')
     return Link(lid, lname, points, axis), len(pr.items) == before
+
+
+def negative_end(lid: int, a0: str, a1: str, end: float, points: dict[str, complex]) -> str:
+    """The problem of an axis end given behind its origin. An axis runs from its origin to
+    its end, so the end lies at a positive distance; writing it positive alone would leave
+    the link's other points, measured along the reversed direction, on the other side of
+    the pivot: their signs change with it, and the message says to what.
+
+    >>> print(negative_end(3, "D", "C", -0.1, {"D": 0j, "C": -0.1, "S3": -0.05, "E": -0.2 + 0.01j}))
+    negative length -0.1: an axis runs from its origin D to its end C, so C lies at +0.1
+    along it and every other point of link 3 is measured along D→C: write C = 0.1 and the
+    other points with both signs changed (S3 = 0.05, E = [0.2, -0.01]), or the link turns
+    to the other side of D
+    """
+    others = [(n, z) for n, z in points.items() if n not in (a0, a1)]
+    head = (f"negative length {end:g}: an axis runs from its origin {a0} to its end {a1}, so {a1} lies "
+            f"at +{-end:g} along it and every other point of link {lid} is measured along {a0}→{a1}: "
+            f"write {a1} = {-end:g}")
+    if not others:
+        return head
+    said = ", ".join(f"{n} = {-z.real + 0.0:g}" if z.imag == 0 else
+                     f"{n} = {xy_text(complex(-z.real + 0.0, -z.imag + 0.0))}"
+                     for n, z in others[:4]) + (", …" if len(others) > 4 else "")
+    return (f"{head} and the other points with both signs changed ({said}), or the link turns to "
+            f"the other side of {a0}")
 
 
 #: names of fixed guides, in the order an inclined one takes them

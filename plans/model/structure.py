@@ -2,7 +2,8 @@
 
 W = 3n − 2p5 − p4, with n moving links, p5 one-DOF pairs (revolute R and prismatic P) and
 p4 two-DOF pairs (none in the file format). A 1-DOF linkage = the driver (crank with the
-frame) + class-II groups (dyads), each attached to links already known. The five kinds
+frame) + class-II groups (dyads), each attached to links already known; one of W = 2 has
+two initial links (two drivers, each with the frame: a crank, or a slider on a fixed guide). The five kinds
 (вид), in Artobolevsky's numbering: 1 RRR, 2 RRP, 3 RPR, 4 PRP, 5 RPP.
 """
 
@@ -96,14 +97,17 @@ class Structure:
     W: int
     driver: int
     groups: tuple[Group, ...]
+    #: every input link, the first (``driver``) first: one per degree of freedom
+    drivers: tuple[int, ...] = ()
 
     @property
     def mechanism_class(self) -> int:
         return 2 if self.groups else 1
 
     def formula(self) -> str:
-        """Structural formula, e.g. ``I(0,1) → II3(2,3) → II2(4,5)``."""
-        parts = [f"I(0,{self.driver})"]
+        """Structural formula, e.g. ``I(0,1) → II3(2,3) → II2(4,5)``; with two inputs
+        ``I(0,1) → I(0,4) → II1(2,3)``."""
+        parts = [f"I(0,{d})" for d in (self.drivers or (self.driver,))]
         parts += [f"II{g.kind.value}({g.links[0]},{g.links[1]})" for g in self.groups]
         return " → ".join(parts)
 
@@ -138,21 +142,31 @@ def _analyse(mech: Mechanism) -> Structure:
     n = len(mech.links)
     p5 = len(all_edges)
     W = 3 * n - 2 * p5
-    if W != 1:
-        what = ("over-constrained (a structure or a locked chain)" if W < 1 else
-                "under-constrained: more inputs than one crank")
-        raise StructureError(
-            f"{chebyshev(n, p5)}: the chain is {what}; "
-            "a mechanism with one crank needs W = 1"
-        )
+    inputs = len(mech.drivers)
+    if W != inputs:
+        if inputs == 1:
+            what = ("over-constrained (a structure or a locked chain)" if W < 1 else
+                    "under-constrained: more inputs than one crank")
+            need = "a mechanism with one crank needs W = 1"
+        else:
+            what = ("over-constrained for its two inputs" if W < inputs else
+                    f"under-constrained: it needs {W} inputs")
+            need = f"a mechanism with {inputs} inputs needs W = {inputs}"
+        raise StructureError(f"{chebyshev(n, p5)}: the chain is {what}; {need}")
+    for d in mech.drivers:
+        frame_edges = [e for e in all_edges if {e.a, e.b} == {0, d.link}]
+        if d.linear:
+            if len(frame_edges) != 1 or frame_edges[0].slider is None:
+                raise StructureError(
+                    f"the input slider (link {d.link}) must be joined to the frame by its guide "
+                    f"{d.guide.label} only")
+        elif len(frame_edges) != 1 or frame_edges[0].point != d.pivot:
+            raise StructureError(
+                f"the crank (link {d.link}) must be hinged to the frame at {d.pivot} only"
+            )
     drv = mech.driver.link
-    frame_edges = [e for e in all_edges if {e.a, e.b} == {0, drv}]
-    if len(frame_edges) != 1 or frame_edges[0].point != mech.driver.pivot:
-        raise StructureError(
-            f"the crank (link {drv}) must be hinged to the frame at {mech.driver.pivot} only"
-        )
-    known = {0, drv}
-    unknown = set(mech.links) - {drv}
+    known = {0, *(d.link for d in mech.drivers)}
+    unknown = set(mech.links) - known
     groups: list[Group] = []
     while unknown:
         found = None
@@ -173,7 +187,8 @@ def _analyse(mech: Mechanism) -> Structure:
         groups.append(found)
         known |= {found.a, found.b}
         unknown -= {found.a, found.b}
-    return Structure(n=n, p5=p5, p4=0, W=W, driver=drv, groups=tuple(groups))
+    return Structure(n=n, p5=p5, p4=0, W=W, driver=drv, groups=tuple(groups),
+                     drivers=tuple(d.link for d in mech.drivers))
 
 
 def _classify(x: int, y: int, ex: Edge, inner: Edge, ey: Edge) -> Group:

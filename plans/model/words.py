@@ -12,11 +12,17 @@ WORDS = {
     "en": {
         "from": "from",
         "as_given": "as the file gives it",
+        "m": "m",
+        "s": "s",
+        "along": "along",
         "measured": {"ccw": "ccw", "cw": "cw"},
     },
     "ru": {
         "from": "от",
         "as_given": "как задано в файле",
+        "m": "м",
+        "s": "с",
+        "along": "вдоль",
         "measured": {"ccw": "против часовой стрелки", "cw": "по часовой стрелке"},
     },
 }

@@ -12,9 +12,12 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+from plans.cycle.transmission import lines as transmission_lines
+from plans.cycle.transmission import transmission
 from plans.cycle.words import change_points, no_full_turn
 from plans.fmt import notation_in, num
 from plans.kinematics.conditioning import flag_words
+from plans.kinematics.transmission import gammas
 from plans.note.words import UNITS, T
 from plans.plan.solution import Solution, plan_name
 
@@ -65,8 +68,12 @@ def note(sol: Solution, lang: str = "en", cycle=None,
     mu_l = sol.mu_l
     crank_mm = d.length / mu_l
     out += [f"## 2. {t['positions']}", "", t["mul"], ""]
-    out.append(Step(f"μl = l_{d.pivot}{d.tip} / {d.pivot}{d.tip}", f"{n(d.length)} / {n(crank_mm)}",
-                    n(mu_l), u["mu_l"]).markdown())
+    if d.linear:  # a slider input has no crank: μl from the first link's segment
+        k, v = next(((k, v) for k, v in sol.lengths.items() if v > 0), ("", 0.0))
+        out.append(Step(f"μl = l_{k} / {k}", f"{n(v)} / {n(v / mu_l)}", n(mu_l), u["mu_l"]).markdown())
+    else:
+        out.append(Step(f"μl = l_{d.pivot}{d.tip} / {d.pivot}{d.tip}", f"{n(d.length)} / {n(crank_mm)}",
+                        n(mu_l), u["mu_l"]).markdown())
     # with plans of other positions, the plan of positions draws theirs heavy (not the
     # given one): the segments are given at the first, and those that change (BA3 of a
     # slotted link) at each of the others, as their plans' similarity steps use them
@@ -135,6 +142,11 @@ def note(sol: Solution, lang: str = "en", cycle=None,
                             shown, u["deg"]).markdown())
             out.append(Step("K = (180° + θ) / (180° − θ)", f"(180° + {n(th)}°) / (180° − {n(th)}°)",
                             n(cycle.K), "").markdown())
+        trans = transmission(sol.solver, cycle)  # γ at the position, γmin over the cycle
+        out += ["", t["transmission"], ""]
+        out += [f"  - {line.strip()}" if line.startswith(" ") else f"- {line}" for line in transmission_lines(
+            trans, mech, st.groups, gammas(sol.scalar), lang, sol.shown_from,
+            cycle.output.point if cycle.output is not None else "")]
     out.append("")
     number = 3
     for title, s in plans or [("", sol)]:
@@ -161,6 +173,64 @@ def warnings(sol: Solution, lang: str = "en") -> list[str]:
     return [flag_words(f, at, lang) for f in sol.flags]
 
 
+def _inputs_said(sol: Solution, acc: bool) -> bool:
+    """Whether the plan's known vectors are other than a uniform crank's (ω1 = const)."""
+    mech = sol.mechanism
+    rates = mech.inputs_at(sol.phi)
+    return (len(mech.drivers) > 1 or mech.driver.linear
+            or (acc and any(float(ddq) != 0 for _, _, ddq in rates)))
+
+
+def _inputs(sol: Solution, plan, lang: str) -> list[str]:
+    """The known vectors every input lays off from the pole, and the plan's scale from the
+    first (its own velocity or acceleration): a crank's ω·l and ω²·l with ε·l ⊥ it where
+    it accelerates; a slider's velocity and acceleration along its guide, as given."""
+    t, u = T[lang], UNITS[lang]
+
+    def n(x, digits=4):
+        return num(float(x), digits, lang)
+
+    acc = plan.kind == "acceleration"
+    unit = u["m/s²"] if acc else u["m/s"]
+    out = []
+    for d, (_, dq, ddq) in zip(sol.mechanism.drivers, sol.mechanism.inputs_at(sol.phi), strict=True):
+        tip = plan_name(d.tip)
+        val = abs(plan.value(tip))
+        if d.linear:
+            x = abs(ddq if acc else dq)
+            x = 0.0 if x <= 1e-12 * max(abs(dq), abs(ddq)) else x  # sin π of a harmonic law
+            out += [t["as" if acc else "vs"].format(t=d.tip, i=d.link, g=d.guide.label), ""]
+            out.append(Step(f"{'a' if acc else 'V'}_{d.tip}", "", n(x), unit).markdown())
+        elif not acc:
+            out += [t["va"].format(t=d.tip, p=d.pivot, w=d.omega_sym), ""]
+            out.append(Step(f"V_{d.tip} = {d.omega_sym}·l_{d.pivot}{d.tip}",
+                            f"{n(abs(dq), 5)}·{n(d.length, 5)}", n(val), unit).markdown())
+        elif ddq == 0:
+            out += [t["aa"].format(t=d.tip, p=d.pivot, w=d.omega_sym), ""]
+            out.append(Step(f"a_{d.tip} = {d.omega_sym}²·l_{d.pivot}{d.tip}",
+                            f"{n(abs(dq), 5)}²·{n(d.length, 5)}", n(val), unit).markdown())
+        else:
+            e = f"ε{d.link}"
+            an, at = dq * dq * d.length, abs(ddq) * d.length
+            out += [t["aa_eps"].format(t=d.tip, p=d.pivot, e=e, ev=n(abs(ddq)),
+                                       sense=t["sense"][1 if ddq > 0 else -1]), ""]
+            out.append(Step(f"a^n_{d.tip}{d.pivot} = {d.omega_sym}²·l_{d.pivot}{d.tip}",
+                            f"{n(abs(dq), 5)}²·{n(d.length, 5)}", n(an), unit).markdown())
+            out.append(Step(f"a^τ_{d.tip}{d.pivot} = {e}·l_{d.pivot}{d.tip}",
+                            f"{n(abs(ddq), 5)}·{n(d.length, 5)}", n(at), unit).markdown())
+            out.append(Step(f"a_{d.tip} = √((a^n_{d.tip}{d.pivot})² + (a^τ_{d.tip}{d.pivot})²)",
+                            f"√({n(an, 5)}² + {n(at, 5)}²)", n(val), unit).markdown())
+        out.append("")
+    d = sol.mechanism.driver
+    tip, mu, pole = plan_name(d.tip), plan.mu, plan.pole
+    val = abs(plan.value(tip))
+    sym, mus = ("a", "μa") if acc else ("V", "μv")
+    out += [t["mua" if acc else "muv"].format(mm=n(val / mu), t=tip), ""]
+    out.append(Step(f"{mus} = {sym}_{d.tip} / {pole}{tip}", f"{n(val)} / {n(val / mu)}", n(mu),
+                    u["mu_a" if acc else "mu_v"]).markdown())
+    return out
+
+
 def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") -> list[str]:
     t, u = T[lang], UNITS[lang]
 
@@ -180,7 +250,9 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "") 
     tip = plan_name(d.tip)
     w1 = abs(d.omega)
     val = abs(plan.value(tip))
-    if acc:
+    if _inputs_said(sol, acc):  # a crank with ε, a slider input, two inputs
+        out += _inputs(sol, plan, lang)
+    elif acc:
         out += [t["aa"].format(t=d.tip, p=d.pivot, w=d.omega_sym), ""]
         out.append(Step(f"a_{d.tip} = {d.omega_sym}²·l_{d.pivot}{d.tip}",
                         f"{n(w1, 5)}²·{n(d.length, 5)}", n(val), unit).markdown())

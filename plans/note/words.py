@@ -56,6 +56,11 @@ T = {
         "return": "φ_r",
         "accelerations": "Acceleration plan",
         "aa": "Acceleration of point {t}, directed from {t} to {p} ({w} = const):",
+        "transmission": "Transmission angles γ and pressure angles α = 90° − γ of the groups:",
+        "aa_eps": "Acceleration of point {t}: the crank turns with {e} = {ev} rad/s², {sense}; its normal "
+                  "component is directed from {t} to {p}, its tangential one ⊥ {p}{t} in the sense of {e}:",
+        "vs": "Velocity of point {t} of the input slider {i}, along its guide {g}, given:",
+        "as": "Acceleration of point {t} of the input slider {i}, along its guide {g}, given:",
         "mua": "Scale factor of the acceleration plan, with π{t} = {mm} mm:",
         "normal": "Normal component, directed from {x} to {y}:",
         "coriolis": "Coriolis component: V_{x}{y} turned by 90° in the sense of ω{i}:",
@@ -114,6 +119,11 @@ T = {
         "return": "φ_хх",
         "accelerations": "План ускорений механизма",
         "aa": "Ускорение точки {t} направлено от {t} к {p} ({w} = const):",
+        "transmission": "Углы передачи движения γ и углы давления α = 90° − γ групп:",
+        "aa_eps": "Ускорение точки {t}: кривошип вращается с {e} = {ev} рад/с², {sense}; нормальная "
+                  "составляющая направлена от {t} к {p}, касательная ⊥ {p}{t} в сторону {e}:",
+        "vs": "Скорость точки {t} ползуна {i} (начальное звено) вдоль направляющей {g}, задана:",
+        "as": "Ускорение точки {t} ползуна {i} (начальное звено) вдоль направляющей {g}, задано:",
         "mua": "Масштабный коэффициент плана ускорений при π{t} = {mm} мм:",
         "normal": "Нормальное ускорение направлено от {x} к {y}:",
         "coriolis": "Ускорение Кориолиса: вектор V_{x}{y}, повёрнутый на 90° в сторону ω{i}:",

@@ -25,8 +25,10 @@ from plans.model import Mechanism
 from plans.plan.values import Plan, PlanLine, PlanPoint, PlanVector, Source, plan_name
 from plans.scales import choose_mu
 
-#: the kinds of a recipe's step (the first item of each), as :func:`compile_steps` writes them
-POLE, VALUE, TERM, CROSS, SIMILAR, FIGURE = range(6)
+#: the kinds of a recipe's step (the first item of each), as :func:`compile_steps` writes them;
+#: DRIVER_N and DRIVER_T: a crank's acceleration as its normal and tangential components
+#: (where it has an ε)
+POLE, VALUE, TERM, CROSS, SIMILAR, FIGURE, DRIVER_N, DRIVER_T = range(8)
 __POLE_SOURCE = Source("pole")
 
 
@@ -170,16 +172,10 @@ def work_out(mech: Mechanism, m: Motion, kind: str) -> Recipe:
         steps.append((POLE, plan_name(name), PlanPoint(plan_name(name), 0j, __POLE_SOURCE)))
         known.add(name)
     drv = mech.driver
-    if acc:
-        eq = f"a_{drv.tip} = a^n_{drv.tip}{drv.pivot} = {drv.omega_sym}²·l_{drv.pivot}{drv.tip}"
-        rel = f"∥ {drv.tip}{drv.pivot}, from {drv.tip} to {drv.pivot}"
-    else:
-        eq = f"V_{drv.tip} = {drv.omega_sym}·l_{drv.pivot}{drv.tip}"
-        rel = f"⊥ {drv.pivot}{drv.tip}, in the sense of {drv.omega_sym}"
-    steps.append((VALUE, plan_name(drv.tip), drv.tip, Source("driver", equation=eq, label=rel),
-                  absolute(drv.tip)))
-    known.add(drv.tip)
-    similar(drv.link)
+    for d in mech.drivers:
+        steps += driver_steps(d, acc, pole, counters, absolute(d.tip))
+        known.add(d.tip)
+        similar(d.link)
     for gi, g in enumerate(m.groups):
         cons = g.acceleration if acc else g.velocity
         for r in cons.routes:
@@ -215,15 +211,54 @@ def work_out(mech: Mechanism, m: Motion, kind: str) -> Recipe:
                    compile_steps(kind, pole, drv.tip, steps, ends))
 
 
+def accelerating(d) -> bool:
+    """Whether the crank ``d`` may have an angular acceleration: an ε of its own, or a
+    law in time that is not uniform. Its acceleration plan then lays off the crank pin's
+    normal and tangential components, as the method does for any point turning about a
+    centre; a crank turning uniformly has the normal one only, a^n_AO = a_A."""
+    return not d.linear and (d.epsilon != 0 or (d.law is not None and d.law.kind != "uniform"))
+
+
+def driver_steps(d, acc: bool, pole: str, counters: dict, vec: PlanVector) -> list[tuple]:
+    """The steps of an input's pin: its velocity V_A = ω1·l_OA (⊥ OA); its acceleration
+    a_A = a^n_AO (∥ AO, towards O), with a^t_AO = ε1·l_OA (⊥ OA) laid from the normal one's
+    end where the crank accelerates; a slider's velocity and acceleration along its
+    guide, as given."""
+    tip, pn = d.tip, plan_name(d.tip)
+    if d.linear:
+        sym = "a" if acc else "V"
+        src = Source("driver", equation=f"{sym}_{tip}: the input's, given", label=f"∥ {d.guide.label}")
+        return [(VALUE, pn, tip, src, vec)]
+    o, w, e = d.pivot, d.omega_sym, f"ε{d.link}"
+    if not acc:
+        eq = f"V_{tip} = {w}·l_{o}{tip}"
+        rel = f"⊥ {o}{tip}, in the sense of {w}"
+        return [(VALUE, pn, tip, Source("driver", equation=eq, label=rel), vec)]
+    if not accelerating(d):
+        eq = f"a_{tip} = a^n_{tip}{o} = {w}²·l_{o}{tip}"
+        rel = f"∥ {tip}{o}, from {tip} to {o}"
+        return [(VALUE, pn, tip, Source("driver", equation=eq, label=rel), vec)]
+    counters["n"] += 1
+    nn = f"n{counters['n']}"
+    normal, tangential = f"a^n_{tip}{o}", f"a^t_{tip}{o}"
+    nsrc = Source("driver", equation=f"{normal} = {w}²·l_{o}{tip}, directed from {tip} to {o}",
+                  label=normal)
+    tsrc = Source("driver", equation=f"a_{tip} = {normal} + {tangential}; {tangential} = {e}·l_{o}{tip}",
+                  base=nn, label=f"⊥ {o}{tip}, in the sense of {e}")
+    return [(DRIVER_N, nn, tip, o, d.link, nsrc, PlanVector(pole, nn, "normal", normal)),
+            (DRIVER_T, pn, tip, nn, tsrc, vec, PlanVector(nn, pn, "tangential", tangential))]
+
+
 def segments_of(steps, pole: str) -> Mapping[str, tuple[str, str]]:
     """The plan's drawn segments, name → (from, to): pole to every point found (not the
     poles, not the ends of known components), then every component vector; the absolute
     vectors are the pole-to-point segments already. Read-only: every plan of the recipe
     shares it."""
     out = {pole + st[1]: (pole, st[1]) for st in steps
-           if st[0] in (VALUE, SIMILAR, FIGURE, CROSS)}
+           if st[0] in (VALUE, SIMILAR, FIGURE, CROSS, DRIVER_T)}
     for st in steps:
-        for v in (st[7],) if st[0] == TERM else st[7] if st[0] == CROSS else ():
+        for v in ((st[7],) if st[0] == TERM else st[7] if st[0] == CROSS else (st[6],)
+                  if st[0] in (DRIVER_N, DRIVER_T) else ()):
             out.setdefault(v.start + v.end, (v.start, v.end))
     return MappingProxyType(out)
 
@@ -232,12 +267,14 @@ def follow(recipe: Recipe, m: Motion, mu) -> Plan:
     """The plan at the motion's angle, by the recipe's steps (compiled once: see
     :func:`compile_steps`)."""
     if recipe.kind == "acceleration":
-        return recipe.follow(m.acceleration, [g.acceleration for g in m.groups], m.position, mu)
+        return recipe.follow(m.acceleration, [g.acceleration for g in m.groups], m.position, mu,
+                             m.links)
     return recipe.follow(m.velocity, [g.velocity for g in m.groups], m.position, mu)
 
 
 def compile_steps(kind: str, pole: str, tip: str, steps, ends):
-    """The recipe's steps as one Python function ``follow(store, cons, pos, mu) -> Plan``.
+    """The recipe's steps as one Python function ``follow(store, cons, pos, mu, links) -> Plan``
+    (``links``: the motion's link states, which a crank's normal component reads its ω from).
 
     Following the steps one by one (unpacking each, dispatching on its kind, looking
     every earlier vector up by name) took two thirds of a plan's time; written out once
@@ -288,6 +325,21 @@ def compile_steps(kind: str, pole: str, tip: str, steps, ends):
             rec = (f"record(PlanPoint, ({pn!r}, {v}, record(Source, ('similarity', "
                    f"{k(eqs)}[abs(q{i}.imag) >= {tolerances.RATIO_IN_LINE!r}], (), {n0!r}, {n1!r}, q{i}, "
                    "1.0, ''))))")
+        elif op == DRIVER_N:  # the crank pin's normal component, towards its pivot
+            _, _, tip, centre, link, src, vec = step
+            body.append(f"{v} = (pos[{centre!r}] - pos[{tip!r}]) * (links[{link!r}].omega ** 2)")
+            var[pn] = v
+            points.append((pn, v, f"record(PlanPoint, ({pn!r}, {v}, {k(src)}))"))
+            vectors.append(k(vec))
+            continue
+        elif op == DRIVER_T:  # the pin itself, its tangential component from the normal's end
+            _, _, name, _base, src, vec, tvec = step
+            body.append(f"{v} = store[{name!r}]")
+            var[pn] = v
+            points.append((pn, v, f"record(PlanPoint, ({pn!r}, {v}, {k(src)}))"))
+            absolute(v, vec)
+            vectors.append(k(tvec))
+            continue
         elif op == TERM:
             _, _, start, gi, ri, ti, src, vec = step
             term = f"cons[{gi}].routes[{ri}].terms[{ti}].value"
@@ -321,7 +373,7 @@ def compile_steps(kind: str, pole: str, tip: str, steps, ends):
         for key, (a, b) in ends.items())
     unit = "m/s²" if kind == "acceleration" else "m/s"
     source = "\n".join([
-        "def follow(store, cons, pos, mu):",
+        "def follow(store, cons, pos, mu, links=None):",
         *(f"    {line}" for line in body),
         f"    big = max(map(abs, ({values}, 0j)))",
         "    if not mu:",

@@ -120,7 +120,7 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
     """
     mu = _given_scales(mu)
     solver = solver or Solver(mech)
-    phi = mech.driver.phi if phi is None else crank_angle(phi)
+    phi = mech.param if phi is None else crank_angle(phi)
     lo = 0.0 if cycle is None else shown_from(cycle, mech.driver)
     try:
         motion = solver.solve_one(phi)
@@ -128,7 +128,7 @@ def solve_position(mech: Mechanism, phi: float | None = None, solver: Solver | N
         if cycle is None:
             raise
         raise worded(err, solver, cycle) from None
-    flags = flagged(motion.groups, motion.position, mech.frame[mech.driver.pivot],
+    flags = flagged(motion.groups, motion.position, mech.driver.origin,
                     lambda: solver.at(phi, "en", lo), mech.source,
                     lambda i: solver.singular_figures(i, phi), phi)
     warnings = [flag_words(f, solver.at(phi, "en", lo)) for f in flags]

@@ -9,16 +9,30 @@ their recipes (:mod:`plans.plan.recipe`) and held by a :class:`plans.plan.Soluti
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping
 from types import MappingProxyType
 from typing import NamedTuple
 
 from plans import tolerances
 
+#: the plans' own letters: the velocity pole p (π is written pi where a file cannot have
+#: Greek), the Coriolis points k, k1, k2 …, the normal components' ends n1, n2 …
+OWN_LETTERS = re.compile(r"^(p|pi|k\d*|n\d+)$")
+
 
 def plan_name(point: str) -> str:
-    """Mechanism point → plan point: A3 → a3, S3 → s3."""
-    return point.lower()
+    """Mechanism point → plan point: A3 → a3, S3 → s3. A point whose lower-case letters
+    are the plans' own (:data:`OWN_LETTERS`: the pole p, a Coriolis point k, a normal
+    component's end n1) is written with a prime, which no point name has: P → p′, K → k′,
+    N1 → n1′; so a textbook's points P, Q, R, S, K, N, K1 all keep their letters, and a
+    plan's letters stay unambiguous by construction.
+
+    >>> plan_name("A3"), plan_name("P"), plan_name("K1"), plan_name("N")
+    ('a3', 'p′', 'k1′', 'n')
+    """
+    low = point.lower()
+    return low + "′" if OWN_LETTERS.match(low) else low
 
 
 class PlanLine(NamedTuple):
