@@ -15,6 +15,24 @@ DECIMAL_MARK = {"en": ".", "ru": ","}
 #: what separates items that hold numbers: in Russian, whose decimal mark is a comma, a
 #: comma between them would read as one more decimal mark
 ITEM_SEPARATOR = {"en": ", ", "ru": "; "}
+#: units as each language writes them (SI symbols; Russian in Cyrillic, as GOST 8.417 has it)
+UNITS = {
+    "en": {"m": "m", "mm": "mm", "s": "s", "N": "N", "N·m": "N·m", "N·mm": "N·mm", "W": "W", "J": "J",
+           "m/s": "m/s", "m/s²": "m/s²", "rad": "rad", "rad/s": "rad/s", "rad/s²": "rad/s²", "rpm": "rpm"},
+    "ru": {"m": "м", "mm": "мм", "s": "с", "N": "Н", "N·m": "Н·м", "N·mm": "Н·мм", "W": "Вт", "J": "Дж",
+           "m/s": "м/с", "m/s²": "м/с²", "rad": "рад", "rad/s": "рад/с", "rad/s²": "рад/с²", "rpm": "об/мин"},
+}
+
+
+def unit(symbol: str, lang: str = "en") -> str:
+    """The SI unit ``symbol`` (as English writes it) in ``lang``.
+
+    >>> unit("N·m", "ru"), unit("m/s²", "en")
+    ('Н·м', 'm/s²')
+    """
+    return UNITS.get(lang, UNITS["en"])[symbol]
+
+
 #: the method's notation as each language's textbooks write it: the engine's tangential
 #: a^t_CB is a^τ_CB in Russian
 NOTATION = {"en": {}, "ru": {"a^t_": "a^τ_"}}

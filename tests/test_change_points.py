@@ -239,6 +239,13 @@ def test_a_plan_asked_for_on_a_change_point_gives_the_positions_and_says_why(cap
     got = json.loads(out)
     assert got["plans"] is None and "(a change point" in got["singular"]
     assert got["points"]["B"]["position"] == pytest.approx([0.15, 0.0], abs=1e-15)
+    code, out, err = run(capsys, "solve", path, "--angle", "180", "--lang", "ru")
+    assert code == 0 and err == ""  # the reason in the report's language, not in English
+    assert ("Планы скоростей и ускорений не строятся: группа 2–3 (ВВВ) при φ1 = 180° (точка смены "
+            "сборки: в ней сходятся две сборки группы): A, B и D на одной прямой (звенья 2 и 3 "
+            "вытянуты или сложены): особое положение, план не имеет единственного решения") in out
+    assert "мёртвая точка" not in out and not any("a" <= c <= "z" for c in out.split("не строятся")[1]
+                                                  .replace("sin", ""))
     code, out, err = run(capsys, "cycle", path, "--positions", "4", "--json")
     rows = json.loads(out)["rows"]  # from 60°: 60, 150, 240, 330 miss them; 12 would not
     assert all(r["solved"] for r in rows)

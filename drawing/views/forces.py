@@ -102,6 +102,10 @@ FORCE_WORDS = {
 }
 
 
+#: a reaction's component as each language's textbooks letter it (the engine's τ is t in English)
+COMPONENT = {"en": {"τ": "t"}}
+
+
 def force_markup(name: str, lang: str = "ru") -> str:
     """A force's or moment's engine name as a sheet writes it (markup): the links' numbers
     as an index, a component as a superscript (τ in Russian, t in English).
@@ -116,7 +120,7 @@ def force_markup(name: str, lang: str = "ru") -> str:
     if m := re.fullmatch(r"M(\d+(?:,\d+)?)", name):  # the couple of a slide's reaction
         return f"M_{{{m[1]}}}"
     if m := re.fullmatch(r"R(\d+(?:,\d+)?)(?:\^(τ|n))?", name):
-        sup = "" if m[2] is None else "^" + ("t" if m[2] == "τ" and lang == "en" else m[2])
+        sup = "" if m[2] is None else "^" + COMPONENT.get(lang, {}).get(m[2], m[2])
         return f"R{sup}_{{{m[1]}}}"
     if m := re.fullmatch(r"([GΦ])(\d+)", name):
         return f"{m[1]}_{m[2]}" if len(m[2]) == 1 else f"{m[1]}_{{{m[2]}}}"

@@ -8,7 +8,7 @@ import json
 import math
 
 from plans.cli.common import EXIT_OK, add_source, mechanism_from, solved_position, warn
-from plans.fmt import columns, decimal, from_x, json_angle, num
+from plans.fmt import columns, decimal, from_x, json_angle, num, unit
 from plans.forces.summary import Forces, rpm_of, solve_forces
 from plans.forces.words import words
 
@@ -181,12 +181,11 @@ def to_text(F: Forces, lang: str = "en") -> str:
     for ld in fa.loads:
         if ld.point is None:
             value, direction = (
-                f"{n(abs(ld.moment))} N·m" if lang == "en" else f"{n(abs(ld.moment))} Н·м",
+                f"{n(abs(ld.moment))} {unit('N·m', lang)}",
                 _sense(ld.moment, w),
             )
         else:
-            unit = "N" if lang == "en" else "Н"
-            value, direction = f"{n(abs(ld.force))} {unit}", f"{n(_deg(ld.force))}°"
+            value, direction = f"{n(abs(ld.force))} {unit('N', lang)}", f"{n(_deg(ld.force))}°"
         rows.append([ld.name, w[ld.kind], str(ld.link), ld.point or "—", value, direction])
     out += _columns(rows, w["load_head"])
     if loads.resistance is not None and fa.stroke is not None:
@@ -210,7 +209,7 @@ def to_text(F: Forces, lang: str = "en") -> str:
         out.append("")
         out.append(
             w["group"].format(
-                label=g.group.label if lang == "en" else "группа " + g.group.label.removeprefix("group "),
+                label=g.group.label_in(lang),
                 mu=n(g.plan.mu),
             )
         )
@@ -325,7 +324,7 @@ def _drive_lines(F: Forces, lang: str) -> list[str]:
 
 def _at(z, lang) -> str:
     z = complex(z)
-    return f"({num(z.real, 4, lang)}; {num(z.imag, 4, lang)}) {'m' if lang == 'en' else 'м'}"
+    return f"({num(z.real, 4, lang)}; {num(z.imag, 4, lang)}) {unit('m', lang)}"
 
 
 def _columns(rows, head, right=()) -> list[str]:

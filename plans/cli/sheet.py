@@ -58,7 +58,8 @@ MAX_ENTRY = 200
 LITERAL_CELLS = 3
 #: the built-in table's designation on an English sheet: «ПМ» is «прикладная механика»,
 #: the workbook's subject, applied mechanics (a table's own designation is kept as given)
-DESIGNATION_EN = "AM.01.{n:02d}"
+#: by language, where it is not the table's own
+DESIGNATION_IN = {"en": "AM.01.{n:02d}"}
 
 
 def configure(p) -> None:
@@ -197,14 +198,15 @@ def designation_in(mech, args) -> list[str]:
     """The built-in table's designation for an English sheet ("AM.01.03" for
     «ПМ.01.03»), where neither the command line nor another table gives one: a sheet in
     English carries no Cyrillic of the tool's own."""
-    if args.lang != "en" or getattr(args, "table", None) or args.variant is None:
+    own = DESIGNATION_IN.get(args.lang)
+    if own is None or getattr(args, "table", None) or args.variant is None:
         return []
     if any(FIELDS.get(p.partition("=")[0].strip().lower()) == "designation" for p in args.title_block):
         return []
     n = int(str(args.variant).strip())
     if (mech.title or {}).get("designation") != DESIGNATION.format(n=n):
         return []
-    return [f"designation={DESIGNATION_EN.format(n=n)}"]
+    return [f"designation={own.format(n=n)}"]
 
 
 def render2(mech, args, numbers: tuple[str, str], beside_: dict[str, float] | None) -> tuple[str, dict]:

@@ -23,17 +23,17 @@ from plans.cycle.table import conditioning
 from plans.cycle.transmission import WORDS as WORDS_T
 from plans.cycle.transmission import lines as transmission_lines
 from plans.cycle.transmission import transmission
-from plans.cycle.words import time_lines
 from plans.errors import SingularPlanError
 from plans.fmt import angle, from_x, json_angle, num
 from plans.kinematics.solver import Solver
 from plans.kinematics.transmission import between, gammas
-from plans.note.report import change_points, no_full_turn, warnings
+from plans.note.report import warnings
 
 #: the report's words by language
 WORDS = {
     "en": {
         "structure": "Structure", "class": "class", "kind": "kind", "crank": "Crank",
+        "group_line": "group {a}–{b} ({kind}): kind {n} ({ru})",
         "link": "link", "rads": "rad/s", "rads2": "rad/s²", "scales": "Scales",
         "positions": "Plan of positions", "segment": "segment", "mm": "mm", "m": "m",
         "how": "how", "velocity": "Velocity plan", "acceleration": "Acceleration plan",
@@ -53,6 +53,7 @@ WORDS = {
     },
     "ru": {
         "structure": "Строение", "class": "класс", "kind": "вид", "crank": "Кривошип",
+        "group_line": "группа {a}–{b}: вид {n} ({ru})",
         "link": "звено", "rads": "рад/с", "rads2": "рад/с²", "scales": "Масштабы",
         "positions": "План положений", "segment": "отрезок", "mm": "мм", "m": "м",
         "how": "построение", "velocity": "План скоростей", "acceleration": "План ускорений",
@@ -126,6 +127,8 @@ def _singular(args, mech, exc: SingularPlanError, lang: str) -> int:
     else:
         t = WORDS[lang]
         at = mech.at(x, lang, shown_from(cycle, mech.driver))
+        if exc.words is not None:  # the reason in the report's language
+            why = exc.words(solver.at(x, lang, shown_from(cycle, mech.driver)), lang)
         out = [mech.name, "", t["singular_at"].format(at=at), "", t["positions_head"]]
         out += [f"  {p:<6} {num(z.real + 0.0, 6, lang):>12} {num(z.imag + 0.0, 6, lang):>12}"
                 for p, z in pos.items()]
@@ -253,8 +256,8 @@ def to_text(sol, cycle=None, lang: str = "en", trans=None) -> str:
     out = [f"{terminal(mech.name_in(lang))}", ""]
     out.append(f"{t['structure']}: {st.chebyshev()}; {st.formula()}; {t['class']} {'I' * st.mechanism_class}")
     for g in st.groups:
-        label = g.label if lang == "en" else f"группа {g.links[0]}–{g.links[1]} ({g.kind.name})"
-        out.append(f"  {label}: {t['kind']} {g.kind.value} ({g.kind.ru})")
+        out.append("  " + t["group_line"].format(a=g.links[0], b=g.links[1], kind=g.kind.name,
+                                                 n=g.kind.value, ru=g.kind.ru))
     d = mech.driver
     out += _inputs(sol, t, lang)
     u = t["units"]
@@ -297,7 +300,7 @@ def to_text(sol, cycle=None, lang: str = "en", trans=None) -> str:
     if cycle is not None:
         out.append("")
         out.append(t["cycle"])
-        out += [f"  {line}" for line in (summary(cycle, d) if lang == "en" else _cycle_ru(cycle, d))]
+        out += [f"  {line}" for line in summary(cycle, d, lang)]
         out += [f"  {line}" for line in existence.lines(
             existence.support_conditions(mech, sol.solver, cycle), lang)]
     for w in warnings(sol, lang):
@@ -338,31 +341,6 @@ def _inputs(sol, t, lang: str) -> list[str]:
             line += f", ε{d.link} = {n(abs(ddq))} {t['rads2']}{_sense(ddq, t)}"
         out.append(line)
     return out
-
-
-def _cycle_ru(c, d) -> list[str]:
-    """The cycle's lines in Russian, as :func:`plans.cycle.analysis.summary` gives them in
-    English: the crank's range, the change points, the stroke or swing, the extreme
-    positions, θ and K."""
-    lines = []
-    if c.grashof:
-        lines.append(f"четырёхзвенник: {c.grashof}")
-    if not c.full_turn:
-        lines.append(no_full_turn(c, "ru", d))
-    if c.change_points:
-        lines.append(change_points(c, "ru", d))
-    if c.stroke is not None and c.output is not None:
-        if c.output.kind == "linear":
-            lines.append(f"ход точки {c.output.point}: H = {num(c.stroke, 4, 'ru')} м")
-        else:
-            lines.append(f"размах звена {c.output.link}: ψ = {num(math.degrees(c.stroke), 4, 'ru')}°")
-        if c.kind == "time":
-            return lines + time_lines(c, "ru")
-        lines.append(
-            f"крайние положения при {d.phi_sym} = "
-            + ", ".join(f"{angle(d.file_angle(x), 4, 'ru')}°" for x in c.extremes) + d.convention("ru")
-            + f"; θ = {num(math.degrees(c.theta), 4, 'ru')}°, K = {num(c.K, 4, 'ru')}")
-    return lines
 
 
 def _how(pt, t=WORDS["en"]) -> str:

@@ -23,7 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from plans.errors import PlansError
-from plans.fmt import angle, num
+from plans.fmt import angle, num, unit
 from plans.kinematics.solver import Solver
 from plans.kinematics.transmission import between, gamma
 from plans.model.structure import Group
@@ -229,9 +229,9 @@ def place(mech, x: float, lang: str = "en", lo: float = 0.0) -> str:
     are written: "φ1 = 128.8° (from +y, cw)", "s3 = 0.1234 m", "t = 0.3254 s"."""
     d = mech.driver
     if mech.timing is not None:
-        return f"t = {num(round(x, 9), 4, lang)} {'s' if lang == 'en' else 'с'}"
+        return f"t = {num(round(x, 9), 4, lang)} {unit('s', lang)}"
     if d.linear:
-        return f"{d.phi_sym} = {num(x, 4, lang)} {'m' if lang == 'en' else 'м'}"
+        return f"{d.phi_sym} = {num(x, 4, lang)} {unit('m', lang)}"
     return f"{d.phi_sym} = {angle(d.file_angle(x), 4, lang, lo)}°{d.convention(lang)}"
 
 
@@ -248,7 +248,7 @@ def lines(trans: Transmission | None, mech, groups, at_position: dict[str, float
         return num(math.degrees(x), 4, lang)
 
     def label(grp) -> str:
-        return grp.label if lang == "en" else f"группа {grp.links[0]}–{grp.links[1]} ({grp.kind.name})"
+        return grp.label_in(lang)
 
     res = []
     over = {g.group.label: g for g in trans.groups} if trans is not None else {}

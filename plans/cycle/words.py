@@ -36,6 +36,12 @@ WORDS = {
         "given": "the interval [motion] gives",
         "textremes": "extreme positions at t = {at} s",
         "tK": "K = t_work / t_return = {K}, θ = 180°·(K − 1)/(K + 1) = {theta}°",
+        "fourbar": "four-bar: {g}",
+        "stroke": "stroke of {p}: H = {H} m",
+        "swing": "swing of link {i}: ψ = {psi}°",
+        "extremes": "extreme positions at {phi} = {at}{conv}; θ = {theta}°, K = {K}",
+        # the cycle's notes (plans.cycle.analysis) are written in English
+        "notes": True,
     },
     "ru": {
         "change": "При {phi} = {at}°{conv} ({what}) звенья группы лежат на одной прямой и обе "
@@ -53,6 +59,12 @@ WORDS = {
         "given": "интервал из [motion]",
         "textremes": "крайние положения при t = {at} с",
         "tK": "K = t_раб / t_хол = {K}, θ = 180°·(K − 1)/(K + 1) = {theta}°",
+        "fourbar": "четырёхзвенник: {g}",
+        "stroke": "ход точки {p}: H = {H} м",
+        "swing": "размах звена {i}: ψ = {psi}°",
+        "extremes": "крайние положения при {phi} = {at}{conv}; θ = {theta}°, K = {K}",
+        # the cycle's notes are in English only: a Russian summary leaves them out
+        "notes": False,
     },
 }
 
@@ -171,28 +183,32 @@ def outside(field: str, given: float, c, driver) -> str:
             f"{driver.convention()}")
 
 
-def summary(c, driver=None) -> list[str]:
+def summary(c, driver=None, lang: str = "en") -> list[str]:
     """The cycle ``c`` in a few lines, as ``plans solve`` and ``plans cycle`` print it: the
     four-bar's Grashof class, the crank range where it cannot make a full turn, the notes,
     the stroke H or swing ψ, the extreme positions, θ and K.
 
     Angles are in the convention of ``driver`` (the file's), which they name (" (from +y,
     cw)"); without one, counter-clockwise from +x."""
+    w = WORDS[lang]
     deg = driver.file_angle if driver else from_x
-    convention = driver.convention() if driver else ""
-    lines = [f"four-bar: {c.grashof}"] if c.grashof else []
+    convention = driver.convention(lang) if driver else ""
+    lines = [w["fourbar"].format(g=c.grashof)] if c.grashof else []
     if not c.full_turn:
-        lines.append(no_full_turn(c, "en", driver))
-    lines += c.notes
+        lines.append(no_full_turn(c, lang, driver))
+    if w["notes"]:
+        lines += c.notes
+    elif c.change_points:
+        lines.append(change_points(c, lang, driver))
     if c.stroke is not None and c.output is not None:
         if c.output.kind == "linear":
-            lines.append(f"stroke of {c.output.point}: H = {num(c.stroke)} m")
+            lines.append(w["stroke"].format(p=c.output.point, H=num(c.stroke, 4, lang)))
         else:
-            lines.append(f"swing of link {c.output.link}: ψ = {num(math.degrees(c.stroke))}°")
+            lines.append(w["swing"].format(i=c.output.link, psi=num(math.degrees(c.stroke), 4, lang)))
         if c.kind == "time":
-            return lines + time_lines(c)
-        lines.append(
-            f"extreme positions at {driver.phi_sym if driver else 'φ1'} = "
-            + ", ".join(f"{angle(deg(x))}°" for x in c.extremes) + convention
-            + f"; θ = {num(math.degrees(c.theta))}°, K = {num(c.K)}")
+            return lines + time_lines(c, lang)
+        lines.append(w["extremes"].format(
+            phi=driver.phi_sym if driver else "φ1", conv=convention,
+            at=", ".join(f"{angle(deg(x), 4, lang)}°" for x in c.extremes),
+            theta=num(math.degrees(c.theta), 4, lang), K=num(c.K, 4, lang)))
     return lines

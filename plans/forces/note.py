@@ -12,7 +12,7 @@ from __future__ import annotations
 import cmath
 import math
 
-from plans.fmt import num
+from plans.fmt import decimal, num
 from plans.forces.lever import joints
 from plans.forces.summary import Forces, rpm_of
 from plans.plan.values import plan_name
@@ -368,8 +368,7 @@ def _drive(out, t, F, lang, item, n):
         return
 
     def r2(x):
-        s = f"{x:.2f}"
-        return s.replace(".", ",") if lang == "ru" else s
+        return decimal(f"{x:.2f}", lang)
 
     dr, gb = F.drive, F.drive.gearbox
     V = abs(fa.solution.scalar.velocity[d.tip])

@@ -22,7 +22,7 @@ import numpy as np
 
 from plans import tolerances
 from plans.errors import AssemblyError, SingularPlanError
-from plans.kinematics.words import ERRORS, WARNINGS, Sentence
+from plans.kinematics.words import WARNINGS, Sentence, in_every_language
 from plans.model.structure import DyadKind
 
 
@@ -119,7 +119,7 @@ def failure(g, k: int, at: str, note: str = "", source: str = "",
     label = g.group.label
     if bool(g.singular[k]):
         return _error(SingularPlanError, "dead", at,
-                      {"label": label, "why": g.why_singular, "note": note},
+                      {"label": g.group.labels(), "why": g.why_singular, "note": note},
                       source=source, phi=phi, group=label)
     gap = float(g.gap[k])
     return _error(AssemblyError, "misses", at,
@@ -137,7 +137,7 @@ def parallel(g, k: int | None, at: str, source: str = "", below: float | None = 
     if s >= below:
         return None
     r0, r1 = g.velocity.routes
-    fields = {"label": g.group.label, "r0": r0.relation, "r1": r1.relation,
+    fields = {"label": g.group.labels(), "r0": r0.relation, "r1": r1.relation,
               "degrees": f"{_degrees(s):.3g}", "sine": f"{s:.3g}", "below": f"{below:g}"}
     template = "beside" if s >= tolerances.SINGULAR_SINE else "parallel"
     return _error(SingularPlanError, template, at, fields, sine=s, source=source, phi=phi,
@@ -152,9 +152,9 @@ def on_pivot(g, q: float, at: str, source: str = "", below: float | None = None,
     below = tolerances.SINGULAR_SINE if below is None else below
     if not q < below:
         return None
-    where = (ERRORS["is_on"] if q < tolerances.SINGULAR_SINE else
-             ERRORS["all_but_on"].format(below=f"{below:g}"))
-    fields = {"label": g.group.label, "P": g.group.P, "Q": g.group.Q, "where": where,
+    where = (in_every_language("is_on") if q < tolerances.SINGULAR_SINE else
+             in_every_language("all_but_on", below=f"{below:g}"))
+    fields = {"label": g.group.labels(), "P": g.group.P, "Q": g.group.Q, "where": where,
               "figure": f"{q:.3g}"}
     return _error(SingularPlanError, "on_pivot", at, fields, sine=q, source=source, phi=phi,
                   group=g.group.label)

@@ -126,7 +126,8 @@ def _rrr_setup(mech: Mechanism, translating: frozenset[int], g: Group) -> dict:
         "veq": f"V_{C} = V_{P} + V_{C}{P} = V_{Q} + V_{C}{Q}",
         "aeq": f"a_{C} = a_{P} + a^n_{C}{P} + a^t_{C}{P} = a_{Q} + a^n_{C}{Q} + a^t_{C}{Q}",
         "admissible": f"{P}{Q} within [{abs(l2 - l3):.6g}, {l2 + l3:.6g}] m",
-        "singular": f"{P}, {C} and {Q} are in line (links {g.a} and {g.b} stretched out or folded)",
+        "singular": {"en": f"{P}, {C} and {Q} are in line (links {g.a} and {g.b} stretched out or folded)",
+                     "ru": f"{P}, {C} и {Q} на одной прямой (звенья {g.a} и {g.b} вытянуты или сложены)"},
     }
 
 
@@ -188,7 +189,8 @@ def _rrp_setup(mech: Mechanism, translating: frozenset[int], g: Group) -> dict:
         "veq": equation(f"V_{C}", f"V_{P} + V_{C}{P}", second),
         "aeq": equation(f"a_{C}", f"a_{P} + a^n_{C}{P} + a^t_{C}{P}", asecond),
         "admissible": f"distance from {P} to the guide {gl} ≤ {l2:.6g} m",
-        "singular": f"{P}{C} is perpendicular to the guide {gl}",
+        "singular": {"en": f"{P}{C} is perpendicular to the guide {gl}",
+                     "ru": f"{P}{C} перпендикулярна направляющей {gl}"},
     }
 
 
@@ -250,9 +252,11 @@ def _rpr_setup(mech: Mechanism, translating: frozenset[int], g: Group) -> dict:
         "aeq": f"a_{name} = a_{P} + a^k_{name}{P} + a^r_{name}{P} = "
                f"a_{Q} + a^n_{name}{Q} + a^t_{name}{Q}",
         "admissible": f"distance {Q}{P} > {abs(e):.6g} m (the guide's offset)" if e else f"{Q} ≠ {P}",
-        "singular": (
-            f"the guide of link {G} is tangent to the pin {P} at its offset {abs(e):.6g} m from {Q}"
-            if e else f"the pivot {Q} is on the block's pin {P}: the guide's direction is undetermined"),
+        "singular": {
+            "en": f"the guide of link {G} is tangent to the pin {P} at its offset {abs(e):.6g} m from {Q}"
+            if e else f"the pivot {Q} is on the block's pin {P}: the guide's direction is undetermined",
+            "ru": f"направляющая звена {G} касается пальца {P} на своём смещении {abs(e):.6g} м от {Q}"
+            if e else f"ось {Q} на пальце камня {P}: направление направляющей не определено"},
     }
 
 
@@ -308,7 +312,8 @@ def _prp_setup(mech: Mechanism, translating: frozenset[int], g: Group) -> dict:
         "aeq": equation(f"a_{C}", _slide(translating, "a", C, b1, sa.guide),
                         _slide(translating, "a", C, b2, sb.guide)),
         "admissible": "the two guides not parallel",
-        "singular": f"the guides {l1} and {l2} are parallel: the hinge {C} is not fixed",
+        "singular": {"en": f"the guides {l1} and {l2} are parallel: the hinge {C} is not fixed",
+                     "ru": f"направляющие {l1} и {l2} параллельны: шарнир {C} не определён"},
     }
 
 
@@ -375,8 +380,10 @@ def _rpp_setup(mech: Mechanism, translating: frozenset[int], g: Group) -> dict:
                         f"a_{P}{_coriolis(translating, s_out.guide.link, f'a^k_{name}{P}')}"
                         f" + a^r_{name}{P}", _slide(translating, "a", name, bk, s_out.guide)),
         "admissible": "the two guides not parallel",
-        "singular": f"the guide {li} of link {B} is parallel to the guide {lo}: the yoke's "
-                    "position is not fixed",
+        "singular": {"en": f"the guide {li} of link {B} is parallel to the guide {lo}: the yoke's "
+                           "position is not fixed",
+                     "ru": f"направляющая {li} звена {B} параллельна направляющей {lo}: положение "
+                           "кулисы не определено"},
     }
 
 

@@ -95,7 +95,7 @@ class GroupSolution(NamedTuple):
     gap: np.ndarray  # how far it is from closing (m); > 0 where it does not close
     admissible: str  # the condition, for messages
     singular: np.ndarray  # bool: where it does not close, is it a dead point (no miss)?
-    why_singular: str  # what makes it singular, for messages
+    why_singular: dict[str, str]  # what makes it singular, for messages, by language
     #: how far inside its limit the group is, as a fraction of its size: 0 where its links
     #: lie in line (a dead point, or a change point where its two assemblies meet), < 0
     #: where it does not close (arrays only: None on the one-angle path)

@@ -226,7 +226,7 @@ class Solver:
         """The crank angle ``phi`` in words, as :meth:`plans.model.mechanism.Driver.at`
         gives it in the turn from ``lo`` (the file's degrees: 0 for [0°, 360°)), saying so
         where it is a change point (to :data:`plans.tolerances.AT_CHANGE_POINT`) or beside
-        one (in English: :data:`plans.kinematics.words.WARNINGS`). Where the crank cannot
+        one (:data:`plans.kinematics.words.WARNINGS`). Where the crank cannot
         make a full turn and its range is written through 0° ("from −99.72° to 99.72°")
         the cycle knows ``lo`` (:func:`plans.cycle.shown_from`), and the angle is written as
         the range is: −99.7°, not 260.3°."""

@@ -3,9 +3,10 @@ and the sentences of its errors.
 
 A warning is said in the language of the report that gives it; a third language is one
 more table in :data:`WARNINGS`, with the same keys (and its way of writing a number).
-An error is a sentence of the engine's, in English (:data:`ERRORS`): the command line
-prints it as it is, and a layer that words a crank angle its own way says it again
-(:meth:`plans.errors.PositionError.at_words`).
+An error is a sentence of the engine's (:data:`ERRORS`), said in English where the command
+line prints it on stderr as it is; a layer that words a crank angle its own way says it
+again (:meth:`plans.errors.PositionError.at_words`), and a report in another language says
+it in that one (``solve`` at a change point).
 """
 
 from __future__ import annotations
@@ -52,9 +53,8 @@ WARNINGS = {
         "lost_some": "; скорости и ускорения могут быть неточны до {percent} % (от наибольшей)",
         "near_pivot": "{group} при {at}: камень {P} проходит близко к оси кулисы {Q} "
                       "(|{Q}{P}| / (|O{Q}| + |O{P}|) = {figure}): ω и ε кулисы теряют точность",
-        # the change point is said in English only: a Russian text names the angle alone
-        "on_change": "",
-        "beside_change": "",
+        "on_change": " (точка смены сборки: в ней сходятся две сборки группы)",
+        "beside_change": " (рядом с точкой смены сборки при {at}, где сходятся две сборки группы)",
     },
 }
 
@@ -62,26 +62,52 @@ WARNINGS = {
 #: the crank angle's words ``{at}`` and of ``{singular}``, which says "dead point" unless
 #: the angle's words already call it a change point (:func:`singular`)
 ERRORS = {
-    "misses": "{label} cannot be assembled at {at}: needs {admissible}, misses by {gap} m{note}",
-    "dead": "{label} at {at}: {why}: {singular}, the plan has no unique solution{note}",
-    "beside": "{label} at {at}: the lines {r0} and {r1} meet at {degrees}° (sin = {sine}), "
-              "under {below} beside a change point, where the accelerations lose their "
-              "digits as 1/sin³: {singular}, the plan is not built",
-    "parallel": "{label} at {at}: the lines {r0} and {r1} are parallel (angle {degrees}°, "
-                "sin = {sine}): {singular}, the plan has no unique solution",
-    "on_pivot": "{label} at {at}: the block {P} {where} the rocker's pivot {Q} (|{Q}{P}| "
-                "ratio {figure}): the rocker's ω is undefined, {singular}",
-    "is_on": "is on",
-    "all_but_on": "is all but on (under {below}, beside a change point)",
-    "singular": "a singular position (dead point)",
-    "singular_at_change": "a singular position",
+    "en": {
+        "misses": "{label} cannot be assembled at {at}: needs {admissible}, misses by {gap} m{note}",
+        "dead": "{label} at {at}: {why}: {singular}, the plan has no unique solution{note}",
+        "beside": "{label} at {at}: the lines {r0} and {r1} meet at {degrees}° (sin = {sine}), "
+                  "under {below} beside a change point, where the accelerations lose their "
+                  "digits as 1/sin³: {singular}, the plan is not built",
+        "parallel": "{label} at {at}: the lines {r0} and {r1} are parallel (angle {degrees}°, "
+                    "sin = {sine}): {singular}, the plan has no unique solution",
+        "on_pivot": "{label} at {at}: the block {P} {where} the rocker's pivot {Q} (|{Q}{P}| "
+                    "ratio {figure}): the rocker's ω is undefined, {singular}",
+        "is_on": "is on",
+        "all_but_on": "is all but on (under {below}, beside a change point)",
+        "singular": "a singular position (dead point)",
+        "singular_at_change": "a singular position",
+        "change_mark": "change point",
+    },
+    "ru": {
+        "misses": "{label} не собирается при {at}: нужно {admissible}, недостаёт {gap} м{note}",
+        "dead": "{label} при {at}: {why}: {singular}, план не имеет единственного решения{note}",
+        "beside": "{label} при {at}: прямые {r0} и {r1} пересекаются под углом {degrees}° "
+                  "(sin = {sine}), меньше {below} рядом с точкой смены сборки, где ускорения "
+                  "теряют точность как 1/sin³: {singular}, план не строится",
+        "parallel": "{label} при {at}: прямые {r0} и {r1} параллельны (угол {degrees}°, "
+                    "sin = {sine}): {singular}, план не имеет единственного решения",
+        "on_pivot": "{label} при {at}: камень {P} {where} оси кулисы {Q} (отношение |{Q}{P}| "
+                    "{figure}): ω кулисы не определена, {singular}",
+        "is_on": "находится на",
+        "all_but_on": "почти на (меньше {below}, рядом с точкой смены сборки)",
+        "singular": "особое положение (мёртвая точка)",
+        "singular_at_change": "особое положение",
+        "change_mark": "смены сборки",
+    },
 }
 
 
-def singular(at: str) -> str:
+def singular(at: str, lang: str = "en") -> str:
     """'a singular position (dead point)', but not where ``at`` already calls the angle a
     change point (:meth:`plans.kinematics.Solver.at`), through which the motion goes on."""
-    return ERRORS["singular_at_change" if "change point" in at else "singular"]
+    words = ERRORS.get(lang, ERRORS["en"])
+    return words["singular_at_change" if words["change_mark"] in at else "singular"]
+
+
+def in_every_language(key: str, **fields) -> dict[str, str]:
+    """The words ``key`` of :data:`ERRORS` filled with ``fields``, in every language: a field
+    of a :class:`Sentence` that is said as the sentence is."""
+    return {lang: words[key].format(**fields) for lang, words in ERRORS.items()}
 
 
 class Sentence(NamedTuple):
@@ -89,7 +115,10 @@ class Sentence(NamedTuple):
     :data:`ERRORS` filled with ``fields`` (name, text) and the angle."""
 
     template: str
-    fields: tuple[tuple[str, str], ...]
+    #: a field is a text, or a text per language ({"en": …, "ru": …}) said as the sentence is
+    fields: tuple[tuple[str, str | dict[str, str]], ...]
 
-    def __call__(self, at: str) -> str:
-        return ERRORS[self.template].format(at=at, singular=singular(at), **dict(self.fields))
+    def __call__(self, at: str, lang: str = "en") -> str:
+        lang = lang if lang in ERRORS else "en"
+        fields = {k: v.get(lang, v["en"]) if isinstance(v, dict) else v for k, v in self.fields}
+        return ERRORS[lang][self.template].format(at=at, singular=singular(at, lang), **fields)

@@ -20,6 +20,8 @@ from plans.model.mechanism import Mechanism, Slider
 #: the pairs' letters in each language's textbooks: R, P in English; В (вращательная),
 #: П (поступательная) in Russian
 PAIR_LETTERS = {"en": {"R": "R", "P": "P"}, "ru": {"R": "В", "P": "П"}}
+#: a group named in a sentence, by language
+GROUP_LABEL = {"en": "group {a}–{b} ({kind})", "ru": "группа {a}–{b} ({kind})"}
 
 
 class DyadKind(Enum):
@@ -86,7 +88,16 @@ class Group:
 
     @property
     def label(self) -> str:
-        return f"group {self.links[0]}–{self.links[1]} ({self.kind.name})"
+        return self.label_in("en")
+
+    def label_in(self, lang: str = "en") -> str:
+        """"group 2–3 (RRR)", "группа 2–3 (ВВВ)": the group by its links and its kind."""
+        a, b = self.links
+        return GROUP_LABEL.get(lang, GROUP_LABEL["en"]).format(a=a, b=b, kind=self.kind.letters(lang))
+
+    def labels(self) -> dict[str, str]:
+        """:meth:`label_in` in every language the engine speaks."""
+        return {lang: self.label_in(lang) for lang in GROUP_LABEL}
 
 
 @dataclass(frozen=True, slots=True)

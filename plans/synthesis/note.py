@@ -10,7 +10,7 @@ import math
 
 from plans.fmt import num
 from plans.synthesis.design import Design
-from plans.synthesis.words import WORDS
+from plans.synthesis.words import WORDS, grashof_in
 
 
 def _step(formula: str, substitution: str, result: str, unit: str = "") -> str:
@@ -78,15 +78,9 @@ def note(design: Design, check, lang: str = "en") -> str:
                 want, got = f"{f.n(r.synthesis, 10)}{unit}", f"{f.n(r.engine, 10)}{unit}"
             out.append(f"- {t['check_row'].format(name=r.name, want=want, got=got)}")
         if check.grashof:
-            out.append(f"- Grashof: {check.grashof}" if lang == "en" else
-                       f"- {t['grashof']} {_grashof_ru(check.grashof)}")
+            out.append("- " + t["grashof_check"].format(g=grashof_in(check.grashof, lang)))
         out.append(f"- {t['worst'].format(d=num(check.worst, 2, lang), tol='1e-12')}")
     return "\n".join(out) + "\n"
-
-
-def _grashof_ru(text: str) -> str:
-    return text.replace("crank-rocker", "кривошипно-коромысловый").replace("Grashof", "Грасгоф") \
-        .replace(".", ",")
 
 
 def _theta(design: Design, f: _Fmt) -> str:

@@ -13,15 +13,12 @@ from plans.fmt import ITEM_SEPARATOR, columns, num
 from plans.synthesis.design import Design
 from plans.synthesis.mechfile import mechanism_dict, why_words
 from plans.synthesis.note import given_line
-from plans.synthesis.words import WORDS
+from plans.synthesis.words import WORDS, grashof_in
 
 
 def grashof_words(text: str, lang: str) -> str:
     """The engine's Grashof class (in English) as the report's language writes it."""
-    if lang == "en":
-        return f"Grashof: {text}"
-    return ("Грасгоф: " + text.replace("crank-rocker", "кривошипно-коромысловый")
-            .replace("Grashof", "Грасгоф").replace(".", ","))
+    return WORDS[lang]["grashof_said"].format(g=grashof_in(text, lang))
 
 
 def _why(design: Design, lang: str) -> str:

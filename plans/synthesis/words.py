@@ -6,6 +6,8 @@ language's own way (:func:`plans.fmt.num`: a decimal comma in Russian).
 
 from __future__ import annotations
 
+from plans.fmt import decimal
+
 EN = {
     "title": {
         "crank-rocker": "Synthesis of a crank-rocker mechanism by the time-ratio coefficient K",
@@ -33,6 +35,10 @@ EN = {
     "frame_len": "The frame, from the triangle AC1D:",
     "gamma": "The transmission angle at the crank's two positions along the frame:",
     "grashof": "Grashof's rule (the crank the shortest link):",
+    "grashof_check": "Grashof: {g}",
+    "grashof_said": "Grashof: {g}",
+    # the engine's Grashof class (plans.cycle.grashof_class) is written in English
+    "grashof_terms": {},
     "crank_rocker": "crank-rocker",
     "not_crank_rocker": "not a crank-rocker: the input link does not turn fully",
     "pressure": "The pressure angle on the slider:",
@@ -112,6 +118,9 @@ RU = {
     "frame_len": "Стойка, из треугольника AC1D:",
     "gamma": "Угол передачи в двух положениях кривошипа вдоль стойки:",
     "grashof": "Условие Грасгофа (кривошип — кратчайшее звено):",
+    "grashof_check": "Условие Грасгофа (кривошип — кратчайшее звено): {g}",
+    "grashof_said": "Грасгоф: {g}",
+    "grashof_terms": {"crank-rocker": "кривошипно-коромысловый", "Grashof": "Грасгоф"},
     "crank_rocker": "кривошипно-коромысловый механизм",
     "not_crank_rocker": "не кривошипно-коромысловый: входное звено не проворачивается",
     "pressure": "Угол давления на ползун:",
@@ -164,3 +173,14 @@ RU = {
 }
 
 WORDS = {"en": EN, "ru": RU}
+
+
+def grashof_in(text: str, lang: str) -> str:
+    """The engine's Grashof class, written in English, in ``lang``'s words and decimal mark.
+
+    >>> grashof_in("crank-rocker (Grashof: 0.3 ≤ 0.5)", "ru")
+    'кривошипно-коромысловый (Грасгоф: 0,3 ≤ 0,5)'
+    """
+    for en, said in WORDS[lang]["grashof_terms"].items():
+        text = text.replace(en, said)
+    return decimal(text, lang)
