@@ -14,6 +14,7 @@ from __future__ import annotations
 from typing import NamedTuple
 
 from drawing.scene import Layer, Rect, Scene, parse_markup
+from drawing.sheet.balance import balance
 from drawing.sheet.fit import SCALED, SIZES, Fit, readable
 from drawing.sheet.frame import FIELD_NO, FORMATS, Sheet, TitleBlock, frame_scene, title_block_entries
 from drawing.sheet.layout import (
@@ -23,11 +24,11 @@ from drawing.sheet.layout import (
     field,
     kept_together,
     pack,
+    pack_kept,
     pairs_of,
     place_views,
     room,
     share_used,
-    spread,
 )
 from drawing.svg import to_svg
 from drawing.views import (
@@ -53,6 +54,7 @@ from plans.scales import CRANK_MM, GOST_MU_L, PLAN_MM, choose_mu, choose_mu_l, g
 __all__ = [
     "DIAGRAMS",
     "FIELDS",
+    "LEAST_PLAN",
     "POSITIONS",
     "SPARSE",
     "TITLE_FLOOR",
@@ -63,6 +65,7 @@ __all__ = [
     "one_title_size",
     "parse_plans",
     "plain_titles",
+    "plan_extent",
     "render",
     "sparse_note",
     "title_block",
@@ -85,6 +88,10 @@ TITLE_FLOOR = 1.8
 
 #: how many positions of the cycle a sheet may draw
 POSITIONS = (3, 72)
+#: mm: where the plans of several positions are drawn at one μ, the least width (the
+#: larger side of the box round its points) of any of them: a single plan's least crank
+#: vector (:data:`drawing.sheet.fit.SIZES`)
+LEAST_PLAN = 40.0
 
 
 def title_fields(mech, pairs, scale: str, lang: str = "ru", numbers: tuple[str, str] | None = None,
@@ -278,11 +285,22 @@ class Sheet1:
             plans = [getattr(sol, kind) for sol in sols]  # every position drawn, not one
             tip = max(abs(p.value(plan_name(self.mech.driver.tip))) for p in plans)
             largest = max(abs(q.value) for p in plans for q in p.points.values())
+            # each position's plan is read on its own: where several are drawn at one μ,
+            # the least of them no narrower than LEAST_PLAN, lest its letters crowd
+            # (variant 1's plans of positions 2 and 6, 33 mm across beside a 185 mm one)
+            least = min(plan_extent(p) for p in plans)
             hi, lo = (choose_mu(tip, largest, crank_mm=CRANK_MM * k, max_mm=PLAN_MM * k)
                       for k in SIZES)
-            sized = [(m, max(tip / m / CRANK_MM, largest / m / PLAN_MM))
-                     for m in sorted(set(series(hi, lo)) | {hi, lo})]
-            sized = [(m, k) for m, k in sized if readable(k)] or sized[:1]
+            candidates = set(series(hi, lo)) | {hi, lo}
+            if len(plans) > 1 and least / hi < LEAST_PLAN:
+                # the least plan readable only where the largest is drawn larger than
+                # the default's three times: the larger views too, up to the field's
+                # longer side (beyond it no sheet of this format holds them)
+                (x0, y0, x1, y1), _ = field(self.sheet)
+                candidates |= set(series(largest / max(x1 - x0, y1 - y0), hi))
+            sized = [(m, max(tip / m / CRANK_MM, largest / m / PLAN_MM)) for m in sorted(candidates)]
+            sized = ([(m, k) for m, k in sized if readable(k)
+                      and (len(plans) == 1 or least / m >= LEAST_PLAN - 1e-9)] or sized[:1])
             out.append((key, [m for m, _ in sized], [k for _, k in sized]))
         if self.fixed.curves is not None:
             widths = sorted(DIAGRAMS, reverse=True)
@@ -346,9 +364,14 @@ class Sheet1:
         format holds them."""
         factors = self.factors()
         mu_free = {k: v[-1] for k, v, _ in factors if k in SCALED}
-        # the views no free factor sizes are the same at any of their values: drawn once
+        # the views no free factor sizes are the same at any of their values: drawn once.
+        # The plan of positions, the view a teacher reads first, is the largest where
+        # its scale is free; each position's two plans stand together
+        together = self.together()
+        leader = (None if "mu_l" in self.mech.scales
+                  else ("mu_l", "positions", ("velocity-", "acceleration-")))
         fit = Fit(self.sheet, factors, self.draw, self.others(dict(self.mu0, **mu_free)),
-                  self.order(), plain={"segments"})
+                  self.order(), plain={"segments"}, leader=leader, together=together, search=True)
         try:
             chosen = fit.best()
         except LayoutError as exc:
@@ -359,15 +382,17 @@ class Sheet1:
                     **{k: v for k, v in chosen.items() if k in SCALED})
         views = [v for k, value in chosen.items()
                  for v in (self.draw(k, value, full) if k == "segments" else fit.views(k, value))]
-        # the scale factors chosen, each position's two plans are kept together where
-        # the views fit so (they are not packed so while choosing: never a scale lost)
-        together = self.together()
+        # each position's two plans together, the first position's read first where an
+        # order of the views puts them so
         placed = one_title_size(self.sheet, place_views(
-            self.sheet, fit.arranged(views + list(fit.fixed)), together), together)
-        if not any(k in self.mech.scales for k in SCALED):
-            # at their largest and still leaving room: spread over the field. Views at
-            # the scales a file fixes stay together, the share they take said in a note
-            placed = spread(self.sheet, placed)
+            self.sheet, fit.arranged(views + list(fit.fixed)), together, keep=True, search=True),
+            together, keep=True)
+        if not any(k in self.mech.scales for k in SCALED) or share_used(self.sheet, placed) >= SPARSE:
+            # at their largest and still leaving room: spread evenly over the field, and so
+            # at the scales a file fixes where they fill enough of it (the press on A2: half
+            # of it, the lower 106 mm blank). Views the file's scales leave sparse stay
+            # together, the share they take said in a note
+            placed = balance(self.sheet, placed, together)
         return full, placed
 
     def _no_room(self, fit) -> str:
@@ -394,12 +419,14 @@ class Sheet1:
                  else f"no format holds it{fewer}")
         least = (f"half their default size: the longest vector of a plan {PLAN_MM * SIZES[1]:.0f} "
                  f"mm or its crank vector {CRANK_MM * SIZES[1]:.0f} mm, the plan of positions "
-                 f"{PLAN_MM * SIZES[1]:.0f} mm across")
+                 f"{PLAN_MM * SIZES[1]:.0f} mm across"
+                 + (f", each position's plans {LEAST_PLAN:.0f} mm across at least, beside one "
+                    "another" if self.chosen is not None and len(self.chosen) > 1 else "") + ")")
         return (f"sheet 1 does not fit on {room(self.sheet)}: at their smallest readable scales "
-                f"({least}) its views need {need}; {where}")
+                f"({least} its views need {need}; {where}")
 
 
-def one_title_size(sheet, placed: list, together=()) -> list:
+def one_title_size(sheet, placed: list, together=(), keep: bool = False) -> list:
     """The views ``placed`` with their titles in one size. A view's title much wider than
     its drawing is set smaller (:data:`drawing.views.SMALL_CAPTION`), so that a narrow
     plan's view is not as wide as its title; the other views' titles were then larger
@@ -412,8 +439,11 @@ def one_title_size(sheet, placed: list, together=()) -> list:
     if len({p.view.caption_size for p in placed if p.view.caption_size}) <= 1:
         return placed
     views = [retitled(p.view, "wrap") for p in placed]
-    spots = pack(sheet, [(v.w, v.h) for v in views], pairs_of([v.name for v in views], together),
-                 apart=not kept_together(placed, together))
+    sizes, pairs = [(v.w, v.h) for v in views], pairs_of([v.name for v in views], together)
+    if keep and pairs:  # ``keep``: the pairs together, if need be not in reading order
+        spots = pack_kept(sheet, sizes, pairs)
+    else:
+        spots = pack(sheet, sizes, pairs, apart=not kept_together(placed, together))
     if spots is None:
         views = [retitled(p.view, "small") for p in placed]
         spots = [(p.rect.x, p.rect.y) for p in placed]
@@ -460,3 +490,11 @@ def plain_titles(solutions) -> list[tuple[str, object]]:
     """(title as plain text, solution) of each position a sheet draws plans for: its
     caption's label without markup ("φ_1" is φ1), for the explanatory note."""
     return [("".join(r.text for r in parse_markup(label)), sol) for _, label, sol in solutions]
+
+
+def plan_extent(plan) -> float:
+    """The larger side of the box round a plan's points and pole, in its unit (m/s or
+    m/s²): the width of its drawing at μ = 1."""
+    zs = [0j, *(p.value for p in plan.points.values())]
+    xs, ys = [z.real for z in zs], [z.imag for z in zs]
+    return max(max(xs) - min(xs), max(ys) - min(ys))

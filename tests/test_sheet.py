@@ -142,7 +142,7 @@ def test_cli_stdout_and_batch(tmp_path):
     assert "Иванов" in texts and "1:10" in texts
     # the press file fixes its scales, small for A1: the command says so, and how to mend it
     assert r.stderr.decode() == (
-        "plans sheet: note: samples/press.toml: the views take 21% of the A1 sheet's field "
+        "plans sheet: note: samples/press.toml: the views take 22% of the A1 sheet's field "
         "at the scale factors the file fixes (μl, μv, μa); leave them out of [scales] for "
         "the sheet to choose them, or take a smaller --format\n")
     r = subprocess.run([sys.executable, "-m", "plans", "sheet", "--variant", "all", "-o", str(tmp_path)],
@@ -197,7 +197,7 @@ def test_only_a_sheet_left_empty_by_the_files_own_scales_gets_a_note():
 
     mech, _, sheet, info, _ = _sheet("press")
     assert 0.15 < share_used(sheet, info["placed"]) < SPARSE
-    assert "21% of the A1 sheet's field" in sparse_note(mech, sheet, info["placed"])
+    assert "22% of the A1 sheet's field" in sparse_note(mech, sheet, info["placed"])
     mech, _, sheet, info, _ = _sheet("press", "A2")
     assert share_used(sheet, info["placed"]) > 0.45
     assert sparse_note(mech, sheet, info["placed"]) is None
@@ -579,11 +579,11 @@ def test_a_russian_sheet_names_and_measures_in_russian():
 
 
 def test_a_gost_scale_has_a_decimal_comma_on_a_russian_sheet():
-    from plans.model.scenes import SCENES
 
     # a sheet whose μl the sheet chooses as 1:2.5 (the yoke on A1 was, before each scale
-    # factor was chosen on its own: it is now 1:2)
-    scene, sheet, info = build_sheet(SCENES["slotted_general"].mechanism(), "A2", "ru")
+    # factor was chosen on its own: it is now 1:2; the general slotted link on A2 was,
+    # before the plan of positions was made the largest view: it is now 1:2 there)
+    scene, sheet, info = build_sheet(variant(1), "A3", "ru")
     _, texts = _texts(to_svg(scene, sheet, embed_font=False))
     assert info["solutions"][0][2].mu_l == 0.0025
     assert "1:2,5" in texts and "1:2.5" not in texts
@@ -840,19 +840,21 @@ def _read_before(a, b) -> bool:
 
 #: the scale factors (μl, μv, μa) and the kinematic diagrams' width (mm) chosen for these
 #: sheets before each position's plans were kept together, measured with
-#: ``plans sheet --variant N --format F --plans P`` at commit 3a47dc5: the pairing may
-#: not make a view smaller
+#: ``plans sheet --variant N --format F --plans P`` as the sheet now chooses its scales:
+#: each position's two plans stand together always (packed as one box where no order
+#: of the views puts them so in reading order), and the plan of positions is the
+#: largest view; the scales may not grow smaller than these. Variant 1's plans of
+#: positions 2 and 8 are 34 mm across at the scale that fits A2 (LEAST_PLAN): on A1
 PAIRED = [
-    (7, "A2", (2, 8), (0.004, 0.04, 1.0), 190),
-    (3, "A2", (1, 4), (0.002, 0.01, 0.2), 190),
-    (3, "A1", (1, 4), (0.001, 0.01, 0.1), 370),
+    (7, "A2", (2, 8), (0.004, 0.05, 1.0), 130),
+    (3, "A2", (1, 4), (0.0025, 0.01, 0.25), 190),
+    (3, "A1", (1, 4), (0.001, 0.01, 0.1), 250),
     (2, "A1", (1, 4), (0.001, 0.005, 0.1), 370),
-    (1, "A2", (1, 4), (0.002, 0.005, 0.1), 190),
-    (6, "A1", (2, 8), (0.001, 0.01, 0.25), 190),
-    (9, "A2", (1, 4), (0.002, 0.01, 0.2), 190),
-    # placed together, then parted again to give every title its full size on two lines
-    (1, "A2", (2, 8), (0.002, 0.01, 0.5), 250),
-    (7, "A1", (1, 4), (0.002, 0.01, 0.25), 370),
+    (1, "A2", (1, 4), (0.002, 0.01, 0.1), 190),
+    (6, "A1", (2, 8), (0.002, 0.02, 0.25), 370),
+    (9, "A2", (1, 4), (0.002, 0.01, 0.25), 190),
+    (1, "A1", (2, 8), (0.002, 0.01, 0.25), 190),
+    (7, "A1", (1, 4), (0.002, 0.01, 0.25), 250),
 ]
 
 
@@ -951,9 +953,12 @@ def test_pairs_are_packed_together_in_their_order():
                                    "μ_a = 0.2 (m/s²)/mm"],
                                   ["Acceleration plan (position 4, φ_1 = 44.66°),",
                                    "μ_a = 0.2 (m/s²)/mm"]], 0.2),
-    # two lines would not leave room for the acceleration plan at μa = 0.1, 207 mm long:
-    # every title is 3.5 mm instead, the plan as large as it was
-    (3, "A3", "ru", None, 3.5, [], 0.1),
+    # the acceleration plan at μa = 0.1, 207 mm long, filled the middle of A3 and left no
+    # room for titles on two lines (every title was 3.5 mm); the plan of positions the
+    # largest view, the plans are drawn at μa = 0.2 and the long titles break
+    (3, "A3", "ru", None, 5.0, [["План скоростей (φ_1 = 60°),", "μ_v = 0,02 (м/с)/мм"],
+                                ["План ускорений (φ_1 = 60°),", "μ_a = 0,2 (м/с²)/мм"],
+                                ["Кинематические диаграммы,", "μ_φ = 0,0524 рад/мм"]], 0.2),
 ])
 def test_every_title_on_a_sheet_is_one_size(key, fmt, lang, plans, size, broken, mu_a):
     """A caption much wider than its drawing was set at 3.5 mm instead of 5: variant 3's
@@ -1077,7 +1082,7 @@ def test_two_positions_on_a3_are_refused_rather_than_drawn_unreadably_small(caps
     mech = variant(6)
     _, _, info = build_sheet(mech, "A2", "ru", 12, [2, 8])
     given = info["given"]
-    assert given.mu_l == 0.002  # 0.01 on the A3 sheet
+    assert given.mu_l == 0.0025  # 0.01 on the A3 sheet (0.002 with the pairs packed apart)
     across = max(p.rect.w for p in info["placed"] if p.view.name == "positions")
     assert across > 150
     tip = plan_name(mech.driver.tip)
@@ -1264,7 +1269,10 @@ def test_a_plans_letter_stays_on_its_points_side_and_off_construction_lines(key,
     assert ("s_{3}" if key == 5 else "f") in names
 
 
-@pytest.mark.parametrize("key, fmt, plans", [(1, "A2", (2, 6, 10)), (1, "A2", (1, 5, 9)),
+# variant 1's plans of positions 1 and 5 beside position 9's are under 40 mm across at
+# any scale that fits a format (sheet1.LEAST_PLAN): that sheet is refused; positions 1 and
+# 5 alone are drawn on A1
+@pytest.mark.parametrize("key, fmt, plans", [(1, "A2", (2, 6, 10)), (1, "A1", (1, 5)),
                                              ("slot_rrp_moving", "A2", None)])
 def test_a_plans_letter_in_a_narrow_fan_hangs_on_a_leader_rather_than_touch_a_vector(
         key, fmt, plans, monkeypatch):
@@ -1298,7 +1306,7 @@ def test_a_plans_letter_in_a_narrow_fan_hangs_on_a_leader_rather_than_touch_a_ve
     assert leaders
 
 
-@pytest.mark.parametrize("key, fmt, plans", [(1, "A2", (2, 6, 10)), (1, "A2", (1, 5, 9))])
+@pytest.mark.parametrize("key, fmt, plans", [(1, "A2", (2, 6, 10)), (1, "A1", (1, 5))])
 def test_a_plans_leader_ends_in_the_open_not_on_a_vector(key, fmt, plans, monkeypatch):
     """A letter standing clear but across a vector from its point hung on a leader that
     ended on the next vector, 0.2–0.5 mm from it: variant 1's s₃ on the plans of
@@ -1416,25 +1424,40 @@ def test_a_sheet_is_written_in_the_format_its_name_says(tmp_path, capsys):
         assert code == 0 and (tmp_path / name).read_text("utf-8").startswith("<?xml")
 
 
-@pytest.mark.parametrize("key", [5, "fourbar"])
-def test_views_at_free_scales_are_spread_to_the_fields_edges(key):
+@pytest.mark.parametrize("key", [5, "fourbar", 4])
+def test_views_at_free_scales_are_spread_evenly_over_the_field(key):
     """At their largest the views of a sheet with free scales still leave room; packed to
-    the top left they left the lower half blank. layout.spread stretches their distances
-    from the field's top and left edges by as much as keeps them inside: so one view ends
-    at the field's bottom (or on the title block) and one at its right edge, none resized
-    and none overlapping."""
+    the top left they left the lower half blank. Stretched from the field's top and left
+    edges until one view met its bottom and one its right edge (layout.spread), a column
+    of two views kept all its room in one band between them: variant 4 on A1 had a band
+    165 mm tall blank across the sheet. sheet.balance sets each view (a pair of plans
+    kept together as one) in the middle of the room above and below it, then beside it,
+    until the gaps settle: a column's gaps are equal from the field's top edge to its
+    bottom or the title block, none resized and none overlapping, and no band across the
+    field is blank for more than 60 mm."""
     from drawing.sheet.layout import field
 
     mech, _, sheet, info, _ = _sheet(key)
     assert not mech.scales
     placed = info["placed"]
-    (_x0, _y0, x1, y1), (tb, _) = field(sheet)
+    (_x0, y0, _x1, y1), blocked = field(sheet)  # the title block and field 26
     rects = [p.rect for p in placed]
-    assert any(abs(r.y1 - y1) < 1e-6 or (r.x < tb[2] and r.x1 > tb[0] and abs(r.y1 - tb[1]) < 1e-6)
-               for r in rects)
-    assert any(abs(r.x1 - x1) < 1e-6 or (r.y < tb[3] and r.y1 > tb[1] and abs(r.x1 - tb[0]) < 1e-6)
-               for r in rects)
+    assert min(r.y for r in rects) > y0 + 1.0  # not packed to the top edge
+    assert _blank_band(y0, y1, [(r.y, r.y1) for r in rects] + [(b[1], b[3]) for b in blocked]) <= BAND
     _boxes_clear(sheet, placed)
+
+
+#: mm: the tallest band across an A1 sheet's field that no view may leave blank
+BAND = 60.0
+
+
+def _blank_band(y0: float, y1: float, spans: list[tuple[float, float]]) -> float:
+    """The tallest stretch of [y0, y1] that none of ``spans`` (top, bottom) covers."""
+    edge, most = y0, 0.0
+    for top, bottom in sorted(spans):
+        most = max(most, top - edge)
+        edge = max(edge, bottom)
+    return max(most, y1 - edge)
 
 
 def test_a_tall_segments_table_is_set_in_two_halves_where_the_sheet_needs_it():
@@ -1634,8 +1657,15 @@ def test_the_sheets_equations_write_the_tangential_component_as_its_language_doe
     from plans.plan.solution import solve_position
 
     sol = solve_position(variant(1))
-    texts = [it.text for it in flatten(plan_view(sol, "acceleration", "1", lang).items)
+    items = [it for it in flatten(plan_view(sol, "acceleration", "1", lang).items)
              if isinstance(it, Text)]
+    texts = [it.text for it in items]
+    # an equation's terms and signs are texts of their own on one baseline, left to right
+    rows: dict[float, list] = {}
+    for it in items:
+        rows.setdefault(round(it.pos[1], 3), []).append(it)
+    texts += [" ".join(t.text for t in sorted(row, key=lambda t: t.pos[0]))
+              for row in rows.values() if len(row) > 1]
     eq = [t for t in texts if t.startswith("a_C = ")]
     assert eq and all(f"a^{tangential}_" in t for t in eq), texts
     assert not any(f"a^{'t' if tangential == 'τ' else 'τ'}_" in t for t in texts)

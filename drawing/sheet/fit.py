@@ -30,8 +30,9 @@ that did not pack is not tried.
 from __future__ import annotations
 
 import itertools
+from collections.abc import Sequence
 
-from drawing.sheet.layout import LayoutError, pack, place_views
+from drawing.sheet.layout import LayoutError, pack, pack_units, pairs_of, place_views, why_not
 from drawing.views.common import captioned_width
 
 __all__ = ["SIZES", "Fit", "readable"]
@@ -57,6 +58,11 @@ LETTERED = ("mu_l", "mu_v", "mu_a", "segments")
 SCALED = ("mu_l", "mu_v", "mu_a")
 #: the factors sized with the room the scale factors' views leave
 SECONDARY = ("diagrams",)
+#: how many combinations :class:`Fit` packs in every order of their views at most, and
+#: the share of the field their views may cover at most to be (a larger share never
+#: packs: the searches are kept for those that may)
+SEARCHED = 24
+DEEP = 0.72
 
 
 class Fit:
@@ -74,8 +80,23 @@ class Fit:
 
     def __init__(self, sheet, factors: list[tuple[str, list[float], list[float]]], draw,
                  fixed: list, order: list[str], plain: set[str] = frozenset(),
-                 lettered: tuple[str, ...] = ()):
+                 lettered: tuple[str, ...] = (), leader: tuple[str, str, tuple[str, ...]] | None = None,
+                 together: Sequence[tuple[str, str]] = (), search: bool = False):
         self.sheet, self.factors, self.draw, self.fixed = sheet, factors, draw, fixed
+        #: (its factor, the view that is to be the largest, the prefixes of the views'
+        #: names it is to be larger than): combinations where it is come first, and of
+        #: those the ones where it is largest (sheet 1's plan of positions, the view a
+        #: teacher reads first, larger than any plan)
+        self.leader = leader
+        #: the views packed as one box, each pair (a position's two plans): a combination
+        #: whose views do not pack so is not taken
+        self.together = list(together)
+        #: whether the first combinations are packed in every order of their views
+        #: (:func:`~drawing.sheet.layout.pack`'s ``search``), up to SEARCHED of them
+        self.search = search
+        self._searched = 0
+        self._bodies: dict[str, list[list[tuple[float, float]]]] = {}
+        self._sized: dict[tuple[str, float], list[tuple[float, float]]] = {}
         self.plain = plain  # the factors that only change a view's shape: the first that packs
         #: the factors whose views are sized drawn without their letters: LETTERED, and
         #: the sheet's own (sheet 2's force plans)
@@ -104,18 +125,23 @@ class Fit:
             return got
 
         if key not in SCALED or len(values) <= 2:
-            return [[(v.w, v.h) for v in drawn(value)] for value in values]
+            views = [drawn(value) for value in values]
+            self._bodies[key] = [[v.body for v in vs] for vs in views]
+            return [[(v.w, v.h) for v in vs] for vs in views]
         big, small = drawn(values[0]), drawn(values[-1])
         k0, k1 = 1 / values[0], 1 / values[-1]
-        out = []
+        out, bodies = [], []
         for value in values:
             t = (1 / value - k1) / (k0 - k1)  # 1 at the largest views, 0 at the smallest
-            sizes = []
+            sizes, inner = [], []
             for a, b in zip(big, small, strict=True):
                 bw, bh = (q + t * (p - q) for p, q in zip(a.body, b.body, strict=True))
                 sizes.append((captioned_width(bw, *a.texts),
                               bh + max(a.h - a.body[1], b.h - b.body[1])))
+                inner.append((bw, bh))
             out.append(sizes)
+            bodies.append(inner)
+        self._bodies[key] = bodies
         return out
 
     def best(self) -> dict[str, float]:
@@ -144,32 +170,93 @@ class Fit:
             shape = tuple(i for f, i in enumerate(idx) if f not in ranked)
             boxes = self._ordered(idx, sizes, rest)
             area = sum(w * h for w, h in boxes)
-            combos.append(((rank, shape), -area, idx, boxes))
+            # the leader (sheet 1's plan of positions) the largest view first, the views
+            # then as large as above, and of those the leader largest; where it cannot
+            # be the largest, it is as large as it can be, the others as near its size
+            lead = ((-self.factors[keys.index(self.leader[0])][2][idx[keys.index(self.leader[0])]],)
+                    if self.leader is not None and self.leader[0] in keys else ())
+            excess = self._excess(idx)  # 1 or less where the leader is the largest
+            order = ((True, lead, round(excess, 6), rank) if excess > 1 + 1e-9
+                     else (False, (), 0.0, rank + lead))
+            combos.append(((*order, shape), -area, idx, boxes))
         combos.sort(key=lambda c: c[:2])
         failed: list[tuple[int, ...]] = []
         ranks = [f in ranked for f in range(len(keys))]
-        for _, area, idx, boxes in combos:
+        for key, area, idx, boxes in combos:
             if -area > field:  # more than the field holds, however packed
                 continue
             if any(all(i <= j if r else i == j for i, j, r in zip(idx, f, ranks, strict=True))
                    for f in failed):
                 continue  # no view smaller than in one of its shape that did not pack
-            if pack(self.sheet, boxes) is None and (
+            # every order of the views is searched for the first combinations that may
+            # pack, a few of them (:data:`SEARCHED`): those where a small sheet's plan of
+            # positions is largest may fit only one way of hundreds
+            deep = self.search and self._searched < SEARCHED and -area <= DEEP * field
+            self._searched += deep
+            if self._pack(boxes, deep) is None and (
                     not self._interpolated(idx)
-                    or pack(self.sheet, self._ordered(idx, self._drawn_sizes(idx, sizes), rest))
+                    or self._pack(self._ordered(idx, self._drawn_sizes(idx, sizes), rest), deep)
                     is None):  # foreseen between two drawings: drawn, for a close call
                 failed.append(idx)
                 continue
             mu = self._values(idx)
             try:
-                place_views(self.sheet, self._all(mu))
+                self._place(self._all(mu))
             except LayoutError:  # foreseen too small: drawn, it does not pack
                 failed.append(idx)
                 continue
+            if not key[0] and self._drawn_excess(self._all(mu)) > 1 + 1e-9:
+                continue  # foreseen the largest, drawn it is not
             return mu
         mu = self._values(tuple(len(v) - 1 for _, v, _ in self.factors))
-        place_views(self.sheet, self._all(mu))  # the smallest views: why they do not fit
+        self._place(self._all(mu))  # the smallest views: why they do not fit
         return mu  # they do, foreseen larger than they are
+
+    def _pack(self, boxes: list[tuple[float, float]], search: bool = False):
+        """:func:`~drawing.sheet.layout.pack` of boxes in packing order, each pair of
+        ``together`` as one box (:func:`~drawing.sheet.layout.pack_units`)."""
+        if not self.together:
+            return pack(self.sheet, boxes, search=search)
+        return pack_units(self.sheet, boxes, pairs_of(self._order_names, self.together), search)
+
+    def _place(self, views: list) -> None:
+        """:class:`LayoutError` where ``views`` (drawn) do not pack, pairs together."""
+        if self.together:
+            sizes = [(v.w, v.h) for v in views]
+            pairs = pairs_of([v.name for v in views], self.together)
+            if pack_units(self.sheet, sizes, pairs, self.search) is None:
+                raise LayoutError(*why_not(self.sheet, views))
+            return
+        place_views(self.sheet, views, search=self.search)
+
+    def _drawn_excess(self, views: list) -> float:
+        """:meth:`_excess` of the views drawn."""
+        if self.leader is None:
+            return 1.0
+        _, name, led = self.leader
+        bodies = {v.name: v.body for v in views}
+        if name not in bodies or not bodies[name][0] * bodies[name][1]:
+            return 1.0
+        most = max([0.0, *(w * h for n, (w, h) in bodies.items() if n.startswith(led))])
+        return most / (bodies[name][0] * bodies[name][1])
+
+    def _excess(self, idx) -> float:
+        """How many times the largest drawing (by area) the leader leads is the leader's,
+        at the combination ``idx`` (the views of the free factors and the fixed ones):
+        1 or less where the leader is the largest."""
+        if self.leader is None:
+            return 1.0
+        _, name, led = self.leader
+        bodies: dict[str, tuple[float, float]] = {}
+        for (key, _, _), i in zip(self.factors, idx, strict=True):
+            if key in self._bodies:
+                bodies.update(zip(self._names[key], self._bodies[key][i], strict=True))
+        bodies.update((v.name, v.body) for v in self.fixed)
+        if name not in bodies:
+            return 1.0
+        area = bodies[name][0] * bodies[name][1]
+        most = max([0.0, *(w * h for n, (w, h) in bodies.items() if n.startswith(led))])
+        return most / area if area > 0 else 1.0
 
     def _interpolated(self, idx) -> bool:
         """Whether a combination's sizes were foreseen between two drawings."""
@@ -181,15 +268,22 @@ class Fit:
         out = [list(per) for per in sizes]
         for f, ((key, values, _), i) in enumerate(zip(self.factors, idx, strict=True)):
             if key in SCALED and 0 < i < len(values) - 1:
-                out[f][i] = [(v.w, v.h) for v in self.draw(key, values[i], sizing=True)]
+                got = self._sized.get((key, values[i]))
+                if got is None:  # each drawn once: many combinations share it
+                    got = self._sized[(key, values[i])] = [
+                        (v.w, v.h) for v in self.draw(key, values[i], sizing=True)]
+                out[f][i] = got
         return out
 
     def _ordered(self, idx, sizes, rest) -> list[tuple[float, float]]:
-        """The foreseen boxes of a combination, in packing order."""
+        """The foreseen boxes of a combination, in packing order (their names in
+        ``_order_names``)."""
         named = [(name, box) for f, ((key, _, _), i) in enumerate(zip(self.factors, idx, strict=True))
                  for name, box in zip(self._names[key], sizes[f][i], strict=True)]
         named += [(v.name, box) for v, box in zip(self.fixed, rest, strict=True)]
-        return [box for _, box in sorted(named, key=lambda nb: self.order.index(nb[0]))]
+        named.sort(key=lambda nb: self.order.index(nb[0]))
+        self._order_names = [name for name, _ in named]
+        return [box for _, box in named]
 
     def _values(self, idx) -> dict[str, float]:
         return {k: vals[i] for (k, vals, _), i in zip(self.factors, idx, strict=True)}

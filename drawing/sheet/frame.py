@@ -76,7 +76,9 @@ THIN_LINES: tuple[Seg, ...] = (
 )  # fmt: skip
 
 #: Fixed wording of the block.  Labels too wide for their cell at 2.5 mm
-#: ("Tech. check" needs 18 mm of a 17 mm cell) are condensed by fit_text.
+#: ("Tech. check" needs 18 mm of a 17 mm cell) are condensed by fit_text, down to
+#: LABEL_STRETCH: never set below GOST 2.304's 2.5 mm.
+LABEL_STRETCH = 0.7
 LABELS: dict[str, dict[str, tuple[str, ...] | str]] = {
     "ru": {
         "signers": ("Разраб.", "Пров.", "Т.контр.", "", "Н.контр.", "Утв."),
@@ -270,6 +272,9 @@ def title_block_entries(
             sizes=_sizes(style, largest),
             max_lines=lines,
             align=align,
+            # the form's own words in 2.5 mm letters, condensed as far as they need
+            # ("Tech. check" to 74 %); an entry is condensed to 80 % at most
+            min_stretch=0.8 if entries else LABEL_STRETCH,
             **room,
         ):
             out.append((t, cell, entries))

@@ -28,9 +28,9 @@ from shapely.geometry import box
 from drawing.scene import Group, Rect
 from drawing.sheet.frame import Sheet
 
-__all__ = ["LayoutError", "Placed", "describe", "field", "in_order", "kept_together", "pack",
-           "pairs_of", "place_views", "reads_before", "room", "share_covered", "share_used",
-           "spread"]
+__all__ = ["LayoutError", "Placed", "describe", "field", "in_order", "kept_together",
+           "pack", "pack_kept", "pack_units", "pair_box", "pairs_of", "place_views", "reads_before", "room",
+           "share_covered", "share_used", "spread", "unit_sizes", "why_not"]
 
 GAP = 6.0
 MARGIN = 4.0
@@ -165,7 +165,7 @@ def _beside(lead: Box, size: tuple[float, float]) -> list[tuple[float, float]]:
 
 def pack(sheet: Sheet, sizes: Sequence[tuple[float, float]],
          pairs: Sequence[tuple[int, int]] = (),
-         apart: bool = True) -> list[tuple[float, float]] | None:
+         apart: bool = True, search: bool = False) -> list[tuple[float, float]] | None:
     """Top-left corners for boxes of ``sizes`` (w, h mm) on ``sheet``, none meeting
     another (``GAP`` apart) nor the title block and field 26; None if no order tried
     fits them all. The order given is tried first, so that the plan of positions, put
@@ -175,7 +175,11 @@ def pack(sheet: Sheet, sizes: Sequence[tuple[float, float]],
     pair before the next in reading order (:func:`reads_before`): a position's velocity
     and acceleration plans. Where no order tried packs them so, the boxes are packed
     as if no pairs were given (``apart``), else None: a pair kept together never costs
-    a view its size."""
+    a view its size.
+
+    ``search``: where none of those orders packs the boxes, every order of them with
+    the first box first is tried, up to :data:`SEARCH` placements of a box (a small
+    sheet's views, which fit one way of the 240 and not in the ten tried first)."""
     inner, blocked = field(sheet)
     if pairs:
         spots = _pack_pairs(inner, blocked, sizes, pairs)
@@ -185,6 +189,38 @@ def pack(sheet: Sheet, sizes: Sequence[tuple[float, float]],
         spots = _first_fit(inner, blocked, sizes, order, rows)
         if spots is not None:
             return spots
+    return _search(inner, blocked, sizes) if search else None
+
+
+#: how many placements of a box :func:`pack`'s ``search`` makes at most (a sheet of six
+#: views: 650 for every order of the five after the first, by rows and by columns)
+SEARCH = 800
+
+
+def _search(inner: Box, blocked: list[Box], sizes: Sequence[tuple[float, float]]
+            ) -> list[tuple[float, float]] | None:
+    """Spots for the boxes from the first order that packs them of those with the first
+    box first, by rows then by columns, each prefix of an order placed once; None where
+    none does within :data:`SEARCH` placements."""
+    n = len(sizes)
+    budget = SEARCH
+    for rows in (True, False):
+        placed: dict[tuple[int, ...], _State | None] = {}
+        for rest in itertools.permutations(range(1, n)):
+            order = (0, *rest)
+            state: _State | None = ((None,) * n, ())
+            for k, i in enumerate(order):
+                key = order[:k + 1]
+                if key not in placed:
+                    if budget <= 0:
+                        return None
+                    budget -= 1
+                    placed[key] = _put(inner, blocked, sizes, rows, {}, state, i)
+                state = placed[key]
+                if state is None:
+                    break
+            if state is not None:
+                return list(state[0])  # type: ignore[arg-type]
     return None
 
 
@@ -253,10 +289,11 @@ def in_order(n: int, rank: Sequence[int]):
 
 
 def _pack_pairs(inner: Box, blocked: list[Box], sizes: Sequence[tuple[float, float]],
-                pairs: Sequence[tuple[int, int]]) -> list[tuple[float, float]] | None:
+                pairs: Sequence[tuple[int, int]], tries: int = TRIES
+                ) -> list[tuple[float, float]] | None:
     """:func:`pack` with each of ``pairs`` together and in order; None where no order
     tried packs them so. The orders tried without pairs first, then every order of the
-    units with the pairs in theirs, up to :data:`TRIES` (a sheet's views are few)."""
+    units with the pairs in theirs, up to ``tries`` (a sheet's views are few)."""
     first = {i: (i, j) for i, j in pairs}
     seconds = {j for _, j in pairs}
     units = [list(first[i]) if i in first else [i] for i in range(len(sizes))
@@ -275,7 +312,7 @@ def _pack_pairs(inner: Box, blocked: list[Box], sizes: Sequence[tuple[float, flo
     # where no order keeps its pairs, placing every order from its first box)
     placed: dict[tuple[bool, tuple[int, ...]], _State | None] = {}
     tried = set()
-    for order, rows in itertools.chain(_orders(units, sizes), itertools.islice(every(), TRIES)):
+    for order, rows in itertools.chain(_orders(units, sizes), itertools.islice(every(), tries)):
         if (order, rows) in tried:
             continue
         tried.add((order, rows))
@@ -333,14 +370,97 @@ def reads_before(a: Box, b: Box) -> bool:
     return ahead(a, b) and not ahead(b, a)
 
 
-def place_views(sheet: Sheet, views, together: Sequence[tuple[str, str]] = ()) -> list[Placed]:
+def place_views(sheet: Sheet, views, together: Sequence[tuple[str, str]] = (),
+                keep: bool = False, search: bool = False) -> list[Placed]:
     """Positions for ``views`` (see :func:`pack`), the views named in each of
-    ``together`` kept together where they fit so; :class:`LayoutError` if they do not
-    all fit."""
-    spots = pack(sheet, [(v.w, v.h) for v in views], pairs_of([v.name for v in views], together))
+    ``together`` kept together where they fit so, or (``keep``) always: where no order
+    of :func:`pack`'s search keeps each pair together in reading order, each pair is
+    packed as one box (:func:`pack_units`). :class:`LayoutError` if they do not all fit
+    (``keep``: together). ``search``: as :func:`pack`'s."""
+    sizes = [(v.w, v.h) for v in views]
+    pairs = pairs_of([v.name for v in views], together)
+    if keep and pairs:
+        spots = pack_kept(sheet, sizes, pairs, search)
+    else:
+        spots = pack(sheet, sizes, pairs, search=search)
     if spots is None:
-        raise LayoutError(*_why_not(sheet, views))
+        raise LayoutError(*why_not(sheet, views))
     return [Placed(v, Rect(x, y, v.w, v.h)) for v, (x, y) in zip(views, spots, strict=True)]
+
+
+def pair_box(a: tuple[float, float], b: tuple[float, float]) -> tuple[bool, tuple[float, float]]:
+    """How two boxes kept together stand, and the box round them: (True, …) for ``b``
+    right of ``a``, their tops level, where that box is the smaller; (False, …) for ``b``
+    under ``a``, their left sides level.
+
+    >>> pair_box((100.0, 40.0), (80.0, 50.0))
+    (True, (186.0, 50.0))
+    >>> pair_box((200.0, 20.0), (100.0, 100.0))
+    (False, (200.0, 126.0))
+    """
+    beside = (a[0] + GAP + b[0], max(a[1], b[1]))
+    under = (max(a[0], b[0]), a[1] + GAP + b[1])
+    return (True, beside) if beside[0] * beside[1] <= under[0] * under[1] else (False, under)
+
+
+def unit_sizes(sizes: Sequence[tuple[float, float]], pairs: Sequence[tuple[int, int]]
+               ) -> tuple[list[tuple[float, float]], list[list[int]]]:
+    """The boxes packed when each of ``pairs`` is one box (:func:`pair_box`), in the order
+    of their first boxes, and the boxes each unit holds."""
+    partner = dict(pairs)
+    seconds = set(partner.values())
+    out, units = [], []
+    for i, size in enumerate(sizes):
+        if i in seconds:
+            continue
+        if i in partner:
+            out.append(pair_box(size, sizes[partner[i]])[1])
+            units.append([i, partner[i]])
+        else:
+            out.append(size)
+            units.append([i])
+    return out, units
+
+
+#: how many orders :func:`pack_kept` tries for the pairs in reading order at most
+KEPT_TRIES = 720
+
+
+def pack_kept(sheet: Sheet, sizes: Sequence[tuple[float, float]],
+              pairs: Sequence[tuple[int, int]], search: bool = False
+              ) -> list[tuple[float, float]] | None:
+    """Spots for boxes of ``sizes`` with each of ``pairs`` together, always: each pair
+    as one box (:func:`pack_units`), taken where the pairs come so in reading order;
+    else the first order of :func:`pack`'s search for pairs (up to :data:`KEPT_TRIES`)
+    that puts them in reading order, or that packing after all. None where the pairs
+    do not fit together."""
+    spots = pack_units(sheet, sizes, pairs, search)
+    if spots is None:
+        return None
+    if _in_reading_order([(*spot, *size) for spot, size in zip(spots, sizes, strict=True)], pairs):
+        return spots
+    inner, blocked = field(sheet)
+    return _pack_pairs(inner, blocked, sizes, pairs, KEPT_TRIES) or spots
+
+
+def pack_units(sheet: Sheet, sizes: Sequence[tuple[float, float]],
+               pairs: Sequence[tuple[int, int]], search: bool = False
+               ) -> list[tuple[float, float]] | None:
+    """:func:`pack` with each of ``pairs`` as one box, the second box right of the first
+    or under it as :func:`pair_box` stands them: a pair is never parted, though the
+    pairs may not come in reading order; None where they do not all fit so."""
+    boxes, units = unit_sizes(sizes, pairs)
+    spots = pack(sheet, boxes, search=search)
+    if spots is None:
+        return None
+    out: list[tuple[float, float]] = [(0.0, 0.0)] * len(sizes)
+    for (x, y), unit in zip(spots, units, strict=True):
+        out[unit[0]] = (x, y)
+        if len(unit) == 2:
+            i, j = unit
+            beside, _ = pair_box(sizes[i], sizes[j])
+            out[j] = (x + sizes[i][0] + GAP, y) if beside else (x, y + sizes[i][1] + GAP)
+    return out
 
 
 def pairs_of(names: Sequence[str], together: Sequence[tuple[str, str]]) -> list[tuple[int, int]]:
@@ -407,7 +527,7 @@ def describe(view) -> str:
     return words.get(kind, f"the view {view.name!r}") + of
 
 
-def _why_not(sheet: Sheet, views) -> tuple[str, str]:
+def why_not(sheet: Sheet, views) -> tuple[str, str]:
     """Why the views found no place, and the option to change (see
     :class:`LayoutError`)."""
     x0, y0, x1, y1 = Sheet("A0").drawing_area().bounds

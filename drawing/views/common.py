@@ -27,16 +27,18 @@ from drawing.scene import (
     Text,
     flatten,
     index_markup,
+    parse_markup,
     translate,
 )
 from drawing.styles import LineType
-from drawing.text import LINE_PITCH, text_box
+from drawing.text import LINE_PITCH, SLANT, SPACING, runs_width, text_box, text_width
 
 __all__ = [
     "BLANK_PAD",
     "CAPTION",
     "CAPTION_OVER",
     "CAPTION_STYLES",
+    "EQUATION",
     "HEAD",
     "JOINT_R",
     "LETTER",
@@ -44,6 +46,7 @@ __all__ = [
     "SHARED",
     "SMALL_CAPTION",
     "WORDS",
+    "Equation",
     "View",
     "assembled",
     "bbox",
@@ -52,6 +55,7 @@ __all__ = [
     "captioned",
     "captioned_width",
     "centred",
+    "equation_items",
     "finish",
     "notation",
     "per_mm",
@@ -81,6 +85,98 @@ BLANK_PAD = 0.5  # the break in thin lines around a dimension's value, mm
 #: would read as one word ("g₁g₃")
 SHARED = 2.0
 HEAD = {"head_len": 3.5, "head_width": 1.0}
+#: mm: the letters of the vector equations under a plan, their terms and directions: GOST
+#: 2.304's 3.5, whose indices (0.7 of it, 2.45 mm) keep above its 1.8 mm floor
+EQUATION = 3.5
+
+
+@dataclass(frozen=True)
+class Equation:
+    """A vector equation as the course writes it under its plan: each term with a bar
+    over its letter, and under the term its direction, "⊥ BA_{3}", "∥ x-x", "∥ A_{3}B"
+    (a normal component, from the point to the centre), "0" (a fixed point), or the
+    plan's segment that draws a vector known before ("pc"); the signs between the terms.
+
+    >>> eq = Equation(("V_{C}", "V_{B}", "V_{CB}"), ("∥ x-x", "⊥ AB", "⊥ CB"), ("=", "+"))
+    >>> eq.text
+    'V_{C} = V_{B} + V_{CB}'
+    """
+
+    terms: tuple[str, ...]  # markup: "a^n_{A3B}"
+    directions: tuple[str, ...]  # markup, "" where none is written
+    signs: tuple[str, ...]  # between the terms: "=" or "+"
+
+    @property
+    def text(self) -> str:
+        """The terms and signs in one line of markup, without bars or directions."""
+        out = [self.terms[0]]
+        for sign, term in zip(self.signs, self.terms[1:], strict=True):
+            out += [sign, term]
+        return " ".join(out)
+
+
+#: mm: the room each side of an equation's sign, and above the capitals to its bars
+SIGN_GAP = 1.5
+BAR_RISE = 0.7
+#: the height of the drawing font's lowercase letters, in h: a bar over "a" stands over it
+X_HEIGHT = 0.75
+
+
+def _direction_items(text: str, x: float, y: float, size: float) -> tuple[list[Item], float]:
+    """A direction written from ``x`` on the baseline ``y``: "⊥ …" and "∥ …" with the
+    sign drawn as strokes (the drawing font has neither glyph), slanted as the letters
+    are; the items and their width."""
+    lean = SLANT * size / 2  # the letters lean about their middle line (drawing.svg)
+    sign, rest = (text[0], text[1:].lstrip()) if text[:1] in "⊥∥" else ("", text)
+    items: list[Item] = []
+    w = 0.0
+    if sign == "⊥":
+        a = 0.6 * size
+        items += [Segment((x + a / 2 - lean, y), (x + a / 2 + lean, y - size), LineType.THIN),
+                  Segment((x - lean, y), (x + a - lean, y), LineType.THIN)]
+        w = a + (SPACING + 0.3) * size
+    elif sign == "∥":
+        for dx in (0.15 * size, 0.45 * size):
+            items.append(Segment((x + dx - lean, y), (x + dx + lean, y - size), LineType.THIN))
+        w = (0.6 + SPACING + 0.3) * size
+    if rest:
+        t = Text((x + w, y), rest, size=size, markup=True)
+        items.append(t)
+        w += runs_width(t.runs(), size)
+    return items, w
+
+
+def _direction_width(text: str, size: float) -> float:
+    return _direction_items(text, 0.0, 0.0, size)[1] if text else 0.0
+
+
+def equation_items(eq: Equation, x: float, y: float, size: float = EQUATION) -> list[Item]:
+    """``eq`` written from ``x``: its terms on the baseline ``y``, each with a bar over
+    its letter and centred over its direction, which stands one line under it (the
+    line's pitch, :data:`~drawing.text.LINE_PITCH`, below)."""
+    items: list[Item] = []
+    lean = SLANT * size / 2
+    below = y + size * LINE_PITCH
+    for k, (term, direction) in enumerate(zip(eq.terms, eq.directions, strict=True)):
+        if k:
+            sign = eq.signs[k - 1]
+            items.append(Text((x + SIGN_GAP, y), sign, size=size))
+            x += 2 * SIGN_GAP + text_width(sign, size)
+        runs = parse_markup(term)
+        tw, dw = runs_width(runs, size), _direction_width(direction, size)
+        col = max(tw, dw)
+        tx = x + (col - tw) / 2
+        items.append(Text((tx, y), term, size=size, markup=True))
+        letter = runs[0].text
+        rise = (size if letter[:1].isupper() else X_HEIGHT * size) + BAR_RISE
+        bar_y = y - rise
+        shift = SLANT * rise - lean  # the lean at the bar's height
+        items.append(Segment((tx + shift, bar_y), (tx + shift + text_width(letter, size), bar_y),
+                             LineType.THIN))
+        if direction:
+            items += _direction_items(direction, x + (col - dw) / 2, below, size)[0]
+        x += col
+    return items
 
 WORDS = {
     "ru": {
@@ -284,22 +380,28 @@ def _leader(point, end) -> Segment:
     return Segment(start, end, LineType.THIN)
 
 
-def captioned(name: str, items: list[Item], bounds, caption: str, under: list[str],
+def captioned(name: str, items: list[Item], bounds, caption: str, under: list,
               under_size: float = 2.5) -> View:
     """The view of ``items`` (within ``bounds``) under ``caption``, ``under`` below in
-    ``under_size`` mm letters (2.5: the sheet's equations; 3.5 keeps their indices at
-    GOST 2.304's 1.8 mm or more), each line 3 mm under the one above."""
+    ``under_size`` mm letters (3.5 keeps their indices at GOST 2.304's 1.8 mm or more),
+    each line 3 mm under the one above: a line of text, or an :class:`Equation` with
+    its bars and, one line under it, its terms' directions."""
     x0, _y0, _x1, y1 = bounds
-    lines = []
+    lines: list[Item] = []
     y = y1 + 2.0
     for line in under:
+        if isinstance(line, Equation):
+            y += under_size + BAR_RISE + 4.5
+            lines += equation_items(line, x0, y, under_size)
+            y += under_size * LINE_PITCH
+            continue
         y += under_size + 3.0
         lines.append(Text((x0, y), notation(line), size=under_size, markup=True,
                           baseline="alphabetic"))
     return assembled(name, (items, lines), bounds, caption, "fit")
 
 
-def assembled(name: str, parts: tuple[list[Item], list[Text]], bounds, caption: str,
+def assembled(name: str, parts: tuple[list[Item], list[Item]], bounds, caption: str,
                style: str) -> View:
     """The view of ``parts`` (the drawing within ``bounds``, the lines under it) with
     ``caption`` over ``bounds`` set as ``style`` says (:data:`CAPTION_STYLES`), in its
@@ -311,7 +413,7 @@ def assembled(name: str, parts: tuple[list[Item], list[Text]], bounds, caption: 
     bx0, by0, bx1, by1 = min(bx0, x0), min(by0, y0), max(bx1, x1), max(by1, y1)
     size = items[len(drawing)].size
     items = shifted(items, -bx0 + 1, -by0 + 1)
-    widest = max([0.0, *(text_box(t).bounds[2] - x0 for t in under)])
+    widest = max([0.0, *(x - x0 for x, _ in _coords(list(under)))])
     return View(name, items, bx1 - bx0 + 2, by1 - by0 + 2, (x1 - x0, y1 - y0),
                 (width_of(centred((0, 0), caption, CAPTION)), widest), caption, size,
                 (parts, bounds))

@@ -117,7 +117,7 @@ def _draw_diagrams(mech, cycle, lang, width, height, linear, s, v, a, flip=1.0) 
         items.append(Text((2, y - 6), axis, size=3.5, baseline="hanging", markup=True))
         items.append(Text((width + 6, y_zero - 1.5), "φ", size=3.5, anchor="end"))
         scale = f"μ_{{{name}}} = {num(mu, 3, lang)} {per_mm(unit, lang)}"
-        items.append(start_anchored(Text((width - 2, y - 6), scale, size=2.5, anchor="end",
+        items.append(start_anchored(Text((width - 2, y - 6), scale, size=3.5, anchor="end",
                                          baseline="hanging", markup=True)))
         y += h + 16.0
     placed, bounds = _numbers(items, numbers)

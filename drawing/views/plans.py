@@ -26,16 +26,28 @@ plan names its forces, G₄, R₃₄, where its points' letters say little).
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Callable, Sequence
 
 from drawing.labels import LabelRequest
 from drawing.scene import Arrow, Circle, Group, Item, Segment, shared_label
 from drawing.styles import LineType
-from drawing.views.common import HEAD, LETTER, WORDS, View, finish, per_mm, shared_points
+from drawing.views.common import (
+    EQUATION,
+    HEAD,
+    LETTER,
+    WORDS,
+    Equation,
+    View,
+    finish,
+    notation,
+    per_mm,
+    shared_points,
+)
 from plans.fmt import notation_in, num
-from plans.plan.solution import image_sides
+from plans.plan.solution import image_sides, plan_name
 
-__all__ = ["NAME_MM", "plan_view", "vector_plan_view"]
+__all__ = ["NAME_MM", "plan_equations", "plan_view", "vector_plan_view"]
 
 def _plan_xy(value: complex, mu: float) -> tuple[float, float]:
     z = value / mu
@@ -55,7 +67,69 @@ def plan_view(sol, kind: str, tag: str, lang: str = "ru", label: str | None = No
     mu_name = "μ_v" if kind == "velocity" else "μ_a"
     caption = f"{w[kind]} ({label or tag}), {mu_name} = {num(plan.mu, 4, lang)} {unit}"
     return vector_plan_view(plan, f"{kind}-{tag}", caption, "v" if kind == "velocity" else "a",
-                            tag, lang, sides=image_sides(plan), sizing=sizing)
+                            tag, lang, sides=image_sides(plan), sizing=sizing,
+                            under=plan_equations(plan, sol.mechanism.driver, lang),
+                            under_size=EQUATION)
+
+
+def plan_equations(plan, driver, lang: str = "ru") -> list[Equation]:
+    """The vector equations of ``plan``'s intersections as the course writes them under
+    the plan (:class:`~drawing.views.common.Equation`), each term's direction read off
+    the recorded construction: a line's relation for the term it carries ("⊥ BA3",
+    "∥ x-x"), the crank's for its pin (⊥ OA, its acceleration ∥ AO, from the pin to the
+    pivot), "0" for a fixed point, "∥ CB" for a normal component (from the point to the
+    centre), the Coriolis term across its sliding term's guide, the plan's segment for a
+    point found before ("pc"); a term whose direction the construction does not fix
+    (the point sought, found where the two lines cross) has none under it."""
+    out = []
+    for p in plan.points.values():
+        src = p.source
+        if src.kind != "intersection" or not src.equation:
+            continue
+        main = src.equation.split(";")[0]
+        terms, signs = [], []
+        for k, side in enumerate(main.split(" = ")):
+            for j, term in enumerate(side.split(" + ")):
+                if k or j:
+                    signs.append("+" if j else "=")
+                terms.append(term.strip())
+        carried = {line.unknown: line.relation for line in src.lines}
+        # the point sought has a direction only where a line carries it (∥ x-x)
+        directions = [carried.get(terms[0], "")]
+        directions += [_direction(term, plan, driver, carried) for term in terms[1:]]
+        out.append(Equation(tuple(notation(notation_in(t, lang)) for t in terms),
+                            tuple(_direction_markup(d) for d in directions), tuple(signs)))
+    return out
+
+
+def _direction(term: str, plan, driver, carried: dict[str, str]) -> str:
+    """The direction written under ``term`` (see :func:`plan_equations`), plain."""
+    if term in carried:
+        return carried[term]
+    kind, _, rest = term.partition("^")
+    if rest:  # a component: a^n_CB, a^k_A3A
+        comp, _, pair = rest.partition("_")
+        if comp == "n":
+            return f"∥ {pair}"
+        if comp == "k":  # across the guide its relative (sliding) term runs along
+            along = carried.get(f"{kind}^r_{pair}", "")
+            return {"∥": "⊥", "⊥": "∥"}.get(along[:1], "") + along[1:] if along else ""
+        return ""
+    _, _, name = term.partition("_")
+    point = plan_name(name)
+    src = plan.points[point].source if point in plan.points else None
+    if point == plan.pole or (src is not None and src.kind == "pole"):
+        return "0"
+    if src is not None and src.kind == "driver" and name == driver.tip:
+        return (f"⊥ {driver.pivot}{driver.tip}" if plan.kind == "velocity"
+                else f"∥ {driver.tip}{driver.pivot}")
+    return f"{plan.pole}{point}" if src is not None else ""
+
+
+def _direction_markup(direction: str) -> str:
+    """A direction as markup, each point's number an index: "⊥ BA3" → "⊥ BA_{3}",
+    "∥ x3-x3" → "∥ x_{3}-x_{3}", "πs3" → "πs_{3}"."""
+    return re.sub(r"(?<=[^\W\d_])(\d+)", r"_{\1}", direction)
 
 
 def vector_plan_view(plan, name: str, caption: str, prefix: str, tag: str, lang: str = "ru",

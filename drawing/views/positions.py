@@ -4,8 +4,11 @@ sliders and guides, and the output's stroke H or swing ψ."""
 
 from __future__ import annotations
 
+import cmath
 import itertools
 import math
+from collections.abc import Sequence
+from dataclasses import dataclass
 
 import numpy as np
 import shapely
@@ -13,7 +16,7 @@ from shapely.geometry import Polygon
 
 from drawing.labels import LabelRequest
 from drawing.obstacles import obstacles_of
-from drawing.scene import Arrow, Circle, Hatch, Item, Polyline, Segment, Text, shared_label
+from drawing.scene import Arrow, Circle, Hatch, Item, Polyline, Segment, Text, name_markup, shared_label
 from drawing.styles import LineType
 from drawing.text import text_width
 from drawing.views.common import JOINT_R, LETTER, WORDS, View, finish, shared_points
@@ -24,7 +27,9 @@ from plans.fmt import num
 __all__ = [
     "SWING_AT",
     "SWING_R",
+    "AngleMark",
     "centre_of_mass",
+    "extreme_letters",
     "guide_dir",
     "guide_slots",
     "link_segments",
@@ -34,6 +39,7 @@ __all__ = [
     "support",
     "swing_arc",
     "swing_point",
+    "theta_mark",
     "to_sheet",
 ]
 
@@ -202,14 +208,20 @@ def support(xy: tuple[float, float]) -> list[Item]:
 
 
 def positions_view(sol, cycle, lang: str = "ru", sizing: bool = False,
-                   heavy: list[int] | None = None) -> View:
+                   heavy: list[int] | None = None, marks: Sequence[AngleMark] = ()) -> View:
     """Plan of positions at μl: the positions the plans are built for heavy, the cycle's
     other positions and the two extreme ones thin, trajectories, pivots, sliders, stroke
     H; the positions drawn are the engine's (:func:`plans.cycle.positions.drawn`, worked out
     once per solver). ``heavy``: the numbers of the cycle's positions the sheet draws
     plans for (``--plans``), drawn heavy and numbered, the points lettered on the first;
     the given position (``sol``'s), which has no plans then, is not drawn. None: the
-    given position heavy, the plans being its own."""
+    given position heavy, the plans being its own.
+
+    The inputs (the crank's ω1 as an arc arrow in its sense) and γ where it falls lowest
+    are drawn as :mod:`drawing.views.inputs` draws them; the extreme positions'
+    moving joints are lettered ′ and ″ as the note names them (H = D′D″·μl, ψ = ∠C′DC″),
+    ′ the one the working stroke starts from; θ and any other angle of ``marks``
+    (:class:`AngleMark`) are marked with their arcs."""
     mech, mu_l = sol.mechanism, sol.mu_l
     shown = drawn(sol.solver, cycle)
     main = _heavy_positions(sol, shown, heavy)
@@ -290,9 +302,9 @@ def positions_view(sol, cycle, lang: str = "ru", sizing: bool = False,
         labels.insert(0, LabelRequest(xy, shared_label(names), LETTER, "nw",
                                       blank=True))
     # the inputs drawn as such, γ marked where it falls lowest (drawing/views/inputs.py)
-    marks, marked = input_marks(sol, pos, to_sheet, lang)
+    inputs, marked = input_marks(sol, pos, to_sheet, lang)
     gamma_items, gamma_labels = gamma_marks(sol, cycle, pos, to_sheet, lang)
-    items += marks + gamma_items
+    items += inputs + gamma_items
     labels += marked + gamma_labels
     # stroke H of a linear output
     out = cycle.output
@@ -314,6 +326,17 @@ def positions_view(sol, cycle, lang: str = "ru", sizing: bool = False,
             labels.append(LabelRequest(along[0], f"{w['swing']} = {num(deg, 4, lang)}°",
                                        3.5, "n", markup=False, also=tuple(along[1:]),
                                        blank=True))
+    # the extreme positions lettered; θ and the other marks
+    if cycle.full_turn and cycle.stroke and ends:
+        labels += [LabelRequest(to_sheet(e[n], mu_l), name_markup(n) + prime, LETTER, "ne", blank=True)
+                   for e, prime in zip(extremes, ("′", "″"), strict=True)
+                   for n in extreme_letters(mech, e)]
+    theta = theta_mark(cycle, extremes, mech.driver, lang)
+    for mark in ([theta] if theta is not None else []) + list(marks):
+        lines, arc, req = _angle_items(mark, mu_l)
+        items += lines
+        over += arc
+        labels.append(req)
     caption = f"{w['positions']}, μ_l = {num(mu_l, 4, lang)} {w['m']}/{w['mm']}"
     under = [w["left_off"].format(k=", ".join(map(str, shown.left_off)),
                                   d=num(shown.limit, 2, lang))] if shown.left_off else []
@@ -409,3 +432,92 @@ def swing_arc(pivot: complex, a: complex, b: complex, mu_l: float) -> list[Item]
             out.append(Arrow(to_sheet(swing_point(pivot, a, b, inner), mu_l), end,
                              LineType.THIN, 3.0, 1.0))
     return out
+
+
+def extreme_letters(mech, pos: dict[str, complex]) -> list[str]:
+    """The points lettered in an extreme position: the moving joints (a point of two
+    links or more) and the output's point, but the crank's pin, which is lettered on the
+    heavy position and numbered on every one, and a point where it is (a slide block's
+    A3 on its pin A)."""
+    tip = pos.get(mech.driver.tip)
+    names = sorted({n for link in mech.links.values() for n in link.points
+                    if len(mech.links_of(n)) > 1 and n in pos and n not in mech.frame})
+    return [n for n in names if tip is None or abs(pos[n] - tip) > 1e-9 * (1 + abs(tip))]
+
+
+@dataclass(frozen=True)
+class AngleMark:
+    """An angle marked on the plan of positions (world coordinates, m): an arc about
+    ``vertex`` from its ray towards ``a`` to its ray towards ``b``, the shorter way, at
+    ``share`` of the shorter ray (within :data:`ARC_MM` on the sheet); the rays drawn
+    thin to :data:`RAY_PAST` beyond the arc, and ``label`` beside it. θ is one
+    (:func:`theta_mark`). The plan of positions takes any others
+    (``positions_view(marks=…)``), an angle a task asks for beyond θ, ψ and γ (those
+    three the view marks itself)."""
+
+    vertex: complex
+    a: complex
+    b: complex
+    label: str
+    share: float = 0.4
+
+
+#: mm: the radius of an angle's arc on the sheet, at least and at most; its rays run
+#: RAY_PAST beyond it
+ARC_MM = (10.0, 30.0)
+RAY_PAST = 4.0
+#: below this, θ (deg) is not marked: K = 1, the strokes take equal crank turns
+THETA_LEAST = 0.5
+
+
+def theta_mark(cycle, extremes, driver, lang: str = "ru") -> AngleMark | None:
+    """θ, the angle between the crank's positions at the two extremes, one turned
+    through 180° (the working stroke takes 180° + θ of the crank's turn): at the crank's
+    pivot, between the ray to the pin at ′ and the ray away from it at ″ (a crank-rocker's
+    connecting rod lies along both). None where the crank does not turn all the way, θ
+    is under :data:`THETA_LEAST` or an extreme position is not drawn."""
+    if (not cycle.full_turn or cycle.theta is None or math.degrees(cycle.theta) < THETA_LEAST
+            or len(extremes) != 2 or any(e is None for e in extremes)):
+        return None
+    first, second = extremes
+    o = first[driver.pivot]
+    u1, u2 = first[driver.tip] - o, -(second[driver.tip] - o)
+    return AngleMark(o, o + driver.length * u1 / abs(u1), o + driver.length * u2 / abs(u2),
+                     f"θ = {num(math.degrees(cycle.theta), 4, lang)}°", share=0.6)
+
+
+def _arc_points(vertex: complex, start: complex, turn: float, r: float, n: int = 48) -> list[complex]:
+    """``n`` + 1 points of the arc of radius ``r`` about ``vertex`` from the direction of
+    ``start`` through the angle ``turn`` (rad, counter-clockwise in the world)."""
+    u = start / abs(start)
+    return [vertex + r * u * cmath.exp(1j * turn * k / n) for k in range(n + 1)]
+
+
+def _angle_items(mark: AngleMark, mu_l: float) -> tuple[list[Item], list[Item], LabelRequest]:
+    """(the rays, the arc with its arrowheads, the request for its label) of ``mark``."""
+    v = mark.vertex
+    ra, rb = mark.a - v, mark.b - v
+    turn = cmath.phase(rb / ra)  # the shorter way round
+    r_mm = min(max(mark.share * min(abs(ra), abs(rb)) / mu_l, ARC_MM[0]), ARC_MM[1])
+    r = r_mm * mu_l
+    rays = [Segment(to_sheet(v, mu_l), to_sheet(v + (r_mm + RAY_PAST) * mu_l * d / abs(d), mu_l),
+                    LineType.THIN) for d in (ra, rb)]
+    pts = [to_sheet(z, mu_l) for z in _arc_points(v, ra, turn, r)]
+    length = sum(math.dist(p, q) for p, q in itertools.pairwise(pts))
+    arc: list[Item] = [Polyline(pts, LineType.THIN)]
+    if length > 8.0:  # room for the two 3 mm heads
+        t = 3.0 / length
+        for end, inner in ((pts[0], t), (pts[-1], 1 - t)):
+            at = to_sheet(_arc_points(v, ra, turn * inner, r, 1)[-1], mu_l)
+            arc.append(Arrow(at, end, LineType.THIN, 3.0, 1.0))
+    along = [to_sheet(_arc_points(v, ra, turn * t, r, 1)[-1], mu_l) for t in SWING_AT]
+    out = to_sheet(_arc_points(v, ra, turn / 2, r + 1.0, 1)[-1], mu_l)  # outward from v
+    prefer = _compass(out[0] - along[0][0], out[1] - along[0][1])
+    return rays, arc, LabelRequest(along[0], mark.label, 3.5, prefer, markup=False,
+                                   also=tuple(along[1:]), blank=True)
+
+
+def _compass(dx: float, dy: float) -> str:
+    """The compass direction on the sheet (y down) nearest to (dx, dy)."""
+    a = math.degrees(math.atan2(-dy, dx)) % 360.0
+    return ("e", "ne", "n", "nw", "w", "sw", "s", "se")[int((a + 22.5) // 45) % 8]

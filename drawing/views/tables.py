@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from drawing.scene import Item, Segment, Text, name_markup
 from drawing.styles import LineType
 from drawing.text import LINE_PITCH, SLANT, text_box, text_width, wrap_words
@@ -12,12 +14,12 @@ __all__ = ["PART_GAP", "note_view", "omega_table_view", "segments_table_view", "
 
 def table_view(name: str, caption: str, header: list[str], rows: list[list[str]],
                widths: list[float], row_h: float = 7.0, parts: int = 1, sizing: bool = False,
-               body: float = 2.5) -> View:
+               body: float | Sequence[float] = 2.5) -> View:
     """A table under its caption; ``parts`` > 1 sets its rows in that many tables side
     by side, each under the header (a tall table on a small sheet). ``sizing``: its lines
     only (every cell's text is fitted into its cell), for its size. The cells are
-    markup (``R^τ_{34}``), the header's 3.5 mm, the others' ``body`` mm (3.5 keeps
-    indices at GOST 2.304's 1.8 mm or more)."""
+    markup (``R^τ_{34}``), the header's 3.5 mm, the others' ``body`` mm, or each
+    column's (3.5 keeps indices at GOST 2.304's 1.8 mm or more)."""
     items: list[Item] = []
     total_w = sum(widths)
     per = -(-len(rows) // max(1, parts))  # rows of each part, the last one's fewer
@@ -34,7 +36,7 @@ PART_GAP = 6.0
 
 
 def _grid(header: list[str], rows: list[list[str]], widths: list[float], row_h: float,
-          lines_only: bool = False, body: float = 2.5) -> list[Item]:
+          lines_only: bool = False, body: float | Sequence[float] = 2.5) -> list[Item]:
     """The lines and cells of one table, its top-left corner at (0, 0)."""
     items: list[Item] = []
     total_w = sum(widths)
@@ -46,10 +48,11 @@ def _grid(header: list[str], rows: list[list[str]], widths: list[float], row_h: 
     for wd in [0.0, *widths]:
         x += wd
         items.append(Segment((x, 0), (x, n * row_h), LineType.MAIN))
+    sizes = [body] * len(widths) if isinstance(body, int | float) else list(body)
     for r, row in enumerate([] if lines_only else [header, *rows]):
         x = 0.0
-        for cell, wd in zip(row, widths, strict=True):
-            size = body if r else 3.5
+        for cell, wd, size in zip(row, widths, sizes, strict=True):
+            size = size if r else 3.5
             pos = (x + wd / 2, r * row_h + row_h / 2)
             t = centred(pos, cell, size, "middle")
             bw = text_box(t).bounds
@@ -90,9 +93,15 @@ def segments_table_view(sols: list[tuple[str, object]], lang: str = "ru", parts:
             else:
                 row += ["—", "—"]
         rows.append(row)
-    widths = [40.0] + [22.0, 28.0] * len(sols)
+    widths = [SEGMENT_W] + [22.0, 28.0] * len(sols)
+    # the segments' names and their vectors' in 3.5 mm letters (their indices 2.45 mm);
+    # the numbers, which have none, in 2.5 mm
     return table_view("segments", w["segments"], header, rows, widths, row_h=6.0, parts=parts,
-                  sizing=sizing)
+                      sizing=sizing, body=[3.5] + [2.5] * (2 * len(sols)))
+
+
+#: mm: the width of the segments table's first column, "n₁a₃: a^τ_A3B" in 3.5 mm letters
+SEGMENT_W = 46.0
 
 
 def omega_table_view(sols: list[tuple[str, object]], lang: str = "ru") -> View:
