@@ -216,7 +216,7 @@ def views_of_any_size(mech, solver, cycle, lang) -> AnySize:
     if curves is not None:
         return AnySize(shown, curves, [])
     why = (no_full_turn(cycle, lang, mech.driver) if not cycle.full_turn else
-           "no stroke of the output" if lang == "en" else "нет хода выходного звена")
+           WORDS[lang]["no_stroke"])
     return AnySize(shown, None, [WORDS[lang]["no_diagrams"] + why[0].lower() + why[1:]])
 
 

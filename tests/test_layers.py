@@ -190,3 +190,30 @@ def test_no_module_is_much_over_600_lines_without_a_reason(mod):
         return
     doc = ast.get_docstring(ast.parse(text)) or ""
     assert "lines" in doc and "because" in doc, f"{mod}: {lines} lines, and its docstring gives no reason"
+
+
+def _forks(tree) -> list[int]:
+    """Lines that compare a language with a literal ("if lang == 'ru'"): a fork by language."""
+    out = []
+    for node in ast.walk(tree):
+        if (isinstance(node, ast.Compare) and len(node.ops) == 1
+                and isinstance(node.ops[0], ast.Eq | ast.NotEq)):
+            sides = (node.left, node.comparators[0])
+            named = [s for s in sides if isinstance(s, ast.Name | ast.Attribute)]
+            literal = [s for s in sides if isinstance(s, ast.Constant) and isinstance(s.value, str)]
+            if named and literal and (getattr(named[0], "id", None) or named[0].attr).endswith("lang"):
+                out.append(node.lineno)
+    return sorted(out)
+
+
+def test_words_are_tables_not_forks_by_language():
+    """A third language is a table, not an edit of every function (issue 20, item 4): no
+    module compares a language with a literal; each reads its package's words by language."""
+    bad = [f"{MODULES[mod].relative_to(ROOT)}:{line}" for mod, path in MODULES.items()
+           for line in _forks(ast.parse(path.read_text(encoding="utf-8")))]
+    assert bad == [], "\n".join(bad)
+
+
+def test_a_fork_by_language_is_seen():
+    assert _forks(ast.parse("x = 'ру' if lang == 'ru' else 'en'\nif self.lang != 'en': pass")) == [1, 2]
+    assert _forks(ast.parse("w = WORDS[lang]\nif kind == 'ru': pass")) == []

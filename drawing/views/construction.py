@@ -23,6 +23,7 @@ from drawing.views.positions import link_segments
 from plans.fmt import num
 from plans.kinematics.solver import Solver
 from plans.synthesis.words import WORDS as SYNTH_WORDS
+from plans.synthesis.words import grashof_in
 
 __all__ = ["WORDS", "construction_view", "extent", "family_view", "results_view"]
 
@@ -309,9 +310,7 @@ def results_view(design, check, mu_l: float, lang: str = "ru") -> View:
     line = w["check"].format(what=what, d=num(check.worst, 2, lang))
     items.append(Text((0, y + 6), line, 2.5, italic=False))
     if check.grashof:
-        items.append(Text((0, y + 11), check.grashof if lang == "en" else
-                          check.grashof.replace("crank-rocker", "кривошипно-коромысловый")
-                          .replace("Grashof", "Грасгоф").replace(".", ","), 2.5, italic=False))
+        items.append(Text((0, y + 11), grashof_in(check.grashof, lang), 2.5, italic=False))
     items = shifted(items, 0, 0)
     return _framed("results", items, w["results"])
 

@@ -88,7 +88,7 @@ def segments_table_view(sols: list[tuple[str, object]], lang: str = "ru", parts:
             plan = sol.velocity if kind == "v" else sol.acceleration
             if a in plan.points or a == plan.pole:
                 mm = plan.mm(a, b) if b in plan.points else float("nan")
-                unit = plan.unit if lang == "en" else (w["ms"] if kind == "v" else w["ms2"])
+                unit = w["ms"] if kind == "v" else w["ms2"]
                 row += [num(mm, 4, lang), f"{num(mm * plan.mu, 4, lang)} {unit}"]
             else:
                 row += ["—", "—"]

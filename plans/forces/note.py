@@ -12,7 +12,7 @@ from __future__ import annotations
 import cmath
 import math
 
-from plans.fmt import decimal, md_code, md_text, num
+from plans.fmt import decimal, md_code, md_text, num, unit
 from plans.forces.lever import joints
 from plans.forces.summary import Forces, rpm_of
 from plans.plan.values import plan_name
@@ -188,7 +188,7 @@ def force_note(F: Forces, lang: str = "en", section: int = 1, numbers: dict | No
     loads = mech.loads
     d = mech.driver
     m = sol.scalar
-    N = "N" if lang == "en" else "Н"
+    N = unit("N", lang)
 
     def n(x, digits=4):
         return num(float(x), digits, lang).replace("-", "−")
@@ -243,10 +243,10 @@ def force_note(F: Forces, lang: str = "en", section: int = 1, numbers: dict | No
         if ld is not None:
             eps = sol.epsilon[lid]
             para(t["phi_moment"].format(i=lid, sense=t["ccw" if ld.moment > 0 else "cw"]))
-            unit = "N·m" if lang == "en" else "Н·м"
+            Nm = unit("N·m", lang)
             es = kin.get(f"ε{lid}") or c(abs(eps))
             ms_ = shown[f"M_Φ{lid}"] = c(_shown(c(ms.J)) * _shown(es))
-            item(f"M_Φ{lid} = J_S{lid}·ε{lid} = {c(ms.J)}·{es} = {ms_} {unit}")
+            item(f"M_Φ{lid} = J_S{lid}·ε{lid} = {c(ms.J)}·{es} = {ms_} {Nm}")
             ends = joints(mech, lid)
             phi_force = by_name.get(f"Φ{lid}")
             if loads.couples == "shift" and phi_force is not None and abs(phi_force.force) > 0:
@@ -254,7 +254,7 @@ def force_note(F: Forces, lang: str = "en", section: int = 1, numbers: dict | No
                 size = abs(phi_force.force)
                 fs = shown.get(f"Φ{lid}") or c(size)
                 item(f"h = M_Φ{lid} / Φ{lid} = {ms_} / {fs} = "
-                     f"{n(_shown(ms_) / _shown(fs))} {'m' if lang == 'en' else 'м'}")
+                     f"{n(_shown(ms_) / _shown(fs))} {unit('m', lang)}")
             elif loads.couples == "pair" and ends is not None:
                 a, b = ends
                 length = abs(m.position[b] - m.position[a])
@@ -282,9 +282,9 @@ def force_note(F: Forces, lang: str = "en", section: int = 1, numbers: dict | No
             what = f"{c(size)}·{c(abs(mo) / size)}" if size else c(abs(mo))
             parts.append(("− " if mo > 0 else "+ ") + what)
     expr = " ".join(parts).removeprefix("+ ") or "0"
-    unit = "N·m" if lang == "en" else "Н·м"
+    Nm = unit("N·m", lang)
     My = c(fa.M_y)
-    item(f"M_у = −ΣM_{d.pivot}(F) = {expr} = {My} {unit}")
+    item(f"M_у = −ΣM_{d.pivot}(F) = {expr} = {My} {Nm}")
     para(t["Fy"].format(t=d.tip, O=d.pivot))
     shown["F_у"] = c(_shown(My) / _shown(c(fa.crank_length)))
     item(f"F_у = M_у / l_{d.pivot}{d.tip} = {My} / {c(fa.crank_length)} = {shown['F_у']} {N}")
@@ -338,7 +338,7 @@ def _resistance(out, t, ld, fa, loads, lang, item, n, N, shown: dict[str, str]):
 
 def _group(out, t, g, lang, item, n, N, sol, shown: dict[str, str]):
     grp = g.group
-    kind = grp.kind.name if lang == "en" else grp.kind.ru
+    kind = grp.kind.letters(lang)
     out.extend(["", f"**{t['group'].format(a=grp.links[0], b=grp.links[1], kind=kind)}**"])
     for eq in g.equations:
         _para(
