@@ -101,6 +101,9 @@ def gamma_marks(sol, cycle, pos: dict[str, complex], to_sheet, lang: str
                         mu_l) for k in range(25)]
         items.append(Polyline(pts, LineType.THIN))
         here = math.degrees(abs(sweep))  # the position drawn: γ from its own geometry
-        labels.append(LabelRequest(pts[12], f"γ = {num(here, 4, lang)}° (γmin = {num(deg, 4, lang)}°)",
-                                   3.5, "ne", markup=False, blank=True))
+        # two short labels, not one long one: each finds room of its own in a crowded plan
+        labels.append(LabelRequest(pts[12], f"γ = {num(here, 4, lang)}°", 3.5, "ne", markup=False,
+                                   blank=True))
+        labels.append(LabelRequest(pts[12], f"γ_{{min}} = {num(deg, 4, lang)}°", 3.5, "se", markup=True,
+                                   blank=True))
     return items, labels
