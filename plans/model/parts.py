@@ -26,7 +26,7 @@ from plans.model.fileformat import (
     quote,
     read_number,
 )
-from plans.model.mechanism import REFERENCES, SENSES, Driver, Guide, Link, Slider, phi_of
+from plans.model.mechanism import Guide, Link, Slider
 
 #: the point names whose plan letters would be the plans' own (the pole p, n1, k): no
 #: longer refused, they are written with a prime on the plans (p′, n1′, k′:
@@ -369,88 +369,3 @@ def read_guide(body, where, pr: Problems, links, frame, bad_links, slides: str |
         label = None
     return Guide(gl, point, direction, label or default_label, named_by_tool=not label)
 
-
-def read_driver(body, pr: Problems, links, frame, bad_links, frame_names) -> Driver | None:
-    """The crank; ``frame_names``: the names in [frame] (None: no [frame] at all)."""
-    where = "driver"
-    if not isinstance(body, dict):
-        got = "missing" if body is None else f"must be a table, got {quote(body)}"
-        pr.add(where, f"{got}: [driver] with link, angle_deg, and omega (rad/s) or rpm")
-        return None
-    check_keys(
-        body, {"link", "angle_deg", "from", "measured", "omega", "rpm", "sense"}, where, pr
-    )
-    raw = body.get("link", 1)
-    lid = link_id(raw)
-    if lid is None or lid not in links:
-        if lid not in bad_links and (links or lid is None):
-            pr.add(where + ".link", not_a_link(raw, "a moving link", f"moving links: {link_ids(links)}"))
-        return None
-    link = links[lid]
-    if link.axis is None:
-        if lid not in bad_links:
-            pr.add(f"links.{lid}.axis", f'missing: the crank (link {lid}) needs an axis from its fixed pivot '
-                                        'to its pin, e.g. ["O", "A"]')
-        return None
-    pivot, tip = link.axis
-    if frame_names is None or (pivot in frame_names and pivot not in frame):
-        pass  # [frame] missing, or the pivot's coordinates are wrong: said already
-    elif pivot not in frame:
-        swapped = (f' (the axis runs from the fixed pivot to the pin: ["{tip}", "{pivot}"]?)'
-                   if tip in frame else "")
-        pr.add(
-            f"links.{lid}.axis[0]",
-            f'the crank turns about "{pivot}", which is not a fixed point in [frame] '
-            f"(fixed points: {name_list(frame)}): the driver must be attached to the frame{swapped}",
-        )
-    else:
-        also = sorted(n for n in link.points if n in frame and n != pivot)
-        if also:
-            pr.add(
-                f"links.{lid}.points.{also[0]}",
-                f'the crank is hinged to the frame at "{pivot}" and at "{also[0]}": it could '
-                "not turn; a crank has one fixed pivot",
-            )
-    angle = read_number(body.get("angle_deg"), where + ".angle_deg", pr, unit="°")
-    ref = body.get("from", "+x")
-    if not isinstance(ref, str) or ref not in REFERENCES:
-        pr.add(where + ".from", f'{quote(ref, 20)} is not a reference: one of "+x", "+y", "-x", "-y"')
-        ref = "+x"
-    measured = body.get("measured", "ccw")
-    if not isinstance(measured, str) or measured not in SENSES:
-        pr.add(where + ".measured", f'{quote(measured, 20)}: must be "ccw" (counter-clockwise) or "cw" '
-                                    '(clockwise)')
-        measured = "ccw"
-    sense = body.get("sense", "ccw")
-    if not isinstance(sense, str) or sense not in SENSES:
-        pr.add(where + ".sense", f'{quote(sense, 20)}: must be "ccw" (counter-clockwise) or "cw" (clockwise)')
-        sense = "ccw"
-    rpm = None
-    if "omega" in body and "rpm" in body:
-        pr.add(where, "give omega (rad/s) or rpm, not both")
-        return None
-    if "rpm" in body:
-        rpm = read_number(body["rpm"], where + ".rpm", pr, positive=True, unit="rpm",
-                          low=RPM_MIN, high=SPEED[1])
-        omega = None if rpm is None else math.pi * rpm / 30.0
-    elif "omega" in body:
-        omega = read_number(body["omega"], where + ".omega", pr, positive=True, unit="rad/s",
-                        low=SPEED[0], high=SPEED[1])
-    else:
-        pr.add(where + ".omega", "missing: the crank speed, omega in rad/s or rpm")
-        omega = None
-    if angle is None or omega is None or tip not in link.points:
-        return None
-    phi = phi_of(angle, ref, measured)
-    return Driver(
-        link=lid,
-        pivot=pivot,
-        tip=tip,
-        length=link.points[tip].real,
-        phi=phi,
-        omega=SENSES[sense] * omega,
-        angle_deg=angle,
-        reference=ref,
-        measured=measured,
-        rpm=rpm,
-    )
