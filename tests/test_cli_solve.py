@@ -319,6 +319,10 @@ def _notes():
 
     yield "press", (ROOT / "samples" / "press.toml").read_text("utf-8")
     yield "fourbar", (ROOT / "samples" / "fourbar.toml").read_text("utf-8")
+    # inputs other than a uniform crank: two inputs with laws in time, an accelerating crank
+    yield "moving_support", (ROOT / "samples" / "moving_support.toml").read_text("utf-8")
+    yield "accelerating", (ROOT / "samples" / "fourbar.toml").read_text("utf-8").replace(
+        'sense = "ccw"', 'sense = "ccw"\nepsilon = 30')
     for name, sc in SCENES.items():
         if sc.toml:
             yield name, sc.toml

@@ -291,10 +291,14 @@ def _inputs_said(sol: Solution, acc: bool) -> bool:
             or (acc and any(float(ddq) != 0 for _, _, ddq in rates)))
 
 
-def _inputs(sol: Solution, plan, lang: str) -> list[str]:
-    """The known vectors every input lays off from the pole, and the plan's scale from the
-    first (its own velocity or acceleration): a crank's ω·l and ω²·l with ε·l ⊥ it where
-    it accelerates; a slider's velocity and acceleration along its guide, as given."""
+def _inputs(sol: Solution, plan, lang: str, said: dict[str, str]) -> tuple[list[str], str]:
+    """The known vectors every input lays off from the pole, and the value of the first
+    (its own velocity or acceleration), from which the plan's scale is taken: a crank's
+    ω·l and ω²·l with ε·l ⊥ it where it accelerates; a slider's velocity and acceleration
+    along its guide, as given. As the uniform crank's lines do, ω is carried with seven
+    digits, each result is worked out from the numbers its line shows and printed with six,
+    and the first value is the one the scale's line carries (``said``: the numbers printed
+    so far for this position)."""
     t, u = T[lang], UNITS[lang]
 
     def n(x, digits=4):
@@ -302,36 +306,44 @@ def _inputs(sol: Solution, plan, lang: str) -> list[str]:
 
     acc = plan.kind == "acceleration"
     unit = u["m/s²"] if acc else u["m/s"]
-    out = []
+    out: list[str] = []
+    first = ""
     for d, (_, dq, ddq) in zip(sol.mechanism.drivers, sol.mechanism.inputs_at(sol.phi), strict=True):
-        tip = plan_name(d.tip)
-        val = abs(plan.value(tip))
         if d.linear:
             x = abs(ddq if acc else dq)
             x = 0.0 if x <= 1e-12 * max(abs(dq), abs(ddq)) else x  # sin π of a harmonic law
             out += [t["as" if acc else "vs"].format(t=d.tip, i=d.link, g=d.guide.label), ""]
-            out.append(Step(f"{'a' if acc else 'V'}_{d.tip}", "", n(x), unit).markdown())
-        elif not acc:
-            out += [t["va"].format(t=d.tip, p=d.pivot, w=d.omega_sym), ""]
-            out.append(Step(f"V_{d.tip} = {d.omega_sym}·l_{d.pivot}{d.tip}",
-                            f"{n(abs(dq), 5)}·{n(d.length, 5)}", n(val), unit).markdown())
-        elif ddq == 0:
-            out += [t["aa"].format(t=d.tip, p=d.pivot, w=d.omega_sym), ""]
-            out.append(Step(f"a_{d.tip} = {d.omega_sym}²·l_{d.pivot}{d.tip}",
-                            f"{n(abs(dq), 5)}²·{n(d.length, 5)}", n(val), unit).markdown())
+            shown = n(x, 6)
+            out.append(Step(f"{'a' if acc else 'V'}_{d.tip}", "", shown, unit).markdown())
         else:
-            e = f"ε{d.link}"
-            an, at = dq * dq * d.length, abs(ddq) * d.length
-            out += [t["aa_eps"].format(t=d.tip, p=d.pivot, e=e, ev=n(abs(ddq)),
-                                       sense=t["sense"][1 if ddq > 0 else -1]), ""]
-            out.append(Step(f"a^n_{d.tip}{d.pivot} = {d.omega_sym}²·l_{d.pivot}{d.tip}",
-                            f"{n(abs(dq), 5)}²·{n(d.length, 5)}", n(an), unit).markdown())
-            out.append(Step(f"a^τ_{d.tip}{d.pivot} = {e}·l_{d.pivot}{d.tip}",
-                            f"{n(abs(ddq), 5)}·{n(d.length, 5)}", n(at), unit).markdown())
-            out.append(Step(f"a_{d.tip} = √((a^n_{d.tip}{d.pivot})² + (a^τ_{d.tip}{d.pivot})²)",
-                            f"√({n(an, 5)}² + {n(at, 5)}²)", n(val), unit).markdown())
+            ws, ls = said.setdefault(d.omega_sym, n(abs(dq), 7)), n(d.length, 5)
+            if not acc:
+                out += [t["va"].format(t=d.tip, p=d.pivot, w=d.omega_sym), ""]
+                shown = n(_shown(ws) * _shown(ls), 6)
+                out.append(Step(f"V_{d.tip} = {d.omega_sym}·l_{d.pivot}{d.tip}", f"{ws}·{ls}", shown,
+                                unit).markdown())
+            elif ddq == 0:
+                out += [t["aa"].format(t=d.tip, p=d.pivot, w=d.omega_sym), ""]
+                shown = n(_shown(ws) ** 2 * _shown(ls), 6)
+                out.append(Step(f"a_{d.tip} = {d.omega_sym}²·l_{d.pivot}{d.tip}", f"{ws}²·{ls}", shown,
+                                unit).markdown())
+            else:
+                e = f"ε{d.link}"
+                es = n(abs(ddq), 7)
+                an = n(_shown(ws) ** 2 * _shown(ls), 6)
+                at = n(_shown(es) * _shown(ls), 6)
+                shown = n(math.hypot(_shown(an), _shown(at)), 6)
+                out += [t["aa_eps"].format(t=d.tip, p=d.pivot, e=e, ev=es,
+                                           sense=t["sense"][1 if ddq > 0 else -1]), ""]
+                out.append(Step(f"a^n_{d.tip}{d.pivot} = {d.omega_sym}²·l_{d.pivot}{d.tip}",
+                                f"{ws}²·{ls}", an, unit).markdown())
+                out.append(Step(f"a^τ_{d.tip}{d.pivot} = {e}·l_{d.pivot}{d.tip}", f"{es}·{ls}", at,
+                                unit).markdown())
+                out.append(Step(f"a_{d.tip} = √((a^n_{d.tip}{d.pivot})² + (a^τ_{d.tip}{d.pivot})²)",
+                                f"√({an}² + {at}²)", shown, unit).markdown())
+        first = first or shown
         out.append("")
-    return out
+    return out, first
 
 
 def _drawn(length: float, mu_l: float, lang: str) -> str:
@@ -385,8 +397,8 @@ def _plan_section(sol: Solution, plan, lang: str, number: int, title: str = "",
     w1s = said.setdefault(d.omega_sym, n(w1, 7))
     ls = n(d.length, 5)
     if _inputs_said(sol, acc):  # a crank with ε, a slider input, two inputs: their own vectors
-        out += _inputs(sol, plan, lang)
-        vs = n(val, 6)
+        lines, vs = _inputs(sol, plan, lang, said)
+        out += lines
         out += [t["mua" if acc else "muv"].format(t=tip), ""]
     elif acc:
         out += [t["aa"].format(t=d.tip, p=d.pivot, w=d.omega_sym), ""]
