@@ -606,3 +606,63 @@ def test_the_sheet_draws_the_inputs_as_such_and_marks_gamma(tmp_path):
     sol = solve_position(piston)
     _, labels = input_marks(sol, sol.positions, to_sheet, "en")
     assert [lb.text for lb in labels] == ["V_{B}"]
+
+
+LAW_CRANK = """
+name = "crank-slider, the crank speeding up by a law in time"
+[frame]
+O = [0.0, 0.0]
+[driver]
+link = 1
+angle_deg = 30
+omega = 10
+epsilon = 5
+law = { kind = "accelerated" }
+[motion]
+time = 0.2
+span = [0.0, 0.5]
+[links.1]
+axis = ["O", "A"]
+points = { A = 0.1 }
+[links.2]
+axis = ["A", "B"]
+points = { B = 0.4, S2 = 0.2 }
+[links.3]
+points = { B = 0.0 }
+[[sliders]]
+link = 3
+point = "B"
+guide = { through = "O", angle_deg = 0 }
+[assembly]
+B = "right of A"
+[loads.links.2]
+mass = 2
+centre = "S2"
+[loads.links.3]
+mass = 3
+centre = "B"
+"""
+
+
+def test_a_law_in_time_is_an_instant_in_the_note_and_refused_by_the_force_analysis(capsys, tmp_path):
+    """The position of laws in time is an instant: the note's plan sections and forces said
+    "φ1 = 11.4592°" (the instant 0.2 s read as radians); the note now gives t and where the crank is
+    then (30° + 10·0.2 rad + 5·0.2²/2 rad = 150.321°), and the force analysis, which works
+    over a crank's turn, refuses the law in one line; the note with loads stops at the
+    kinematics with a warning, as it does for two inputs."""
+    from support import run
+
+    path = tmp_path / "law.toml"
+    path.write_text(LAW_CRANK, "utf-8")
+    want = 30 + math.degrees(10 * 0.2 + 0.5 * 5 * 0.2**2)
+    code, out, err = run(capsys, "report", path)
+    assert code == 0 and "## 6." not in out  # the note stops at the kinematics, and says why
+    assert err.strip().endswith("the note stops at the kinematics: driver.law: the force analysis works "
+                                "at a crank angle and over the crank's turn: a crank moved by a law in "
+                                "time is not balanced here; give its omega (and epsilon) at the position "
+                                "instead")
+    assert f"Position of the mechanism: t = 0.2 s (φ1 = {want:.6g}° from +x)." in out
+    assert "- `t = 0.2 s` (φ1 = 150.321° from +x)." in out and f"{want:.6g}" == "150.321"
+    code, out, err = run(capsys, "forces", path)
+    assert code == 2 and out == "" and len(err.strip().splitlines()) == 1
+    assert "driver.law: the force analysis works at a crank angle" in err

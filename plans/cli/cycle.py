@@ -258,11 +258,10 @@ def _transmission_head(t: CycleTable) -> dict:
 
 
 def _place_cols(t: CycleTable, x: float) -> dict:
-    """Where a row is: its crank angle (from +x and in the file's convention); a slider
-    input's travel; an instant and each input's coordinate."""
+    """Where a row is: its crank angle (from +x and in the file's convention, to 1e-9°: 180,
+    not 179.99999999999855); a slider input's travel; an instant and each input's coordinate."""
     mech = t.mechanism
     if t.cycle.kind == "turn":
-        # to 1e-9°: 180, not 179.99999999999855
         return {"phi_deg": json_angle(from_x(x)), "angle_deg": json_angle(mech.driver.file_angle(x))}
     if t.cycle.kind == "range":
         return {"s": x}

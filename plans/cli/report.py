@@ -19,7 +19,7 @@ from drawing.sheet1 import FIELDS, title_fields
 from plans.cli.common import EXIT_OK, add_source, mechanism_from, solved_position, warn
 from plans.errors import InputError
 from plans.forces.note import force_note
-from plans.forces.summary import solve_forces
+from plans.forces.summary import solve_forces, unbalanced
 from plans.note.report import note
 
 
@@ -45,11 +45,15 @@ def markdown(args, mech) -> tuple[str, list[str]]:
     solver = sol.solver
     numbers: dict = {}  # what the plans printed, for the force section to carry on as printed
     text = note(sol, args.lang, cycle, numbers=numbers)
-    if mech.loads is not None:  # the note goes on with the force analysis, section after section
+    warnings = list(sol.warnings)
+    why = unbalanced(mech) if mech.loads is not None else None
+    if why is not None:  # the note stops at the kinematics, and says why on stderr
+        warnings.append(f"the note stops at the kinematics: {why}")
+    elif mech.loads is not None:  # the note goes on with the force analysis, section after section
         section = sum(line.startswith("## ") for line in text.splitlines()) + 1
         text = text.rstrip("\n") + "\n\n" + force_note(solve_forces(sol, solver, cycle), args.lang, section,
                                                          numbers)
-    return text, list(sol.warnings)
+    return text, warnings
 
 
 #: an explanatory note's document code after its designation, by language (GOST 2.102's

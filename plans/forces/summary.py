@@ -61,16 +61,9 @@ def solve_forces(sol, solver, cycle, mu_F: float | None = None, catalogue=None) 
             'forces on them, e.g. [loads.links.3] mass = 10, J_S = 0.4, centre = "S3" '
             "(README: Loads)",
         )
-    if len(mech.drivers) > 1 or mech.driver.linear:
-        inputs = " and ".join(f"link {d.link}" for d in mech.drivers)
-        raise InputError(
-            mech.source,
-            (f"drivers: the force analysis balances one crank by its moment M_у: this mechanism has "
-             f"two inputs ({inputs}), and each would need a balancing load of its own")
-            if len(mech.drivers) > 1 else
-            (f"driver: the force analysis balances a crank by its moment M_у: link {mech.driver.link} "
-             "is a slider driven along its guide, whose balancing force is not worked out here"),
-        )
+    why = unbalanced(mech)
+    if why is not None:
+        raise InputError(mech.source, why)
     stroke: Stroke | None = stroke_of(mech, cycle, solver)
     fa = analyse(sol, loads, stroke, mu_F)
     lv = lever(sol, list(fa.loads))
@@ -111,3 +104,21 @@ def _drive(fa: ForceAnalysis, turn: ForceSweep | None, spec: Drive, catalogue, m
         ), why
     except InputError as exc:
         return None, str(exc).split(": ", 1)[-1]
+
+
+def unbalanced(mech) -> str | None:
+    """Why the force analysis does not balance ``mech`` (its field first), or None where it
+    does: it balances one crank by its moment M_у, at a crank angle and over the crank's
+    turn; two inputs, a slider input and a crank moved by a law in time are not worked out."""
+    if len(mech.drivers) > 1:
+        inputs = " and ".join(f"link {d.link}" for d in mech.drivers)
+        return (f"drivers: the force analysis balances one crank by its moment M_у: this mechanism has "
+                f"two inputs ({inputs}), and each would need a balancing load of its own")
+    if mech.driver.linear:
+        return (f"driver: the force analysis balances a crank by its moment M_у: link {mech.driver.link} "
+                "is a slider driven along its guide, whose balancing force is not worked out here")
+    if mech.timing is not None:  # its positions are instants, not crank angles
+        return ("driver.law: the force analysis works at a crank angle and over the crank's turn: a "
+                "crank moved by a law in time is not balanced here; give its omega (and epsilon) at the "
+                "position instead")
+    return None
