@@ -663,6 +663,11 @@ def test_a_law_in_time_is_an_instant_in_the_note_and_refused_by_the_force_analys
                                 "instead")
     assert f"Position of the mechanism: t = 0.2 s (φ1 = {want:.6g}° from +x)." in out
     assert "- `t = 0.2 s` (φ1 = 150.321° from +x)." in out and f"{want:.6g}" == "150.321"
+    # the law itself, in rad and s: 30° = 0.523599 rad, ε/2 = 2.5 rad/s²
+    assert "- `φ1(t) = 0.523599 + 10·t + 2.5·t² rad`, the law of input 1 in time;" in out
+    code, out, err = run(capsys, "report", SAMPLE, "--lang", "ru")
+    assert code == 0, err  # seed 003's l4(t): the support's travel s4 = 0.01·sin(ω1·t + 180°)
+    assert "- `s4(t) = 0,01·sin(15,6242·t + 180°) м`, закон движения начального звена 4 во времени;" in out
     code, out, err = run(capsys, "forces", path)
     assert code == 2 and out == "" and len(err.strip().splitlines()) == 1
     assert "driver.law: the force analysis works at a crank angle" in err

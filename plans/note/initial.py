@@ -6,13 +6,14 @@ time. Split from :mod:`plans.note.report`, which writes the sections after it.""
 from __future__ import annotations
 
 import itertools
+import math
 import re
 
 from plans.fmt import md_code, md_text, num
 from plans.note.words import UNITS, T
 from plans.plan.solution import Solution
 
-__all__ = ["initial_data", "inputs_there"]
+__all__ = ["initial_data", "inputs_there", "law_row"]
 
 
 def initial_data(sol: Solution, lang: str = "en") -> list[str]:
@@ -103,7 +104,10 @@ def initial_data(sol: Solution, lang: str = "en") -> list[str]:
         if ddq:
             sense = t["sense"][1 if ddq > 0 else -1]
             rows.append((f"ε{dd.link}", f"{n(abs(ddq))} {u['rad/s²']}", f", {sense}"))
-    if mech.timing is not None:  # laws in time: the position is an instant
+    if mech.timing is not None:  # laws in time: each law, then the instant studied
+        for dd in mech.drivers:
+            if dd.law is not None:
+                rows.append(law_row(dd, lang))
         rows.append(("t", f"{n(sol.phi)} {u['s']}", f" ({md_text(inputs_there(sol, lang))})"))
     else:
         at, _, conv = d.both(sol.phi, lang, sol.shown_from).partition(" ")
@@ -125,3 +129,35 @@ def inputs_there(sol: Solution, lang: str) -> str:
         q = 0.0 if dd.linear and abs(q) < 1e-12 else q
         parts.append(f"{dd.phi_sym} = {dd.both(q, lang)}")
     return "; ".join(parts)
+
+
+def law_row(d, lang: str = "en") -> tuple[str, str, str]:
+    """An input's law in time as the initial data gives it: ("s4(t)", "0 + 0,01·sin(15,6242·t
+    + 180°) м", ", the law of input 4 in time"), in the engine's units (m or rad, s)."""
+    t, u = T[lang], UNITS[lang]
+    law = d.law
+
+    def n(x):
+        return num(float(x), 6, lang).replace("-", "−")
+
+    def terms(*parts: tuple[float, str]) -> str:  # "a + b·t − c·t²", zero terms left out
+        out = ""
+        for x, tail in parts:
+            if x == 0:
+                continue
+            sign = "−" if x < 0 else "+"
+            out += (f" {sign} " if out else ("−" if x < 0 else "")) + n(abs(x)) + tail
+        return out or "0"
+
+    unit = u["m"] if d.linear else u["rad"]
+    if law.kind == "uniform":
+        formula = f"{terms((law.q0, ''), (law.rate, '·t'))} {unit}"
+    elif law.kind == "accelerated":
+        formula = f"{terms((law.q0, ''), (law.rate, '·t'), (law.accel / 2, '·t²'))} {unit}"
+    elif law.kind == "harmonic":
+        phase = math.degrees(law.phase)
+        arg = f"{n(law.omega)}·t" + (f" {'−' if phase < 0 else '+'} {n(abs(phase))}°" if phase else "")
+        formula = f"{terms((law.mean, ''), (law.amplitude, f'·sin({arg})'))} {unit}"
+    else:
+        return (f"{d.phi_sym}(t)", t["law_table"].format(n=len(law.t)), ", " + t["law"].format(i=d.link))
+    return f"{d.phi_sym}(t)", formula, ", " + t["law"].format(i=d.link)

@@ -18,6 +18,8 @@ T = {
         "given": "The mechanism's dimensions, loads, input speed and the position studied, as the file "
                  "gives them:",
         "offset": "offset of the guide {g} from {p}",
+        "law": "the law of input {i} in time",
+        "law_table": "by a table of {n} instants, a spline through them",
         "position": "Position of the mechanism: {phi} = {at}.",
         "structure": "Structural analysis",
         "cheb": "Degrees of freedom (mobility) by the Chebyshev–Grübler–Kutzbach formula:",
@@ -87,6 +89,8 @@ T = {
         "given": "Размеры звеньев, нагрузки, угловая скорость начального звена и исследуемое положение "
                  "механизма:",
         "offset": "смещение направляющей {g} от {p}",
+        "law": "закон движения начального звена {i} во времени",
+        "law_table": "по таблице из {n} моментов времени, сплайн через них",
         "position": "Положение механизма: {phi} = {at}.",
         "structure": "Структурный анализ механизма",
         "cheb": "Число степеней свободы по формуле П. Л. Чебышева:",
@@ -157,8 +161,8 @@ T = {
 UNITS = {
     "en": {"m": "m", "mm": "mm", "m/s": "m/s", "m/s²": "m/s²", "rad/s": "rad/s",
            "rad/s²": "rad/s²", "mu_l": "m/mm", "mu_v": "(m/s)/mm", "mu_a": "(m/s²)/mm", "deg": "°",
-           "kg": "kg", "kgm2": "kg·m²", "rpm": "rpm", "s": "s"},
+           "kg": "kg", "kgm2": "kg·m²", "rpm": "rpm", "s": "s", "rad": "rad"},
     "ru": {"m": "м", "mm": "мм", "m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с",
            "rad/s²": "рад/с²", "mu_l": "м/мм", "mu_v": "(м/с)/мм", "mu_a": "(м/с²)/мм", "deg": "°",
-           "kg": "кг", "kgm2": "кг·м²", "rpm": "об/мин", "s": "с"},
+           "kg": "кг", "kgm2": "кг·м²", "rpm": "об/мин", "s": "с", "rad": "рад"},
 }
