@@ -131,6 +131,31 @@ class Design:
         return self.solutions[self.chosen]
 
 
+def crank_marks(A: complex, C1: complex, C2: complex, a: float, b: float, th: float) -> list[Mark]:
+    """The crank's part of a construction by K, the same for a rocker's and a slider's
+    extremes C₁, C₂: the lines AC₁, AC₂ and θ between them, AE = AC₁ laid on AC₂, the
+    lengths AC₁ = BC − AB, AC₂ = BC + AB and EC₂ = 2·AB at μl, and the pivot A."""
+    E = (b - a) * (C2 - A) / abs(C2 - A)
+    return [
+        Mark("line", (A, C1)), Mark("line", (A, C2)),
+        Mark("angle", (A, C1, C2), "θ", th),
+        Mark("arc", (A, C1, E)), Mark("point", (E,), "E"),
+        Mark("length", (A, C1), "AC1 = BC − AB", b - a),
+        Mark("length", (A, C2), "AC2 = BC + AB", b + a),
+        Mark("length", (E, C2), "EC2 = 2·AB", 2 * a),
+        Mark("point", (A,), "A"),
+    ]
+
+
+def right_angle_marks(C1: complex, C2: complex, P: complex | None, th: float) -> list[Mark]:
+    """C₁P ⊥ C₁C₂ and ∠C₁C₂P = 90° − θ, whose circle on C₂P sees C₁C₂ under θ; none where
+    θ is 90° and P is at infinity."""
+    if P is None:
+        return []
+    return [Mark("line", (C1, P)), Mark("line", (C2, P)), Mark("point", (P,), "P"),
+            Mark("angle", (C2, C1, P), "90° − θ", math.pi / 2 - th)]
+
+
 def impossible(problem: Problem, key: str, message: str) -> InputError:
     """The one line of a requirement that no mechanism meets: the key (located to its line
     in a synthesis file), the condition it violates and the admissible range."""

@@ -37,8 +37,10 @@ from plans.synthesis.design import (
     Problem,
     Solution,
     acute,
+    crank_marks,
     impossible,
     merged,
+    right_angle_marks,
     theta_of,
 )
 from plans.synthesis.roots import SAMPLES, golden_min, ranges, roots
@@ -348,23 +350,13 @@ def _marks(fam: RockerFamily, at, a: float, b: float, side: int) -> tuple[Mark, 
     A = 0j
     P = at(fam.C1 + side * 1j * fam.chord / math.tan(th)) if th < math.pi / 2 - 1e-6 else None
     centre = at(fam.C1 + fam.chord / 2 + side * 1j * fam.chord / (2 * math.tan(th)))
-    E = (b - a) * (C2 - A) / abs(C2 - A)
-    marks = [
+    return (
         Mark("point", (D,), "D"), Mark("point", (C1,), "C1"), Mark("point", (C2,), "C2"),
         Mark("thin", (D, C1)), Mark("thin", (D, C2)),
         Mark("angle", (D, C1, C2), "ψ", fam.psi),
         Mark("line", (C1, C2)),
+        *right_angle_marks(C1, C2, P, th),
         Mark("circle", (centre, C1), "", None),
         Mark("point", (centre,), "O"),
-        Mark("line", (A, C1)), Mark("line", (A, C2)),
-        Mark("angle", (A, C1, C2), "θ", th),
-        Mark("arc", (A, C1, E)), Mark("point", (E,), "E"),
-        Mark("length", (A, C1), "AC1 = BC − AB", b - a),
-        Mark("length", (A, C2), "AC2 = BC + AB", b + a),
-        Mark("length", (E, C2), "EC2 = 2·AB", 2 * a),
-        Mark("point", (A,), "A"),
-    ]
-    if P is not None:
-        marks[7:7] = [Mark("line", (C1, P)), Mark("line", (C2, P)), Mark("point", (P,), "P"),
-                      Mark("angle", (C2, C1, P), "90° − θ", math.pi / 2 - th)]
-    return tuple(marks)
+        *crank_marks(A, C1, C2, a, b, th),
+    )

@@ -30,7 +30,18 @@ import math
 import numpy as np
 
 from plans.fmt import num
-from plans.synthesis.design import Curve, Design, Mark, Problem, Solution, impossible, merged, theta_of
+from plans.synthesis.design import (
+    Curve,
+    Design,
+    Mark,
+    Problem,
+    Solution,
+    crank_marks,
+    impossible,
+    merged,
+    right_angle_marks,
+    theta_of,
+)
 from plans.synthesis.roots import SAMPLES, golden_min, ranges, roots
 
 #: the requirement that fixes u, by the file's key: (figure of the members, closed form)
@@ -261,22 +272,12 @@ def _marks(fam: SliderFamily, at, a: float, b: float, e: float, A0: complex) -> 
     P = at(complex(-H / 2, H / math.tan(th))) if th < math.pi / 2 - 1e-6 else None
     F = at(complex(A0.real, 0.0))  # the foot of the offset
     across = at(complex(-A0.real, A0.imag))  # the offset line's other point on the circle
-    E = (b - a) * (C2 - A) / abs(C2 - A)
-    marks = [
+    return (
         Mark("guide", (C1, C2), "x-x"),
         Mark("point", (C1,), "C1"), Mark("point", (C2,), "C2"),
         Mark("length", (C1, C2), "H", H),
         Mark("circle", (centre, C1)), Mark("point", (centre,), "O"),
+        *right_angle_marks(C1, C2, P, th),
         Mark("line", (A, F)), Mark("length", (A, F), "e", e), Mark("line", (A, across)),
-        Mark("line", (A, C1)), Mark("line", (A, C2)),
-        Mark("angle", (A, C1, C2), "θ", th),
-        Mark("arc", (A, C1, E)), Mark("point", (E,), "E"),
-        Mark("length", (A, C1), "AC1 = BC − AB", b - a),
-        Mark("length", (A, C2), "AC2 = BC + AB", b + a),
-        Mark("length", (E, C2), "EC2 = 2·AB", 2 * a),
-        Mark("point", (A,), "A"),
-    ]
-    if P is not None:
-        marks[6:6] = [Mark("line", (C1, P)), Mark("line", (C2, P)), Mark("point", (P,), "P"),
-                      Mark("angle", (C2, C1, P), "90° − θ", math.pi / 2 - th)]
-    return tuple(marks)
+        *crank_marks(A, C1, C2, a, b, th),
+    )
