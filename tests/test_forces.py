@@ -174,24 +174,6 @@ def _hyp_check(mech, seed):
     assume(checked)
 
 
-@HYP
-@given(crank_rockers(), st.integers(0, 10**6))
-def test_random_crank_rockers_force_plans(mech, seed):
-    _hyp_check(mech, seed)
-
-
-@HYP
-@given(crank_sliders(), st.integers(0, 10**6))
-def test_random_crank_sliders_force_plans(mech, seed):
-    _hyp_check(mech, seed)
-
-
-@HYP
-@given(slotted_links(), st.integers(0, 10**6))
-def test_random_slotted_links_force_plans(mech, seed):
-    _hyp_check(mech, seed)
-
-
 # --- seed 001: task 1 on the worked four-bar ------------------------------------------------
 
 
@@ -527,20 +509,6 @@ def _hyp_mech(text: str):
     return mech
 
 
-@HYP
-@given(scotch_yokes(), st.integers(0, 10**6))
-def test_random_scotch_yokes_force_plans(mech, seed):
-    """RPP: random yokes, their slot at any angle to their guide."""
-    _hyp_check(mech, seed)
-
-
-@HYP
-@given(cross_slides(), st.integers(0, 10**6))
-def test_random_cross_slides_force_plans(mech, seed):
-    """PRP: a cross-slide on two moving guides, at random offsets and angles."""
-    _hyp_check(mech, seed)
-
-
 def test_an_inertia_moment_shifts_the_inertia_force_where_the_file_asks(capsys, tmp_path):
     """couples = "shift": the note takes M_Φ with Φ, its line shifted by h = M_Φ/Φ."""
     from support import run
@@ -556,3 +524,19 @@ def test_an_inertia_moment_shifts_the_inertia_force_where_the_file_asks(capsys, 
     h3 = 0.4 * abs(sol.epsilon[3]) / (10 * abs(sol.scalar.acceleration["S3"]))
     assert f"h = M_Φ3 / Φ3 = 8.2744 / 77.798 = {h3:.4f} m" in out
     assert "P_Φ3" not in out
+
+
+@pytest.mark.parametrize("mechanisms",
+                         [crank_rockers, crank_sliders, slotted_links, scotch_yokes, cross_slides],
+                         ids=["RRR", "RRP", "RPR", "RPP", "PRP"])
+def test_random_mechanisms_force_plans(mechanisms):
+    """Each dyad kind's force plans against the global solve on random mechanisms: crank-rockers
+    (RRR), crank-sliders (RRP), slotted links (RPR), yokes with their slot at any angle to
+    their guide (RPP), a cross-slide on two moving guides at random offsets and angles (PRP)."""
+
+    @HYP
+    @given(mechanisms(), st.integers(0, 10**6))
+    def check(mech, seed):
+        _hyp_check(mech, seed)
+
+    check()
