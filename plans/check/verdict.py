@@ -77,7 +77,7 @@ from plans.check.replay import (  # noqa: F401
 )
 from plans.check.words import WORDS
 from plans.errors import PlansError
-from plans.geometry import apart
+from plans.geometry import apart, golden_min
 from plans.plan.solution import plan_name
 from plans.scales import series
 
@@ -512,20 +512,7 @@ def fitted_angle(meas: Measurement, devs: tuple[Deviation, ...], tol: Tolerance)
     best, phi = min(scored, default=(math.inf, given))
     if not math.isfinite(best):
         return []
-    lo, hi = phi - _ANGLE_STEP, phi + _ANGLE_STEP  # golden section to 0.01°
-    g = (math.sqrt(5) - 1) / 2
-    a, b = hi - g * (hi - lo), lo + g * (hi - lo)
-    fa, fb = misfit(a), misfit(b)
-    while hi - lo > math.radians(0.01):
-        if fa <= fb:
-            hi, b, fb = b, a, fa
-            a = hi - g * (hi - lo)
-            fa = misfit(a)
-        else:
-            lo, a, fa = a, b, fb
-            b = lo + g * (hi - lo)
-            fb = misfit(b)
-    phi = (lo + hi) / 2
+    phi = golden_min(misfit, phi - _ANGLE_STEP, phi + _ANGLE_STEP, width=math.radians(0.01))
     turn = math.degrees((phi - given + math.pi) % (2 * math.pi) - math.pi)
     if abs(turn - round(turn)) < 0.25:
         phi = given + math.radians(round(turn))

@@ -24,6 +24,7 @@ import numpy as np
 
 from plans.errors import PlansError
 from plans.fmt import angle, num, unit
+from plans.geometry import golden_min
 from plans.kinematics.solver import Solver
 from plans.kinematics.transmission import between, gamma
 from plans.model.structure import Group
@@ -32,8 +33,6 @@ from plans.model.structure import Group
 SAMPLES = 3600
 #: γ below this (rad) at a limit of the cycle is 0: a dead point found to rounding
 DEAD = 1e-6
-#: the golden section
-_G = (math.sqrt(5) - 1) / 2
 
 
 @dataclass(frozen=True)
@@ -176,22 +175,8 @@ def _golden(solver: Solver, i: int, lo: float, hi: float, best: float, at: float
             v = float(np.ravel(gamma(g))[0])
             return v if bool(np.ravel(g.valid)[0]) and math.isfinite(v) else math.inf
 
-    span = hi - lo
-    a, b = lo, hi
-    c, d = b - _G * (b - a), a + _G * (b - a)
-    fc, fd = f(c), f(d)
-    for _ in range(80):
-        if abs(b - a) <= 1e-12 * max(abs(span), 1e-300):
-            break
-        if fc < fd:
-            b, d, fd = d, c, fc
-            c = b - _G * (b - a)
-            fc = f(c)
-        else:
-            a, c, fc = c, d, fd
-            d = a + _G * (b - a)
-            fd = f(d)
-    x, v = (c, fc) if fc < fd else (d, fd)
+    x = golden_min(f, lo, hi, width=1e-12 * max(abs(hi - lo), 1e-300), iterations=80)
+    v = f(x)
     return (x, v) if v <= best else (at, best)
 
 

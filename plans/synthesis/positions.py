@@ -33,9 +33,8 @@ import math
 import numpy as np
 
 from plans.fmt import num
-from plans.geometry import cross
+from plans.geometry import cross, golden_min
 from plans.synthesis.design import Curve, Design, Mark, Problem, Solution, acute, impossible
-from plans.synthesis.roots import golden_min
 
 #: the rocker CD over the frame AD that the two-position family spans: links of a size with
 #: the frame (a rocker far shorter makes the crank shorter still, as γmin grows towards 90°)

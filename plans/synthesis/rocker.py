@@ -29,7 +29,7 @@ import math
 import numpy as np
 
 from plans.fmt import num
-from plans.geometry import cross
+from plans.geometry import cross, golden_min
 from plans.synthesis.design import (
     Curve,
     Design,
@@ -43,7 +43,7 @@ from plans.synthesis.design import (
     right_angle_marks,
     theta_of,
 )
-from plans.synthesis.roots import SAMPLES, golden_min, ranges, roots
+from plans.synthesis.roots import SAMPLES, ranges, roots
 
 #: members worked at once by :meth:`RockerFamily.gamma_min` (as the engine's sweep blocks)
 BLOCK = 8192

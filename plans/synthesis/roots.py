@@ -20,6 +20,8 @@ from collections.abc import Callable
 
 import numpy as np
 
+from plans.geometry import golden_min
+
 #: samples of the parameter's interval
 SAMPLES = 4097
 
@@ -88,29 +90,6 @@ def brent(g: Callable[[float], float], a: float, b: float, fa: float, fb: float,
             b, fb = a, fa
             d = e = m
     return b
-
-
-def golden_min(g: Callable[[float], float], a: float, b: float, iterations: int = 90) -> float:
-    """Where ``g`` is least on [a, b] (one minimum there): golden-section search.
-
-    >>> round(golden_min(lambda x: (x - 0.3) ** 2, 0.0, 1.0), 7)
-    0.3
-    """
-    k = (math.sqrt(5) - 1) / 2
-    x1, x2 = b - k * (b - a), a + k * (b - a)
-    f1, f2 = g(x1), g(x2)
-    for _ in range(iterations):
-        if not (f1 <= f2 or math.isnan(f2)):
-            a, x1, f1 = x1, x2, f2
-            x2 = a + k * (b - a)
-            f2 = g(x2)
-        else:
-            b, x2, f2 = x2, x1, f1
-            x1 = b - k * (b - a)
-            f1 = g(x1)
-        if abs(b - a) <= 1e-15 * max(abs(a), abs(b), 1e-300):
-            break
-    return 0.5 * (a + b)
 
 
 def roots(f: Vectorized, lo: float, hi: float, samples: int = SAMPLES) -> list[float]:

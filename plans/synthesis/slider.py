@@ -30,6 +30,7 @@ import math
 import numpy as np
 
 from plans.fmt import num
+from plans.geometry import golden_min
 from plans.synthesis.design import (
     Curve,
     Design,
@@ -42,7 +43,7 @@ from plans.synthesis.design import (
     right_angle_marks,
     theta_of,
 )
-from plans.synthesis.roots import SAMPLES, golden_min, ranges, roots
+from plans.synthesis.roots import SAMPLES, ranges, roots
 
 #: the requirement that fixes u, by the file's key: (figure of the members, closed form)
 FIXING = {"AB": "AB", "BC": "BC", "lambda": "lambda", "e": "e", "eps": "eps",

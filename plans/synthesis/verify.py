@@ -22,11 +22,11 @@ import numpy as np
 from plans.cycle import Cycle, analyse_cycle
 from plans.errors import PlansError
 from plans.fmt import num
+from plans.geometry import golden_min
 from plans.kinematics.solver import Solver
 from plans.model import Mechanism, from_dict
 from plans.synthesis.design import Design, impossible
 from plans.synthesis.mechfile import mechanism_dict
-from plans.synthesis.roots import golden_min
 
 #: the agreement the re-analysis must reach, relative
 TOLERANCE = 1e-12
