@@ -186,3 +186,17 @@ def acute(cos_value):
     """The acute angle whose cosine has the magnitude of ``cos_value`` (the transmission
     angle γ taken as the acute angle between coupler and rocker, seed 004)."""
     return np.arccos(np.clip(np.abs(cos_value), 0.0, 1.0))
+
+
+def fourbar_figures(a, b, c, d):
+    """γmin of crank a, coupler b, rocker c, frame d (arrays), and where the chain is a
+    crank-rocker (a the shortest link, Grashof's sum strictly less)."""
+    with np.errstate(all="ignore"):
+        longest = np.maximum(np.maximum(b, c), d)
+        shortest = np.minimum(np.minimum(b, c), d)
+        margin = (b + c + d - longest) - (a + longest)
+        cos1 = (b * b + c * c - (d - a) ** 2) / (2 * b * c)
+        cos2 = (b * b + c * c - (d + a) ** 2) / (2 * b * c)
+        gamma = np.minimum(acute(cos1), acute(cos2))
+    ok = (a > 0) & (a < shortest) & (margin > 1e-12 * (a + longest))
+    return gamma, ok

@@ -34,25 +34,11 @@ import numpy as np
 
 from plans.fmt import num
 from plans.geometry import cross, golden_min
-from plans.synthesis.design import Curve, Design, Mark, Problem, Solution, acute, impossible
+from plans.synthesis.design import Curve, Design, Mark, Problem, Solution, fourbar_figures, impossible
 
 #: the rocker CD over the frame AD that the two-position family spans: links of a size with
 #: the frame (a rocker far shorter makes the crank shorter still, as γmin grows towards 90°)
 RATIO = (0.2, 5.0)
-
-
-def fourbar_figures(a, b, c, d):
-    """γmin of crank a, coupler b, rocker c, frame d (arrays), and where the chain is a
-    crank-rocker (a the shortest link, Grashof's sum strictly less)."""
-    with np.errstate(all="ignore"):
-        longest = np.maximum(np.maximum(b, c), d)
-        shortest = np.minimum(np.minimum(b, c), d)
-        margin = (b + c + d - longest) - (a + longest)
-        cos1 = (b * b + c * c - (d - a) ** 2) / (2 * b * c)
-        cos2 = (b * b + c * c - (d + a) ** 2) / (2 * b * c)
-        gamma = np.minimum(acute(cos1), acute(cos2))
-    ok = (a > 0) & (a < shortest) & (margin > 1e-12 * (a + longest))
-    return gamma, ok
 
 
 def _branch(A, B, C, D):

@@ -36,8 +36,8 @@ from plans.synthesis.design import (
     Mark,
     Problem,
     Solution,
-    acute,
     crank_marks,
+    fourbar_figures,
     impossible,
     merged,
     right_angle_marks,
@@ -94,14 +94,9 @@ class RockerFamily:
         with np.errstate(all="ignore"):
             seen = np.abs(np.angle((self.C2 - A) / (self.C1 - A)))
             s1, s2 = np.sign(cross(-A, self.C1 - A)), np.sign(cross(-A, self.C2 - A))
-            longest = np.maximum(np.maximum(b, c), d)
-            shortest = np.minimum(np.minimum(b, c), d)
-            margin = (b + c + d - longest) - (a + longest)
-            cos1 = (b * b + c * c - (d - a) ** 2) / (2 * b * c)
-            cos2 = (b * b + c * c - (d + a) ** 2) / (2 * b * c)
-            gamma = np.minimum(acute(cos1), acute(cos2))
             frame = np.abs(np.angle(A / self.C1))
-        ok = ((a > 1e-12 * c) & (a < shortest) & (margin > 1e-12 * (a + longest))
+        gamma, crank_rocker = fourbar_figures(a, b, c, d)
+        ok = ((a > 1e-12 * c) & crank_rocker
               & (s1 == s2) & (s1 != 0) & (np.abs(seen - self.theta) < 1e-9))
         return {"AB": a, "BC": b, "AD": d, "CD": np.full(a.shape, c), "gamma_min": gamma,
                 "frame": frame, "ok": ok}
