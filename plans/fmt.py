@@ -19,9 +19,11 @@ ITEM_SEPARATOR = {"en": ", ", "ru": "; "}
 #: units as each language writes them (SI symbols; Russian in Cyrillic, as GOST 8.417 has it)
 UNITS = {
     "en": {"m": "m", "mm": "mm", "s": "s", "N": "N", "N·m": "N·m", "N·mm": "N·mm", "W": "W", "J": "J",
-           "m/s": "m/s", "m/s²": "m/s²", "rad": "rad", "rad/s": "rad/s", "rad/s²": "rad/s²", "rpm": "rpm"},
+           "m/s": "m/s", "m/s²": "m/s²", "rad": "rad", "rad/s": "rad/s", "rad/s²": "rad/s²", "rpm": "rpm",
+           "kg": "kg", "kg·m²": "kg·m²"},
     "ru": {"m": "м", "mm": "мм", "s": "с", "N": "Н", "N·m": "Н·м", "N·mm": "Н·мм", "W": "Вт", "J": "Дж",
-           "m/s": "м/с", "m/s²": "м/с²", "rad": "рад", "rad/s": "рад/с", "rad/s²": "рад/с²", "rpm": "об/мин"},
+           "m/s": "м/с", "m/s²": "м/с²", "rad": "рад", "rad/s": "рад/с", "rad/s²": "рад/с²", "rpm": "об/мин",
+           "kg": "кг", "kg·m²": "кг·м²"},
 }
 
 

@@ -21,15 +21,9 @@ import math
 import numpy as np
 
 from plans.cams.table import positions
-from plans.fmt import num
+from plans.fmt import num, unit
 
 __all__ = ["cam_note"]
-
-#: the note's units in each language
-UNITS = {
-    "en": {"m": "m", "mm": "mm", "m/s": "m/s", "m/s²": "m/s²", "rad/s": "rad/s", "rad/s²": "rad/s²"},
-    "ru": {"m": "м", "mm": "мм", "m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с", "rad/s²": "рад/с²"},
-}
 
 T = {
     "en": {
@@ -135,9 +129,8 @@ def cam_note(d, lang: str = "en", section: int = 1) -> str:
     """The note's cam section in Markdown, its parts numbered from ``section``."""
     t = T[lang]
     cam, f, m = d.cam, d.cam.follower, d.motion
-    units = UNITS[lang]
-    u = {"m": units["m"], "mm": units["mm"],
-         "v": units["rad/s" if f.oscillating else "m/s"], "a": units["rad/s²" if f.oscillating else "m/s²"]}
+    vu, au = ("rad/s", "rad/s²") if f.oscillating else ("m/s", "m/s²")
+    u = {"m": unit("m", lang), "mm": unit("mm", lang), "v": unit(vu, lang), "a": unit(au, lang)}
 
     def n(x, digits=4):  # a true minus; rounding's noise of a zero is a zero
         x = float(x)

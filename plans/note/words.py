@@ -10,6 +10,7 @@ kind by the letters of its pairs, ``{latin}`` (RPR) or ``{cyrillic}`` (ВПВ); 
 from __future__ import annotations
 
 from plans.fmt import SENSE
+from plans.fmt import UNITS as SI
 
 T = {
     "en": {
@@ -158,11 +159,9 @@ T = {
     },
 }
 
-UNITS = {
-    "en": {"m": "m", "mm": "mm", "m/s": "m/s", "m/s²": "m/s²", "rad/s": "rad/s",
-           "rad/s²": "rad/s²", "mu_l": "m/mm", "mu_v": "(m/s)/mm", "mu_a": "(m/s²)/mm", "deg": "°",
-           "kg": "kg", "kgm2": "kg·m²", "rpm": "rpm", "s": "s", "rad": "rad"},
-    "ru": {"m": "м", "mm": "мм", "m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с",
-           "rad/s²": "рад/с²", "mu_l": "м/мм", "mu_v": "(м/с)/мм", "mu_a": "(м/с²)/мм", "deg": "°",
-           "kg": "кг", "kgm2": "кг·м²", "rpm": "об/мин", "s": "с", "rad": "рад"},
-}
+#: the note's units: the SI ones of :data:`plans.fmt.UNITS`, with the scale factors' and
+#: these few names of the note's own
+UNITS = {lang: {**si, "kgm2": si["kg·m²"], "deg": "°", **scales} for lang, si, scales in (
+    ("en", SI["en"], {"mu_l": "m/mm", "mu_v": "(m/s)/mm", "mu_a": "(m/s²)/mm"}),
+    ("ru", SI["ru"], {"mu_l": "м/мм", "mu_v": "(м/с)/мм", "mu_a": "(м/с²)/мм"}),
+)}
