@@ -136,11 +136,10 @@ def work_out(mech: Mechanism, m: Motion, kind: str) -> Recipe:
     for n in m.coincident:
         link_points[m.point_link[n]].append(n)
     pos = m.position
-    # two points within ``near`` of each other are one place: no base for a figure
-    # a slider input has no pivot: the first fixed point
-    origin = mech.frame.get(mech.driver.pivot, next(iter(mech.frame.values()), 0j))
-    near = tolerances.SAME_PLACE * max([abs(z - origin) for z in pos.values()]
-                                       + [getattr(mech.driver, "length", 0.0) or 0.0])
+    # two points within ``near`` of each other are one place: no base for a figure; the
+    # mechanism's size is how far its points lie from one of them, whatever drives it
+    first = next(iter(pos.values()))
+    near = tolerances.SAME_PLACE * max(abs(z - first) for z in pos.values())
 
     def absolute(name):
         return PlanVector(pole, plan_name(name), "absolute", f"{sym}_{name}")
